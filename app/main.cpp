@@ -1,9 +1,104 @@
-// spiral — integrated mooring–riser design-spiral application. CLI wiring only.
+// spiral — integrated mooring–riser design-spiral application. CLI wiring only:
+// parse arguments, call the design layer, print, map errors to exit codes.
+#include <cstdio>
+#include <numbers>
+#include <string>
+#include <vector>
+
 #include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "app/exit_codes.hpp"
+#include "design/input_error.hpp"
+#include "design/mooring_model.hpp"
+#include "design/project_summary.hpp"
+#include "design/statics_output.hpp"
+#include "design/statics_study.hpp"
+#include "design/validated_project.hpp"
+#include "engine/common/solver_error.hpp"
+
+namespace {
+
+using namespace spiral;
+
+constexpr const char* kExitCodeHelp =
+    "Exit codes: 0 ok, 1 internal error, 2 bad input (project file or arguments), "
+    "3 solver failure, 4 output could not be written.";
+
+int run_validate(const std::string& project_file) {
+  const design::ValidatedProject loaded = design::load_validated_project(project_file);
+  fmt::print("{}", design::project_summary(loaded.project, loaded.line_types));
+  fmt::print("\n{}: valid\n", project_file);
+  return app::kExitOk;
+}
+
+int run_statics(const std::string& project_file, const std::vector<double>& offset_input, bool json) {
+  const design::ValidatedProject loaded = design::load_validated_project(project_file);
+  engine::Vector6d offset = engine::Vector6d::Zero();
+  for (int i = 0; i < 6; ++i) {
+    // Rotations are given in degrees on the command line, SI (rad) inside.
+    offset(i) = offset_input[static_cast<std::size_t>(i)] * (i < 3 ? 1.0 : std::numbers::pi / 180.0);
+  }
+  const design::MooringDesignModel model = design::build_mooring_model(loaded.project);
+  const design::StaticsResult result = design::run_statics(model, offset);
+  if (json) {
+    fmt::print("{}\n", design::statics_to_json(result, loaded.project.name).dump(2));
+  } else {
+    fmt::print("{}", design::statics_table(result, loaded.project.name));
+  }
+  return app::kExitOk;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"spiral: integrated mooring-riser design spiral for floating production systems"};
-  app.require_subcommand(1);
-  CLI11_PARSE(app, argc, argv);
-  return 0;
+  CLI::App cli{"spiral: integrated mooring-riser design spiral for floating production systems"};
+  cli.footer(kExitCodeHelp);
+  cli.require_subcommand(1);
+  cli.set_version_flag("--version", "spiral 0.1.0");
+
+  std::string project_file;
+  CLI::App* validate = cli.add_subcommand("validate", "Check a project file and print a summary");
+  validate->add_option("PROJECT", project_file, "Project YAML file")->required();
+  validate->footer(kExitCodeHelp);
+
+  CLI::App* statics = cli.add_subcommand(
+      "statics", "Quasi-static solution of every mooring line at a hull offset");
+  statics->add_option("PROJECT", project_file, "Project YAML file")->required();
+  std::vector<double> offset_input(6, 0.0);
+  statics
+      ->add_option("--offset", offset_input,
+                   "Hull offset x,y,z (m), rx,ry,rz (deg) of the reference point, global axes")
+      ->expected(6)
+      ->delimiter(',')
+      ->allow_extra_args(false);
+  bool json = false;
+  statics->add_flag("--json", json, "Machine output (docs/output-format.md) instead of the table");
+  statics->footer(kExitCodeHelp);
+
+  try {
+    cli.parse(argc, argv);
+  } catch (const CLI::ParseError& error) {
+    const int code = cli.exit(error);  // prints help, version or the error
+    return code == 0 ? app::kExitOk : app::kExitBadInput;
+  }
+
+  try {
+    if (validate->parsed()) return run_validate(project_file);
+    if (statics->parsed()) return run_statics(project_file, offset_input, json);
+  } catch (const design::InputError& error) {
+    fmt::print(stderr, "{}\n", error.what());
+    return app::kExitBadInput;
+  } catch (const engine::SolverError& error) {
+    const auto& d = error.diagnostics();
+    fmt::print(stderr,
+               "solver failure: {}\n  after {} iterations, residual {:.3g} {}\n"
+               "  check the line lengths against the anchor-fairlead span and the hull offset.\n",
+               error.what(), d.iterations, d.residual, d.residual_unit);
+    return app::kExitSolverFailure;
+  } catch (const std::exception& error) {
+    fmt::print(stderr, "internal error: {}\n", error.what());
+    return app::kExitInternalError;
+  }
+  return app::kExitInternalError;
 }
