@@ -15,42 +15,54 @@ DnvOsE301Factors dnv_os_e301_defaults(int consequence_class) {
 
 const char* to_string(AttachmentKind kind) {
   switch (kind) {
-    case AttachmentKind::clump: return "clump";
-    case AttachmentKind::buoy: return "buoy";
+    case AttachmentKind::clump:
+      return "clump";
+    case AttachmentKind::buoy:
+      return "buoy";
   }
   return "?";
 }
 
 const char* to_string(RiserKind kind) {
   switch (kind) {
-    case RiserKind::scr: return "scr";
-    case RiserKind::lazy_wave: return "lazy_wave";
-    case RiserKind::flexible: return "flexible";
+    case RiserKind::scr:
+      return "scr";
+    case RiserKind::lazy_wave:
+      return "lazy_wave";
+    case RiserKind::flexible:
+      return "flexible";
   }
   return "?";
 }
 
 const char* to_string(WaveSpectrum spectrum) {
   switch (spectrum) {
-    case WaveSpectrum::jonswap: return "jonswap";
-    case WaveSpectrum::pierson_moskowitz: return "pierson_moskowitz";
+    case WaveSpectrum::jonswap:
+      return "jonswap";
+    case WaveSpectrum::pierson_moskowitz:
+      return "pierson_moskowitz";
   }
   return "?";
 }
 
 const char* to_string(WindSpectrum spectrum) {
   switch (spectrum) {
-    case WindSpectrum::api: return "api";
-    case WindSpectrum::npd: return "npd";
-    case WindSpectrum::none: return "none";
+    case WindSpectrum::api:
+      return "api";
+    case WindSpectrum::npd:
+      return "npd";
+    case WindSpectrum::none:
+      return "none";
   }
   return "?";
 }
 
 const char* to_string(MooringCode code) {
   switch (code) {
-    case MooringCode::api_rp_2sk: return "api_rp_2sk";
-    case MooringCode::dnv_os_e301: return "dnv_os_e301";
+    case MooringCode::api_rp_2sk:
+      return "api_rp_2sk";
+    case MooringCode::dnv_os_e301:
+      return "dnv_os_e301";
   }
   return "?";
 }

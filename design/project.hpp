@@ -15,14 +15,13 @@
 // Optional inputs are std::optional (never sentinel values); defaults that the
 // format documents are written as member initialisers.
 
+#include <Eigen/Core>
 #include <filesystem>
 #include <map>
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "design/line_properties.hpp"
 
@@ -32,15 +31,15 @@ namespace spiral::design {
 inline constexpr int kProjectFormatVersion = 1;
 
 struct Seabed {
-  double friction_axial = 0.0;            ///< -, Coulomb coefficient along the line, >= 0
-  double friction_lateral = 0.0;          ///< -, Coulomb coefficient across the line, >= 0
-  double normal_stiffness_Pa_per_m = 0.0; ///< contact pressure per metre of penetration, > 0
+  double friction_axial = 0.0;             ///< -, Coulomb coefficient along the line, >= 0
+  double friction_lateral = 0.0;           ///< -, Coulomb coefficient across the line, >= 0
+  double normal_stiffness_Pa_per_m = 0.0;  ///< contact pressure per metre of penetration, > 0
 };
 
 struct Site {
-  double depth_m = 0.0;                   ///< water depth, > 0; seabed at z_g = -depth_m
-  double water_density_kg_per_m3 = 0.0;   ///< > 0
-  double gravity_m_per_s2 = 0.0;          ///< > 0
+  double depth_m = 0.0;                  ///< water depth, > 0; seabed at z_g = -depth_m
+  double water_density_kg_per_m3 = 0.0;  ///< > 0
+  double gravity_m_per_s2 = 0.0;         ///< > 0
   Seabed seabed;
 };
 
@@ -48,15 +47,15 @@ enum class AttachmentKind { clump, buoy };
 
 /// A point mass / buoyancy at the joint after segment `after_segment`.
 struct Attachment {
-  int after_segment = 0;     ///< 0-based index of the segment the joint follows; < segments - 1
+  int after_segment = 0;  ///< 0-based index of the segment the joint follows; < segments - 1
   AttachmentKind kind = AttachmentKind::clump;
-  double mass_kg = 0.0;      ///< in air, >= 0
-  double volume_m3 = 0.0;    ///< displaced volume, >= 0
+  double mass_kg = 0.0;    ///< in air, >= 0
+  double volume_m3 = 0.0;  ///< displaced volume, >= 0
 };
 
 struct LineSegment {
-  std::string type;          ///< name of a `line_types` entry
-  double length_m = 0.0;     ///< unstretched, > 0
+  std::string type;       ///< name of a `line_types` entry
+  double length_m = 0.0;  ///< unstretched, > 0
 };
 
 struct MooringLine {
@@ -78,9 +77,9 @@ struct Mooring {
 };
 
 struct Hull {
-  Eigen::Vector3d reference_point_g = Eigen::Vector3d::Zero();  ///< body origin at rest, m
-  double mass_kg = 0.0;                                          ///< > 0
-  Eigen::Vector3d center_of_gravity_b = Eigen::Vector3d::Zero(); ///< m
+  Eigen::Vector3d reference_point_g = Eigen::Vector3d::Zero();    ///< body origin at rest, m
+  double mass_kg = 0.0;                                           ///< > 0
+  Eigen::Vector3d center_of_gravity_b = Eigen::Vector3d::Zero();  ///< m
   /// Exactly one of the two is given: radii of gyration about the CoG (m,
   /// about body x, y, z) or the inertia tensor about the CoG (kg m^2).
   std::optional<Eigen::Vector3d> radii_of_gyration_m;
@@ -90,7 +89,7 @@ struct Hull {
   std::optional<double> displaced_volume_m3;
   std::optional<Eigen::Vector3d> center_of_buoyancy_b;  ///< m
   std::optional<double> waterplane_area_m2;
-  std::optional<Eigen::Vector2d> waterplane_inertia_m4; ///< second moments about body x, y
+  std::optional<Eigen::Vector2d> waterplane_inertia_m4;  ///< second moments about body x, y
   /// WAMIT .hst file, resolved relative to the project file's folder.
   std::optional<std::filesystem::path> hydrostatics_file;
 };
@@ -114,9 +113,9 @@ struct RiserSection {
   std::optional<double> buoyancy_outer_diameter_m;
   std::optional<double> buoyancy_density_kg_per_m3;
   /// Explicit overrides (flexible pipes: from the manufacturer's data sheet).
-  std::optional<double> axial_stiffness_N;          ///< EA
-  std::optional<double> bending_stiffness_N_m2;     ///< EI
-  std::optional<double> mass_per_length_kg_per_m;   ///< in air, empty pipe incl. coating
+  std::optional<double> axial_stiffness_N;         ///< EA
+  std::optional<double> bending_stiffness_N_m2;    ///< EI
+  std::optional<double> mass_per_length_kg_per_m;  ///< in air, empty pipe incl. coating
   /// Morison coefficients on the outermost diameter.
   double drag_normal = 1.0;
   double drag_axial = 0.0;
@@ -138,16 +137,17 @@ enum class WindSpectrum { api, npd, none };
 
 struct Waves {
   WaveSpectrum spectrum = WaveSpectrum::jonswap;
-  double hs_m = 0.0;                 ///< significant wave height, > 0
-  double tp_s = 0.0;                 ///< peak period, > 0
-  std::optional<double> gamma;       ///< JONSWAP peak enhancement, >= 1 (absent: DNV-RP-C205 3.5.5.5)
-  double heading_rad = 0.0;          ///< direction of propagation
-  std::optional<double> spreading_s; ///< cos-2s directional spreading exponent, > 0 (absent: long-crested)
+  double hs_m = 0.0;            ///< significant wave height, > 0
+  double tp_s = 0.0;            ///< peak period, > 0
+  std::optional<double> gamma;  ///< JONSWAP peak enhancement, >= 1 (absent: DNV-RP-C205 3.5.5.5)
+  double heading_rad = 0.0;     ///< direction of propagation
+  std::optional<double>
+      spreading_s;  ///< cos-2s directional spreading exponent, > 0 (absent: long-crested)
 };
 
 struct Wind {
-  double speed_m_per_s = 0.0;        ///< 1-hour mean at the reference height, >= 0
-  double heading_rad = 0.0;          ///< direction the wind blows towards
+  double speed_m_per_s = 0.0;  ///< 1-hour mean at the reference height, >= 0
+  double heading_rad = 0.0;    ///< direction the wind blows towards
   WindSpectrum spectrum = WindSpectrum::none;
   double reference_height_m = 10.0;  ///< above mean water level, > 0
 };
@@ -171,8 +171,8 @@ struct Environment {
 
 struct LoadCase {
   std::string name;
-  std::string environment;                 ///< name of an `environments` entry
-  std::optional<std::string> damaged_line; ///< name of a mooring line removed in this case
+  std::string environment;                  ///< name of an `environments` entry
+  std::optional<std::string> damaged_line;  ///< name of a mooring line removed in this case
 };
 
 enum class MooringCode { api_rp_2sk, dnv_os_e301 };

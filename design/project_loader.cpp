@@ -10,6 +10,7 @@
 
 #include "design/project_loader.hpp"
 
+#include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
@@ -19,8 +20,6 @@
 #include <numbers>
 #include <sstream>
 #include <utility>
-
-#include <fmt/format.h>
 
 namespace spiral::design {
 namespace {
@@ -57,11 +56,16 @@ struct Context {
 /// Short description of what a node holds, for "got ..." parts of messages.
 std::string describe(const YAML::Node& node) {
   switch (node.Type()) {
-    case YAML::NodeType::Null: return "nothing (null)";
-    case YAML::NodeType::Sequence: return "a list";
-    case YAML::NodeType::Map: return "a map";
-    case YAML::NodeType::Scalar: return fmt::format("\"{}\"", node.Scalar());
-    default: return "an undefined value";
+    case YAML::NodeType::Null:
+      return "nothing (null)";
+    case YAML::NodeType::Sequence:
+      return "a list";
+    case YAML::NodeType::Map:
+      return "a map";
+    case YAML::NodeType::Scalar:
+      return fmt::format("\"{}\"", node.Scalar());
+    default:
+      return "an undefined value";
   }
 }
 
@@ -178,11 +182,11 @@ std::optional<Eigen::Matrix<double, N, 1>> to_vector(Context& ctx, const YAML::N
                                                      const std::string& path,
                                                      std::string_view unit) {
   if (!node.IsSequence() || node.size() != static_cast<std::size_t>(N)) {
-    ctx.add(node.Mark(), path,
-            fmt::format("expected a list of {} numbers{}, got {}{}", N, with_unit(unit),
-                        describe(node),
-                        node.IsSequence() ? fmt::format(" of {} items", node.size()) : ""),
-            "wrong_type");
+    ctx.add(
+        node.Mark(), path,
+        fmt::format("expected a list of {} numbers{}, got {}{}", N, with_unit(unit), describe(node),
+                    node.IsSequence() ? fmt::format(" of {} items", node.size()) : ""),
+        "wrong_type");
     return std::nullopt;
   }
   Eigen::Matrix<double, N, 1> out;
@@ -278,8 +282,7 @@ class MapReader {
     return node ? to_string_value(ctx_, *node, path_of(key)) : std::nullopt;
   }
   template <typename E>
-  std::optional<E> enumeration(std::string_view key, const EnumTable<E>& table,
-                               Presence presence) {
+  std::optional<E> enumeration(std::string_view key, const EnumTable<E>& table, Presence presence) {
     const auto node = child(key, presence);
     return node ? to_enum(ctx_, *node, path_of(key), table) : std::nullopt;
   }
@@ -395,10 +398,11 @@ const EnumTable<WireConstruction> kWireConstructions = {
     {"spiral_strand", WireConstruction::spiral_strand}};
 const EnumTable<AttachmentKind> kAttachmentKinds = {{"clump", AttachmentKind::clump},
                                                     {"buoy", AttachmentKind::buoy}};
-const EnumTable<RiserKind> kRiserKinds = {
-    {"scr", RiserKind::scr}, {"lazy_wave", RiserKind::lazy_wave}, {"flexible", RiserKind::flexible}};
-const EnumTable<WaveSpectrum> kWaveSpectra = {{"jonswap", WaveSpectrum::jonswap},
-                                              {"pierson_moskowitz", WaveSpectrum::pierson_moskowitz}};
+const EnumTable<RiserKind> kRiserKinds = {{"scr", RiserKind::scr},
+                                          {"lazy_wave", RiserKind::lazy_wave},
+                                          {"flexible", RiserKind::flexible}};
+const EnumTable<WaveSpectrum> kWaveSpectra = {
+    {"jonswap", WaveSpectrum::jonswap}, {"pierson_moskowitz", WaveSpectrum::pierson_moskowitz}};
 const EnumTable<WindSpectrum> kWindSpectra = {
     {"api", WindSpectrum::api}, {"npd", WindSpectrum::npd}, {"none", WindSpectrum::none}};
 const EnumTable<MooringCode> kMooringCodes = {{"api_rp_2sk", MooringCode::api_rp_2sk},
@@ -732,8 +736,8 @@ Project load_project(const std::filesystem::path& file) {
   if (!in) {
     InputIssue issue;
     issue.file = file.string();
-    issue.message = std::filesystem::exists(file) ? "cannot read the project file"
-                                                  : "project file not found";
+    issue.message =
+        std::filesystem::exists(file) ? "cannot read the project file" : "project file not found";
     issue.condition = "missing_file";
     throw InputError({issue});
   }

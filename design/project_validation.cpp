@@ -5,13 +5,13 @@
 
 #include "design/project_validation.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <numbers>
 #include <set>
-
-#include <fmt/format.h>
 
 namespace spiral::design {
 namespace {
@@ -141,10 +141,10 @@ void check_line_types(const Project& p, Reporter& r) {
       positive(r, at + ".dynamic_stiffness_mbl[0]", (*t.dynamic_stiffness_mbl)[0], "", c);
       at_least(r, at + ".dynamic_stiffness_mbl[1]", (*t.dynamic_stiffness_mbl)[1], 0.0, "", c);
     }
-    for (const auto& [key, value] : {std::pair{".drag_normal", t.drag_normal},
-                                     std::pair{".drag_axial", t.drag_axial},
-                                     std::pair{".added_mass_normal", t.added_mass_normal},
-                                     std::pair{".added_mass_axial", t.added_mass_axial}}) {
+    for (const auto& [key, value] :
+         {std::pair{".drag_normal", t.drag_normal}, std::pair{".drag_axial", t.drag_axial},
+          std::pair{".added_mass_normal", t.added_mass_normal},
+          std::pair{".added_mass_axial", t.added_mass_axial}}) {
       at_least(r, at + key, value, 0.0, "", "coefficient_non_negative");
     }
     if (t.grade && t.kind != LineKind::chain) {
@@ -252,8 +252,9 @@ void check_line_length(const Project& p, const LineCheckTable& table, std::size_
   // Slack: hanging straight down from the fairlead and lying on the seabed,
   // the line still reaches past the anchor, so the horizontal tension is zero.
   // Only meaningful for a sinking line without buoys.
-  const bool has_buoy = std::any_of(line.attachments.begin(), line.attachments.end(),
-                                    [](const Attachment& a) { return a.kind == AttachmentKind::buoy; });
+  const bool has_buoy =
+      std::any_of(line.attachments.begin(), line.attachments.end(),
+                  [](const Attachment& a) { return a.kind == AttachmentKind::buoy; });
   const bool buoyant_segment =
       std::any_of(line.segments.begin(), line.segments.end(), [&](const LineSegment& s) {
         const auto w = check_properties(p, table, s.type).submerged_weight_N_per_m;
@@ -293,10 +294,10 @@ void check_mooring(const Project& p, const LineCheckTable& table, Reporter& r) {
       const int joints = static_cast<int>(line.segments.size()) - 1;
       if (att.after_segment < 0 || att.after_segment >= joints) {
         r.fail(aat + ".after_segment", "attachment_joint_exists",
-               joints > 0 ? fmt::format("must be a joint between segments, 0 to {}, got {}",
-                                        joints - 1, att.after_segment)
-                          : fmt::format("the line has no joint (one segment), got {}",
-                                        att.after_segment));
+               joints > 0
+                   ? fmt::format("must be a joint between segments, 0 to {}, got {}", joints - 1,
+                                 att.after_segment)
+                   : fmt::format("the line has no joint (one segment), got {}", att.after_segment));
       }
       at_least(r, aat + ".mass", att.mass_kg, 0.0, "kg", "attachment_value_non_negative");
       at_least(r, aat + ".volume", att.volume_m3, 0.0, "m^3", "attachment_value_non_negative");
@@ -308,9 +309,9 @@ void check_mooring(const Project& p, const LineCheckTable& table, Reporter& r) {
                fmt::format("anchor is {:.6g} m below the seabed: z = {} m, seabed at z = {} m",
                            seabed_z - z, z, seabed_z));
       } else if (z > 0.0) {
-        r.fail(at + ".anchor", "anchor_above_water",
-               fmt::format("anchor is above the water: z = {} m, must be in [{}, 0] m", z,
-                           seabed_z));
+        r.fail(
+            at + ".anchor", "anchor_above_water",
+            fmt::format("anchor is above the water: z = {} m, must be in [{}, 0] m", z, seabed_z));
       }
     }
     const double fairlead_z_g = p.hull.reference_point_g.z() + line.fairlead_b.z();
@@ -350,8 +351,8 @@ void check_hull(const Project& p, Reporter& r) {
                "hull_value_positive");
     }
   }
-  const bool all_values = h.displaced_volume_m3 && h.center_of_buoyancy_b &&
-                          h.waterplane_area_m2 && h.waterplane_inertia_m4;
+  const bool all_values = h.displaced_volume_m3 && h.center_of_buoyancy_b && h.waterplane_area_m2 &&
+                          h.waterplane_inertia_m4;
   if (!all_values && !h.hydrostatics_file) {
     r.fail("hull", "hull_hydrostatics_complete",
            "give displaced_volume, center_of_buoyancy, waterplane_area and waterplane_inertia, or "
@@ -388,10 +389,10 @@ void check_riser_section(const Riser& riser, const RiserSection& s, const std::s
   positive(r, at + ".axial_stiffness", s.axial_stiffness_N, "N", c);
   positive(r, at + ".bending_stiffness", s.bending_stiffness_N_m2, "N m^2", c);
   positive(r, at + ".mass_per_length", s.mass_per_length_kg_per_m, "kg/m", c);
-  for (const auto& [key, value] : {std::pair{".drag_normal", s.drag_normal},
-                                   std::pair{".drag_axial", s.drag_axial},
-                                   std::pair{".added_mass_normal", s.added_mass_normal},
-                                   std::pair{".added_mass_axial", s.added_mass_axial}}) {
+  for (const auto& [key, value] :
+       {std::pair{".drag_normal", s.drag_normal}, std::pair{".drag_axial", s.drag_axial},
+        std::pair{".added_mass_normal", s.added_mass_normal},
+        std::pair{".added_mass_axial", s.added_mass_axial}}) {
     at_least(r, at + key, value, 0.0, "", "coefficient_non_negative");
   }
   if (s.wall_thickness_m && s.outer_diameter_m > 0.0 &&
@@ -401,7 +402,8 @@ void check_riser_section(const Riser& riser, const RiserSection& s, const std::s
                        *s.wall_thickness_m));
   }
   if (s.coating_thickness_m.has_value() != s.coating_density_kg_per_m3.has_value()) {
-    r.fail(at, "coating_complete", "give coating_thickness (m) and coating_density (kg/m^3) together");
+    r.fail(at, "coating_complete",
+           "give coating_thickness (m) and coating_density (kg/m^3) together");
   }
   if (s.buoyancy_outer_diameter_m.has_value() != s.buoyancy_density_kg_per_m3.has_value()) {
     r.fail(at, "buoyancy_complete",
@@ -429,8 +431,8 @@ void check_riser_section(const Riser& riser, const RiserSection& s, const std::s
                fmt::format("a {} riser section needs {}", to_string(riser.kind), key));
       }
     }
-  } else if (!steel && !(s.axial_stiffness_N && s.bending_stiffness_N_m2 &&
-                         s.mass_per_length_kg_per_m)) {
+  } else if (!steel &&
+             !(s.axial_stiffness_N && s.bending_stiffness_N_m2 && s.mass_per_length_kg_per_m)) {
     r.fail(at, "flexible_riser_complete",
            "a flexible riser section needs axial_stiffness (N), bending_stiffness (N m^2) and "
            "mass_per_length (kg/m), or the steel wall_thickness, youngs_modulus and steel_density");

@@ -40,7 +40,8 @@ inline constexpr double kMaxStrainWithoutProperties = 0.10;
 inline constexpr double kSeabedTolerance_m = 1e-6;
 
 /// Every issue of `project`, in file order; empty when the project is valid.
-std::vector<InputIssue> check_project(const Project& project, const LineCheckTable& line_types = {});
+std::vector<InputIssue> check_project(const Project& project,
+                                      const LineCheckTable& line_types = {});
 
 /// Throws InputError listing every issue of `project`.
 void validate_project(const Project& project, const LineCheckTable& line_types = {});

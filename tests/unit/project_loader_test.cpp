@@ -3,14 +3,14 @@
 
 #include "design/project_loader.hpp"
 
-#include "unit/project_fixture.hpp"
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
+
+#include "unit/project_fixture.hpp"
 
 namespace spiral::design {
 namespace {
@@ -147,7 +147,8 @@ TEST(ProjectLoader, FormatSampleLoadsWithExpectedValues) {
 }
 
 TEST(ProjectLoader, UnknownKeyIsReportedWithPositionAndSuggestion) {
-  const auto issues = issues_of(replace(kMinimal, "  gravity: 9.81\n", "  gravity: 9.81\n  gravty: 9.8\n"));
+  const auto issues =
+      issues_of(replace(kMinimal, "  gravity: 9.81\n", "  gravity: 9.81\n  gravty: 9.8\n"));
   ASSERT_EQ(issues.size(), 1u);
   EXPECT_EQ(issues[0].condition, "unknown_key");
   EXPECT_EQ(format_issue(issues[0]),
@@ -186,8 +187,8 @@ TEST(ProjectLoader, MissingRequiredKeyIsReportedAtItsParent) {
 }
 
 TEST(ProjectLoader, PolarFairleadNeedsZ) {
-  const auto issues = issues_of(
-      replace(kMinimal, "fairlead: [10.0, 0.0, -10.0]", "fairlead: {radius: 10.0, azimuth_deg: 0}"));
+  const auto issues = issues_of(replace(kMinimal, "fairlead: [10.0, 0.0, -10.0]",
+                                        "fairlead: {radius: 10.0, azimuth_deg: 0}"));
   ASSERT_EQ(issues.size(), 1u);
   EXPECT_EQ(issues[0].path, "mooring.lines[0].fairlead.z");
   EXPECT_EQ(issues[0].condition, "missing_key");
@@ -259,7 +260,8 @@ TEST(ProjectLoader, AllErrorsOfAFileAreReportedTogetherInFileOrder) {
 
 TEST(ProjectLoader, DnvCriteriaTakeConsequenceClassDefaults) {
   const auto p = parse_project(
-      replace(kMinimal, "{code: api_rp_2sk}", "{code: dnv_os_e301, consequence_class: 2}"), "t.yaml");
+      replace(kMinimal, "{code: api_rp_2sk}", "{code: dnv_os_e301, consequence_class: 2}"),
+      "t.yaml");
   ASSERT_TRUE(p.criteria.mooring.dnv_os_e301.has_value());
   EXPECT_DOUBLE_EQ(p.criteria.mooring.dnv_os_e301->uls_mean, 1.40);
   EXPECT_DOUBLE_EQ(p.criteria.mooring.dnv_os_e301->uls_dynamic, 2.10);
@@ -267,9 +269,9 @@ TEST(ProjectLoader, DnvCriteriaTakeConsequenceClassDefaults) {
 }
 
 TEST(ProjectLoader, HydrostaticsFileResolvesAgainstTheProjectFolder) {
-  const auto p = parse_project(
-      replace(kMinimal, "  waterplane_area: 400.0\n", "  waterplane_area: 400.0\n  hydrostatics_file: hull.hst\n"),
-      "/some/dir/p.yaml");
+  const auto p = parse_project(replace(kMinimal, "  waterplane_area: 400.0\n",
+                                       "  waterplane_area: 400.0\n  hydrostatics_file: hull.hst\n"),
+                               "/some/dir/p.yaml");
   ASSERT_TRUE(p.hull.hydrostatics_file.has_value());
   EXPECT_EQ(*p.hull.hydrostatics_file, std::filesystem::path("/some/dir/hull.hst"));
 }

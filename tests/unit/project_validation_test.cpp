@@ -79,7 +79,8 @@ TEST(ProjectValidation, UndefinedLineTypeIsReported) {
 }
 
 TEST(ProjectValidation, UndefinedReferencesInLoadCasesAndGroups) {
-  std::string text = replace(kMinimal, "environment: calm}", "environment: storm, damaged_line: L9}");
+  std::string text =
+      replace(kMinimal, "environment: calm}", "environment: storm, damaged_line: L9}");
   text = replace(text, "hull:\n", "  groups:\n    - {name: g, lines: [L1, L2]}\nhull:\n");
   const auto issues = check(text);
   ASSERT_EQ(issues.size(), 3u) << all(issues);
@@ -122,8 +123,8 @@ TEST(ProjectValidation, FairleadAboveWater) {
 }
 
 TEST(ProjectValidation, FairleadAboveWaterCountsTheHullReferencePoint) {
-  const auto issues = check(replace(kMinimal, "reference_point: [0.0, 0.0, 0.0]",
-                                    "reference_point: [0.0, 0.0, 12.0]"));
+  const auto issues = check(
+      replace(kMinimal, "reference_point: [0.0, 0.0, 0.0]", "reference_point: [0.0, 0.0, 12.0]"));
   expect_single(issues, "fairlead_above_water", "mooring.lines[0].fairlead");
 }
 
@@ -164,7 +165,8 @@ TEST(ProjectValidation, LineTooLongLiesSlack) {
 }
 
 TEST(ProjectValidation, RiserWallThickerThanRadius) {
-  const auto issues = check(kMinimal + replace(kSteelRiser, "wall_thickness: 0.02", "wall_thickness: 0.2"));
+  const auto issues =
+      check(kMinimal + replace(kSteelRiser, "wall_thickness: 0.02", "wall_thickness: 0.2"));
   expect_single(issues, "wall_thinner_than_radius", "risers[0].sections[0].wall_thickness");
   EXPECT_EQ(issues[0].message, "must be < outer_diameter / 2 = 0.15 m, got 0.2 m");
 }
@@ -181,9 +183,9 @@ TEST(ProjectValidation, LazyWaveNeedsABuoyancySection) {
 }
 
 TEST(ProjectValidation, BadSpectrumParameters) {
-  const std::string text = replace(
-      kMinimal, "  - name: calm\n",
-      "  - name: calm\n    waves: {spectrum: jonswap, hs: 3.0, tp: 0.0, gamma: 0.5, heading_deg: 0}\n");
+  const std::string text = replace(kMinimal, "  - name: calm\n",
+                                   "  - name: calm\n    waves: {spectrum: jonswap, hs: 3.0, tp: "
+                                   "0.0, gamma: 0.5, heading_deg: 0}\n");
   const auto issues = check(text);
   ASSERT_EQ(issues.size(), 2u) << all(issues);
   EXPECT_EQ(conditions(issues), (std::vector<std::string>{"tp_positive", "gamma_at_least_one"}));
