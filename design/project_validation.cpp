@@ -1,0 +1,580 @@
+// Semantic validation of a project (format v1). Each check function covers
+// one section and reports each violated condition under its name; the
+// condition names and messages are listed in docs/project-format.md.
+// (Layout after Drake's geometry/scene_graph_config.cc ValidateOrThrow.)
+
+#include "design/project_validation.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <numbers>
+#include <set>
+
+namespace spiral::design {
+namespace {
+
+constexpr double kRadToDeg = 180.0 / std::numbers::pi;
+
+/// Collects issues, placing each at the nearest recorded node of its path.
+class Reporter {
+ public:
+  Reporter(const Project& project, std::vector<InputIssue>& out) : project_(project), out_(out) {}
+
+  void fail(const std::string& path, std::string condition, std::string message) {
+    InputIssue issue;
+    issue.file = project_.source_file;
+    // A value that was defaulted has no node: use its closest written parent.
+    std::string at = path;
+    while (true) {
+      if (const auto it = project_.source_map.find(at); it != project_.source_map.end()) {
+        issue.line = it->second.line;
+        issue.column = it->second.column;
+        break;
+      }
+      const auto cut = at.find_last_of(".[");
+      if (cut == std::string::npos) break;
+      at.resize(cut);
+    }
+    issue.path = path;
+    issue.message = std::move(message);
+    issue.condition = std::move(condition);
+    out_.push_back(std::move(issue));
+  }
+
+ private:
+  const Project& project_;
+  std::vector<InputIssue>& out_;
+};
+
+std::string unit_suffix(std::string_view unit) {
+  return unit.empty() ? std::string() : fmt::format(" {}", unit);
+}
+
+void positive(Reporter& r, const std::string& path, double value, std::string_view unit,
+              const char* condition) {
+  if (!(value > 0.0)) {
+    r.fail(path, condition,
+           fmt::format("must be > 0{}, got {}{}", unit_suffix(unit), value, unit_suffix(unit)));
+  }
+}
+
+void positive(Reporter& r, const std::string& path, const std::optional<double>& value,
+              std::string_view unit, const char* condition) {
+  if (value) positive(r, path, *value, unit, condition);
+}
+
+void at_least(Reporter& r, const std::string& path, double value, double minimum,
+              std::string_view unit, const char* condition) {
+  if (!(value >= minimum)) {
+    r.fail(path, condition,
+           fmt::format("must be >= {}{}, got {}{}", minimum, unit_suffix(unit), value,
+                       unit_suffix(unit)));
+  }
+}
+
+void at_least(Reporter& r, const std::string& path, const std::optional<double>& value,
+              double minimum, std::string_view unit, const char* condition) {
+  if (value) at_least(r, path, *value, minimum, unit, condition);
+}
+
+/// Reports the second and later uses of a name in a list.
+template <typename T>
+void unique_names(Reporter& r, const std::vector<T>& items, const std::string& list_path,
+                  const char* what, const char* condition) {
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    for (std::size_t j = 0; j < i; ++j) {
+      if (items[i].name == items[j].name) {
+        r.fail(fmt::format("{}[{}].name", list_path, i), condition,
+               fmt::format("duplicate {} name \"{}\", first used by {}[{}]", what, items[i].name,
+                           list_path, j));
+        break;
+      }
+    }
+  }
+}
+
+template <typename T>
+bool defined(const std::vector<T>& items, const std::string& name) {
+  return std::any_of(items.begin(), items.end(), [&](const T& item) { return item.name == name; });
+}
+
+/// " (defined: a, b, c)" for reference errors.
+template <typename T>
+std::string defined_list(const std::vector<T>& items) {
+  std::vector<std::string> names;
+  for (const auto& item : items) names.push_back(item.name);
+  return names.empty() ? std::string(" (none defined)")
+                       : fmt::format(" (defined: {})", fmt::join(names, ", "));
+}
+
+// ---------------------------------------------------------------- checks ----
+
+void check_site(const Project& p, Reporter& r) {
+  positive(r, "site.depth", p.site.depth_m, "m", "depth_positive");
+  positive(r, "site.water_density", p.site.water_density_kg_per_m3, "kg/m^3",
+           "water_density_positive");
+  positive(r, "site.gravity", p.site.gravity_m_per_s2, "m/s^2", "gravity_positive");
+  at_least(r, "site.seabed.friction_axial", p.site.seabed.friction_axial, 0.0, "",
+           "friction_non_negative");
+  at_least(r, "site.seabed.friction_lateral", p.site.seabed.friction_lateral, 0.0, "",
+           "friction_non_negative");
+  positive(r, "site.seabed.normal_stiffness", p.site.seabed.normal_stiffness_Pa_per_m, "Pa/m",
+           "seabed_stiffness_positive");
+}
+
+void check_line_types(const Project& p, Reporter& r) {
+  unique_names(r, p.line_types, "line_types", "line type", "line_type_name_unique");
+  for (std::size_t i = 0; i < p.line_types.size(); ++i) {
+    const LineTypeInput& t = p.line_types[i];
+    const std::string at = fmt::format("line_types[{}]", i);
+    const char* c = "line_type_value_positive";
+    positive(r, at + ".diameter", t.diameter_m, "m", c);
+    positive(r, at + ".mass_per_length", t.mass_per_length_kg_per_m, "kg/m", c);
+    positive(r, at + ".hydrodynamic_diameter", t.hydrodynamic_diameter_m, "m", c);
+    positive(r, at + ".axial_stiffness", t.axial_stiffness_N, "N", c);
+    positive(r, at + ".breaking_load", t.breaking_load_N, "N", c);
+    positive(r, at + ".static_stiffness_mbl", t.static_stiffness_mbl, "", c);
+    if (t.dynamic_stiffness_mbl) {
+      positive(r, at + ".dynamic_stiffness_mbl[0]", (*t.dynamic_stiffness_mbl)[0], "", c);
+      at_least(r, at + ".dynamic_stiffness_mbl[1]", (*t.dynamic_stiffness_mbl)[1], 0.0, "", c);
+    }
+    for (const auto& [key, value] :
+         {std::pair{".drag_normal", t.drag_normal}, std::pair{".drag_axial", t.drag_axial},
+          std::pair{".added_mass_normal", t.added_mass_normal},
+          std::pair{".added_mass_axial", t.added_mass_axial}}) {
+      at_least(r, at + key, value, 0.0, "", "coefficient_non_negative");
+    }
+    if (t.grade && t.kind != LineKind::chain) {
+      r.fail(at + ".grade", "key_not_applicable", "applies to chain line types only");
+    }
+    if (t.kind != LineKind::polyester) {
+      if (t.static_stiffness_mbl) {
+        r.fail(at + ".static_stiffness_mbl", "key_not_applicable",
+               "applies to polyester line types only (give axial_stiffness for other kinds)");
+      }
+      if (t.dynamic_stiffness_mbl) {
+        r.fail(at + ".dynamic_stiffness_mbl", "key_not_applicable",
+               "applies to polyester line types only");
+      }
+    }
+    if (t.kind == LineKind::user) {
+      // No formula can supply these for a user-defined line.
+      if (!t.mass_per_length_kg_per_m && !t.submerged_weight_N_per_m) {
+        r.fail(at, "user_line_type_complete",
+               "a user line type needs mass_per_length (kg/m) or submerged_weight (N/m)");
+      }
+      if (!t.axial_stiffness_N) {
+        r.fail(at, "user_line_type_complete", "a user line type needs axial_stiffness (N)");
+      }
+      if (!t.breaking_load_N) {
+        r.fail(at, "user_line_type_complete", "a user line type needs breaking_load (N)");
+      }
+    }
+  }
+}
+
+/// The EA/MBL/weight of a type: resolved table first, explicit input second.
+LineCheckProperties check_properties(const Project& p, const LineCheckTable& table,
+                                     const std::string& type) {
+  if (const auto it = table.find(type); it != table.end()) return it->second;
+  LineCheckProperties props;
+  for (const auto& t : p.line_types) {
+    if (t.name != type) continue;
+    props.axial_stiffness_N = t.axial_stiffness_N;
+    props.breaking_load_N = t.breaking_load_N;
+    props.submerged_weight_N_per_m = t.submerged_weight_N_per_m;
+  }
+  return props;
+}
+
+/// Length against the at-rest anchor-fairlead geometry (lines too short to
+/// reach without breaking, or so long that they lie slack).
+void check_line_length(const Project& p, const LineCheckTable& table, std::size_t index,
+                       Reporter& r) {
+  const MooringLine& line = p.mooring.lines[index];
+  const std::string at = fmt::format("mooring.lines[{}].segments", index);
+  double total_m = 0.0;
+  for (const auto& s : line.segments) {
+    if (!(s.length_m > 0.0) || !defined(p.line_types, s.type)) return;  // reported elsewhere
+    total_m += s.length_m;
+  }
+  if (line.segments.empty()) return;
+
+  const Eigen::Vector3d fairlead_g = p.hull.reference_point_g + line.fairlead_b;
+  const Eigen::Vector3d chord = fairlead_g - line.anchor_g;
+  const double chord_m = chord.norm();
+  const double span_m = chord.head<2>().norm();
+  const double height_m = chord.z();
+
+  if (total_m < chord_m) {
+    // Straight-line lower bound of the tension (weight ignored): the stretch
+    // chord - L shared by segments in series, T = (chord - L) / sum(L_i / EA_i).
+    const double strain = chord_m / total_m - 1.0;
+    double compliance_per_N = 0.0;
+    std::optional<double> weakest_mbl_N;
+    std::string weakest_type;
+    bool all_known = true;
+    for (const auto& s : line.segments) {
+      const LineCheckProperties props = check_properties(p, table, s.type);
+      if (!props.axial_stiffness_N || !props.breaking_load_N || !(*props.axial_stiffness_N > 0)) {
+        all_known = false;
+        break;
+      }
+      compliance_per_N += s.length_m / *props.axial_stiffness_N;
+      if (!weakest_mbl_N || *props.breaking_load_N < *weakest_mbl_N) {
+        weakest_mbl_N = *props.breaking_load_N;
+        weakest_type = s.type;
+      }
+    }
+    const std::string head = fmt::format(
+        "line too short: total unstretched length {:.6g} m is less than the anchor-fairlead "
+        "distance {:.6g} m at rest, a mean strain of {:.3g} %",
+        total_m, chord_m, 100.0 * strain);
+    if (all_known) {
+      const double tension_N = (chord_m - total_m) / compliance_per_N;
+      if (tension_N > *weakest_mbl_N) {
+        r.fail(at, "line_too_short",
+               fmt::format("{}; that takes a tension of at least {:.4g} N, above the breaking load "
+                           "{:.4g} N of line type \"{}\"",
+                           head, tension_N, *weakest_mbl_N, weakest_type));
+      }
+    } else if (strain > kMaxStrainWithoutProperties) {
+      r.fail(at, "line_too_short",
+             fmt::format("{}, more than {:g} % (EA and MBL of the line types not known)", head,
+                         100.0 * kMaxStrainWithoutProperties));
+    }
+    return;
+  }
+
+  // Slack: hanging straight down from the fairlead and lying on the seabed,
+  // the line still reaches past the anchor, so the horizontal tension is zero.
+  // Only meaningful for a sinking line without buoys.
+  const bool has_buoy =
+      std::any_of(line.attachments.begin(), line.attachments.end(),
+                  [](const Attachment& a) { return a.kind == AttachmentKind::buoy; });
+  const bool buoyant_segment =
+      std::any_of(line.segments.begin(), line.segments.end(), [&](const LineSegment& s) {
+        const auto w = check_properties(p, table, s.type).submerged_weight_N_per_m;
+        return w && *w <= 0.0;
+      });
+  if (has_buoy || buoyant_segment || height_m <= 0.0) return;
+  if (total_m - height_m > span_m) {
+    r.fail(at, "line_slack",
+           fmt::format("line lies slack: total length {:.6g} m minus the fairlead height {:.6g} m "
+                       "above the anchor exceeds the horizontal span {:.6g} m by {:.4g} m, so the "
+                       "line has zero horizontal tension at rest",
+                       total_m, height_m, span_m, total_m - height_m - span_m));
+  }
+}
+
+void check_mooring(const Project& p, const LineCheckTable& table, Reporter& r) {
+  unique_names(r, p.mooring.lines, "mooring.lines", "mooring line", "line_name_unique");
+  const double seabed_z = -p.site.depth_m;
+  for (std::size_t i = 0; i < p.mooring.lines.size(); ++i) {
+    const MooringLine& line = p.mooring.lines[i];
+    const std::string at = fmt::format("mooring.lines[{}]", i);
+    if (line.segments.empty()) {
+      r.fail(at + ".segments", "line_has_segments", "a line needs at least one segment");
+    }
+    for (std::size_t s = 0; s < line.segments.size(); ++s) {
+      const std::string sat = fmt::format("{}.segments[{}]", at, s);
+      positive(r, sat + ".length", line.segments[s].length_m, "m", "segment_length_positive");
+      if (!defined(p.line_types, line.segments[s].type)) {
+        r.fail(sat + ".type", "line_type_defined",
+               fmt::format("undefined line type \"{}\"{}", line.segments[s].type,
+                           defined_list(p.line_types)));
+      }
+    }
+    for (std::size_t a = 0; a < line.attachments.size(); ++a) {
+      const Attachment& att = line.attachments[a];
+      const std::string aat = fmt::format("{}.attachments[{}]", at, a);
+      const int joints = static_cast<int>(line.segments.size()) - 1;
+      if (att.after_segment < 0 || att.after_segment >= joints) {
+        r.fail(aat + ".after_segment", "attachment_joint_exists",
+               joints > 0
+                   ? fmt::format("must be a joint between segments, 0 to {}, got {}", joints - 1,
+                                 att.after_segment)
+                   : fmt::format("the line has no joint (one segment), got {}", att.after_segment));
+      }
+      at_least(r, aat + ".mass", att.mass_kg, 0.0, "kg", "attachment_value_non_negative");
+      at_least(r, aat + ".volume", att.volume_m3, 0.0, "m^3", "attachment_value_non_negative");
+    }
+    if (p.site.depth_m > 0.0) {
+      const double z = line.anchor_g.z();
+      if (z < seabed_z - kSeabedTolerance_m) {
+        r.fail(at + ".anchor", "anchor_below_seabed",
+               fmt::format("anchor is {:.6g} m below the seabed: z = {} m, seabed at z = {} m",
+                           seabed_z - z, z, seabed_z));
+      } else if (z > 0.0) {
+        r.fail(
+            at + ".anchor", "anchor_above_water",
+            fmt::format("anchor is above the water: z = {} m, must be in [{}, 0] m", z, seabed_z));
+      }
+    }
+    const double fairlead_z_g = p.hull.reference_point_g.z() + line.fairlead_b.z();
+    if (fairlead_z_g > 0.0) {
+      r.fail(at + ".fairlead", "fairlead_above_water",
+             fmt::format("fairlead is above the water at rest: z = {:.6g} m global (hull reference "
+                         "point z {} m + fairlead z {} m), must be <= 0 m",
+                         fairlead_z_g, p.hull.reference_point_g.z(), line.fairlead_b.z()));
+    }
+    check_line_length(p, table, i, r);
+  }
+  unique_names(r, p.mooring.groups, "mooring.groups", "line group", "group_name_unique");
+  for (std::size_t g = 0; g < p.mooring.groups.size(); ++g) {
+    const auto& names = p.mooring.groups[g].lines;
+    for (std::size_t k = 0; k < names.size(); ++k) {
+      if (!defined(p.mooring.lines, names[k])) {
+        r.fail(fmt::format("mooring.groups[{}].lines[{}]", g, k), "line_defined",
+               fmt::format("undefined mooring line \"{}\"{}", names[k],
+                           defined_list(p.mooring.lines)));
+      }
+    }
+  }
+}
+
+void check_hull(const Project& p, Reporter& r) {
+  const Hull& h = p.hull;
+  positive(r, "hull.mass", h.mass_kg, "kg", "hull_value_positive");
+  if (h.radii_of_gyration_m) {
+    for (int k = 0; k < 3; ++k) {
+      positive(r, fmt::format("hull.radii_of_gyration[{}]", k), (*h.radii_of_gyration_m)[k], "m",
+               "hull_value_positive");
+    }
+  }
+  if (h.inertia_kg_m2) {
+    for (int k = 0; k < 3; ++k) {
+      positive(r, fmt::format("hull.inertia[{}]", k), (*h.inertia_kg_m2)(k, k), "kg m^2",
+               "hull_value_positive");
+    }
+  }
+  const bool all_values = h.displaced_volume_m3 && h.center_of_buoyancy_b && h.waterplane_area_m2 &&
+                          h.waterplane_inertia_m4;
+  if (!all_values && !h.hydrostatics_file) {
+    r.fail("hull", "hull_hydrostatics_complete",
+           "give displaced_volume, center_of_buoyancy, waterplane_area and waterplane_inertia, or "
+           "a hydrostatics_file (.hst)");
+  }
+  positive(r, "hull.displaced_volume", h.displaced_volume_m3, "m^3", "hull_value_positive");
+  positive(r, "hull.waterplane_area", h.waterplane_area_m2, "m^2", "hull_value_positive");
+  if (h.waterplane_inertia_m4) {
+    for (int k = 0; k < 2; ++k) {
+      positive(r, fmt::format("hull.waterplane_inertia[{}]", k), (*h.waterplane_inertia_m4)[k],
+               "m^4", "hull_value_positive");
+    }
+  }
+  if (h.hydrostatics_file && !std::filesystem::is_regular_file(*h.hydrostatics_file)) {
+    r.fail("hull.hydrostatics_file", "file_exists",
+           fmt::format("file not found: {}", h.hydrostatics_file->string()));
+  }
+}
+
+void check_riser_section(const Riser& riser, const RiserSection& s, const std::string& at,
+                         Reporter& r) {
+  const char* c = "riser_value_positive";
+  positive(r, at + ".length", s.length_m, "m", c);
+  positive(r, at + ".outer_diameter", s.outer_diameter_m, "m", c);
+  at_least(r, at + ".contents_density", s.contents_density_kg_per_m3, 0.0, "kg/m^3",
+           "riser_value_non_negative");
+  positive(r, at + ".wall_thickness", s.wall_thickness_m, "m", c);
+  positive(r, at + ".youngs_modulus", s.youngs_modulus_Pa, "Pa", c);
+  positive(r, at + ".yield_stress", s.yield_stress_Pa, "Pa", c);
+  positive(r, at + ".steel_density", s.steel_density_kg_per_m3, "kg/m^3", c);
+  positive(r, at + ".coating_thickness", s.coating_thickness_m, "m", c);
+  positive(r, at + ".coating_density", s.coating_density_kg_per_m3, "kg/m^3", c);
+  positive(r, at + ".buoyancy_density", s.buoyancy_density_kg_per_m3, "kg/m^3", c);
+  positive(r, at + ".axial_stiffness", s.axial_stiffness_N, "N", c);
+  positive(r, at + ".bending_stiffness", s.bending_stiffness_N_m2, "N m^2", c);
+  positive(r, at + ".mass_per_length", s.mass_per_length_kg_per_m, "kg/m", c);
+  for (const auto& [key, value] :
+       {std::pair{".drag_normal", s.drag_normal}, std::pair{".drag_axial", s.drag_axial},
+        std::pair{".added_mass_normal", s.added_mass_normal},
+        std::pair{".added_mass_axial", s.added_mass_axial}}) {
+    at_least(r, at + key, value, 0.0, "", "coefficient_non_negative");
+  }
+  if (s.wall_thickness_m && s.outer_diameter_m > 0.0 &&
+      !(*s.wall_thickness_m < 0.5 * s.outer_diameter_m)) {
+    r.fail(at + ".wall_thickness", "wall_thinner_than_radius",
+           fmt::format("must be < outer_diameter / 2 = {} m, got {} m", 0.5 * s.outer_diameter_m,
+                       *s.wall_thickness_m));
+  }
+  if (s.coating_thickness_m.has_value() != s.coating_density_kg_per_m3.has_value()) {
+    r.fail(at, "coating_complete",
+           "give coating_thickness (m) and coating_density (kg/m^3) together");
+  }
+  if (s.buoyancy_outer_diameter_m.has_value() != s.buoyancy_density_kg_per_m3.has_value()) {
+    r.fail(at, "buoyancy_complete",
+           "give buoyancy_outer_diameter (m) and buoyancy_density (kg/m^3) together");
+  }
+  if (s.buoyancy_outer_diameter_m && !(*s.buoyancy_outer_diameter_m > s.outer_diameter_m)) {
+    r.fail(at + ".buoyancy_outer_diameter", "buoyancy_outside_pipe",
+           fmt::format("must be > outer_diameter {} m, got {} m", s.outer_diameter_m,
+                       *s.buoyancy_outer_diameter_m));
+  }
+  if (s.buoyancy_outer_diameter_m && riser.kind != RiserKind::lazy_wave) {
+    r.fail(at + ".buoyancy_outer_diameter", "key_not_applicable",
+           fmt::format("buoyancy sections apply to lazy_wave risers only, got kind {}",
+                       to_string(riser.kind)));
+  }
+  const bool steel = s.wall_thickness_m && s.youngs_modulus_Pa && s.steel_density_kg_per_m3;
+  if (riser.kind != RiserKind::flexible) {
+    for (const auto& [key, present] :
+         {std::pair{"wall_thickness (m)", s.wall_thickness_m.has_value()},
+          std::pair{"youngs_modulus (Pa)", s.youngs_modulus_Pa.has_value()},
+          std::pair{"yield_stress (Pa)", s.yield_stress_Pa.has_value()},
+          std::pair{"steel_density (kg/m^3)", s.steel_density_kg_per_m3.has_value()}}) {
+      if (!present) {
+        r.fail(at, "steel_riser_complete",
+               fmt::format("a {} riser section needs {}", to_string(riser.kind), key));
+      }
+    }
+  } else if (!steel &&
+             !(s.axial_stiffness_N && s.bending_stiffness_N_m2 && s.mass_per_length_kg_per_m)) {
+    r.fail(at, "flexible_riser_complete",
+           "a flexible riser section needs axial_stiffness (N), bending_stiffness (N m^2) and "
+           "mass_per_length (kg/m), or the steel wall_thickness, youngs_modulus and steel_density");
+  }
+}
+
+void check_risers(const Project& p, Reporter& r) {
+  unique_names(r, p.risers, "risers", "riser", "riser_name_unique");
+  for (std::size_t i = 0; i < p.risers.size(); ++i) {
+    const Riser& riser = p.risers[i];
+    const std::string at = fmt::format("risers[{}]", i);
+    if (!(riser.top_angle_rad >= 0.0 && riser.top_angle_rad < std::numbers::pi / 2)) {
+      r.fail(at + ".top_angle_deg", "top_angle_range",
+             fmt::format("must be in [0, 90) deg from vertical, got {:.6g} deg",
+                         riser.top_angle_rad * kRadToDeg));
+    }
+    if (riser.sections.empty()) {
+      r.fail(at + ".sections", "riser_has_sections", "a riser needs at least one section");
+    }
+    for (std::size_t s = 0; s < riser.sections.size(); ++s) {
+      check_riser_section(riser, riser.sections[s], fmt::format("{}.sections[{}]", at, s), r);
+    }
+    const bool has_buoyancy =
+        std::any_of(riser.sections.begin(), riser.sections.end(),
+                    [](const RiserSection& s) { return s.buoyancy_outer_diameter_m.has_value(); });
+    if (riser.kind == RiserKind::lazy_wave && !has_buoyancy) {
+      r.fail(at + ".sections", "lazy_wave_buoyancy_section",
+             "a lazy_wave riser needs a buoyancy section (buoyancy_outer_diameter, "
+             "buoyancy_density)");
+    }
+  }
+}
+
+void check_environments(const Project& p, Reporter& r) {
+  unique_names(r, p.environments, "environments", "environment", "environment_name_unique");
+  for (std::size_t i = 0; i < p.environments.size(); ++i) {
+    const Environment& e = p.environments[i];
+    const std::string at = fmt::format("environments[{}]", i);
+    if (e.waves) {
+      positive(r, at + ".waves.hs", e.waves->hs_m, "m", "hs_positive");
+      positive(r, at + ".waves.tp", e.waves->tp_s, "s", "tp_positive");
+      at_least(r, at + ".waves.gamma", e.waves->gamma, 1.0, "", "gamma_at_least_one");
+      if (e.waves->gamma && e.waves->spectrum != WaveSpectrum::jonswap) {
+        r.fail(at + ".waves.gamma", "key_not_applicable",
+               fmt::format("applies to the jonswap spectrum only, got spectrum {}",
+                           to_string(e.waves->spectrum)));
+      }
+      positive(r, at + ".waves.spreading_s", e.waves->spreading_s, "", "spreading_positive");
+    }
+    if (e.wind) {
+      at_least(r, at + ".wind.speed", e.wind->speed_m_per_s, 0.0, "m/s", "wind_speed_non_negative");
+      positive(r, at + ".wind.reference_height", e.wind->reference_height_m, "m",
+               "reference_height_positive");
+    }
+    if (e.current) {
+      const auto& profile = e.current->profile;
+      if (profile.empty()) {
+        r.fail(at + ".current.profile", "current_profile_valid",
+               "needs at least one [z m, speed m/s] point");
+      }
+      for (std::size_t k = 0; k < profile.size(); ++k) {
+        const std::string pat = fmt::format("{}.current.profile[{}]", at, k);
+        const double z = profile[k].z_m;
+        if (z > 0.0 || z < -p.site.depth_m - kSeabedTolerance_m) {
+          r.fail(pat + "[0]", "current_profile_valid",
+                 fmt::format("z must be in [{}, 0] m (seabed to surface), got {} m",
+                             -p.site.depth_m, z));
+        }
+        if (k > 0 && !(z < profile[k - 1].z_m)) {
+          r.fail(pat + "[0]", "current_profile_valid",
+                 fmt::format("z must decrease from the surface down, got {} m after {} m", z,
+                             profile[k - 1].z_m));
+        }
+        at_least(r, pat + "[1]", profile[k].speed_m_per_s, 0.0, "m/s", "current_profile_valid");
+      }
+    }
+  }
+}
+
+void check_load_cases(const Project& p, Reporter& r) {
+  unique_names(r, p.load_cases, "load_cases", "load case", "load_case_name_unique");
+  for (std::size_t i = 0; i < p.load_cases.size(); ++i) {
+    const LoadCase& c = p.load_cases[i];
+    const std::string at = fmt::format("load_cases[{}]", i);
+    if (!defined(p.environments, c.environment)) {
+      r.fail(at + ".environment", "environment_defined",
+             fmt::format("undefined environment \"{}\"{}", c.environment,
+                         defined_list(p.environments)));
+    }
+    if (c.damaged_line && !defined(p.mooring.lines, *c.damaged_line)) {
+      r.fail(at + ".damaged_line", "line_defined",
+             fmt::format("undefined mooring line \"{}\"{}", *c.damaged_line,
+                         defined_list(p.mooring.lines)));
+    }
+  }
+}
+
+void check_criteria(const Project& p, Reporter& r) {
+  const MooringCriteria& m = p.criteria.mooring;
+  const char* c = "safety_factor_at_least_one";
+  if (m.api_rp_2sk) {
+    const std::string at = "criteria.mooring.safety_factors";
+    at_least(r, at + ".intact_quasi_static", m.api_rp_2sk->intact_quasi_static, 1.0, "", c);
+    at_least(r, at + ".intact_dynamic", m.api_rp_2sk->intact_dynamic, 1.0, "", c);
+    at_least(r, at + ".damaged_quasi_static", m.api_rp_2sk->damaged_quasi_static, 1.0, "", c);
+    at_least(r, at + ".damaged_dynamic", m.api_rp_2sk->damaged_dynamic, 1.0, "", c);
+  }
+  if (m.dnv_os_e301) {
+    const std::string at = "criteria.mooring.partial_factors";
+    at_least(r, at + ".uls_mean", m.dnv_os_e301->uls_mean, 1.0, "", c);
+    at_least(r, at + ".uls_dynamic", m.dnv_os_e301->uls_dynamic, 1.0, "", c);
+    at_least(r, at + ".als_mean", m.dnv_os_e301->als_mean, 1.0, "", c);
+    at_least(r, at + ".als_dynamic", m.dnv_os_e301->als_dynamic, 1.0, "", c);
+  }
+  positive(r, "criteria.max_offset_pct_depth", p.criteria.max_offset_pct_depth, "%",
+           "offset_limit_positive");
+}
+
+}  // namespace
+
+std::vector<InputIssue> check_project(const Project& project, const LineCheckTable& line_types) {
+  std::vector<InputIssue> issues;
+  Reporter r(project, issues);
+  check_site(project, r);
+  check_line_types(project, r);
+  check_mooring(project, line_types, r);
+  check_hull(project, r);
+  check_risers(project, r);
+  check_environments(project, r);
+  check_load_cases(project, r);
+  check_criteria(project, r);
+  unique_names(r, project.stages, "stages", "stage", "stage_name_unique");
+  std::stable_sort(issues.begin(), issues.end(), [](const InputIssue& a, const InputIssue& b) {
+    return std::pair(a.line.value_or(0), a.column.value_or(0)) <
+           std::pair(b.line.value_or(0), b.column.value_or(0));
+  });
+  return issues;
+}
+
+void validate_project(const Project& project, const LineCheckTable& line_types) {
+  auto issues = check_project(project, line_types);
+  if (!issues.empty()) throw InputError(std::move(issues));
+}
+
+}  // namespace spiral::design

@@ -1,0 +1,242 @@
+// The validation pass: valid projects pass; each named condition is reported
+// with the position of the offending node; all issues come together.
+
+#include "design/project_validation.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+
+#include "design/project_loader.hpp"
+#include "unit/project_fixture.hpp"
+
+namespace spiral::design {
+namespace {
+
+const std::string kSample = std::string(SPIRAL_SOURCE_DIR) + "/tests/data/format-sample.yaml";
+
+std::vector<InputIssue> check(const std::string& text, const LineCheckTable& table = {}) {
+  return check_project(parse_project(text, "test.yaml"), table);
+}
+
+std::vector<std::string> conditions(const std::vector<InputIssue>& issues) {
+  std::vector<std::string> out;
+  for (const auto& issue : issues) out.push_back(issue.condition);
+  return out;
+}
+
+std::string all(const std::vector<InputIssue>& issues) {
+  std::string out;
+  for (const auto& issue : issues) out += format_issue(issue) + "\n";
+  return out;
+}
+
+/// One issue with the given condition and path.
+void expect_single(const std::vector<InputIssue>& issues, const std::string& condition,
+                   const std::string& path) {
+  ASSERT_EQ(issues.size(), 1u) << all(issues);
+  EXPECT_EQ(issues[0].condition, condition) << all(issues);
+  EXPECT_EQ(issues[0].path, path) << all(issues);
+  EXPECT_TRUE(issues[0].line.has_value()) << all(issues);
+}
+
+const std::string kSteelRiser = R"(risers:
+  - name: R1
+    kind: scr
+    hang_off: [30.0, 0.0, -10.0]
+    azimuth_deg: 0.0
+    top_angle_deg: 10.0
+    sections:
+      - {length: 300.0, outer_diameter: 0.3, wall_thickness: 0.02, youngs_modulus: 2.07e11,
+         yield_stress: 4.48e8, steel_density: 7850.0, contents_density: 800.0}
+)";
+
+TEST(ProjectValidation, FormatSampleIsValid) {
+  const auto issues = check_project(load_project(kSample));
+  EXPECT_TRUE(issues.empty()) << all(issues);
+}
+
+TEST(ProjectValidation, MinimalProjectWithRiserIsValid) {
+  const auto issues = check(kMinimal + kSteelRiser);
+  EXPECT_TRUE(issues.empty()) << all(issues);
+  EXPECT_NO_THROW(validate_project(parse_project(kMinimal, "test.yaml")));
+}
+
+TEST(ProjectValidation, NegativeLengthMessageHasTheDocumentedForm) {
+  const auto issues = check(replace(kMinimal, "length: 550.0", "length: -20"));
+  ASSERT_EQ(issues.size(), 1u) << all(issues);
+  EXPECT_EQ(issues[0].condition, "segment_length_positive");
+  EXPECT_EQ(format_issue(issues[0]),
+            "test.yaml:16:29: mooring.lines[0].segments[0].length: must be > 0 m, got -20 m");
+}
+
+TEST(ProjectValidation, UndefinedLineTypeIsReported) {
+  const auto issues = check(replace(kMinimal, "{type: c,", "{type: chain,"));
+  expect_single(issues, "line_type_defined", "mooring.lines[0].segments[0].type");
+  EXPECT_EQ(issues[0].message, "undefined line type \"chain\" (defined: c)");
+  EXPECT_EQ(issues[0].line, 16);
+}
+
+TEST(ProjectValidation, UndefinedReferencesInLoadCasesAndGroups) {
+  std::string text =
+      replace(kMinimal, "environment: calm}", "environment: storm, damaged_line: L9}");
+  text = replace(text, "hull:\n", "  groups:\n    - {name: g, lines: [L1, L2]}\nhull:\n");
+  const auto issues = check(text);
+  ASSERT_EQ(issues.size(), 3u) << all(issues);
+  EXPECT_EQ(conditions(issues),
+            (std::vector<std::string>{"line_defined", "environment_defined", "line_defined"}));
+  EXPECT_EQ(issues[0].path, "mooring.groups[0].lines[1]");
+}
+
+TEST(ProjectValidation, DuplicateNamesAreReported) {
+  const std::string second_type =
+      "  - {name: c, kind: user, diameter: 0.1, mass_per_length: 90.0, axial_stiffness: 1.0e9, "
+      "breaking_load: 5.0e6}\nmooring:\n";
+  std::string text = replace(kMinimal, "mooring:\n", second_type);
+  text = replace(text, "  - {name: lc1, environment: calm}\n",
+                 "  - {name: lc1, environment: calm}\n  - {name: lc1, environment: calm}\n");
+  const auto issues = check(text);
+  ASSERT_EQ(issues.size(), 2u) << all(issues);
+  EXPECT_EQ(issues[0].condition, "line_type_name_unique");
+  EXPECT_EQ(issues[0].path, "line_types[1].name");
+  EXPECT_EQ(issues[0].message, "duplicate line type name \"c\", first used by line_types[0]");
+  EXPECT_EQ(issues[1].condition, "load_case_name_unique");
+}
+
+TEST(ProjectValidation, AnchorBelowSeabed) {
+  const auto issues = check(replace(kMinimal, "azimuth_deg: 0.0}", "azimuth_deg: 0.0, z: -105.0}"));
+  expect_single(issues, "anchor_below_seabed", "mooring.lines[0].anchor");
+  EXPECT_EQ(issues[0].message, "anchor is 5 m below the seabed: z = -105 m, seabed at z = -100 m");
+}
+
+TEST(ProjectValidation, AnchorOnTheSeabedWithinRoundOffIsAccepted) {
+  const auto issues =
+      check(replace(kMinimal, "azimuth_deg: 0.0}", "azimuth_deg: 0.0, z: -100.0000000001}"));
+  EXPECT_TRUE(issues.empty()) << all(issues);
+}
+
+TEST(ProjectValidation, FairleadAboveWater) {
+  const auto issues = check(replace(kMinimal, "[10.0, 0.0, -10.0]", "[10.0, 0.0, 5.0]"));
+  expect_single(issues, "fairlead_above_water", "mooring.lines[0].fairlead");
+  EXPECT_EQ(issues[0].line, 14);
+}
+
+TEST(ProjectValidation, FairleadAboveWaterCountsTheHullReferencePoint) {
+  const auto issues = check(
+      replace(kMinimal, "reference_point: [0.0, 0.0, 0.0]", "reference_point: [0.0, 0.0, 12.0]"));
+  expect_single(issues, "fairlead_above_water", "mooring.lines[0].fairlead");
+}
+
+// Geometry of kMinimal at rest: span 490 m, fairlead 90 m above the anchor,
+// chord sqrt(490^2 + 90^2) = 498.2 m.
+
+TEST(ProjectValidation, LineTooShortToReachWithoutBreaking) {
+  // 450 m against 498.2 m: strain 10.7 %, EA 1e9 N -> about 1.07e8 N >> MBL 5e6 N.
+  const auto issues = check(replace(kMinimal, "length: 550.0", "length: 450.0"));
+  expect_single(issues, "line_too_short", "mooring.lines[0].segments");
+  EXPECT_NE(issues[0].message.find("above the breaking load 5e+06 N of line type \"c\""),
+            std::string::npos)
+      << issues[0].message;
+}
+
+TEST(ProjectValidation, TautLineSlightlyShorterThanChordIsAcceptedWhenItHolds) {
+  // 495 m: strain 0.65 %; with EA 1e9 N the tension is ~6.5e6 N, below an MBL of 2e7 N.
+  const LineCheckTable resolved = {{"c", {1.0e9, 2.0e7, 900.0}}};
+  EXPECT_TRUE(check(replace(kMinimal, "length: 550.0", "length: 495.0"), resolved).empty());
+  // ...but not with the explicit MBL of 5e6 N.
+  const auto issues = check(replace(kMinimal, "length: 550.0", "length: 495.0"));
+  expect_single(issues, "line_too_short", "mooring.lines[0].segments");
+}
+
+TEST(ProjectValidation, LineTooShortWithoutPropertiesUsesTheStrainLimit) {
+  const LineCheckTable unknown = {{"c", {}}};
+  EXPECT_TRUE(check(replace(kMinimal, "length: 550.0", "length: 495.0"), unknown).empty());
+  const auto issues = check(replace(kMinimal, "length: 550.0", "length: 440.0"), unknown);
+  expect_single(issues, "line_too_short", "mooring.lines[0].segments");
+  EXPECT_NE(issues[0].message.find("more than 10 %"), std::string::npos) << issues[0].message;
+}
+
+TEST(ProjectValidation, LineTooLongLiesSlack) {
+  // 700 - 90 = 610 m > 490 m span.
+  const auto issues = check(replace(kMinimal, "length: 550.0", "length: 700.0"));
+  expect_single(issues, "line_slack", "mooring.lines[0].segments");
+  EXPECT_NE(issues[0].message.find("by 120 m"), std::string::npos) << issues[0].message;
+}
+
+TEST(ProjectValidation, RiserWallThickerThanRadius) {
+  const auto issues =
+      check(kMinimal + replace(kSteelRiser, "wall_thickness: 0.02", "wall_thickness: 0.2"));
+  expect_single(issues, "wall_thinner_than_radius", "risers[0].sections[0].wall_thickness");
+  EXPECT_EQ(issues[0].message, "must be < outer_diameter / 2 = 0.15 m, got 0.2 m");
+}
+
+TEST(ProjectValidation, LazyWaveNeedsABuoyancySection) {
+  const auto issues = check(kMinimal + replace(kSteelRiser, "kind: scr", "kind: lazy_wave"));
+  expect_single(issues, "lazy_wave_buoyancy_section", "risers[0].sections");
+  const std::string buoyant = replace(kSteelRiser, "kind: scr", "kind: lazy_wave") +
+                              "      - {length: 200.0, outer_diameter: 0.3, wall_thickness: 0.02,\n"
+                              "         youngs_modulus: 2.07e11, yield_stress: 4.48e8,\n"
+                              "         steel_density: 7850.0, contents_density: 800.0,\n"
+                              "         buoyancy_outer_diameter: 0.9, buoyancy_density: 500.0}\n";
+  EXPECT_TRUE(check(kMinimal + buoyant).empty()) << all(check(kMinimal + buoyant));
+}
+
+TEST(ProjectValidation, BadSpectrumParameters) {
+  const std::string text = replace(kMinimal, "  - name: calm\n",
+                                   "  - name: calm\n    waves: {spectrum: jonswap, hs: 3.0, tp: "
+                                   "0.0, gamma: 0.5, heading_deg: 0}\n");
+  const auto issues = check(text);
+  ASSERT_EQ(issues.size(), 2u) << all(issues);
+  EXPECT_EQ(conditions(issues), (std::vector<std::string>{"tp_positive", "gamma_at_least_one"}));
+  EXPECT_EQ(issues[0].message, "must be > 0 s, got 0 s");
+  EXPECT_EQ(issues[1].message, "must be >= 1, got 0.5");
+}
+
+TEST(ProjectValidation, CurrentProfileMustBeInTheWaterAndSorted) {
+  const std::string text = replace(kMinimal, "  - name: calm\n",
+                                   "  - name: calm\n    current: {heading_deg: 0, profile: "
+                                   "[[0.0, 1.0], [-50.0, 0.5], [-40.0, 0.4], [-150.0, 0.1]]}\n");
+  const auto issues = check(text);
+  ASSERT_EQ(issues.size(), 2u) << all(issues);
+  EXPECT_EQ(issues[0].path, "environments[0].current.profile[2][0]");
+  EXPECT_EQ(issues[1].path, "environments[0].current.profile[3][0]");
+}
+
+TEST(ProjectValidation, SafetyFactorsBelowOne) {
+  const auto issues = check(replace(kMinimal, "{code: api_rp_2sk}",
+                                    "{code: api_rp_2sk, safety_factors: {damaged_dynamic: 0.9}}"));
+  expect_single(issues, "safety_factor_at_least_one",
+                "criteria.mooring.safety_factors.damaged_dynamic");
+}
+
+TEST(ProjectValidation, HullHydrostaticsMustBeComplete) {
+  const auto issues = check(replace(kMinimal, "  waterplane_area: 400.0\n", ""));
+  expect_single(issues, "hull_hydrostatics_complete", "hull");
+}
+
+TEST(ProjectValidation, SeveralErrorsAreReportedAtOnceInFileOrder) {
+  std::string text = replace(kMinimal, "depth: 100.0", "depth: -100.0");
+  text = replace(text, "length: 550.0", "length: -20");
+  text = replace(text, "[10.0, 0.0, -10.0]", "[10.0, 0.0, 5.0]");
+  text = replace(text, "environment: calm}", "environment: storm}");
+  text += replace(kSteelRiser, "wall_thickness: 0.02", "wall_thickness: 0.2");
+  try {
+    validate_project(parse_project(text, "test.yaml"));
+    FAIL() << "no InputError";
+  } catch (const InputError& e) {
+    const auto& issues = e.issues();
+    EXPECT_EQ(conditions(issues),
+              (std::vector<std::string>{"depth_positive", "fairlead_above_water",
+                                        "segment_length_positive", "environment_defined",
+                                        "wall_thinner_than_radius"}))
+        << e.what();
+    const std::string what = e.what();
+    EXPECT_EQ(std::count(what.begin(), what.end(), '\n'), 4);
+    EXPECT_NE(what.find("test.yaml:4:10: site.depth: must be > 0 m, got -100 m"), std::string::npos)
+        << what;
+  }
+}
+
+}  // namespace
+}  // namespace spiral::design
