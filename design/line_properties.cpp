@@ -29,11 +29,16 @@ struct Hydro {
 /// spot-checked against a DNV-OS-E302 break-load table at d = 50 mm. [S]
 double chain_mbl_coefficient(ChainGrade grade) {
   switch (grade) {
-    case ChainGrade::R3: return 0.0223;
-    case ChainGrade::R3S: return 0.0249;
-    case ChainGrade::R4: return 0.0274;
-    case ChainGrade::R4S: return 0.0304;
-    case ChainGrade::R5: return 0.0320;
+    case ChainGrade::R3:
+      return 0.0223;
+    case ChainGrade::R3S:
+      return 0.0249;
+    case ChainGrade::R4:
+      return 0.0274;
+    case ChainGrade::R4S:
+      return 0.0304;
+    case ChainGrade::R5:
+      return 0.0320;
   }
   throw std::logic_error("chain_mbl_coefficient: unknown grade");
 }
@@ -47,11 +52,16 @@ struct StudlessModulus {
 };
 StudlessModulus studless_modulus(ChainGrade grade) {
   switch (grade) {
-    case ChainGrade::R3: return {5.40, 0.0040, "R3"};
-    case ChainGrade::R3S: return {5.40, 0.0040, "R3 (R3S assumed as R3)"};
-    case ChainGrade::R4: return {5.45, 0.0025, "R4"};
-    case ChainGrade::R4S: return {5.45, 0.0025, "R4 (R4S assumed as R4)"};
-    case ChainGrade::R5: return {6.00, 0.0033, "R5"};
+    case ChainGrade::R3:
+      return {5.40, 0.0040, "R3"};
+    case ChainGrade::R3S:
+      return {5.40, 0.0040, "R3 (R3S assumed as R3)"};
+    case ChainGrade::R4:
+      return {5.45, 0.0025, "R4"};
+    case ChainGrade::R4S:
+      return {5.45, 0.0025, "R4 (R4S assumed as R4)"};
+    case ChainGrade::R5:
+      return {6.00, 0.0033, "R5"};
   }
   throw std::logic_error("studless_modulus: unknown grade");
 }
@@ -67,10 +77,10 @@ constexpr Hydro kStudlinkChainHydro{1.376, 0.741, 1.0, 0.5};
 
 // --- polyester (reference-platforms.md §2.3; MoorPy fits to 7 catalogues) ---
 
-constexpr double kPolyesterMass_kg_per_m3 = 679.0;  // m = 679 d^2 kg/m [S]
+constexpr double kPolyesterMass_kg_per_m3 = 679.0;    // m = 679 d^2 kg/m [S]
 constexpr double kPolyesterMaterialDensity = 1380.0;  // kg/m^3, MoorPy `density` [S]
-constexpr double kPolyesterMbl_N_per_m2 = 308e6;       // MBL = 308e6 d^2 N [S]
-constexpr double kPolyesterStaticMbl = 14.0;           // EA_s / MBL, MoorPy yaml default [S]
+constexpr double kPolyesterMbl_N_per_m2 = 308e6;      // MBL = 308e6 d^2 N [S]
+constexpr double kPolyesterStaticMbl = 14.0;          // EA_s / MBL, MoorPy yaml default [S]
 // EA_d / MBL = 11.6 + 0.40 L_m (L_m in % MBL); yaml gives 40.0 per unit fraction [S].
 constexpr std::array<double, 2> kPolyesterDynamicMbl{11.6, 0.40};
 constexpr Hydro kPolyesterHydro{2.021, 0.0, 1.1, 0.15};  // MoorPy yaml; Cd_ax not given [S]
@@ -140,8 +150,7 @@ void require_non_negative(const LineTypeInput& in, const std::optional<double>& 
 void reject_foreign_inputs(const LineTypeInput& in) {
   auto reject = [&](bool present, const char* key, const char* kinds) {
     if (present) {
-      throw std::invalid_argument(prefix(in) + ": " + key + " applies to " + kinds +
-                                  " types only");
+      throw std::invalid_argument(prefix(in) + ": " + key + " applies to " + kinds + " types only");
     }
   };
   reject(in.kind != LineKind::chain && in.grade.has_value(), "grade", "chain");
@@ -161,8 +170,7 @@ void validate(const LineTypeInput& in, double rho, double g) {
                                 fmt_double(rho));
   }
   if (!(g > 0.0 && std::isfinite(g))) {
-    throw std::invalid_argument(prefix(in) + ": gravity must be > 0 (m/s^2), got " +
-                                fmt_double(g));
+    throw std::invalid_argument(prefix(in) + ": gravity must be > 0 (m/s^2), got " + fmt_double(g));
   }
   reject_foreign_inputs(in);
   require_positive(in, in.mass_per_length_kg_per_m, "mass_per_length", "kg/m");
@@ -202,8 +210,8 @@ struct Formula {
 Formula chain_formula(const LineTypeInput& in) {
   const double d = in.diameter_m;
   const double d_mm = d * 1000.0;
-  const bool studlink = in.chain_construction.value_or(ChainConstruction::studless) ==
-                        ChainConstruction::studlink;
+  const bool studlink =
+      in.chain_construction.value_or(ChainConstruction::studless) == ChainConstruction::studlink;
   Formula f;
   // Mass and volume-equivalent diameter: OrcaFlex "Chain"; MoorPy [S].
   f.mass = (studlink ? 21.9e3 : 19.9e3) * d * d;
@@ -236,7 +244,8 @@ Formula chain_formula(const LineTypeInput& in) {
     f.MBL_src = std::string("chain ") + to_string(*in.grade) + ": " + fmt_double(c) +
                 " d^2 (44 - 0.08 d) kN, d in mm (DNV-OS-E301 via ddjokic)";
   }
-  const bool need_grade = (!f.has_MBL && !in.breaking_load_N) || (!f.has_EA && !in.axial_stiffness_N);
+  const bool need_grade =
+      (!f.has_MBL && !in.breaking_load_N) || (!f.has_EA && !in.axial_stiffness_N);
   if (need_grade) {
     throw std::invalid_argument(prefix(in) + " needs grade (R3 | R3S | R4 | R4S | R5) " +
                                 "unless breaking_load and axial_stiffness are given");
@@ -258,8 +267,9 @@ Formula polyester_formula(const LineTypeInput& in) {
   // MoorPy derives d_vol from the material density: sqrt(4 * 679 / (pi * 1380)) = 0.7915.
   f.d_vol = std::sqrt(4.0 * kPolyesterMass_kg_per_m3 / (kPi * kPolyesterMaterialDensity)) * d;
   f.hydro = kPolyesterHydro;
-  f.hydro_src = "polyester: d_vol 0.7915 d (1380 kg/m^3); Cd 2.021, Ca 1.1, Ca_ax 0.15 on d_vol "
-                "(MoorPy)";
+  f.hydro_src =
+      "polyester: d_vol 0.7915 d (1380 kg/m^3); Cd 2.021, Ca 1.1, Ca_ax 0.15 on d_vol "
+      "(MoorPy)";
   f.MBL = kPolyesterMbl_N_per_m2 * d * d;
   f.has_MBL = true;
   f.MBL_src = "polyester 308e6 d^2 N (MoorPy catalogue fit)";
@@ -293,8 +303,9 @@ Formula wire_formula(const LineTypeInput& in) {
     f.mass_src = "six-strand IWRC 3.9897 d^2 t/m (OrcaFlex fit via MoorPy)";
     f.EA_src = "six-strand IWRC 4.04e7 d^2 kN (OrcaFlex fit via MoorPy)";
     f.MBL_src = "six-strand IWRC 633358 d^2 kN (OrcaFlex fit via MoorPy)";
-    f.hydro_src = "six-strand: d_vol 0.80 d; Cd 1.506 on d_vol (= 1.205 on d, from MoorPy wire); "
-                  "Ca 1.0, Ca_ax 0 (U)";
+    f.hydro_src =
+        "six-strand: d_vol 0.80 d; Cd 1.506 on d_vol (= 1.205 on d, from MoorPy wire); "
+        "Ca 1.0, Ca_ax 0 (U)";
   }
   return f;
 }
@@ -313,7 +324,8 @@ Formula user_formula(const LineTypeInput& in) {
                                 fmt_double(in.diameter_m));
   }
   Formula f;
-  f.d_vol = has_diameter ? in.diameter_m : 0.0;  // for user types `diameter` is the hydrodynamic one
+  f.d_vol =
+      has_diameter ? in.diameter_m : 0.0;  // for user types `diameter` is the hydrodynamic one
   f.hydro = kUserDefaultHydro;
   f.hydro_src = "user: diameter as given; default Cd 1.2, Cd_ax 0, Ca 1.0, Ca_ax 0 (C)";
   return f;
@@ -327,10 +339,18 @@ LineTypeProperties resolve_line_type(const LineTypeInput& in, double water_densi
 
   Formula f;
   switch (in.kind) {
-    case LineKind::chain: f = chain_formula(in); break;
-    case LineKind::polyester: f = polyester_formula(in); break;
-    case LineKind::wire: f = wire_formula(in); break;
-    case LineKind::user: f = user_formula(in); break;
+    case LineKind::chain:
+      f = chain_formula(in);
+      break;
+    case LineKind::polyester:
+      f = polyester_formula(in);
+      break;
+    case LineKind::wire:
+      f = wire_formula(in);
+      break;
+    case LineKind::user:
+      f = user_formula(in);
+      break;
   }
 
   LineTypeProperties p;
@@ -363,8 +383,8 @@ LineTypeProperties resolve_line_type(const LineTypeInput& in, double water_densi
   p.added_mass_axial = in.added_mass_axial.value_or(f.hydro.added_mass_axial);
   const bool any_hydro_explicit = in.hydrodynamic_diameter_m || in.drag_normal || in.drag_axial ||
                                   in.added_mass_normal || in.added_mass_axial;
-  p.hydrodynamics_source = any_hydro_explicit ? f.hydro_src + "; explicit values override"
-                                              : f.hydro_src;
+  p.hydrodynamics_source =
+      any_hydro_explicit ? f.hydro_src + "; explicit values override" : f.hydro_src;
 
   // Archimedes on the volume-equivalent diameter.
   const double d_h = p.hydrodynamic_diameter_m;
@@ -395,37 +415,50 @@ double dynamic_axial_stiffness_N(const LineTypeProperties& properties, double me
 
 const char* to_string(LineKind kind) {
   switch (kind) {
-    case LineKind::chain: return "chain";
-    case LineKind::wire: return "wire";
-    case LineKind::polyester: return "polyester";
-    case LineKind::user: return "user";
+    case LineKind::chain:
+      return "chain";
+    case LineKind::wire:
+      return "wire";
+    case LineKind::polyester:
+      return "polyester";
+    case LineKind::user:
+      return "user";
   }
   return "unknown";
 }
 
 const char* to_string(ChainGrade grade) {
   switch (grade) {
-    case ChainGrade::R3: return "R3";
-    case ChainGrade::R3S: return "R3S";
-    case ChainGrade::R4: return "R4";
-    case ChainGrade::R4S: return "R4S";
-    case ChainGrade::R5: return "R5";
+    case ChainGrade::R3:
+      return "R3";
+    case ChainGrade::R3S:
+      return "R3S";
+    case ChainGrade::R4:
+      return "R4";
+    case ChainGrade::R4S:
+      return "R4S";
+    case ChainGrade::R5:
+      return "R5";
   }
   return "unknown";
 }
 
 const char* to_string(ChainConstruction construction) {
   switch (construction) {
-    case ChainConstruction::studless: return "studless";
-    case ChainConstruction::studlink: return "studlink";
+    case ChainConstruction::studless:
+      return "studless";
+    case ChainConstruction::studlink:
+      return "studlink";
   }
   return "unknown";
 }
 
 const char* to_string(WireConstruction construction) {
   switch (construction) {
-    case WireConstruction::six_strand: return "six_strand";
-    case WireConstruction::spiral_strand: return "spiral_strand";
+    case WireConstruction::six_strand:
+      return "six_strand";
+    case WireConstruction::spiral_strand:
+      return "spiral_strand";
   }
   return "unknown";
 }

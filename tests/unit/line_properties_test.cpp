@@ -4,18 +4,18 @@
 
 #include "design/line_properties.hpp"
 
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
 #include <string>
 
-#include <gtest/gtest.h>
-
 namespace spiral::design {
 namespace {
 
-constexpr double kRho = 1025.0;     // kg/m^3, reference-platforms.md conventions
-constexpr double kG = 9.80665;      // m/s^2
+constexpr double kRho = 1025.0;  // kg/m^3, reference-platforms.md conventions
+constexpr double kG = 9.80665;   // m/s^2
 constexpr double kPi = std::numbers::pi;
 
 // The reference tables print rounded values (kN, MN, N/m to the unit; kg/m to
@@ -30,9 +30,9 @@ constexpr double kFloatSlack = 1e-9;
 ::testing::AssertionResult RoundsTo(double value, double table_value, double last_digit) {
   const double tolerance = kHalfDigit * last_digit + kFloatSlack * std::abs(table_value);
   if (std::abs(value - table_value) <= tolerance) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << "computed " << value << " does not round to the table's "
-                                       << table_value << " (last digit " << last_digit
-                                       << ", tolerance " << tolerance << ")";
+  return ::testing::AssertionFailure()
+         << "computed " << value << " does not round to the table's " << table_value
+         << " (last digit " << last_digit << ", tolerance " << tolerance << ")";
 }
 
 LineTypeInput Chain(double d_m, ChainGrade grade,
@@ -58,7 +58,7 @@ LineTypeInput Oc4User() {
   LineTypeInput in;
   in.name = "chain76";
   in.kind = LineKind::user;
-  in.diameter_m = 0.0766;               // MoorDyn/MAP deck [S]
+  in.diameter_m = 0.0766;                // MoorDyn/MAP deck [S]
   in.mass_per_length_kg_per_m = 113.35;  // [S]
   in.axial_stiffness_N = 7.536e8;        // [S]
   in.breaking_load_N = 4.884e6;          // R3 76 mm formula [D]
@@ -110,8 +110,8 @@ TEST(LineProperties, ChainHydrodynamicsAreMoorPyOnVolumeDiameter) {
 }
 
 TEST(LineProperties, SuperGradesUseTheBaseGradeModulus) {
-  for (auto [super, base] : {std::pair{ChainGrade::R3S, ChainGrade::R3},
-                             std::pair{ChainGrade::R4S, ChainGrade::R4}}) {
+  for (auto [super, base] :
+       {std::pair{ChainGrade::R3S, ChainGrade::R3}, std::pair{ChainGrade::R4S, ChainGrade::R4}}) {
     const auto s = resolve_line_type(Chain(0.147, super), kRho, kG);
     const auto b = resolve_line_type(Chain(0.147, base), kRho, kG);
     EXPECT_DOUBLE_EQ(s.axial_stiffness_N, b.axial_stiffness_N);
@@ -122,7 +122,8 @@ TEST(LineProperties, SuperGradesUseTheBaseGradeModulus) {
 
 TEST(LineProperties, StudlinkChain) {
   const double d = 0.1;
-  const auto stud = resolve_line_type(Chain(d, ChainGrade::R4, ChainConstruction::studlink), kRho, kG);
+  const auto stud =
+      resolve_line_type(Chain(d, ChainGrade::R4, ChainConstruction::studlink), kRho, kG);
   const auto less = resolve_line_type(Chain(d, ChainGrade::R4), kRho, kG);
   EXPECT_DOUBLE_EQ(stud.mass_per_length_kg_per_m, 21.9e3 * d * d);
   EXPECT_DOUBLE_EQ(stud.hydrodynamic_diameter_m, 1.89 * d);
@@ -152,7 +153,8 @@ TEST(LineProperties, PolyesterReproducesReferenceTable) {
     EXPECT_TRUE(RoundsTo(p.breaking_load_N / 1e3, row.MBL_kN, 1.0));
     EXPECT_TRUE(RoundsTo(p.axial_stiffness_N / 1e6, row.EA_s14_MN, 1.0));
     const double mean_20pct = 0.20 * p.breaking_load_N;
-    EXPECT_TRUE(RoundsTo(dynamic_axial_stiffness_N(p, mean_20pct) / 1e6, row.EA_d_moorpy_20_MN, 1.0));
+    EXPECT_TRUE(
+        RoundsTo(dynamic_axial_stiffness_N(p, mean_20pct) / 1e6, row.EA_d_moorpy_20_MN, 1.0));
 
     LineTypeInput abs = Polyester(d);
     abs.dynamic_stiffness_mbl = std::array<double, 2>{16.0, 0.35};  // ABS form (MoorDyn test)
