@@ -3,7 +3,8 @@
 // construction, optional explicit values) and the resolved physical
 // properties the engine uses (mass, submerged weight, EA, MBL, hydrodynamic
 // coefficients), derived with published formulas where not given explicitly.
-// The formulas and their sources are listed in docs/project-format.md.
+// The formulas and their sources are listed in docs/line-types.md
+// ("Line-type property formulas"); docs/project-format.md links to it.
 
 #include <array>
 #include <optional>
@@ -55,17 +56,27 @@ struct LineTypeProperties {
   double added_mass_normal = 0.0;
   double added_mass_axial = 0.0;
   std::string mass_source, stiffness_source, breaking_load_source;
+  /// Where the hydrodynamic diameter and the Cd/Ca set come from ("explicit" or the formula).
+  std::string hydrodynamics_source;
 };
 
 /// Derives the properties of a line type. Throws std::invalid_argument naming
-/// the missing input when a `user` type lacks a value no formula can supply.
+/// the missing input when a `user` type lacks a value no formula can supply,
+/// when a chain without explicit MBL/EA has no grade, when an input is not
+/// positive (diameter, explicit mass/EA/MBL/diameter, water density, gravity)
+/// or when an input does not apply to the kind (e.g. `grade` on a polyester
+/// type). Messages start with "line_types: <kind> type '<name>' ...".
 LineTypeProperties resolve_line_type(const LineTypeInput& input, double water_density_kg_per_m3,
                                      double gravity_m_per_s2);
 
 /// Dynamic axial stiffness at a mean load (polyester; other kinds return the static EA).
+/// Polyester: EA_dyn = (a + b * L_m) * MBL with L_m = 100 * mean_tension_N / MBL (% MBL).
+/// Throws std::invalid_argument if mean_tension_N < 0 or is not finite.
 double dynamic_axial_stiffness_N(const LineTypeProperties& properties, double mean_tension_N);
 
 const char* to_string(LineKind kind);
 const char* to_string(ChainGrade grade);
+const char* to_string(ChainConstruction construction);
+const char* to_string(WireConstruction construction);
 
 }  // namespace spiral::design
