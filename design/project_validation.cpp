@@ -14,6 +14,29 @@
 #include <set>
 
 namespace spiral::design {
+
+InputIssue make_issue(const Project& project, const std::string& path, std::string condition,
+                      std::string message) {
+  InputIssue issue;
+  issue.file = project.source_file;
+  // A value that was defaulted has no node: use its closest written parent.
+  std::string at = path;
+  while (true) {
+    if (const auto it = project.source_map.find(at); it != project.source_map.end()) {
+      issue.line = it->second.line;
+      issue.column = it->second.column;
+      break;
+    }
+    const auto cut = at.find_last_of(".[");
+    if (cut == std::string::npos) break;
+    at.resize(cut);
+  }
+  issue.path = path;
+  issue.message = std::move(message);
+  issue.condition = std::move(condition);
+  return issue;
+}
+
 namespace {
 
 constexpr double kRadToDeg = 180.0 / std::numbers::pi;
@@ -24,24 +47,7 @@ class Reporter {
   Reporter(const Project& project, std::vector<InputIssue>& out) : project_(project), out_(out) {}
 
   void fail(const std::string& path, std::string condition, std::string message) {
-    InputIssue issue;
-    issue.file = project_.source_file;
-    // A value that was defaulted has no node: use its closest written parent.
-    std::string at = path;
-    while (true) {
-      if (const auto it = project_.source_map.find(at); it != project_.source_map.end()) {
-        issue.line = it->second.line;
-        issue.column = it->second.column;
-        break;
-      }
-      const auto cut = at.find_last_of(".[");
-      if (cut == std::string::npos) break;
-      at.resize(cut);
-    }
-    issue.path = path;
-    issue.message = std::move(message);
-    issue.condition = std::move(condition);
-    out_.push_back(std::move(issue));
+    out_.push_back(make_issue(project_, path, std::move(condition), std::move(message)));
   }
 
  private:
