@@ -76,6 +76,12 @@ struct CatenaryProfilePoint {
   double x_m = 0.0;           ///< horizontal, from the anchor towards the fairlead
   double z_m = 0.0;           ///< vertical, above the anchor
   double tension_N = 0.0;     ///< effective tension
+  /// Components of the effective tension, N: the force the part of the line
+  /// towards the fairlead exerts on the part towards the anchor, along +x and +z.
+  double horizontal_N = 0.0;
+  double vertical_N = 0.0;
+  int segment = 0;            ///< index of the segment the point belongs to
+  bool on_seabed = false;     ///< the point rests on the seabed
 };
 
 struct CatenarySolution {
