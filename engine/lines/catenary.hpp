@@ -66,7 +66,9 @@ struct CatenaryOptions {
   /// for its span (an elastic line can always be stretched; beyond this it would
   /// break long before). Default 30 % exceeds every mooring material's break strain.
   double max_strain = 0.3;
-  /// Profile points per segment (0: no profile). Touchdown points are added.
+  /// Profile intervals per segment (0: no profile): each segment gives
+  /// profile_points_per_segment + 1 evenly spaced points including both its ends
+  /// (so a joint appears once per adjacent segment); the touchdown point is added.
   int profile_points_per_segment = 0;
 };
 

@@ -88,8 +88,9 @@ void fill_catenary_profile(const CatenaryLine& line, const CatenaryGeometry& geo
     const double V_susp_bottom = td_piece ? 0.0 : V_top[i] - w * seg.length_m;
 
     std::vector<double> local;
-    const bool keep_joint_start = i == 0 || view.joint_load(i - 1) != 0.0;
-    for (int j = keep_joint_start ? 0 : 1; j <= points_per_segment; ++j) {
+    // Both ends of every segment: a joint appears once per adjacent segment
+    // (the tension jumps across a clump or buoy).
+    for (int j = 0; j <= points_per_segment; ++j) {
       local.push_back(seg.length_m * j / points_per_segment);
     }
     if (td_piece) local.push_back(ell);
