@@ -66,7 +66,9 @@ struct CatenaryOptions {
   /// for its span (an elastic line can always be stretched; beyond this it would
   /// break long before). Default 30 % exceeds every mooring material's break strain.
   double max_strain = 0.3;
-  /// Profile points per segment (0: no profile). Touchdown points are added.
+  /// Profile intervals per segment (0: no profile): each segment gives
+  /// profile_points_per_segment + 1 evenly spaced points including both its ends
+  /// (so a joint appears once per adjacent segment); the touchdown point is added.
   int profile_points_per_segment = 0;
 };
 
@@ -76,6 +78,12 @@ struct CatenaryProfilePoint {
   double x_m = 0.0;           ///< horizontal, from the anchor towards the fairlead
   double z_m = 0.0;           ///< vertical, above the anchor
   double tension_N = 0.0;     ///< effective tension
+  /// Components of the effective tension, N: the force the part of the line
+  /// towards the fairlead exerts on the part towards the anchor, along +x and +z.
+  double horizontal_N = 0.0;
+  double vertical_N = 0.0;
+  int segment = 0;            ///< index of the segment the point belongs to
+  bool on_seabed = false;     ///< the point rests on the seabed
 };
 
 struct CatenarySolution {
