@@ -94,7 +94,12 @@ mooring:
       fairlead: [40.868, 0.0, -14.0]
       segments:
         - {type: c, length: -20.0}
-hull: {reference_point: [0, 0, 0], mass: 1.0e7, center_of_gravity: [0, 0, -10], radii_of_gyration: [30, 30, 30]}
+hull: {reference_point: [0, 0, 0], mass: 1.0e7, center_of_gravity: [0, 0, -10], radii_of_gyration: [30, 30, 30],
+       displaced_volume: 1.0e4, center_of_buoyancy: [0, 0, -12], waterplane_area: 370.0,
+       waterplane_inertia: [1.4e5, 1.4e5]}
+environments: [{name: calm}]
+load_cases: [{name: still, environment: calm}]
+criteria: {mooring: {code: api_rp_2sk}}
 )");
   const auto result = run_spiral("validate '" + path.string() + "'");
   EXPECT_EQ(result.exit_code, app::kExitBadInput);

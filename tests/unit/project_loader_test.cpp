@@ -143,7 +143,7 @@ TEST(ProjectLoader, FormatSampleLoadsWithExpectedValues) {
   // Positions are kept for the validation pass.
   const auto at = p.source_map.find("mooring.lines[1].segments[1].length");
   ASSERT_NE(at, p.source_map.end());
-  EXPECT_EQ(at->second.line, 51);
+  EXPECT_EQ(at->second.line, 55);  // the `{type: poly254, length: 600.0}` row of the sample
 }
 
 TEST(ProjectLoader, UnknownKeyIsReportedWithPositionAndSuggestion) {
