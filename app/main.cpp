@@ -91,10 +91,13 @@ int main(int argc, char** argv) {
     return app::kExitBadInput;
   } catch (const engine::SolverError& error) {
     const auto& d = error.diagnostics();
+    fmt::print(stderr, "solver failure: {}\n", error.what());
+    if (d.iterations > 0) {
+      fmt::print(stderr, "  after {} iterations, residual {:.3g} {}\n", d.iterations, d.residual,
+                 d.residual_unit);
+    }
     fmt::print(stderr,
-               "solver failure: {}\n  after {} iterations, residual {:.3g} {}\n"
-               "  check the line lengths against the anchor-fairlead span and the hull offset.\n",
-               error.what(), d.iterations, d.residual, d.residual_unit);
+               "  check the line lengths against the anchor-fairlead span and the hull offset.\n");
     return app::kExitSolverFailure;
   } catch (const std::exception& error) {
     fmt::print(stderr, "internal error: {}\n", error.what());

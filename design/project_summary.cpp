@@ -9,7 +9,13 @@ namespace spiral::design {
 
 namespace {
 constexpr double kRadToDeg = 180.0 / std::numbers::pi;
+
+/// Plan azimuth in [0, 360) degrees, counter-clockwise from global +x.
+double azimuth_deg(const Eigen::Vector3d& point) {
+  const double a = std::atan2(point.y(), point.x()) * kRadToDeg;
+  return a < 0.0 ? a + 360.0 : a;
 }
+}  // namespace
 
 std::string project_summary(const Project& project, const std::vector<LineTypeProperties>& line_types) {
   std::string out;
@@ -40,7 +46,7 @@ std::string project_summary(const Project& project, const std::vector<LineTypePr
     }
     const Eigen::Vector3d& a = line.anchor_g;
     out += fmt::format("  {:<10} {:>9.2f} {:>10.1f} {:>11.1f} {:>10.1f}  {}\n", line.name,
-                       std::atan2(a.y(), a.x()) * kRadToDeg, std::hypot(a.x(), a.y()), a.z(), length,
+                       azimuth_deg(a), std::hypot(a.x(), a.y()), a.z(), length,
                        segments);
   }
   out += fmt::format("\nHull: mass {:.4g} kg, CoG ({:.2f}, {:.2f}, {:.2f}) m\n", project.hull.mass_kg,
