@@ -1,0 +1,75 @@
+#pragma once
+// A line (mooring line or riser) attached to the hull, as the coupled static
+// analysis sees it: given where its top end is, the force it exerts on the
+// hull there and the 3×3 tangent stiffness of that force.
+//
+// Implementations keep their last solution as a warm start for the next
+// call (a workspace, not model data): an equilibrium or stiffness iteration
+// moves the top end by small steps, and a warm start cuts each solve to a
+// few Newton iterations. One object per analysis; not shared across threads.
+
+#include <memory>
+#include <string>
+
+#include <Eigen/Core>
+
+#include "engine/lines/catenary.hpp"
+
+namespace spiral::engine {
+
+/// Response of a line to the position of its top end.
+struct LineEndResponse {
+  Eigen::Vector3d force_g = Eigen::Vector3d::Zero();  ///< force of the line on the hull, N, global
+  /// K = −dF/dx of that force w.r.t. the top-end position, N/m, global.
+  Eigen::Matrix3d stiffness_g = Eigen::Matrix3d::Zero();
+  double top_tension_N = 0.0;
+  int iterations = 0;
+};
+
+class StaticLine {
+ public:
+  virtual ~StaticLine() = default;
+  virtual const std::string& name() const = 0;
+  /// Top-end position in the hull body frame, relative to the hull reference point, m.
+  virtual const Eigen::Vector3d& attachment_b() const = 0;
+  /// Solves the line with its top end at `attachment_g` (global, m). Throws
+  /// SolverError naming the line when it cannot.
+  virtual LineEndResponse solve(const Eigen::Vector3d& attachment_g) = 0;
+  /// Forgets the warm start (the next solve starts cold).
+  virtual void reset() = 0;
+};
+
+/// A quasi-static elastic catenary between a fixed anchor and the hull.
+/// Current does not act on it (use the FE line for that).
+class CatenaryStaticLine final : public StaticLine {
+ public:
+  CatenaryStaticLine(std::string name, Eigen::Vector3d anchor_g, Eigen::Vector3d attachment_b,
+                     double anchor_height_above_seabed_m, CatenaryLine line,
+                     CatenaryOptions options = {});
+  const std::string& name() const override { return name_; }
+  const Eigen::Vector3d& attachment_b() const override { return attachment_b_; }
+  LineEndResponse solve(const Eigen::Vector3d& attachment_g) override;
+  void reset() override { warm_start_.reset(); }
+  /// The full catenary solution of the last solve.
+  const CatenarySolution& last_solution() const { return last_; }
+
+ private:
+  std::string name_;
+  Eigen::Vector3d anchor_g_;
+  Eigen::Vector3d attachment_b_;
+  double anchor_height_above_seabed_m_;
+  CatenaryLine line_;
+  CatenaryOptions options_;
+  std::optional<CatenaryGuess> warm_start_;
+  CatenarySolution last_;
+};
+
+/// The 3×3 stiffness of a catenary's fairlead force in global axes from its
+/// in-plane tangent d(H, V)/d(XF, ZF): the in-plane terms along the line's
+/// horizontal direction e, plus the lateral "string" stiffness H / XF across it
+/// (the horizontal force turns with the line when the fairlead moves sideways).
+Eigen::Matrix3d catenary_fairlead_stiffness(const Eigen::Matrix2d& tangent_HV_by_XZ,
+                                            double horizontal_force_N, double horizontal_span_m,
+                                            const Eigen::Vector3d& horizontal_direction_g);
+
+}  // namespace spiral::engine
