@@ -28,8 +28,7 @@ class FileFormatError : public std::runtime_error {
  private:
   static std::string compose(const std::string& file, std::size_t line,
                              const std::string& message) {
-    return line == 0 ? file + ": " + message
-                     : file + ":" + std::to_string(line) + ": " + message;
+    return line == 0 ? file + ": " + message : file + ":" + std::to_string(line) + ": " + message;
   }
 
   std::string file_;

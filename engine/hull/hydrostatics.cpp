@@ -1,10 +1,10 @@
 #include "engine/hull/hydrostatics.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <stdexcept>
 #include <string>
-
-#include <fmt/format.h>
 
 namespace spiral::engine {
 namespace {
@@ -19,14 +19,14 @@ void require(bool condition, const char* field, const char* expectation, double 
 
 void require_finite(const Eigen::Vector3d& v, const char* field) {
   if (!v.allFinite()) {
-    throw std::invalid_argument(fmt::format("{}: must be finite, got ({}, {}, {}) m", field,
-                                            v.x(), v.y(), v.z()));
+    throw std::invalid_argument(
+        fmt::format("{}: must be finite, got ({}, {}, {}) m", field, v.x(), v.y(), v.z()));
   }
 }
 
 void validate(const Seawater& water) {
-  require(water.density_kg_per_m3 > 0.0, "water.density_kg_per_m3", "> 0",
-          water.density_kg_per_m3, "kg/m^3");
+  require(water.density_kg_per_m3 > 0.0, "water.density_kg_per_m3", "> 0", water.density_kg_per_m3,
+          "kg/m^3");
   require(water.gravity_m_per_s2 > 0.0, "water.gravity_m_per_s2", "> 0", water.gravity_m_per_s2,
           "m/s^2");
 }
@@ -134,7 +134,7 @@ Vector6d linear_hydrostatic_load(const HydrostaticRestoring& restoring,
     throw std::invalid_argument("linear_hydrostatic_load: displacement must be finite");
   }
   // First-order Taylor expansion about the rest position (WAMIT §3.1 / Faltinsen
-  // §2.6): F = F0 - C xi.
+  // 1990 ch. 2): F = F0 - C xi.
   return restoring.rest_force - restoring.total_6x6 * displacement;
 }
 

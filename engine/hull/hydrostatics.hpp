@@ -8,8 +8,11 @@
 // Restoring force F = -C xi for a small displacement xi about the rest position.
 //
 // Formulation: WAMIT User Manual v7, §3.1 "Hydrostatic data" (the C_ij below,
-// restated by Newman, "Marine Hydrodynamics" (1977) §6.16 and Faltinsen,
-// "Sea Loads on Ships and Offshore Structures" (1990) §2.6-2.7 / §5.1):
+// restated by Newman, "Marine Hydrodynamics" (1977) ch. 6 and Faltinsen,
+// "Sea Loads on Ships and Offshore Structures" (1990) ch. 2, restoring
+// coefficients). Section numbers throughout are recalled, not re-read;
+// the formulas were checked against the box-barge closed form and the OC4
+// numbers (tests/validation/hydrostatics_test.cpp):
 //   C33 = rho g A_wp
 //   C34 = C43 =  rho g  S_y          (S_y = ∫ y dA = A_wp y_f)
 //   C35 = C53 = -rho g  S_x          (S_x = ∫ x dA = A_wp x_f)
@@ -50,26 +53,28 @@ using Vector6d = Eigen::Matrix<double, 6, 1>;
 
 /// Waterplane of the body at rest, integrals about the reference point's axes.
 struct WaterplaneProperties {
-  double area_m2 = 0.0;                 ///< A_wp = ∫ dA, >= 0
+  double area_m2 = 0.0;  ///< A_wp = ∫ dA, >= 0
   /// Centroid (x_f, y_f) of the waterplane relative to the reference point, m.
   /// Zero (the default) drops the heave-roll/pitch couplings C34, C35.
   Eigen::Vector2d centroid_m = Eigen::Vector2d::Zero();
-  double second_moment_xx_m4 = 0.0;     ///< S_yy = ∫ y^2 dA (roll), >= 0
-  double second_moment_yy_m4 = 0.0;     ///< S_xx = ∫ x^2 dA (pitch), >= 0
-  double product_moment_xy_m4 = 0.0;    ///< S_xy = ∫ x y dA
+  double second_moment_xx_m4 = 0.0;   ///< S_yy = ∫ y^2 dA (roll), >= 0
+  double second_moment_yy_m4 = 0.0;   ///< S_xx = ∫ x^2 dA (pitch), >= 0
+  double product_moment_xy_m4 = 0.0;  ///< S_xy = ∫ x y dA
 };
 
 /// Hydrostatic data of the body at rest.
 struct HydrostaticBody {
   WaterplaneProperties waterplane;
-  double displaced_volume_m3 = 0.0;     ///< V, >= 0
-  Eigen::Vector3d centre_of_buoyancy_m = Eigen::Vector3d::Zero();  ///< (x_b, y_b, z_b) from the ref point
+  double displaced_volume_m3 = 0.0;  ///< V, >= 0
+  Eigen::Vector3d centre_of_buoyancy_m =
+      Eigen::Vector3d::Zero();  ///< (x_b, y_b, z_b) from the ref point
 };
 
 /// Mass and centre of gravity of the floating system (hull + ballast + topsides).
 struct BodyMass {
-  double mass_kg = 0.0;                 ///< m, >= 0
-  Eigen::Vector3d centre_of_gravity_m = Eigen::Vector3d::Zero();  ///< (x_g, y_g, z_g) from the ref point
+  double mass_kg = 0.0;  ///< m, >= 0
+  Eigen::Vector3d centre_of_gravity_m =
+      Eigen::Vector3d::Zero();  ///< (x_g, y_g, z_g) from the ref point
 };
 
 struct HydrostaticRestoring {
@@ -114,6 +119,7 @@ HydrostaticRestoring hydrostatic_restoring(const Matrix6d& buoyancy_6x6, double 
 /// rotations and heave within the wall-sided part of the hull; for larger
 /// motions use a panel/member model (not in scope). Throws std::invalid_argument
 /// for a non-finite displacement.
-Vector6d linear_hydrostatic_load(const HydrostaticRestoring& restoring, const Vector6d& displacement);
+Vector6d linear_hydrostatic_load(const HydrostaticRestoring& restoring,
+                                 const Vector6d& displacement);
 
 }  // namespace spiral::engine

@@ -1,5 +1,7 @@
 #include "engine/hull/wamit_hst.hpp"
 
+#include <fmt/format.h>
+
 #include <array>
 #include <charconv>
 #include <cmath>
@@ -8,8 +10,6 @@
 #include <stdexcept>
 #include <string_view>
 #include <vector>
-
-#include <fmt/format.h>
 
 namespace spiral::engine {
 namespace {
@@ -21,8 +21,8 @@ std::vector<std::string_view> split_whitespace(std::string_view line) {
     const std::size_t start = line.find_first_not_of(" \t\r\f\v", pos);
     if (start == std::string_view::npos) break;
     const std::size_t end = line.find_first_of(" \t\r\f\v", start);
-    tokens.push_back(line.substr(start, end == std::string_view::npos ? line.size() - start
-                                                                      : end - start));
+    tokens.push_back(
+        line.substr(start, end == std::string_view::npos ? line.size() - start : end - start));
     pos = end == std::string_view::npos ? line.size() : end;
   }
   return tokens;
@@ -68,9 +68,9 @@ WamitHstData parse_wamit_hst(std::istream& text, const std::string& file_name,
         fmt::format("wamit_hst.ulen_m: must be > 0, got {} m", scaling.ulen_m));
   }
   if (!(scaling.water.density_kg_per_m3 > 0.0) || !(scaling.water.gravity_m_per_s2 > 0.0)) {
-    throw std::invalid_argument(fmt::format(
-        "wamit_hst.water: density and gravity must be > 0, got {} kg/m^3 and {} m/s^2",
-        scaling.water.density_kg_per_m3, scaling.water.gravity_m_per_s2));
+    throw std::invalid_argument(
+        fmt::format("wamit_hst.water: density and gravity must be > 0, got {} kg/m^3 and {} m/s^2",
+                    scaling.water.density_kg_per_m3, scaling.water.gravity_m_per_s2));
   }
   WamitHstData data;
   data.file = file_name;
@@ -82,17 +82,17 @@ WamitHstData parse_wamit_hst(std::istream& text, const std::string& file_name,
     const auto tokens = split_whitespace(line);
     if (tokens.empty()) continue;
     if (tokens.size() != 3) {
-      throw FileFormatError(file_name, line_number,
-                            fmt::format("expected 3 fields `I J C(I,J)`, got {}: \"{}\"",
-                                        tokens.size(), line));
+      throw FileFormatError(
+          file_name, line_number,
+          fmt::format("expected 3 fields `I J C(I,J)`, got {}: \"{}\"", tokens.size(), line));
     }
     int i = 0;
     int j = 0;
     double value = 0.0;
     if (!parse_int(tokens[0], i) || !parse_int(tokens[1], j)) {
-      throw FileFormatError(file_name, line_number,
-                            fmt::format("DOF indices must be integers, got \"{}\" \"{}\"",
-                                        tokens[0], tokens[1]));
+      throw FileFormatError(
+          file_name, line_number,
+          fmt::format("DOF indices must be integers, got \"{}\" \"{}\"", tokens[0], tokens[1]));
     }
     if (i < 1 || j < 1) {
       throw FileFormatError(file_name, line_number,
@@ -106,9 +106,9 @@ WamitHstData parse_wamit_hst(std::istream& text, const std::string& file_name,
                       i, j));
     }
     if (!parse_real(tokens[2], value)) {
-      throw FileFormatError(file_name, line_number,
-                            fmt::format("C({},{}) must be a finite real number, got \"{}\"", i, j,
-                                        tokens[2]));
+      throw FileFormatError(
+          file_name, line_number,
+          fmt::format("C({},{}) must be a finite real number, got \"{}\"", i, j, tokens[2]));
     }
     auto& seen = seen_on_line[i - 1][j - 1];
     if (seen != 0) {
@@ -117,10 +117,9 @@ WamitHstData parse_wamit_hst(std::istream& text, const std::string& file_name,
     }
     seen = line_number;
     data.nondimensional(i - 1, j - 1) = value;
-    data.restoring_6x6(i - 1, j - 1) = scaling.water.density_kg_per_m3 *
-                                       scaling.water.gravity_m_per_s2 *
-                                       std::pow(scaling.ulen_m, wamit_hst_length_exponent(i, j)) *
-                                       value;
+    data.restoring_6x6(i - 1, j - 1) =
+        scaling.water.density_kg_per_m3 * scaling.water.gravity_m_per_s2 *
+        std::pow(scaling.ulen_m, wamit_hst_length_exponent(i, j)) * value;
     ++data.entries_read;
   }
   if (text.bad()) {

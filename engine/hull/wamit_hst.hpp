@@ -22,14 +22,15 @@
 // reader returns the file's matrix as it is; see hydrostatics.hpp to add the
 // gravity part to a buoyancy-only matrix.
 //
+// (WAMIT section numbers are recalled, not re-read.)
+//
 // Errors: spiral::engine::FileFormatError with the file name and the 1-based
 // line (missing/unreadable file: line 0, message names the file).
 
+#include <Eigen/Core>
 #include <filesystem>
 #include <istream>
 #include <string>
-
-#include <Eigen/Core>
 
 #include "engine/common/file_format_error.hpp"
 #include "engine/common/seawater.hpp"
@@ -43,9 +44,10 @@ struct WamitHstScaling {
 
 struct WamitHstData {
   Eigen::Matrix<double, 6, 6> nondimensional = Eigen::Matrix<double, 6, 6>::Zero();
-  Eigen::Matrix<double, 6, 6> restoring_6x6 = Eigen::Matrix<double, 6, 6>::Zero();  ///< SI: N/m, N, N m/rad
-  int entries_read = 0;  ///< number of `I J C` lines
-  std::string file;      ///< name used in messages
+  Eigen::Matrix<double, 6, 6> restoring_6x6 =
+      Eigen::Matrix<double, 6, 6>::Zero();  ///< SI: N/m, N, N m/rad
+  int entries_read = 0;                     ///< number of `I J C` lines
+  std::string file;                         ///< name used in messages
 };
 
 /// Length exponent k of the (i, j) entry (1-based indices 1..6); throws

@@ -1,5 +1,7 @@
 #include "engine/lines/riser_section.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -8,14 +10,14 @@
 #include <stdexcept>
 #include <string>
 
-#include <fmt/format.h>
-
 namespace spiral::engine {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-double circle_area(double diameter_m) { return 0.25 * kPi * diameter_m * diameter_m; }
+double circle_area(double diameter_m) {
+  return 0.25 * kPi * diameter_m * diameter_m;
+}
 
 void require(bool condition, const char* field, const std::string& expectation, double value,
              const char* unit) {
@@ -45,8 +47,8 @@ void validate(const PipeSection& s, const Seawater& water) {
             "> 0", e.mass_per_length_kg_per_m, "kg/m");
   }
   if (s.coating) {
-    require(s.coating->thickness_m > 0.0, "pipe.coating.thickness_m", "> 0",
-            s.coating->thickness_m, "m");
+    require(s.coating->thickness_m > 0.0, "pipe.coating.thickness_m", "> 0", s.coating->thickness_m,
+            "m");
     require(s.coating->density_kg_per_m3 >= 0.0, "pipe.coating.density_kg_per_m3", ">= 0",
             s.coating->density_kg_per_m3, "kg/m^3");
   }
@@ -57,10 +59,18 @@ void validate(const PipeSection& s, const Seawater& water) {
     require(s.buoyancy->density_kg_per_m3 >= 0.0, "pipe.buoyancy.density_kg_per_m3", ">= 0",
             s.buoyancy->density_kg_per_m3, "kg/m^3");
   }
-  require(water.density_kg_per_m3 > 0.0, "water.density_kg_per_m3", "> 0",
-          water.density_kg_per_m3, "kg/m^3");
+  require(water.density_kg_per_m3 > 0.0, "water.density_kg_per_m3", "> 0", water.density_kg_per_m3,
+          "kg/m^3");
   require(water.gravity_m_per_s2 > 0.0, "water.gravity_m_per_s2", "> 0", water.gravity_m_per_s2,
           "m/s^2");
+}
+
+void check_conversion_inputs(double tension_N, const PipePressures& pressures) {
+  require(std::isfinite(tension_N), "tension_N", "finite", tension_N, "N");
+  require(std::isfinite(pressures.internal_Pa), "pressures.internal_Pa", "finite",
+          pressures.internal_Pa, "Pa");
+  require(std::isfinite(pressures.external_Pa), "pressures.external_Pa", "finite",
+          pressures.external_Pa, "Pa");
 }
 
 }  // namespace
@@ -111,7 +121,7 @@ PipeSectionProperties pipe_section_properties(const PipeSection& section, const 
       p.steel_mass_kg_per_m + p.coating_mass_kg_per_m + p.buoyancy_mass_kg_per_m;
   p.contents_mass_kg_per_m = section.contents_density_kg_per_m3 * p.inner_area_m2;
 
-  // Effective (apparent) weight, Sparks (1984) eq. for w_e; DNV-OS-F201 Sec. 4:
+  // Effective (apparent) weight, Sparks (1984); DNV-OS-F201 (Sec. 4, recalled):
   // w_e = (m + m_c - rho_w A_displaced) g. Summing pressure end-cap forces of the
   // internal and external fluid columns into the tension (T_eff) turns the real
   // pressure field on a curved pipe into this Archimedes buoyancy per length.
@@ -132,29 +142,39 @@ double internal_pressure_Pa(const InternalPressureProfile& profile, double z_m,
   require(profile.contents_density_kg_per_m3 >= 0.0, "internal_pressure.contents_density_kg_per_m3",
           ">= 0", profile.contents_density_kg_per_m3, "kg/m^3");
   require(std::isfinite(z_m), "z_m", "finite", z_m, "m");
+  require(std::isfinite(profile.reference_pressure_Pa), "internal_pressure.reference_pressure_Pa",
+          "finite", profile.reference_pressure_Pa, "Pa");
+  require(std::isfinite(profile.reference_elevation_m), "internal_pressure.reference_elevation_m",
+          "finite", profile.reference_elevation_m, "m");
   // Static column of contents below the reference point (no friction losses):
   // p_i(z) = p_ref + rho_c g (z_ref - z).
-  return profile.reference_pressure_Pa +
-         profile.contents_density_kg_per_m3 * gravity_m_per_s2 *
-             (profile.reference_elevation_m - z_m);
+  return profile.reference_pressure_Pa + profile.contents_density_kg_per_m3 * gravity_m_per_s2 *
+                                             (profile.reference_elevation_m - z_m);
 }
 
 double effective_tension_N(double wall_tension_N, const PipePressures& pressures,
                            const PipeSectionProperties& properties) {
-  // Sparks (1984); DNV-OS-F201 Sec. 3: T_e = T_w - p_i A_i + p_e A_e.
+  // Sparks (1984); DNV-OS-F201 (Sec. 3, recalled): T_e = T_w - p_i A_i + p_e A_e.
+  // A_e is the steel OD area although w_e uses the full displaced area: a coating
+  // or smeared-buoyancy layer (low axial stiffness) sits in the ambient hydrostatic
+  // stress state, its wall force is -p_e A_layer, and adding it to the steel's
+  // T_w turns p_e A_e(steel) into p_e A_displaced -- the Archimedes-consistent
+  // form. So T_w here is the wall tension of the steel alone.
+  check_conversion_inputs(wall_tension_N, pressures);
   return wall_tension_N - pressures.internal_Pa * properties.inner_area_m2 +
          pressures.external_Pa * properties.outer_area_m2;
 }
 
 double wall_tension_N(double effective_tension_N, const PipePressures& pressures,
                       const PipeSectionProperties& properties) {
+  check_conversion_inputs(effective_tension_N, pressures);
   return effective_tension_N + pressures.internal_Pa * properties.inner_area_m2 -
          pressures.external_Pa * properties.outer_area_m2;
 }
 
 double von_mises_Pa(double axial_Pa, double hoop_Pa, double radial_Pa) {
   // von Mises (distortion-energy) equivalent of principal stresses
-  // (API RP 2RD §4.2; DNV-OS-F201 Sec. 5).
+  // (API RP 2RD §4.2; DNV-OS-F201 Sec. 5; sections recalled).
   const double a = axial_Pa - hoop_Pa;
   const double b = hoop_Pa - radial_Pa;
   const double c = radial_Pa - axial_Pa;
@@ -166,9 +186,12 @@ double api_rp_2rd_design_factor(RiserDesignCondition condition) {
   // C_f = 1.0 (normal operating), 1.2 (extreme), 1.5 (survival / temporary).
   constexpr double basic = 2.0 / 3.0;
   switch (condition) {
-    case RiserDesignCondition::normal_operating: return basic * 1.0;
-    case RiserDesignCondition::extreme: return basic * 1.2;
-    case RiserDesignCondition::survival_temporary: return basic * 1.5;
+    case RiserDesignCondition::normal_operating:
+      return basic * 1.0;
+    case RiserDesignCondition::extreme:
+      return basic * 1.2;
+    case RiserDesignCondition::survival_temporary:
+      return basic * 1.5;
   }
   throw std::invalid_argument("api_rp_2rd_design_factor: unknown RiserDesignCondition");
 }
@@ -205,7 +228,7 @@ StressCheckResult check_pipe_stress(const PipeSectionProperties& p, const Stress
   double hoop_outer = 0.0;
   switch (in.hoop_model) {
     case HoopStressModel::lame_thick_wall: {
-      // Lamé (Timoshenko & Goodier §33): sigma_h(r) = A + B / r^2,
+      // Lamé thick cylinder (Timoshenko & Goodier): sigma_h(r) = A + B / r^2,
       // A = (p_i r_i^2 - p_e r_o^2)/(r_o^2 - r_i^2), B = (p_i - p_e) r_i^2 r_o^2/(r_o^2 - r_i^2).
       const double d = ro * ro - ri * ri;
       const double a = (pi * ri * ri - pe * ro * ro) / d;
@@ -243,9 +266,9 @@ StressCheckResult check_pipe_stress(const PipeSectionProperties& p, const Stress
       {SectionPoint::inner_tension_fibre, r.inner_tension_fibre.von_mises_Pa},
       {SectionPoint::inner_compression_fibre, r.inner_compression_fibre.von_mises_Pa},
   }};
-  const auto governing = std::max_element(
-      candidates.begin(), candidates.end(),
-      [](const auto& lhs, const auto& rhs) { return lhs.second < rhs.second; });
+  const auto governing =
+      std::max_element(candidates.begin(), candidates.end(),
+                       [](const auto& lhs, const auto& rhs) { return lhs.second < rhs.second; });
   r.governing_point = governing->first;
   r.max_von_mises_Pa = governing->second;
 
@@ -255,8 +278,7 @@ StressCheckResult check_pipe_stress(const PipeSectionProperties& p, const Stress
   return r;
 }
 
-BendingRadiusCheck check_bending_radius(double curvature_1_per_m,
-                                        double minimum_bending_radius_m) {
+BendingRadiusCheck check_bending_radius(double curvature_1_per_m, double minimum_bending_radius_m) {
   require(std::isfinite(curvature_1_per_m), "curvature_1_per_m", "finite", curvature_1_per_m,
           "1/m");
   require(minimum_bending_radius_m > 0.0, "minimum_bending_radius_m", "> 0",

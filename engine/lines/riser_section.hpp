@@ -7,13 +7,15 @@
 // Sources (cited again at each formula in riser_section.cpp):
 //  - R. D. Sparks, "The influence of tension, pressure and weight on pipe and
 //    riser deformations and stresses", J. Energy Resources Technology 106
-//    (1984) 46-54: effective tension and effective (apparent) weight;
+//    (1984) 46-54 (volume/pages recalled): effective tension and effective (apparent) weight;
 //    also Sparks, "Fundamentals of Marine Riser Mechanics" (2007), ch. 3.
-//  - DNV-OS-F201 "Dynamic Risers" (2010), Sec. 3 C / Sec. 4: effective tension
+//  - DNV-OS-F201 "Dynamic Risers" (2010), effective-tension definition (Sec. 3/4,
+//    section recalled):
 //    T_e = T_w - p_i A_i + p_e A_e.
 //  - G. Lamé (1852) thick-walled cylinder; S. Timoshenko & J. N. Goodier,
-//    "Theory of Elasticity" (1970), §33: hoop and radial stresses.
-//  - API RP 2RD (1998), §4.2-4.5: von Mises equivalent stress against
+//    "Theory of Elasticity" (3rd ed., 1970), thick-walled cylinder: hoop and radial stresses.
+//  - API RP 2RD (1998), §4.2-4.5 (sections and factors recalled, not re-read):
+//    von Mises equivalent stress against
 //    C_f * sigma_a, sigma_a = 2/3 SMYS (see RiserDesignCondition).
 //
 // Conventions: SI; pressures are gauge (above atmospheric); tension positive;
@@ -23,7 +25,7 @@
 // conversion and the bending-radius check are meaningful.
 //
 // Every function throws std::invalid_argument naming the offending field when
-// an input is outside its stated range; none returns NaN.
+// an input is outside its stated range or not finite; none returns NaN.
 
 #include <optional>
 
@@ -33,8 +35,8 @@ namespace spiral::engine {
 
 /// A smeared coating layer (insulation, anti-corrosion) bonded outside the pipe wall.
 struct PipeCoating {
-  double thickness_m = 0.0;          ///< radial thickness, > 0
-  double density_kg_per_m3 = 0.0;    ///< material density, >= 0
+  double thickness_m = 0.0;        ///< radial thickness, > 0
+  double density_kg_per_m3 = 0.0;  ///< material density, >= 0
 };
 
 /// Buoyancy modules of a lazy-wave section smeared over the section length
@@ -44,24 +46,25 @@ struct PipeCoating {
 /// mass m_mod at pitch s, choose D_b with pi/4 (D_b^2 - D_c^2) = V_mod / s and
 /// density m_mod / V_mod.
 struct SmearedBuoyancy {
-  double outer_diameter_m = 0.0;     ///< equivalent OD, > coated OD
-  double density_kg_per_m3 = 0.0;    ///< smeared density, >= 0 (syntactic foam ~ 400-600)
+  double outer_diameter_m = 0.0;   ///< equivalent OD, > coated OD
+  double density_kg_per_m3 = 0.0;  ///< smeared density, >= 0 (syntactic foam ~ 400-600)
 };
 
 /// Explicit properties (flexible pipes, umbilicals) overriding the steel formulas.
 struct ExplicitSectionProperties {
-  double EA_N = 0.0;                       ///< axial stiffness, > 0
-  double EI_N_m2 = 0.0;                    ///< bending stiffness, >= 0
-  double mass_per_length_kg_per_m = 0.0;   ///< structural mass in air, contents excluded, > 0
+  double EA_N = 0.0;                      ///< axial stiffness, > 0
+  double EI_N_m2 = 0.0;                   ///< bending stiffness, >= 0
+  double mass_per_length_kg_per_m = 0.0;  ///< structural mass in air, contents excluded, > 0
 };
 
 /// Input of `pipe_section_properties`.
 struct PipeSection {
-  double outer_diameter_m = 0.0;          ///< steel (structural) OD, > 0
-  double wall_thickness_m = 0.0;          ///< 0 < WT < OD/2
-  double youngs_modulus_Pa = 207.0e9;     ///< steel E (conventional value, reference-platforms §2.5, U)
+  double outer_diameter_m = 0.0;  ///< steel (structural) OD, > 0
+  double wall_thickness_m = 0.0;  ///< 0 < WT < OD/2
+  double youngs_modulus_Pa =
+      207.0e9;  ///< steel E (conventional value, reference-platforms §2.5, U)
   double steel_density_kg_per_m3 = 7850.0;
-  double yield_stress_Pa = 448.0e6;       ///< SMYS (default: API 5L X65, 448 MPa)
+  double yield_stress_Pa = 448.0e6;         ///< SMYS (default: API 5L X65, 448 MPa)
   double contents_density_kg_per_m3 = 0.0;  ///< bore fluid, >= 0 (0: empty/air-filled)
   std::optional<PipeCoating> coating;
   std::optional<SmearedBuoyancy> buoyancy;
@@ -72,26 +75,26 @@ struct PipeSection {
 
 /// Derived properties, per unit length of line where a rate.
 struct PipeSectionProperties {
-  double outer_diameter_m = 0.0;           ///< steel OD (copied from the input)
-  double wall_thickness_m = 0.0;           ///< steel WT (copied from the input)
-  double inner_diameter_m = 0.0;           ///< ID = OD - 2 WT
-  double coated_diameter_m = 0.0;          ///< OD + 2 t_coat (= OD without coating)
-  double hydrodynamic_diameter_m = 0.0;    ///< outermost diameter: buoyancy OD, else coated OD
-  double steel_area_m2 = 0.0;              ///< A_s = pi/4 (OD^2 - ID^2)
-  double inner_area_m2 = 0.0;              ///< A_i = pi/4 ID^2 (bore)
-  double outer_area_m2 = 0.0;              ///< A_o = pi/4 OD^2 (steel OD: used in T_eff)
-  double displaced_area_m2 = 0.0;          ///< pi/4 D_hyd^2 (buoyancy per length / (rho g))
-  double second_moment_m4 = 0.0;           ///< I = pi/64 (OD^4 - ID^4)
+  double outer_diameter_m = 0.0;         ///< steel OD (copied from the input)
+  double wall_thickness_m = 0.0;         ///< steel WT (copied from the input)
+  double inner_diameter_m = 0.0;         ///< ID = OD - 2 WT
+  double coated_diameter_m = 0.0;        ///< OD + 2 t_coat (= OD without coating)
+  double hydrodynamic_diameter_m = 0.0;  ///< outermost diameter: buoyancy OD, else coated OD
+  double steel_area_m2 = 0.0;            ///< A_s = pi/4 (OD^2 - ID^2)
+  double inner_area_m2 = 0.0;            ///< A_i = pi/4 ID^2 (bore)
+  double outer_area_m2 = 0.0;            ///< A_o = pi/4 OD^2 (steel OD: used in T_eff)
+  double displaced_area_m2 = 0.0;        ///< pi/4 D_hyd^2 (buoyancy per length / (rho g))
+  double second_moment_m4 = 0.0;         ///< I = pi/64 (OD^4 - ID^4)
   double EA_N = 0.0;
   double EI_N_m2 = 0.0;
-  double steel_mass_kg_per_m = 0.0;        ///< rho_s A_s (explicit mass for flexibles)
+  double steel_mass_kg_per_m = 0.0;  ///< rho_s A_s (explicit mass for flexibles)
   double coating_mass_kg_per_m = 0.0;
   double buoyancy_mass_kg_per_m = 0.0;
-  double mass_per_length_kg_per_m = 0.0;   ///< structural: steel + coating + buoyancy (no contents)
-  double contents_mass_kg_per_m = 0.0;     ///< rho_c A_i
+  double mass_per_length_kg_per_m = 0.0;  ///< structural: steel + coating + buoyancy (no contents)
+  double contents_mass_kg_per_m = 0.0;    ///< rho_c A_i
   /// w_e = (m + m_c - rho_w A_displaced) g, N/m; > 0 sinks, < 0 buoyant.
   double effective_weight_N_per_m = 0.0;
-  double yield_stress_Pa = 0.0;            ///< copied from the input (stress checks)
+  double yield_stress_Pa = 0.0;  ///< copied from the input (stress checks)
 };
 
 /// Section properties. Formulas: reference-platforms §2.5 (A_s, m, EA, EI, w_e);
@@ -132,7 +135,7 @@ double wall_tension_N(double effective_tension_N, const PipePressures& pressures
 /// Hoop-stress formula.
 enum class HoopStressModel {
   /// Lamé thick-wall elastic solution, evaluated at the inner and outer wall
-  /// (exact for an elastic cylinder; Timoshenko & Goodier §33). Default.
+  /// (exact for an elastic cylinder; Timoshenko & Goodier). Default.
   lame_thick_wall,
   /// Mid-wall thin-wall form (p_i - p_e)(OD - WT)/(2 WT), uniform through the wall:
   /// the form of the DNV-OS-F201 / DNV-OS-F101 working-stress checks (recalled).
@@ -150,8 +153,12 @@ struct SectionLoads {
 };
 
 /// Which point of the section governs the equivalent stress.
-enum class SectionPoint { outer_tension_fibre, outer_compression_fibre, inner_tension_fibre,
-                          inner_compression_fibre };
+enum class SectionPoint {
+  outer_tension_fibre,
+  outer_compression_fibre,
+  inner_tension_fibre,
+  inner_compression_fibre
+};
 
 /// Principal stresses (no torsion/shear) at one point of the wall, Pa, tension positive.
 struct PointStresses {
@@ -166,9 +173,9 @@ struct PointStresses {
 /// the basic allowable sigma_a = 2/3 SMYS and C_f = 1.0 / 1.2 / 1.5, i.e. a
 /// design factor on SMYS of 0.67 / 0.80 / 1.00.
 enum class RiserDesignCondition {
-  normal_operating,   ///< 2/3 * 1.0 = 0.67
-  extreme,            ///< 2/3 * 1.2 = 0.80
-  survival_temporary, ///< 2/3 * 1.5 = 1.00
+  normal_operating,    ///< 2/3 * 1.0 = 0.67
+  extreme,             ///< 2/3 * 1.2 = 0.80
+  survival_temporary,  ///< 2/3 * 1.5 = 1.00
 };
 
 /// Design factor on SMYS (the product C_f * 2/3 above) for a condition. Recalled values.
@@ -212,7 +219,6 @@ struct BendingRadiusCheck {
   bool passes = true;
 };
 
-BendingRadiusCheck check_bending_radius(double curvature_1_per_m,
-                                        double minimum_bending_radius_m);
+BendingRadiusCheck check_bending_radius(double curvature_1_per_m, double minimum_bending_radius_m);
 
 }  // namespace spiral::engine

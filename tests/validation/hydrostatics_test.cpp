@@ -7,14 +7,15 @@
 //    all-zero HAMS file shared/data/hydro/cylinder-buoy/Buoy.hst.
 // Test files in tests/data/hydrostatics/ are described in README.md there.
 
+#include "engine/hull/hydrostatics.hpp"
+
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <numbers>
 #include <sstream>
 #include <string>
 
-#include <gtest/gtest.h>
-
-#include "engine/hull/hydrostatics.hpp"
 #include "engine/hull/wamit_hst.hpp"
 
 namespace spiral::engine {
@@ -77,9 +78,9 @@ TEST(Hydrostatics, BoxBargeMatchesMetacentricHeightFormulas) {
   EXPECT_LE(rel(r.metacentric_height_transverse_m, GMt), kExactRelTol);
   EXPECT_LE(rel(r.metacentric_height_longitudinal_m, GMl), kExactRelTol);
   // Buoyancy part = rho g (I + V z_b); gravity part = -m g z_g.
-  EXPECT_LE(rel(r.buoyancy_6x6(3, 3),
-                rg * (barge.L * std::pow(barge.B, 3) / 12.0 - V * barge.T / 2.0)),
-            kExactRelTol);
+  EXPECT_LE(
+      rel(r.buoyancy_6x6(3, 3), rg * (barge.L * std::pow(barge.B, 3) / 12.0 - V * barge.T / 2.0)),
+      kExactRelTol);
   EXPECT_LE(rel(r.gravity_6x6(3, 3), -barge.mass().mass_kg * kWater.gravity_m_per_s2 * barge.zg),
             kExactRelTol);
   // Symmetric hull, reference point on the centroid: no couplings, no yaw/surge/sway.
@@ -129,8 +130,8 @@ TEST(Hydrostatics, LinearLoadIsRestForceMinusStiffnessTimesDisplacement) {
   const Barge barge;
   const auto r = hydrostatic_restoring(barge.body(), barge.mass(), kWater);
   Vector6d xi = Vector6d::Zero();
-  xi(2) = 0.5;    // heave up 0.5 m
-  xi(3) = 0.02;   // roll 0.02 rad
+  xi(2) = 0.5;   // heave up 0.5 m
+  xi(3) = 0.02;  // roll 0.02 rad
   const Vector6d F = linear_hydrostatic_load(r, xi);
   const double rg = kWater.density_kg_per_m3 * kWater.gravity_m_per_s2;
   EXPECT_LE(rel(F(2), -rg * barge.L * barge.B * 0.5), kExactRelTol);
@@ -171,7 +172,7 @@ TEST(Hydrostatics, Oc4HeaveStiffnessColumnsOnlyAndWithBraces) {
   EXPECT_LT(gap, 0.03);
   body.waterplane.area_m2 += oc4_brace_waterplane_area_m2();
   const double C33_braced = buoyancy_restoring(body, kWater)(2, 2);
-  EXPECT_LE(rel(C33_braced, 3.821e6), kSheetC33RelTol);   // sheet's braced estimate
+  EXPECT_LE(rel(C33_braced, 3.821e6), kSheetC33RelTol);  // sheet's braced estimate
   EXPECT_LE(rel(C33_braced, kReportC33), kBracedC33RelTol);
 }
 
@@ -192,8 +193,8 @@ TEST(Hydrostatics, Oc4RollStiffnessWithGravityFromReportBuoyancyMatrix) {
 
   // Platform only (report mass 1.3473e7 kg, CM 13.46 m below SWL): sheet 1.4008e9.
   const BodyMass platform{1.3473e7, {0.0, 0.0, -13.46}};
-  const auto rp = hydrostatic_restoring(hst.restoring_6x6, 13917.0, {0.0, 0.0, 0.0}, platform,
-                                        kWater);
+  const auto rp =
+      hydrostatic_restoring(hst.restoring_6x6, 13917.0, {0.0, 0.0, 0.0}, platform, kWater);
   EXPECT_LE(rel(rp.total_6x6(3, 3), 1.4008e9), kSheetC44RelTol);
 
   // Buoyancy rho g V = 1.398911e8 N (HD-sum, S) and the excess left for the mooring:
@@ -216,8 +217,7 @@ TEST(Hydrostatics, FroudeScaledProxyFromUlen) {
   EXPECT_LE(rel(hst.restoring_6x6(3, 3), -6.042e9), kProxySheetRelTol);
   // After deballast (§2.4): 1.07427e8 kg, z_G = -19.30 m -> C55 incl. gravity 1.429e10.
   const BodyMass proxy{1.07427e8, {0.0, 0.0, -19.30}};
-  const auto r = hydrostatic_restoring(hst.restoring_6x6, 111336.0, {0.0, 0.0, 0.0}, proxy,
-                                       kWater);
+  const auto r = hydrostatic_restoring(hst.restoring_6x6, 111336.0, {0.0, 0.0, 0.0}, proxy, kWater);
   EXPECT_LE(rel(r.total_6x6(4, 4), 1.429e10), kSheetC44RelTol);
 }
 
@@ -256,9 +256,8 @@ TEST(WamitHst, DimensionalisesEachEntryWithItsExponent) {
 
 TEST(WamitHst, SharedHamsBuoyFileIsAllZeros) {
   // shared/data/hydro/cylinder-buoy/Buoy.hst: HAMS wrote zeros (no hydrostatic input).
-  const auto hst = read_wamit_hst(std::string(SPIRAL_SHARED_DATA_DIR) +
-                                      "/hydro/cylinder-buoy/Buoy.hst",
-                                  {1.0, kWater});
+  const auto hst = read_wamit_hst(
+      std::string(SPIRAL_SHARED_DATA_DIR) + "/hydro/cylinder-buoy/Buoy.hst", {1.0, kWater});
   EXPECT_EQ(hst.entries_read, 36);
   EXPECT_EQ(hst.restoring_6x6.norm(), 0.0);
 }

@@ -5,12 +5,12 @@
 
 #include "engine/lines/riser_section.hpp"
 
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <limits>
 #include <numbers>
 #include <stdexcept>
-
-#include <gtest/gtest.h>
 
 namespace spiral::engine {
 namespace {
@@ -57,7 +57,7 @@ TEST(RiserSection, ProductionScrMatchesReferenceSheet) {
   // Sheet §2.8: 155.2 kg/m steel; w_e 1,237 N/m; EA 4.09e9 N; EI 3.17e7 N m^2.
   EXPECT_NEAR(p.steel_mass_kg_per_m, 155.2, kSheetMassTol_kg_per_m);
   EXPECT_NEAR(p.effective_weight_N_per_m, 1237.0, kSheetWeightTol_N_per_m);
-  EXPECT_NEAR(p.EA_N, 4.09e9, 0.005e9);   // printed to 3 significant figures
+  EXPECT_NEAR(p.EA_N, 4.09e9, 0.005e9);     // printed to 3 significant figures
   EXPECT_NEAR(p.EI_N_m2, 3.17e7, 0.005e7);  // printed to 3 significant figures
   EXPECT_DOUBLE_EQ(p.inner_diameter_m, 0.2223);
   EXPECT_DOUBLE_EQ(p.mass_per_length_kg_per_m, p.steel_mass_kg_per_m);  // bare pipe
@@ -105,7 +105,9 @@ TEST(RiserSection, OpenEndedHangingPipeEffectiveTensionIsLinearWithZeroAtFreeEnd
     const double expected = p.effective_weight_N_per_m * (z + L);
     // Absolute floor: at the free end both sides are zero; compare against the top value.
     EXPECT_NEAR(T_eff, expected, kIdentityRelTol * p.effective_weight_N_per_m * L) << "z = " << z;
-    EXPECT_NEAR(wall_tension_N(T_eff, pr, p), T_wall, kIdentityRelTol * p.steel_mass_kg_per_m * g * L) << "z = " << z;
+    EXPECT_NEAR(wall_tension_N(T_eff, pr, p), T_wall,
+                kIdentityRelTol * p.steel_mass_kg_per_m * g * L)
+        << "z = " << z;
   }
 }
 
@@ -150,8 +152,9 @@ TEST(RiserSection, CoatingAndSmearedBuoyancyAddMassAndDisplacement) {
   EXPECT_LE(relative_error(p.coating_mass_kg_per_m, m_coat), kIdentityRelTol);
   EXPECT_LE(relative_error(p.buoyancy_mass_kg_per_m, m_buoy), kIdentityRelTol);
   EXPECT_DOUBLE_EQ(p.hydrodynamic_diameter_m, 1.0);
-  const double we = (p.steel_mass_kg_per_m + m_coat + m_buoy + p.contents_mass_kg_per_m -
-                     1025.0 * kPi / 4.0) * 9.80665;
+  const double we =
+      (p.steel_mass_kg_per_m + m_coat + m_buoy + p.contents_mass_kg_per_m - 1025.0 * kPi / 4.0) *
+      9.80665;
   EXPECT_LE(relative_error(p.effective_weight_N_per_m, we), kIdentityRelTol);
   EXPECT_LT(p.effective_weight_N_per_m, 0.0);  // the buoyancy section floats: the "wave" rises
   // EA, EI stay those of the steel pipe.
