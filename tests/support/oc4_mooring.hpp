@@ -35,3 +35,37 @@ inline engine::MooringSystemModel oc4_mooring_system() {
 }
 
 }  // namespace spiral::test
+
+#include <memory>
+#include <vector>
+
+#include "engine/analysis/static_equilibrium.hpp"
+#include "engine/analysis/static_line.hpp"
+
+namespace spiral::test {
+
+/// The OC4 mooring as static lines for the coupled analyses.
+inline std::vector<std::unique_ptr<engine::StaticLine>> oc4_static_lines(double seabed_friction = 1.0) {
+  std::vector<std::unique_ptr<engine::StaticLine>> lines;
+  for (auto& model : oc4_mooring_system().lines) {
+    model.line.seabed_friction = seabed_friction;
+    lines.push_back(std::make_unique<engine::CatenaryStaticLine>(
+        model.name, model.anchor_g, model.fairlead_b, model.anchor_height_above_seabed_m, model.line));
+  }
+  return lines;
+}
+
+/// The OC4 full system (platform + tower + RNA) hydrostatics as quoted in
+/// shared/data/reference-platforms.md §1.2: C33 3.836e6 N/m (report),
+/// C44 = C55 = 9.892e8 N·m/rad (buoyancy + gravity), rest force
+/// ρgV − mg = 1.398911e8 − 1.40751e7·9.80665 N.
+inline engine::HullStaticModel oc4_hull_statics() {
+  engine::HullStaticModel hull;
+  hull.hydrostatic_stiffness(2, 2) = 3.836e6;
+  hull.hydrostatic_stiffness(3, 3) = 9.892e8;
+  hull.hydrostatic_stiffness(4, 4) = 9.892e8;
+  hull.rest_force(2) = 1.398911e8 - 1.40751e7 * 9.80665;
+  return hull;
+}
+
+}  // namespace spiral::test

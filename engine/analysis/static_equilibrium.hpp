@@ -1,0 +1,65 @@
+#pragma once
+// Coupled nonlinear static equilibrium of the hull and every line attached to
+// it (step 1 of the semi-coupled method, DESIGN.md §1): the 6-DOF hull
+// position where hydrostatics, gravity, the mean environmental loads and the
+// line forces balance.
+//
+// Newton's method on the 6 DOF with the analytic tangent K_hydro + K_lines
+// (line_array.hpp), a backtracking line search on a scaled residual, and
+// step limits; the attitude is updated by composing small global rotations,
+// so large yaw is exact.
+
+#include <functional>
+#include <memory>
+#include <span>
+
+#include "engine/analysis/line_array.hpp"
+
+namespace spiral::engine {
+
+/// The hull as statics sees it: linear hydrostatic + gravity restoring about
+/// the reference point and the force at rest (buoyancy − weight, and the
+/// moments of a CoB/CoG that are not on one vertical).
+struct HullStaticModel {
+  Eigen::Vector3d reference_point_at_rest_g = Eigen::Vector3d::Zero();  ///< m
+  Matrix6d hydrostatic_stiffness = Matrix6d::Zero();  ///< buoyancy + gravity, about the reference point
+  Vector6d rest_force = Vector6d::Zero();             ///< N, N·m at zero offset
+};
+
+/// Mean environmental load on the hull (N, N·m about the displaced reference
+/// point, global axes) as a function of the hull offset (it may depend on yaw).
+using ExternalLoad = std::function<Vector6d(const Vector6d& offset)>;
+
+struct EquilibriumOptions {
+  int max_iterations = 60;
+  /// Converged when |force residual| ≤ tol·F_ref and |moment residual| ≤
+  /// tol·F_ref·L_ref, with F_ref the largest of the rest force and the summed
+  /// line-force magnitudes and L_ref the largest attachment arm (≥ 1 m).
+  double relative_tolerance = 1e-9;
+  double max_translation_step_m = 25.0;  ///< per Newton step
+  double max_rotation_step_rad = 0.05;   ///< per Newton step (≈ 2.9°)
+};
+
+struct EquilibriumResult {
+  Vector6d offset = Vector6d::Zero();  ///< m, rad (roll, pitch, yaw; R = Rz·Ry·Rx)
+  HullPose pose;
+  Vector6d residual = Vector6d::Zero();
+  Vector6d hydrostatic_force = Vector6d::Zero();
+  Vector6d external_force = Vector6d::Zero();
+  LineArrayResponse lines;  ///< forces and analytic 6×6 stiffness at the solution
+  int iterations = 0;
+  double force_reference_N = 0.0;
+};
+
+/// Throws SolverError (which DOF, residual, iterations, what to try) when the
+/// equilibrium cannot be found, or when a line fails (the line is named).
+EquilibriumResult solve_static_equilibrium(const HullStaticModel& hull,
+                                           std::span<const std::unique_ptr<StaticLine>> lines,
+                                           const ExternalLoad& external_load,
+                                           const Vector6d& initial_offset = Vector6d::Zero(),
+                                           const EquilibriumOptions& options = {});
+
+/// Roll, pitch, yaw (rad) of a rotation matrix, R = Rz(yaw)·Ry(pitch)·Rx(roll).
+Eigen::Vector3d roll_pitch_yaw(const Eigen::Matrix3d& rotation);
+
+}  // namespace spiral::engine

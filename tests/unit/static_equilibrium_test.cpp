@@ -1,0 +1,119 @@
+// Coupled static equilibrium of the OC4 hull and mooring: balance at the
+// solution, linear response to small loads, damaged-line behaviour.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "engine/analysis/static_equilibrium.hpp"
+#include "support/oc4_mooring.hpp"
+
+namespace spiral::engine {
+namespace {
+
+// Newton converges to the default relative tolerance 1e-9 of the force scale.
+constexpr double kBalance = 1e-8;
+
+TEST(StaticEquilibrium, StillWaterBalancesAndStaysCentred) {
+  const auto lines = test::oc4_static_lines();
+  const auto result = solve_static_equilibrium(test::oc4_hull_statics(), lines, nullptr);
+  EXPECT_LT(result.residual.head<3>().norm(), kBalance * result.force_reference_N);
+  EXPECT_NEAR(result.offset(0), 0.0, 1e-6);
+  EXPECT_NEAR(result.offset(1), 0.0, 1e-6);
+  // Buoyancy excess 1.8615e6 N against 1.895e6 N of mooring load: the hull
+  // sinks by (1.895e6 − 1.8615e6) / (C33 + K33) ≈ 9 mm.
+  EXPECT_LT(result.offset(2), 0.0);
+  EXPECT_GT(result.offset(2), -0.02);
+}
+
+TEST(StaticEquilibrium, SmallLoadGivesTheOffsetTheStiffnessPredicts) {
+  const auto lines = test::oc4_static_lines();
+  const auto hull = test::oc4_hull_statics();
+  const auto base = solve_static_equilibrium(hull, lines, nullptr);
+  const Matrix6d k_total = hull.hydrostatic_stiffness + base.lines.stiffness;
+  Vector6d load = Vector6d::Zero();
+  load(0) = 2.0e4;  // N: 0.3 m of surge, well inside the linear range
+  const auto loaded = solve_static_equilibrium(hull, lines, [&](const Vector6d&) { return load; });
+  const Vector6d predicted = k_total.fullPivLu().solve(load);
+  const Vector6d actual = loaded.offset - base.offset;
+  // Second-order terms over 0.3 m of a stiffness that changes ~1 % per 7 m.
+  EXPECT_NEAR(actual(0), predicted(0), 0.01 * predicted(0));
+  EXPECT_NEAR(actual(4), predicted(4), 0.02 * std::abs(predicted(4)) + 1e-7);
+}
+
+TEST(StaticEquilibrium, OffsetGrowsWithLoad) {
+  const auto lines = test::oc4_static_lines();
+  const auto hull = test::oc4_hull_statics();
+  double previous = 0.0;
+  for (double force : {2e5, 5e5, 1e6}) {
+    Vector6d load = Vector6d::Zero();
+    load(1) = force;
+    const auto r = solve_static_equilibrium(hull, lines, [&](const Vector6d&) { return load; });
+    EXPECT_GT(r.offset(1), previous);
+    EXPECT_LT(r.residual.head<3>().norm(), kBalance * r.force_reference_N);
+    previous = r.offset(1);
+  }
+}
+
+/// Six OC4 lines in three clusters of two (cluster centres 60°, 180°, 300°, ±5°).
+std::vector<std::unique_ptr<StaticLine>> clustered_lines(int skipped = -1) {
+  const auto base = test::oc4_mooring_system().lines.front();
+  std::vector<std::unique_ptr<StaticLine>> lines;
+  int index = 0;
+  for (double centre : {60.0, 180.0, 300.0}) {
+    for (double delta : {-5.0, 5.0}) {
+      const double a = (centre + delta) * std::numbers::pi / 180.0;
+      const Eigen::Vector3d anchor(837.6 * std::cos(a), 837.6 * std::sin(a), -200.0);
+      const Eigen::Vector3d fairlead(40.868 * std::cos(a), 40.868 * std::sin(a), -14.0);
+      if (index++ == skipped) continue;
+      lines.push_back(std::make_unique<CatenaryStaticLine>(fmt::format("L{}", index), anchor,
+                                                           fairlead, 0.0, base.line));
+    }
+  }
+  return lines;
+}
+
+TEST(StaticEquilibrium, DamagedLineMovesTheHullAwayAndLoadsTheNeighbour) {
+  // A steady load towards −x is held by the windward clusters at 60° and 300°.
+  // Removing the line at 55° lets the hull drift further from its anchor and
+  // throws its load onto its cluster neighbour at 65°.
+  auto hull = test::oc4_hull_statics();
+  hull.rest_force(2) *= 2.0;  // six lines hang twice the OC4 mooring load
+  Vector6d load = Vector6d::Zero();
+  load(0) = -4.0e5;
+  const auto with_load = [&](const Vector6d&) { return load; };
+  const auto intact_lines = clustered_lines();
+  const auto intact = solve_static_equilibrium(hull, intact_lines, with_load);
+  const auto damaged_lines = clustered_lines(0);
+  const auto damaged = solve_static_equilibrium(hull, damaged_lines, with_load);
+
+  const double a = 55.0 * std::numbers::pi / 180.0;
+  const Eigen::Vector2d away_from_anchor(-std::cos(a), -std::sin(a));
+  EXPECT_GT(damaged.offset.head<2>().dot(away_from_anchor),
+            intact.offset.head<2>().dot(away_from_anchor) + 0.5);
+  const double neighbour_intact = intact.lines.lines[1].end.top_tension_N;
+  const double neighbour_damaged = damaged.lines.lines[0].end.top_tension_N;
+  EXPECT_GT(neighbour_damaged, 1.1 * neighbour_intact);
+  EXPECT_LT(damaged.residual.head<3>().norm(), kBalance * damaged.force_reference_N);
+}
+
+TEST(StaticEquilibrium, NoYawStiffnessIsReported) {
+  std::vector<std::unique_ptr<StaticLine>> none;
+  auto hull = test::oc4_hull_statics();
+  hull.hydrostatic_stiffness(0, 0) = hull.hydrostatic_stiffness(1, 1) = 1e5;
+  hull.rest_force(2) = 0.0;
+  Vector6d load = Vector6d::Zero();
+  load(0) = 1e4;
+  try {
+    solve_static_equilibrium(hull, none, [&](const Vector6d&) { return load; });
+    FAIL();
+  } catch (const SolverError& e) {
+    EXPECT_NE(std::string(e.what()).find("no stiffness"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace spiral::engine
