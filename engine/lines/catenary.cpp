@@ -149,7 +149,9 @@ Hanging hanging_line(const LineView& view, double V_F) {
     const double L = td_piece ? s.length_m - e.touchdown_laid_m : s.length_m;
     const double Vt = V_F - above_N;
     const double Vb = td_piece ? 0.0 : Vt - s.weight_N_per_m * L;
-    if (Vt < 0.0 || Vb < -1e-12 * std::max(1.0, std::abs(Vt))) h.valid = false;
+    // Round-off allowance: the walk sums forces of the size of the line's weight.
+    const double allowance_N = 1e-12 * (std::abs(V_F) + std::abs(view.total_weight_N));
+    if (Vt < -allowance_N || Vb < -allowance_N) h.valid = false;
     // Irvine eq. 1.44 at H = 0: z = L + (Vt + Vb) L/(2 EA).
     h.z_m += L + 0.5 * (Vt + Vb) * L / s.EA_N;
     h.dz_dV += L / s.EA_N + (td_piece ? (1.0 + Vb / s.EA_N) / s.weight_N_per_m : 0.0);
@@ -238,7 +240,7 @@ bool closed(const Iterate& it, double tol) {
 /// line search on the closure norm.
 Attempt newton(const LineView& view, const CatenaryGeometry& g, double H0, double V0, double tol,
                int max_iterations) {
-  constexpr double kMaxDrop = 0.9;  // largest fractional decrease of H in one step
+  constexpr double kMinFraction = 0.05;  // H may fall to 5 % of its value in one step
   constexpr double kArmijo = 1e-4;
   constexpr int kMaxHalvings = 40;
   Attempt a;
@@ -261,15 +263,15 @@ Attempt newton(const LineView& view, const CatenaryGeometry& g, double H0, doubl
     if (!std::isfinite(det) || det == 0.0) return a;
     const double dH = -(j11 * cur.rx - j01 * cur.rz) / det;
     const double dV = -(-j10 * cur.rx + j00 * cur.rz) / det;
-    // Keep H > 0: shorten the Newton step so that H falls by at most 90 %
-    // (moving along the Newton direction keeps H and V scaling together, which
-    // is what a nearly straight line needs).
-    const double alpha_max = dH < -kMaxDrop * cur.H ? kMaxDrop * cur.H / -dH : 1.0;
+    // Keep H > 0: along the Newton direction while H stays above a fraction of
+    // its value (H and V scale together on a nearly straight line); beyond it,
+    // clamp H alone so the V step is not lost (kinks such as a clump lifting off).
     const double r0 = cur.norm();
-    double alpha = alpha_max;
+    double alpha = 1.0;
     bool accepted = false;
     for (int h = 0; h < kMaxHalvings; ++h, alpha *= 0.5) {
-      Iterate trial = evaluate(view, g, cur.H + alpha * dH, cur.V + alpha * dV);
+      const double H_trial = std::max(cur.H + alpha * dH, kMinFraction * cur.H);
+      Iterate trial = evaluate(view, g, H_trial, cur.V + alpha * dV);
       if (!usable(trial)) {
         a.infeasible = trial.e.infeasible;
         a.infeasible_index = trial.e.infeasible_index;
@@ -364,17 +366,19 @@ Attempt bracketing_fallback(const LineView& view, const CatenaryGeometry& g, dou
     return a;
   }
   double lo = u, hi = u, glo = gu, ghi = gu;
-  for (int k = 0; k < 60 && glo > 0.0; ++k) {
+  double step = 1.0;
+  for (int k = 0; k < 12 && glo > 0.0; ++k, step *= 2.0) {
     hi = lo;
     ghi = glo;
-    lo -= 1.0;
+    lo -= step;
     glo = g_at(lo, it);
     if (!std::isfinite(glo)) break;
   }
-  for (int k = 0; k < 60 && ghi < 0.0; ++k) {
+  step = 1.0;
+  for (int k = 0; k < 12 && ghi < 0.0; ++k, step *= 2.0) {
     lo = hi;
     glo = ghi;
-    hi += 1.0;
+    hi += step;
     ghi = g_at(hi, it);
     if (!std::isfinite(ghi)) break;
   }
@@ -579,9 +583,7 @@ CatenarySolution solve_catenary(const CatenaryLine& line, const CatenaryGeometry
     iterations += last.iterations;
     solved = last.converged;
     if (!solved) {
-      const double H0 = usable(last.it) ? last.it.H : start.H;
-      const double V0 = usable(last.it) ? last.it.V : start.V;
-      Attempt fb = bracketing_fallback(view, geometry, H0, V0, tol);
+      Attempt fb = bracketing_fallback(view, geometry, start.H, start.V, tol);
       iterations += fb.iterations;
       if (usable(fb.it)) {
         // Polish with Newton from the bracketed point.
