@@ -296,11 +296,15 @@ Attempt newton(const LineView& view, const CatenaryGeometry& g, double H0, doubl
 
 /// V_F closing z at fixed H; z is increasing in V_F. Infeasible points lie at low V_F.
 bool solve_V_at_H(const LineView& view, const CatenaryGeometry& g, double H, double& V,
-                  double tol, Iterate& out, int& evaluations) {
+                  double tol, Iterate& out, int& evaluations, Attempt& record) {
   const double step0 = std::max({std::abs(view.total_weight_N), H, 1.0});
   auto f_at = [&](double v, Iterate& it) {
     ++evaluations;
     it = evaluate(view, g, H, v);
+    if (it.e.infeasible != Infeasibility::none) {
+      record.infeasible = it.e.infeasible;
+      record.infeasible_index = it.e.infeasible_index;
+    }
     return usable(it) ? it.rz : -std::numeric_limits<double>::infinity();
   };
   Iterate it;
@@ -347,13 +351,13 @@ bool solve_V_at_H(const LineView& view, const CatenaryGeometry& g, double H, dou
 }
 
 Attempt bracketing_fallback(const LineView& view, const CatenaryGeometry& g, double H0,
-                            double V0, double tol) {
+                            double V0, double tol, int max_iterations) {
   Attempt a;
   double V = V0;
   int evaluations = 0;
   // g(u) = x(e^u, V(e^u)) - XF, increasing in u.
   auto g_at = [&](double u, Iterate& it) {
-    if (!solve_V_at_H(view, g, std::exp(u), V, tol, it, evaluations)) {
+    if (!solve_V_at_H(view, g, std::exp(u), V, tol, it, evaluations, a)) {
       return std::numeric_limits<double>::quiet_NaN();
     }
     return it.rx;
@@ -367,7 +371,8 @@ Attempt bracketing_fallback(const LineView& view, const CatenaryGeometry& g, dou
   }
   double lo = u, hi = u, glo = gu, ghi = gu;
   double step = 1.0;
-  for (int k = 0; k < 12 && glo > 0.0; ++k, step *= 2.0) {
+  const int expansions = std::min(12, max_iterations);
+  for (int k = 0; k < expansions && glo > 0.0; ++k, step *= 2.0) {
     hi = lo;
     ghi = glo;
     lo -= step;
@@ -375,7 +380,7 @@ Attempt bracketing_fallback(const LineView& view, const CatenaryGeometry& g, dou
     if (!std::isfinite(glo)) break;
   }
   step = 1.0;
-  for (int k = 0; k < 12 && ghi < 0.0; ++k, step *= 2.0) {
+  for (int k = 0; k < expansions && ghi < 0.0; ++k, step *= 2.0) {
     lo = hi;
     glo = ghi;
     hi += step;
@@ -388,7 +393,7 @@ Attempt bracketing_fallback(const LineView& view, const CatenaryGeometry& g, dou
   }
   // Illinois regula falsi on u.
   int side = 0;
-  for (int k = 0; k < 300; ++k) {
+  for (int k = 0; k < max_iterations; ++k) {
     double m = (lo * ghi - hi * glo) / (ghi - glo);
     if (!(m > lo && m < hi)) m = 0.5 * (lo + hi);
     const double gm = g_at(m, it);
@@ -535,6 +540,31 @@ bool solve_vertical(const LineView& view, const CatenaryGeometry& g, double tol,
   return true;
 }
 
+/// What the attempts so far achieved: the final answer, or the error message.
+struct Progress {
+  int iterations = 0;
+  bool converged = false;
+  bool have_best = false;
+  Iterate best;  // converged iterate, else the smallest closure residual seen
+  Infeasibility infeasible = Infeasibility::none;  // only the model limits (buoyant on seabed)
+  int infeasible_index = -1;
+
+  void record(const Attempt& a) {
+    iterations += a.iterations;
+    if (a.infeasible == Infeasibility::buoyant_segment_on_seabed ||
+        a.infeasible == Infeasibility::buoy_on_seabed) {
+      infeasible = a.infeasible;
+      infeasible_index = a.infeasible_index;
+    }
+    if (converged || !usable(a.it)) return;
+    if (a.converged || !have_best || a.it.norm() < best.norm()) {
+      best = a.it;
+      have_best = true;
+      converged = a.converged;
+    }
+  }
+};
+
 }  // namespace
 
 CatenarySolution solve_catenary(const CatenaryLine& line, const CatenaryGeometry& geometry,
@@ -547,27 +577,22 @@ CatenarySolution solve_catenary(const CatenaryLine& line, const CatenaryGeometry
       view.total_length_m + geometry.horizontal_span_m + std::abs(geometry.vertical_span_m);
   const double tol = std::max(options.tolerance_m, 64.0 * kEps * scale_m);
 
-  CatenarySolution solution;
-  bool solved = false;
-  int iterations = 0;
-  Attempt last;
-
+  Progress progress;
   // Warm start first: it is usually 1-3 Newton steps from the answer.
   if (warm_start && std::isfinite(warm_start->horizontal_N) &&
       std::isfinite(warm_start->vertical_N) && warm_start->horizontal_N > 0.0) {
-    last = newton(view, geometry, warm_start->horizontal_N, warm_start->vertical_N, tol,
-                  options.max_iterations);
-    iterations += last.iterations;
-    solved = last.converged;
+    progress.record(newton(view, geometry, warm_start->horizontal_N, warm_start->vertical_N, tol,
+                           options.max_iterations));
   }
-  if (!solved && solve_vertical(view, geometry, tol, solution)) {
-    solution.iterations += iterations;
+  CatenarySolution solution;
+  if (!progress.converged && solve_vertical(view, geometry, tol, solution)) {
+    solution.iterations += progress.iterations;
     if (options.profile_points_per_segment > 0) {
       fill_catenary_profile(line, geometry, options.profile_points_per_segment, solution);
     }
     return solution;
   }
-  if (!solved) {
+  if (!progress.converged) {
     // Cold start from the better (smaller residual) of two standard guesses.
     const Guess candidates[] = {map_guess(view, geometry), taut_guess(view, geometry)};
     double best = std::numeric_limits<double>::infinity();
@@ -579,46 +604,35 @@ CatenarySolution solve_catenary(const CatenaryLine& line, const CatenaryGeometry
         start = c;
       }
     }
-    last = newton(view, geometry, start.H, start.V, tol, options.max_iterations);
-    iterations += last.iterations;
-    solved = last.converged;
-    if (!solved) {
-      Attempt fb = bracketing_fallback(view, geometry, start.H, start.V, tol);
-      iterations += fb.iterations;
-      if (usable(fb.it)) {
-        // Polish with Newton from the bracketed point.
-        Attempt polish = newton(view, geometry, fb.it.H, fb.it.V, tol, options.max_iterations);
-        iterations += polish.iterations;
-        if (polish.converged || !fb.converged) {
-          fb = polish;
-        }
-      }
-      if (fb.converged) {
-        last = fb;
-        solved = true;
-      } else if (fb.infeasible != Infeasibility::none || usable(fb.it)) {
-        if (fb.infeasible != Infeasibility::none) last.infeasible = fb.infeasible,
-                                                  last.infeasible_index = fb.infeasible_index;
+    progress.record(newton(view, geometry, start.H, start.V, tol, options.max_iterations));
+    if (!progress.converged) {
+      // Newton stalled: bracketing fallback, then Newton to polish its answer.
+      const Attempt fb =
+          bracketing_fallback(view, geometry, start.H, start.V, tol, options.max_iterations);
+      progress.record(fb);
+      if (usable(fb.it) && !progress.converged) {
+        progress.record(newton(view, geometry, fb.it.H, fb.it.V, tol, options.max_iterations));
       }
     }
   }
-  if (!solved) {
-    const double residual = usable(last.it) ? last.it.norm() : std::numeric_limits<double>::infinity();
-    if (last.infeasible == Infeasibility::buoyant_segment_on_seabed ||
-        last.infeasible == Infeasibility::buoy_on_seabed) {
-      throw SolverError("catenary: " + infeasibility_text(line, last.infeasible,
-                                                          last.infeasible_index),
-                        {iterations, residual, "m"});
+  if (!progress.converged) {
+    const double residual =
+        progress.have_best ? progress.best.norm() : std::numeric_limits<double>::infinity();
+    const SolverDiagnostics diagnostics{progress.iterations, residual, "m"};
+    if (progress.infeasible != Infeasibility::none) {
+      throw SolverError(
+          "catenary: " + infeasibility_text(line, progress.infeasible, progress.infeasible_index),
+          diagnostics);
     }
     throw SolverError(
         fmt::format("catenary: no convergence after {} iterations, span closure residual {:.3e} m "
                     "(tolerance {:.1e} m); XF = {} m, ZF = {} m, unstretched length {} m; check "
-                    "the line data or give a warm start",
-                    iterations, residual, tol, geometry.horizontal_span_m,
+                    "the line data, raise options.max_iterations or give a warm start",
+                    progress.iterations, residual, tol, geometry.horizontal_span_m,
                     geometry.vertical_span_m, view.total_length_m),
-        {iterations, residual, "m"});
+        diagnostics);
   }
-  solution = from_iterate(last.it, iterations);
+  solution = from_iterate(progress.best, progress.iterations);
   if (!solution.tangent_stiffness.allFinite()) solution.tangent_stiffness.setZero();
   if (options.profile_points_per_segment > 0) {
     fill_catenary_profile(line, geometry, options.profile_points_per_segment, solution);
