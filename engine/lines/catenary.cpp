@@ -5,13 +5,13 @@
 
 #include "engine/lines/catenary.hpp"
 
+#include <fmt/format.h>
+
+#include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
-
-#include <Eigen/LU>
-#include <fmt/format.h>
 
 #include "engine/lines/catenary_spans.hpp"
 
@@ -26,59 +26,60 @@ namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 
-void require(bool ok, const std::string& message) {
-  if (!ok) throw SolverError("catenary: " + message);
+[[noreturn]] void fail(const std::string& message) {
+  throw SolverError("catenary: " + message);
 }
 
 LineView check_inputs(const CatenaryLine& line, const CatenaryGeometry& g,
                       const CatenaryOptions& o) {
-  require(!line.segments.empty(), "segments: at least one segment is required");
+  if (!(!line.segments.empty())) fail("segments: at least one segment is required");
   const std::size_t n = line.segments.size();
   LineView view;
   view.line = &line;
   for (std::size_t i = 0; i < n; ++i) {
     const CatenarySegment& s = line.segments[i];
-    require(std::isfinite(s.length_m) && s.length_m > 0.0,
-            fmt::format("segments[{}].length_m: must be > 0, got {} m", i, s.length_m));
-    require(std::isfinite(s.weight_N_per_m),
-            fmt::format("segments[{}].weight_N_per_m: must be finite, got {} N/m", i,
-                        s.weight_N_per_m));
-    require(std::isfinite(s.EA_N) && s.EA_N > 0.0,
-            fmt::format("segments[{}].EA_N: must be > 0, got {} N", i, s.EA_N));
+    if (!(std::isfinite(s.length_m) && s.length_m > 0.0))
+      fail(fmt::format("segments[{}].length_m: must be > 0, got {} m", i, s.length_m));
+    if (!(std::isfinite(s.weight_N_per_m)))
+      fail(fmt::format("segments[{}].weight_N_per_m: must be finite, got {} N/m", i,
+                       s.weight_N_per_m));
+    if (!(std::isfinite(s.EA_N) && s.EA_N > 0.0))
+      fail(fmt::format("segments[{}].EA_N: must be > 0, got {} N", i, s.EA_N));
     view.total_weight_N += s.weight_N_per_m * s.length_m;
     view.total_length_m += s.length_m;
   }
-  require(line.joint_load_N.empty() || line.joint_load_N.size() == n - 1,
-          fmt::format("joint_load_N: must be empty or have {} entries (one per joint), got {}",
-                      n - 1, line.joint_load_N.size()));
+  if (!(line.joint_load_N.empty() || line.joint_load_N.size() == n - 1))
+    fail(fmt::format("joint_load_N: must be empty or have {} entries (one per joint), got {}",
+                     n - 1, line.joint_load_N.size()));
   for (std::size_t i = 0; i < line.joint_load_N.size(); ++i) {
-    require(std::isfinite(line.joint_load_N[i]),
-            fmt::format("joint_load_N[{}]: must be finite, got {} N", i, line.joint_load_N[i]));
+    if (!(std::isfinite(line.joint_load_N[i])))
+      fail(fmt::format("joint_load_N[{}]: must be finite, got {} N", i, line.joint_load_N[i]));
     view.total_weight_N += line.joint_load_N[i];
   }
-  require(std::isfinite(line.seabed_friction) && line.seabed_friction >= 0.0,
-          fmt::format("seabed_friction: must be >= 0, got {}", line.seabed_friction));
-  require(std::isfinite(g.horizontal_span_m) && g.horizontal_span_m >= 0.0,
-          fmt::format("horizontal_span_m: must be >= 0, got {} m", g.horizontal_span_m));
-  require(std::isfinite(g.vertical_span_m),
-          fmt::format("vertical_span_m: must be finite, got {} m", g.vertical_span_m));
-  require(std::isfinite(g.anchor_height_above_seabed_m) && g.anchor_height_above_seabed_m >= 0.0,
-          fmt::format("anchor_height_above_seabed_m: must be >= 0, got {} m",
-                      g.anchor_height_above_seabed_m));
-  require(std::isfinite(o.tolerance_m) && o.tolerance_m > 0.0,
-          fmt::format("options.tolerance_m: must be > 0, got {} m", o.tolerance_m));
-  require(o.max_iterations > 0,
-          fmt::format("options.max_iterations: must be > 0, got {}", o.max_iterations));
-  require(std::isfinite(o.max_strain) && o.max_strain > 0.0,
-          fmt::format("options.max_strain: must be > 0, got {}", o.max_strain));
-  require(o.profile_points_per_segment >= 0,
-          fmt::format("options.profile_points_per_segment: must be >= 0, got {}",
-                      o.profile_points_per_segment));
+  if (!(std::isfinite(line.seabed_friction) && line.seabed_friction >= 0.0))
+    fail(fmt::format("seabed_friction: must be >= 0, got {}", line.seabed_friction));
+  if (!(std::isfinite(g.horizontal_span_m) && g.horizontal_span_m >= 0.0))
+    fail(fmt::format("horizontal_span_m: must be >= 0, got {} m", g.horizontal_span_m));
+  if (!(std::isfinite(g.vertical_span_m)))
+    fail(fmt::format("vertical_span_m: must be finite, got {} m", g.vertical_span_m));
+  if (!(std::isfinite(g.anchor_height_above_seabed_m) && g.anchor_height_above_seabed_m >= 0.0))
+    fail(fmt::format("anchor_height_above_seabed_m: must be >= 0, got {} m",
+                     g.anchor_height_above_seabed_m));
+  if (!(std::isfinite(o.tolerance_m) && o.tolerance_m > 0.0))
+    fail(fmt::format("options.tolerance_m: must be > 0, got {} m", o.tolerance_m));
+  if (!(o.max_iterations > 0))
+    fail(fmt::format("options.max_iterations: must be > 0, got {}", o.max_iterations));
+  if (!(std::isfinite(o.max_strain) && o.max_strain > 0.0))
+    fail(fmt::format("options.max_strain: must be > 0, got {}", o.max_strain));
+  if (!(o.profile_points_per_segment >= 0))
+    fail(fmt::format("options.profile_points_per_segment: must be >= 0, got {}",
+                     o.profile_points_per_segment));
   view.anchor_on_seabed = g.anchor_height_above_seabed_m == 0.0;
-  require(!view.anchor_on_seabed || g.vertical_span_m > 0.0,
-          fmt::format("vertical_span_m: the fairlead must be above the seabed when the anchor "
-                      "lies on it, got {} m",
-                      g.vertical_span_m));
+  if (!(!view.anchor_on_seabed || g.vertical_span_m > 0.0))
+    fail(
+        fmt::format("vertical_span_m: the fairlead must be above the seabed when the anchor "
+                    "lies on it, got {} m",
+                    g.vertical_span_m));
   const double chord_m = std::hypot(g.horizontal_span_m, g.vertical_span_m);
   if (chord_m >= view.total_length_m * (1.0 + o.max_strain)) {
     throw SolverError(fmt::format(
@@ -95,7 +96,8 @@ std::string infeasibility_text(const CatenaryLine& line, Infeasibility why, int 
     case Infeasibility::buoyant_segment_on_seabed:
       return fmt::format(
           "segments[{}] is buoyant (weight {} N/m) but would have to lie on the seabed; a buoyant "
-          "segment on the seabed cannot be represented by this catenary model (use a finite-element "
+          "segment on the seabed cannot be represented by this catenary model (use a "
+          "finite-element "
           "line, or lift the anchor off the seabed)",
           index, line.segments[index].weight_N_per_m);
     case Infeasibility::buoy_on_seabed:
@@ -295,8 +297,8 @@ Attempt newton(const LineView& view, const CatenaryGeometry& g, double H0, doubl
 // globally convergent for the monotone spans of a catenary.
 
 /// V_F closing z at fixed H; z is increasing in V_F. Infeasible points lie at low V_F.
-bool solve_V_at_H(const LineView& view, const CatenaryGeometry& g, double H, double& V,
-                  double tol, Iterate& out, int& evaluations, Attempt& record) {
+bool solve_V_at_H(const LineView& view, const CatenaryGeometry& g, double H, double& V, double tol,
+                  Iterate& out, int& evaluations, Attempt& record) {
   const double step0 = std::max({std::abs(view.total_weight_N), H, 1.0});
   auto f_at = [&](double v, Iterate& it) {
     ++evaluations;
@@ -339,7 +341,7 @@ bool solve_V_at_H(const LineView& view, const CatenaryGeometry& g, double H, dou
     if (std::isfinite(fv) && std::abs(fv) <= 0.1 * tol) break;
     (fv > 0.0 ? hi : lo) = v;
     double next = std::isfinite(fv) && it.e.jacobian(1, 1) > 0.0 ? v - fv / it.e.jacobian(1, 1)
-                                                                    : 0.5 * (lo + hi);
+                                                                 : 0.5 * (lo + hi);
     if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
     if (hi - lo <= 4.0 * kEps * std::max(std::abs(lo), std::abs(hi))) break;
     v = next;
@@ -350,8 +352,8 @@ bool solve_V_at_H(const LineView& view, const CatenaryGeometry& g, double H, dou
   return true;
 }
 
-Attempt bracketing_fallback(const LineView& view, const CatenaryGeometry& g, double H0,
-                            double V0, double tol, int max_iterations) {
+Attempt bracketing_fallback(const LineView& view, const CatenaryGeometry& g, double H0, double V0,
+                            double tol, int max_iterations) {
   Attempt a;
   double V = V0;
   int evaluations = 0;

@@ -1,11 +1,11 @@
 // solve_catenary fails clearly: SolverError (never NaN) whose message names the
 // cause or the offending field.
 
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <limits>
 #include <string>
-
-#include <gtest/gtest.h>
 
 #include "engine/lines/catenary.hpp"
 

@@ -5,11 +5,11 @@
 // The spans are computed from chosen fairlead forces (H, V); the solver must
 // recover those forces from the spans.
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cmath>
 #include <vector>
-
-#include <gtest/gtest.h>
 
 #include "engine/lines/catenary.hpp"
 #include "support/expect_near.hpp"
@@ -45,9 +45,9 @@ struct Spans {
 Spans suspended_spans(double H, double V_F, double w, double EA, double L) {
   const double V_A = V_F - w * L;
   const double XF = H / w * (std::asinh(V_F / H) - std::asinh(V_A / H)) + H * L / EA;
-  const double ZF = H / w * (std::sqrt(1.0 + std::pow(V_F / H, 2)) -
-                             std::sqrt(1.0 + std::pow(V_A / H, 2))) +
-                    (V_F * L - 0.5 * w * L * L) / EA;
+  const double ZF =
+      H / w * (std::sqrt(1.0 + std::pow(V_F / H, 2)) - std::sqrt(1.0 + std::pow(V_A / H, 2))) +
+      (V_F * L - 0.5 * w * L * L) / EA;
   return {XF, ZF};
 }
 
@@ -59,7 +59,8 @@ Spans seabed_spans(double H, double V_F, double w, double EA, double L, double C
     const double d = LB - H / (CB * w);
     XF += CB * w / (2.0 * EA) * (-LB * LB + d * std::max(d, 0.0));
   }
-  const double ZF = H / w * (std::sqrt(1.0 + std::pow(V_F / H, 2)) - 1.0) + V_F * V_F / (2.0 * EA * w);
+  const double ZF =
+      H / w * (std::sqrt(1.0 + std::pow(V_F / H, 2)) - 1.0) + V_F * V_F / (2.0 * EA * w);
   return {XF, ZF};
 }
 

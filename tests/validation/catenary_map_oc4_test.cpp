@@ -4,14 +4,14 @@
 // CB = 1.0, depth 200 m, anchors at radius 837.6 m, fairleads at radius 40.868 m,
 // 14 m below the surface.
 
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <fstream>
 #include <numbers>
 #include <sstream>
 #include <string>
 #include <vector>
-
-#include <gtest/gtest.h>
 
 #include "engine/lines/catenary.hpp"
 #include "support/expect_near.hpp"
@@ -51,8 +51,9 @@ std::vector<MapLine> read_map_sum(const std::string& path) {
 }
 
 TEST(CatenaryMapOC4, ThreeLinesMatchMapSummary) {
-  const auto map = read_map_sum(std::string(SPIRAL_SHARED_DATA_DIR) +
-                                "/validation/oc4/5MW_OC4Semi_WSt_WavesWN_simpler.macos-gnu.MAP.sum");
+  const auto map =
+      read_map_sum(std::string(SPIRAL_SHARED_DATA_DIR) +
+                   "/validation/oc4/5MW_OC4Semi_WSt_WavesWN_simpler.macos-gnu.MAP.sum");
   ASSERT_EQ(map.size(), 3u);
   // Wet weight: MAP++ results reproduce with g = 9.80665 (validation README).
   const double w = (113.35 - 1025.0 * std::numbers::pi / 4.0 * 0.0766 * 0.0766) * 9.80665;
@@ -79,8 +80,10 @@ TEST(CatenaryMapOC4, ThreeLinesMatchMapSummary) {
     EXPECT_REL_NEAR(s.laid_length_m, map[i].Lb_m, kMapRelTol);
     EXPECT_EQ(s.anchor_vertical_N, 0.0);
     for (auto [a, e] : {std::pair{s.fairlead_horizontal_N, map[i].H_N},
-                        {s.fairlead_vertical_N, map[i].V_N}, {s.fairlead_tension_N, map[i].T_N},
-                        {s.anchor_horizontal_N, map[i].HAnch_N}, {s.laid_length_m, map[i].Lb_m}}) {
+                        {s.fairlead_vertical_N, map[i].V_N},
+                        {s.fairlead_tension_N, map[i].T_N},
+                        {s.anchor_horizontal_N, map[i].HAnch_N},
+                        {s.laid_length_m, map[i].Lb_m}}) {
       worst = std::max(worst, std::abs(a - e) / std::abs(e));
     }
   }
