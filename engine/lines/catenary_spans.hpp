@@ -153,6 +153,13 @@ struct LineView {
 /// x, z and their Jacobian at (H, V_F); H > 0. No allocation.
 SpanEvaluation evaluate_spans(const LineView& view, double H, double V_F);
 
+/// H = 0 solutions (catenary_vertical.cpp): a slack line hanging vertically with
+/// the rest on the seabed (anchor on the seabed, XF <= laid length), or, for
+/// XF <= tol, a straight vertical line taut along its whole length. Returns false
+/// if neither applies; throws SolverError for XF = 0 with a line that would fold.
+bool solve_vertical(const LineView& view, const CatenaryGeometry& g, double tol,
+                    CatenarySolution& solution);
+
 }  // namespace spiral::engine::catenary_detail
 
 namespace spiral::engine {
