@@ -1,17 +1,17 @@
-// Multi-segment elastic catenary solver: input checks, the degenerate
-// zero-horizontal-tension configurations, Newton on (ln H, V_F) with the analytic
-// Jacobian and a backtracking line search, and a bracketing fallback.
-// Span kernels: catenary_spans.{hpp,cpp}; profile: catenary_profile.cpp.
+// Multi-segment elastic catenary solver: input checks, Newton on (H, V_F) with
+// the analytic Jacobian and a backtracking line search, a bracketing fallback,
+// and the error messages. Span kernels: catenary_spans.{hpp,cpp}; H = 0
+// configurations: catenary_vertical.cpp; profile: catenary_profile.cpp.
 
 #include "engine/lines/catenary.hpp"
 
+#include <fmt/format.h>
+
+#include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
-
-#include <Eigen/LU>
-#include <fmt/format.h>
 
 #include "engine/lines/catenary_spans.hpp"
 
@@ -26,59 +26,60 @@ namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 
-void require(bool ok, const std::string& message) {
-  if (!ok) throw SolverError("catenary: " + message);
+[[noreturn]] void fail(const std::string& message) {
+  throw SolverError("catenary: " + message);
 }
 
 LineView check_inputs(const CatenaryLine& line, const CatenaryGeometry& g,
                       const CatenaryOptions& o) {
-  require(!line.segments.empty(), "segments: at least one segment is required");
+  if (!(!line.segments.empty())) fail("segments: at least one segment is required");
   const std::size_t n = line.segments.size();
   LineView view;
   view.line = &line;
   for (std::size_t i = 0; i < n; ++i) {
     const CatenarySegment& s = line.segments[i];
-    require(std::isfinite(s.length_m) && s.length_m > 0.0,
-            fmt::format("segments[{}].length_m: must be > 0, got {} m", i, s.length_m));
-    require(std::isfinite(s.weight_N_per_m),
-            fmt::format("segments[{}].weight_N_per_m: must be finite, got {} N/m", i,
-                        s.weight_N_per_m));
-    require(std::isfinite(s.EA_N) && s.EA_N > 0.0,
-            fmt::format("segments[{}].EA_N: must be > 0, got {} N", i, s.EA_N));
+    if (!(std::isfinite(s.length_m) && s.length_m > 0.0))
+      fail(fmt::format("segments[{}].length_m: must be > 0, got {} m", i, s.length_m));
+    if (!(std::isfinite(s.weight_N_per_m)))
+      fail(fmt::format("segments[{}].weight_N_per_m: must be finite, got {} N/m", i,
+                       s.weight_N_per_m));
+    if (!(std::isfinite(s.EA_N) && s.EA_N > 0.0))
+      fail(fmt::format("segments[{}].EA_N: must be > 0, got {} N", i, s.EA_N));
     view.total_weight_N += s.weight_N_per_m * s.length_m;
     view.total_length_m += s.length_m;
   }
-  require(line.joint_load_N.empty() || line.joint_load_N.size() == n - 1,
-          fmt::format("joint_load_N: must be empty or have {} entries (one per joint), got {}",
-                      n - 1, line.joint_load_N.size()));
+  if (!(line.joint_load_N.empty() || line.joint_load_N.size() == n - 1))
+    fail(fmt::format("joint_load_N: must be empty or have {} entries (one per joint), got {}",
+                     n - 1, line.joint_load_N.size()));
   for (std::size_t i = 0; i < line.joint_load_N.size(); ++i) {
-    require(std::isfinite(line.joint_load_N[i]),
-            fmt::format("joint_load_N[{}]: must be finite, got {} N", i, line.joint_load_N[i]));
+    if (!(std::isfinite(line.joint_load_N[i])))
+      fail(fmt::format("joint_load_N[{}]: must be finite, got {} N", i, line.joint_load_N[i]));
     view.total_weight_N += line.joint_load_N[i];
   }
-  require(std::isfinite(line.seabed_friction) && line.seabed_friction >= 0.0,
-          fmt::format("seabed_friction: must be >= 0, got {}", line.seabed_friction));
-  require(std::isfinite(g.horizontal_span_m) && g.horizontal_span_m >= 0.0,
-          fmt::format("horizontal_span_m: must be >= 0, got {} m", g.horizontal_span_m));
-  require(std::isfinite(g.vertical_span_m),
-          fmt::format("vertical_span_m: must be finite, got {} m", g.vertical_span_m));
-  require(std::isfinite(g.anchor_height_above_seabed_m) && g.anchor_height_above_seabed_m >= 0.0,
-          fmt::format("anchor_height_above_seabed_m: must be >= 0, got {} m",
-                      g.anchor_height_above_seabed_m));
-  require(std::isfinite(o.tolerance_m) && o.tolerance_m > 0.0,
-          fmt::format("options.tolerance_m: must be > 0, got {} m", o.tolerance_m));
-  require(o.max_iterations > 0,
-          fmt::format("options.max_iterations: must be > 0, got {}", o.max_iterations));
-  require(std::isfinite(o.max_strain) && o.max_strain > 0.0,
-          fmt::format("options.max_strain: must be > 0, got {}", o.max_strain));
-  require(o.profile_points_per_segment >= 0,
-          fmt::format("options.profile_points_per_segment: must be >= 0, got {}",
-                      o.profile_points_per_segment));
+  if (!(std::isfinite(line.seabed_friction) && line.seabed_friction >= 0.0))
+    fail(fmt::format("seabed_friction: must be >= 0, got {}", line.seabed_friction));
+  if (!(std::isfinite(g.horizontal_span_m) && g.horizontal_span_m >= 0.0))
+    fail(fmt::format("horizontal_span_m: must be >= 0, got {} m", g.horizontal_span_m));
+  if (!(std::isfinite(g.vertical_span_m)))
+    fail(fmt::format("vertical_span_m: must be finite, got {} m", g.vertical_span_m));
+  if (!(std::isfinite(g.anchor_height_above_seabed_m) && g.anchor_height_above_seabed_m >= 0.0))
+    fail(fmt::format("anchor_height_above_seabed_m: must be >= 0, got {} m",
+                     g.anchor_height_above_seabed_m));
+  if (!(std::isfinite(o.tolerance_m) && o.tolerance_m > 0.0))
+    fail(fmt::format("options.tolerance_m: must be > 0, got {} m", o.tolerance_m));
+  if (!(o.max_iterations > 0))
+    fail(fmt::format("options.max_iterations: must be > 0, got {}", o.max_iterations));
+  if (!(std::isfinite(o.max_strain) && o.max_strain > 0.0))
+    fail(fmt::format("options.max_strain: must be > 0, got {}", o.max_strain));
+  if (!(o.profile_points_per_segment >= 0))
+    fail(fmt::format("options.profile_points_per_segment: must be >= 0, got {}",
+                     o.profile_points_per_segment));
   view.anchor_on_seabed = g.anchor_height_above_seabed_m == 0.0;
-  require(!view.anchor_on_seabed || g.vertical_span_m > 0.0,
-          fmt::format("vertical_span_m: the fairlead must be above the seabed when the anchor "
-                      "lies on it, got {} m",
-                      g.vertical_span_m));
+  if (!(!view.anchor_on_seabed || g.vertical_span_m > 0.0))
+    fail(
+        fmt::format("vertical_span_m: the fairlead must be above the seabed when the anchor "
+                    "lies on it, got {} m",
+                    g.vertical_span_m));
   const double chord_m = std::hypot(g.horizontal_span_m, g.vertical_span_m);
   if (chord_m >= view.total_length_m * (1.0 + o.max_strain)) {
     throw SolverError(fmt::format(
@@ -95,7 +96,8 @@ std::string infeasibility_text(const CatenaryLine& line, Infeasibility why, int 
     case Infeasibility::buoyant_segment_on_seabed:
       return fmt::format(
           "segments[{}] is buoyant (weight {} N/m) but would have to lie on the seabed; a buoyant "
-          "segment on the seabed cannot be represented by this catenary model (use a finite-element "
+          "segment on the seabed cannot be represented by this catenary model (use a "
+          "finite-element "
           "line, or lift the anchor off the seabed)",
           index, line.segments[index].weight_N_per_m);
     case Infeasibility::buoy_on_seabed:
@@ -109,93 +111,6 @@ std::string infeasibility_text(const CatenaryLine& line, Infeasibility why, int 
       break;
   }
   return {};
-}
-
-// ---------------------------------------------------------------------------
-// Zero horizontal tension (H = 0): the line hangs vertically from the fairlead.
-
-/// Vertical hanging line at H = 0: height reached by the suspended part and
-/// its derivative; laid part from the touchdown walk. Valid while V >= 0 along
-/// the suspended part (a vertical line cannot carry compression).
-struct Hanging {
-  double z_m = 0.0;
-  double dz_dV = 0.0;
-  double laid_length_m = 0.0;
-  bool valid = true;
-  Infeasibility infeasible = Infeasibility::none;
-  int infeasible_index = -1;
-};
-
-Hanging hanging_line(const LineView& view, double V_F) {
-  // Reuse the touchdown walk at a tiny H: only its contact fields are used.
-  Hanging h;
-  SpanEvaluation e;
-  if (view.anchor_on_seabed && V_F < view.total_weight_N) {
-    e = detail::evaluate_spans(view, 1.0, V_F);
-    if (e.infeasible != Infeasibility::none) {
-      h.valid = false;
-      h.infeasible = e.infeasible;
-      h.infeasible_index = e.infeasible_index;
-      return h;
-    }
-  }
-  const auto& seg = view.line->segments;
-  const int n = static_cast<int>(seg.size());
-  const int k = e.contact ? e.touchdown_segment : 0;
-  double above_N = 0.0;
-  for (int i = n - 1; i >= k; --i) {
-    const CatenarySegment& s = seg[i];
-    const bool td_piece = e.contact && i == k && !e.touchdown_at_joint;
-    const double L = td_piece ? s.length_m - e.touchdown_laid_m : s.length_m;
-    const double Vt = V_F - above_N;
-    const double Vb = td_piece ? 0.0 : Vt - s.weight_N_per_m * L;
-    if (Vt < 0.0 || Vb < -1e-12 * std::max(1.0, std::abs(Vt))) h.valid = false;
-    // Irvine eq. 1.44 at H = 0: z = L + (Vt + Vb) L/(2 EA).
-    h.z_m += L + 0.5 * (Vt + Vb) * L / s.EA_N;
-    h.dz_dV += L / s.EA_N + (td_piece ? (1.0 + Vb / s.EA_N) / s.weight_N_per_m : 0.0);
-    above_N += s.weight_N_per_m * s.length_m;
-    if (i > 0) above_N += view.joint_load(i - 1);
-  }
-  h.laid_length_m = e.laid_length_m;
-  return h;
-}
-
-/// V_F of the vertical hanging line with a laid part closing ZF (bracketed
-/// Newton on the monotone z(V_F) over (0, W_total)). Returns false when no
-/// such configuration exists.
-bool solve_hanging(const LineView& view, double ZF, double tol, double& V_F, Hanging& h,
-                   int& iterations) {
-  double lo = 0.0, hi = view.total_weight_N;
-  if (hi <= 0.0) return false;
-  const Hanging top = hanging_line(view, hi);
-  if (!top.valid || top.z_m <= ZF) return false;
-  double V = 0.5 * (lo + hi);
-  for (int it = 0; it < 200; ++it) {
-    ++iterations;
-    h = hanging_line(view, V);
-    const double f = h.valid ? h.z_m - ZF : -1.0;  // invalid: V too low (buoyant laid)
-    if (h.valid && std::abs(f) <= tol) {
-      V_F = V;
-      return true;
-    }
-    (f > 0.0 ? hi : lo) = V;
-    double next = h.valid && h.dz_dV > 0.0 ? V - f / h.dz_dV : lo - 1.0;
-    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-    if (hi - lo <= 4.0 * kEps * view.total_weight_N) {
-      V_F = V;
-      return h.valid;
-    }
-    V = next;
-  }
-  return false;
-}
-
-/// Integral of ds/T over a segment of a vertical line (H = 0, V > 0 throughout):
-/// ln(Vt/Vb)/w written as L log1p(wL/Vb)/(wL/Vb)/Vb (finite as w -> 0).
-double vertical_compliance_integral(double Vt, double L, double w) {
-  const double Vb = Vt - w * L;
-  if (Vb <= 0.0) return std::numeric_limits<double>::infinity();
-  return L * detail::log1p_over(w * L / Vb) / Vb;
 }
 
 // ---------------------------------------------------------------------------
@@ -238,7 +153,7 @@ bool closed(const Iterate& it, double tol) {
 /// line search on the closure norm.
 Attempt newton(const LineView& view, const CatenaryGeometry& g, double H0, double V0, double tol,
                int max_iterations) {
-  constexpr double kMaxDrop = 0.9;  // largest fractional decrease of H in one step
+  constexpr double kMinFraction = 0.05;  // H may fall to 5 % of its value in one step
   constexpr double kArmijo = 1e-4;
   constexpr int kMaxHalvings = 40;
   Attempt a;
@@ -261,15 +176,15 @@ Attempt newton(const LineView& view, const CatenaryGeometry& g, double H0, doubl
     if (!std::isfinite(det) || det == 0.0) return a;
     const double dH = -(j11 * cur.rx - j01 * cur.rz) / det;
     const double dV = -(-j10 * cur.rx + j00 * cur.rz) / det;
-    // Keep H > 0: shorten the Newton step so that H falls by at most 90 %
-    // (moving along the Newton direction keeps H and V scaling together, which
-    // is what a nearly straight line needs).
-    const double alpha_max = dH < -kMaxDrop * cur.H ? kMaxDrop * cur.H / -dH : 1.0;
+    // Keep H > 0: along the Newton direction while H stays above a fraction of
+    // its value (H and V scale together on a nearly straight line); beyond it,
+    // clamp H alone so the V step is not lost (kinks such as a clump lifting off).
     const double r0 = cur.norm();
-    double alpha = alpha_max;
+    double alpha = 1.0;
     bool accepted = false;
     for (int h = 0; h < kMaxHalvings; ++h, alpha *= 0.5) {
-      Iterate trial = evaluate(view, g, cur.H + alpha * dH, cur.V + alpha * dV);
+      const double H_trial = std::max(cur.H + alpha * dH, kMinFraction * cur.H);
+      Iterate trial = evaluate(view, g, H_trial, cur.V + alpha * dV);
       if (!usable(trial)) {
         a.infeasible = trial.e.infeasible;
         a.infeasible_index = trial.e.infeasible_index;
@@ -293,12 +208,16 @@ Attempt newton(const LineView& view, const CatenaryGeometry& g, double H0, doubl
 // globally convergent for the monotone spans of a catenary.
 
 /// V_F closing z at fixed H; z is increasing in V_F. Infeasible points lie at low V_F.
-bool solve_V_at_H(const LineView& view, const CatenaryGeometry& g, double H, double& V,
-                  double tol, Iterate& out, int& evaluations) {
+bool solve_V_at_H(const LineView& view, const CatenaryGeometry& g, double H, double& V, double tol,
+                  Iterate& out, int& evaluations, Attempt& record) {
   const double step0 = std::max({std::abs(view.total_weight_N), H, 1.0});
   auto f_at = [&](double v, Iterate& it) {
     ++evaluations;
     it = evaluate(view, g, H, v);
+    if (it.e.infeasible != Infeasibility::none) {
+      record.infeasible = it.e.infeasible;
+      record.infeasible_index = it.e.infeasible_index;
+    }
     return usable(it) ? it.rz : -std::numeric_limits<double>::infinity();
   };
   Iterate it;
@@ -333,7 +252,7 @@ bool solve_V_at_H(const LineView& view, const CatenaryGeometry& g, double H, dou
     if (std::isfinite(fv) && std::abs(fv) <= 0.1 * tol) break;
     (fv > 0.0 ? hi : lo) = v;
     double next = std::isfinite(fv) && it.e.jacobian(1, 1) > 0.0 ? v - fv / it.e.jacobian(1, 1)
-                                                                    : 0.5 * (lo + hi);
+                                                                 : 0.5 * (lo + hi);
     if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
     if (hi - lo <= 4.0 * kEps * std::max(std::abs(lo), std::abs(hi))) break;
     v = next;
@@ -344,14 +263,14 @@ bool solve_V_at_H(const LineView& view, const CatenaryGeometry& g, double H, dou
   return true;
 }
 
-Attempt bracketing_fallback(const LineView& view, const CatenaryGeometry& g, double H0,
-                            double V0, double tol) {
+Attempt bracketing_fallback(const LineView& view, const CatenaryGeometry& g, double H0, double V0,
+                            double tol, int max_iterations) {
   Attempt a;
   double V = V0;
   int evaluations = 0;
   // g(u) = x(e^u, V(e^u)) - XF, increasing in u.
   auto g_at = [&](double u, Iterate& it) {
-    if (!solve_V_at_H(view, g, std::exp(u), V, tol, it, evaluations)) {
+    if (!solve_V_at_H(view, g, std::exp(u), V, tol, it, evaluations, a)) {
       return std::numeric_limits<double>::quiet_NaN();
     }
     return it.rx;
@@ -364,17 +283,20 @@ Attempt bracketing_fallback(const LineView& view, const CatenaryGeometry& g, dou
     return a;
   }
   double lo = u, hi = u, glo = gu, ghi = gu;
-  for (int k = 0; k < 60 && glo > 0.0; ++k) {
+  double step = 1.0;
+  const int expansions = std::min(12, max_iterations);
+  for (int k = 0; k < expansions && glo > 0.0; ++k, step *= 2.0) {
     hi = lo;
     ghi = glo;
-    lo -= 1.0;
+    lo -= step;
     glo = g_at(lo, it);
     if (!std::isfinite(glo)) break;
   }
-  for (int k = 0; k < 60 && ghi < 0.0; ++k) {
+  step = 1.0;
+  for (int k = 0; k < expansions && ghi < 0.0; ++k, step *= 2.0) {
     lo = hi;
     glo = ghi;
-    hi += 1.0;
+    hi += step;
     ghi = g_at(hi, it);
     if (!std::isfinite(ghi)) break;
   }
@@ -384,7 +306,7 @@ Attempt bracketing_fallback(const LineView& view, const CatenaryGeometry& g, dou
   }
   // Illinois regula falsi on u.
   int side = 0;
-  for (int k = 0; k < 300; ++k) {
+  for (int k = 0; k < max_iterations; ++k) {
     double m = (lo * ghi - hi * glo) / (ghi - glo);
     if (!(m > lo && m < hi)) m = 0.5 * (lo + hi);
     const double gm = g_at(m, it);
@@ -466,70 +388,30 @@ CatenarySolution from_iterate(const Iterate& it, int iterations) {
   return s;
 }
 
-/// H = 0 solutions: slack line hanging vertically with the rest on the seabed,
-/// or a straight vertical line for XF = 0. Returns false if neither applies.
-bool solve_vertical(const LineView& view, const CatenaryGeometry& g, double tol,
-                    CatenarySolution& s) {
-  const double XF = g.horizontal_span_m, ZF = g.vertical_span_m;
-  if (view.anchor_on_seabed) {
-    double V = 0.0;
-    Hanging h;
-    int iterations = 0;
-    if (solve_hanging(view, ZF, tol, V, h, iterations) && XF <= h.laid_length_m + tol) {
-      s = {};
-      s.fairlead_vertical_N = V;
-      s.fairlead_tension_N = V;
-      s.laid_length_m = h.laid_length_m;
-      s.touchdown_x_m = XF;
-      s.regime = CatenaryRegime::slack_vertical;
-      s.tangent_stiffness(1, 1) = 1.0 / h.dz_dV;  // horizontal terms are zero: slack on the seabed
-      s.iterations = iterations;
-      s.residual_m = std::abs(h.z_m - ZF);
-      return true;
+/// What the attempts so far achieved: the final answer, or the error message.
+struct Progress {
+  int iterations = 0;
+  bool converged = false;
+  bool have_best = false;
+  Iterate best;  // converged iterate, else the smallest closure residual seen
+  Infeasibility infeasible = Infeasibility::none;  // only the model limits (buoyant on seabed)
+  int infeasible_index = -1;
+
+  void record(const Attempt& a) {
+    iterations += a.iterations;
+    if (a.infeasible == Infeasibility::buoyant_segment_on_seabed ||
+        a.infeasible == Infeasibility::buoy_on_seabed) {
+      infeasible = a.infeasible;
+      infeasible_index = a.infeasible_index;
+    }
+    if (converged || !usable(a.it)) return;
+    if (a.converged || !have_best || a.it.norm() < best.norm()) {
+      best = a.it;
+      have_best = true;
+      converged = a.converged;
     }
   }
-  if (XF > tol) return false;
-  // Straight vertical line, V >= 0 all along: z(V_F) is affine (Irvine eq. 1.44 at H = 0).
-  const auto& seg = view.line->segments;
-  const int n = static_cast<int>(seg.size());
-  double z0 = 0.0, slope = 0.0, above = 0.0;
-  for (int i = n - 1; i >= 0; --i) {
-    const double L = seg[i].length_m, EA = seg[i].EA_N;
-    z0 += L + 0.5 * (-2.0 * above - seg[i].weight_N_per_m * L) * L / EA;
-    slope += L / EA;
-    above += seg[i].weight_N_per_m * L;
-    if (i > 0) above += view.joint_load(i - 1);
-  }
-  const double V_F = (ZF - z0) / slope;
-  double compliance_x = 0.0;  // integral of (1/T + 1/EA) ds, m/N
-  above = 0.0;
-  for (int i = n - 1; i >= 0; --i) {
-    const double Vt = V_F - above, Vb = Vt - seg[i].weight_N_per_m * seg[i].length_m;
-    if (Vt < 0.0 || Vb < 0.0) {
-      throw SolverError(fmt::format(
-          "catenary: zero horizontal span with a line that is not taut along its whole length "
-          "(vertical force {:.6g} N at the bottom of segments[{}]): the line would fold on "
-          "itself; give a horizontal span > 0",
-          std::min(Vt, Vb), i));
-    }
-    compliance_x += vertical_compliance_integral(Vt, seg[i].length_m, seg[i].weight_N_per_m) +
-                    seg[i].length_m / seg[i].EA_N;
-    above += seg[i].weight_N_per_m * seg[i].length_m;
-    if (i > 0) above += view.joint_load(i - 1);
-  }
-  s = {};
-  s.fairlead_vertical_N = V_F;
-  s.fairlead_tension_N = std::abs(V_F);
-  s.anchor_vertical_N = V_F - view.total_weight_N;
-  s.anchor_tension_N = std::abs(s.anchor_vertical_N);
-  s.regime = CatenaryRegime::suspended;
-  // Pendulum (geometric) stiffness dH/dXF = 1 / integral (1/T + 1/EA) ds.
-  s.tangent_stiffness(0, 0) = std::isfinite(compliance_x) ? 1.0 / compliance_x : 0.0;
-  s.tangent_stiffness(1, 1) = 1.0 / slope;
-  s.iterations = 1;
-  s.residual_m = 0.0;
-  return true;
-}
+};
 
 }  // namespace
 
@@ -543,27 +425,22 @@ CatenarySolution solve_catenary(const CatenaryLine& line, const CatenaryGeometry
       view.total_length_m + geometry.horizontal_span_m + std::abs(geometry.vertical_span_m);
   const double tol = std::max(options.tolerance_m, 64.0 * kEps * scale_m);
 
-  CatenarySolution solution;
-  bool solved = false;
-  int iterations = 0;
-  Attempt last;
-
+  Progress progress;
   // Warm start first: it is usually 1-3 Newton steps from the answer.
   if (warm_start && std::isfinite(warm_start->horizontal_N) &&
       std::isfinite(warm_start->vertical_N) && warm_start->horizontal_N > 0.0) {
-    last = newton(view, geometry, warm_start->horizontal_N, warm_start->vertical_N, tol,
-                  options.max_iterations);
-    iterations += last.iterations;
-    solved = last.converged;
+    progress.record(newton(view, geometry, warm_start->horizontal_N, warm_start->vertical_N, tol,
+                           options.max_iterations));
   }
-  if (!solved && solve_vertical(view, geometry, tol, solution)) {
-    solution.iterations += iterations;
+  CatenarySolution solution;
+  if (!progress.converged && detail::solve_vertical(view, geometry, tol, solution)) {
+    solution.iterations += progress.iterations;
     if (options.profile_points_per_segment > 0) {
       fill_catenary_profile(line, geometry, options.profile_points_per_segment, solution);
     }
     return solution;
   }
-  if (!solved) {
+  if (!progress.converged) {
     // Cold start from the better (smaller residual) of two standard guesses.
     const Guess candidates[] = {map_guess(view, geometry), taut_guess(view, geometry)};
     double best = std::numeric_limits<double>::infinity();
@@ -575,48 +452,35 @@ CatenarySolution solve_catenary(const CatenaryLine& line, const CatenaryGeometry
         start = c;
       }
     }
-    last = newton(view, geometry, start.H, start.V, tol, options.max_iterations);
-    iterations += last.iterations;
-    solved = last.converged;
-    if (!solved) {
-      const double H0 = usable(last.it) ? last.it.H : start.H;
-      const double V0 = usable(last.it) ? last.it.V : start.V;
-      Attempt fb = bracketing_fallback(view, geometry, H0, V0, tol);
-      iterations += fb.iterations;
-      if (usable(fb.it)) {
-        // Polish with Newton from the bracketed point.
-        Attempt polish = newton(view, geometry, fb.it.H, fb.it.V, tol, options.max_iterations);
-        iterations += polish.iterations;
-        if (polish.converged || !fb.converged) {
-          fb = polish;
-        }
-      }
-      if (fb.converged) {
-        last = fb;
-        solved = true;
-      } else if (fb.infeasible != Infeasibility::none || usable(fb.it)) {
-        if (fb.infeasible != Infeasibility::none) last.infeasible = fb.infeasible,
-                                                  last.infeasible_index = fb.infeasible_index;
+    progress.record(newton(view, geometry, start.H, start.V, tol, options.max_iterations));
+    if (!progress.converged) {
+      // Newton stalled: bracketing fallback, then Newton to polish its answer.
+      const Attempt fb =
+          bracketing_fallback(view, geometry, start.H, start.V, tol, options.max_iterations);
+      progress.record(fb);
+      if (usable(fb.it) && !progress.converged) {
+        progress.record(newton(view, geometry, fb.it.H, fb.it.V, tol, options.max_iterations));
       }
     }
   }
-  if (!solved) {
-    const double residual = usable(last.it) ? last.it.norm() : std::numeric_limits<double>::infinity();
-    if (last.infeasible == Infeasibility::buoyant_segment_on_seabed ||
-        last.infeasible == Infeasibility::buoy_on_seabed) {
-      throw SolverError("catenary: " + infeasibility_text(line, last.infeasible,
-                                                          last.infeasible_index),
-                        {iterations, residual, "m"});
+  if (!progress.converged) {
+    const double residual =
+        progress.have_best ? progress.best.norm() : std::numeric_limits<double>::infinity();
+    const SolverDiagnostics diagnostics{progress.iterations, residual, "m"};
+    if (progress.infeasible != Infeasibility::none) {
+      throw SolverError(
+          "catenary: " + infeasibility_text(line, progress.infeasible, progress.infeasible_index),
+          diagnostics);
     }
     throw SolverError(
         fmt::format("catenary: no convergence after {} iterations, span closure residual {:.3e} m "
                     "(tolerance {:.1e} m); XF = {} m, ZF = {} m, unstretched length {} m; check "
-                    "the line data or give a warm start",
-                    iterations, residual, tol, geometry.horizontal_span_m,
+                    "the line data, raise options.max_iterations or give a warm start",
+                    progress.iterations, residual, tol, geometry.horizontal_span_m,
                     geometry.vertical_span_m, view.total_length_m),
-        {iterations, residual, "m"});
+        diagnostics);
   }
-  solution = from_iterate(last.it, iterations);
+  solution = from_iterate(progress.best, progress.iterations);
   if (!solution.tangent_stiffness.allFinite()) solution.tangent_stiffness.setZero();
   if (options.profile_points_per_segment > 0) {
     fill_catenary_profile(line, geometry, options.profile_points_per_segment, solution);

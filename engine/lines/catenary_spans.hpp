@@ -11,9 +11,8 @@
 // The closed forms are rewritten so that no term divides by w or by H
 // (cancellation-free for w -> 0, H -> 0, |V| >> H); the rewrite is noted at each step.
 
-#include <cmath>
-
 #include <Eigen/Core>
+#include <cmath>
 
 #include "engine/lines/catenary.hpp"
 
@@ -89,10 +88,10 @@ inline PieceSpans suspended_piece(double H, double Vt, double L, double w, doubl
 /// tension falling at mu_w = mu*w per unit length towards the anchor, floored at 0
 /// (Jonkman 2007 eqs. B-7..B-9, one piece).
 struct LaidPiece {
-  double x_m = 0.0;        // stretched horizontal length
-  double dx_dTtop = 0.0;   // m/N
-  double dx_dL = 0.0;      // -
-  double T_bottom_N = 0.0; // tension at the anchor-side end
+  double x_m = 0.0;                    // stretched horizontal length
+  double dx_dTtop = 0.0;               // m/N
+  double dx_dL = 0.0;                  // -
+  double T_bottom_N = 0.0;             // tension at the anchor-side end
   bool tension_reaches_bottom = true;  // false: tension fell to 0 inside the piece
 };
 
@@ -153,6 +152,13 @@ struct LineView {
 
 /// x, z and their Jacobian at (H, V_F); H > 0. No allocation.
 SpanEvaluation evaluate_spans(const LineView& view, double H, double V_F);
+
+/// H = 0 solutions (catenary_vertical.cpp): a slack line hanging vertically with
+/// the rest on the seabed (anchor on the seabed, XF <= laid length), or, for
+/// XF <= tol, a straight vertical line taut along its whole length. Returns false
+/// if neither applies; throws SolverError for XF = 0 with a line that would fold.
+bool solve_vertical(const LineView& view, const CatenaryGeometry& g, double tol,
+                    CatenarySolution& solution);
 
 }  // namespace spiral::engine::catenary_detail
 

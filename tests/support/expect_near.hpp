@@ -10,12 +10,12 @@
 //   EXPECT_EIGEN_REL_NEAR(actual, expected, rel_tol);
 //       max|actual - expected| <= rel_tol * max|expected|, element-wise report
 
+#include <gtest/gtest.h>
+
+#include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
 #include <sstream>
-
-#include <Eigen/Core>
-#include <gtest/gtest.h>
 
 namespace spiral::test {
 
@@ -44,7 +44,8 @@ inline ::testing::AssertionResult rel_near(const char* actual_expr, const char* 
 
 template <typename A, typename B>
 ::testing::AssertionResult eigen_rel_near(const char* actual_expr, const char* expected_expr,
-                                          const char* /*tol_expr*/, const Eigen::MatrixBase<A>& actual,
+                                          const char* /*tol_expr*/,
+                                          const Eigen::MatrixBase<A>& actual,
                                           const Eigen::MatrixBase<B>& expected, double rel_tol) {
   if (actual.rows() != expected.rows() || actual.cols() != expected.cols()) {
     return ::testing::AssertionFailure()
@@ -53,17 +54,17 @@ template <typename A, typename B>
   }
   const double scale = expected.cwiseAbs().maxCoeff();
   const double allowed = rel_tol * scale;
-  const auto diff = (actual.derived().template cast<double>() -
-                     expected.derived().template cast<double>())
-                        .eval();
+  const auto diff =
+      (actual.derived().template cast<double>() - expected.derived().template cast<double>())
+          .eval();
   const double worst = diff.cwiseAbs().maxCoeff();
   if (actual.allFinite() && worst <= allowed) return ::testing::AssertionSuccess();
   std::ostringstream m;
   m.precision(12);
   const Eigen::IOFormat fmt(Eigen::StreamPrecision, 0, ", ", "\n", "    [", "]");
   m << actual_expr << " differs from " << expected_expr << ": max |difference| = " << worst
-    << " > allowed " << allowed << " (relative tolerance " << rel_tol << " of max|expected| = "
-    << scale << ")\n  actual:\n"
+    << " > allowed " << allowed << " (relative tolerance " << rel_tol
+    << " of max|expected| = " << scale << ")\n  actual:\n"
     << actual.format(fmt) << "\n  expected:\n"
     << expected.format(fmt) << "\n  difference:\n"
     << diff.format(fmt);

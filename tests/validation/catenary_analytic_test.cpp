@@ -5,13 +5,14 @@
 // The spans are computed from chosen fairlead forces (H, V); the solver must
 // recover those forces from the spans.
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cmath>
 #include <vector>
 
-#include <gtest/gtest.h>
-
 #include "engine/lines/catenary.hpp"
+#include "engine/lines/catenary_spans.hpp"
 #include "support/expect_near.hpp"
 
 namespace spiral::engine {
@@ -45,9 +46,9 @@ struct Spans {
 Spans suspended_spans(double H, double V_F, double w, double EA, double L) {
   const double V_A = V_F - w * L;
   const double XF = H / w * (std::asinh(V_F / H) - std::asinh(V_A / H)) + H * L / EA;
-  const double ZF = H / w * (std::sqrt(1.0 + std::pow(V_F / H, 2)) -
-                             std::sqrt(1.0 + std::pow(V_A / H, 2))) +
-                    (V_F * L - 0.5 * w * L * L) / EA;
+  const double ZF =
+      H / w * (std::sqrt(1.0 + std::pow(V_F / H, 2)) - std::sqrt(1.0 + std::pow(V_A / H, 2))) +
+      (V_F * L - 0.5 * w * L * L) / EA;
   return {XF, ZF};
 }
 
@@ -59,7 +60,8 @@ Spans seabed_spans(double H, double V_F, double w, double EA, double L, double C
     const double d = LB - H / (CB * w);
     XF += CB * w / (2.0 * EA) * (-LB * LB + d * std::max(d, 0.0));
   }
-  const double ZF = H / w * (std::sqrt(1.0 + std::pow(V_F / H, 2)) - 1.0) + V_F * V_F / (2.0 * EA * w);
+  const double ZF =
+      H / w * (std::sqrt(1.0 + std::pow(V_F / H, 2)) - 1.0) + V_F * V_F / (2.0 * EA * w);
   return {XF, ZF};
 }
 
@@ -265,6 +267,54 @@ TEST(CatenaryAnalytic, TangentStiffnessEqualsCentralDifferences) {
     }
     EXPECT_EIGEN_REL_NEAR(base.tangent_stiffness, fd, kStiffnessFdRelTol) << c.name;
   }
+}
+
+// Chain on the seabed up to a clump that the seabed partly carries: the
+// touchdown sits at the joint. Spans from the forward span evaluation at
+// chosen forces (V_F between w2 L2 and w2 L2 + clump).
+TEST(CatenaryAnalytic, TouchdownAtClumpJoint) {
+  CatenaryLine line;
+  line.segments = {{200.0, 1000.0, 8e8}, {600.0, 300.0, 3e8}};
+  line.joint_load_N = {2e5};
+  line.seabed_friction = 0.6;
+  const double H = 5e4, V = 2.8e5;
+  catenary_detail::LineView view{&line, true, 1000.0 * 200.0 + 300.0 * 600.0 + 2e5, 800.0};
+  const auto e = catenary_detail::evaluate_spans(view, H, V);
+  ASSERT_TRUE(e.touchdown_at_joint);
+  const CatenaryGeometry g{e.x_m, e.z_m, 0.0};
+  const CatenarySolution sol = solve_catenary(line, g);
+  EXPECT_REL_NEAR(sol.fairlead_horizontal_N, H, kRecoverRelTol);
+  EXPECT_REL_NEAR(sol.fairlead_vertical_N, V, kRecoverRelTol);
+  EXPECT_REL_NEAR(sol.laid_length_m, 200.0, kRecoverRelTol);
+  // Friction: mu times the clump's resting part (W_total - V_F - laid chain), then mu w L.
+  const double rest = 2e5 - (V - 300.0 * 600.0);
+  EXPECT_REL_NEAR(sol.anchor_horizontal_N, std::max(H - 0.6 * rest - 0.6 * 1000.0 * 200.0, 0.0),
+                  kRecoverRelTol);
+  // Tangent stiffness against central differences.
+  Eigen::Matrix2d fd;
+  for (int j = 0; j < 2; ++j) {
+    CatenaryGeometry plus = g, minus = g;
+    (j == 0 ? plus.horizontal_span_m : plus.vertical_span_m) += kStiffnessFdStep_m;
+    (j == 0 ? minus.horizontal_span_m : minus.vertical_span_m) -= kStiffnessFdStep_m;
+    const CatenarySolution a = solve_catenary(line, plus), b = solve_catenary(line, minus);
+    fd(0, j) = (a.fairlead_horizontal_N - b.fairlead_horizontal_N) / (2 * kStiffnessFdStep_m);
+    fd(1, j) = (a.fairlead_vertical_N - b.fairlead_vertical_N) / (2 * kStiffnessFdStep_m);
+  }
+  EXPECT_EIGEN_REL_NEAR(sol.tangent_stiffness, fd, kStiffnessFdRelTol);
+}
+
+TEST(CatenaryAnalytic, VerticalTautTendon) {
+  // XF = 0: straight vertical line, ZF = L + (V_F + V_A) L/(2 EA), V_A = V_F - w L.
+  const double L = 500.0, w = 400.0, EA = 2e9, ZF = 500.4;
+  const double V_F = (ZF - L) * EA / L + 0.5 * w * L;
+  const CatenarySolution sol = solve_catenary(single(L, w, EA), {0.0, ZF, 0.0});
+  EXPECT_EQ(sol.fairlead_horizontal_N, 0.0);
+  EXPECT_REL_NEAR(sol.fairlead_vertical_N, V_F, kRecoverRelTol);
+  EXPECT_REL_NEAR(sol.anchor_vertical_N, V_F - w * L, kRecoverRelTol);
+  EXPECT_REL_NEAR(sol.tangent_stiffness(1, 1), EA / L, kRecoverRelTol);
+  // Pendulum stiffness dH/dXF = 1 / integral (1/T + 1/EA) ds, with integral ds/T = ln(V_F/V_A)/w.
+  EXPECT_REL_NEAR(sol.tangent_stiffness(0, 0),
+                  1.0 / (std::log(V_F / (V_F - w * L)) / w + L / EA), kRecoverRelTol);
 }
 
 TEST(CatenaryAnalytic, SlackVerticalHangingLine) {

@@ -5,14 +5,14 @@
 // spans (Irvine 1981 eqs. 1.43-1.44; Jonkman 2007 eqs. B-3, B-4, B-7) written
 // here independently of the solver.
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
-
-#include <gtest/gtest.h>
 
 #include "engine/lines/catenary.hpp"
 #include "support/expect_near.hpp"
@@ -123,7 +123,10 @@ TEST(CatenaryMoorPy, TenCases) {
     EXPECT_REL_NEAR(fBH, c.fBH, kMoorPyRelTol);
     EXPECT_REL_NEAR(fBV, c.fBV, kMoorPyRelTol);
     EXPECT_REL_NEAR(r.laid_length_m, c.LBot, kMoorPyRelTol);
-    for (auto [a, e] : {std::pair{fAH, c.fAH}, {fAV, c.fAV}, {fBH, c.fBH}, {fBV, c.fBV},
+    for (auto [a, e] : {std::pair{fAH, c.fAH},
+                        {fAV, c.fAV},
+                        {fBH, c.fBH},
+                        {fBV, c.fBV},
                         {r.laid_length_m, c.LBot}}) {
       if (e != 0.0) worst = std::max(worst, std::abs(a - e) / std::abs(e));
     }
