@@ -39,7 +39,7 @@ int run_statics(const std::string& project_file, const std::vector<double>& offs
     // Rotations are given in degrees on the command line, SI (rad) inside.
     offset(i) = offset_input[static_cast<std::size_t>(i)] * (i < 3 ? 1.0 : std::numbers::pi / 180.0);
   }
-  const design::MooringDesignModel model = design::build_mooring_model(loaded.project);
+  design::LineArrayModel model = design::build_mooring_model(loaded.project);
   const design::StaticsResult result = design::run_statics(model, offset);
   if (json) {
     fmt::print("{}\n", design::statics_to_json(result, loaded.project.name).dump(2));

@@ -1,14 +1,15 @@
 #pragma once
-// From the project (validated, SI) to the engine's mooring model: line types
-// resolved to physical properties, segments to catenary segments with their
-// submerged weights, clumps and buoys to joint loads.
+// From the project (validated, SI) to the engine's static line array: line
+// types resolved to physical properties, segments to catenary segments with
+// their submerged weights, clumps and buoys to joint loads.
 
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "design/line_properties.hpp"
 #include "design/project.hpp"
-#include "engine/analysis/mooring_statics.hpp"
+#include "engine/analysis/static_line.hpp"
 
 namespace spiral::design {
 
@@ -19,17 +20,24 @@ struct MooringLineDesign {
   std::vector<LineTypeProperties> segment_types;  ///< one per segment, anchor -> fairlead
 };
 
-struct MooringDesignModel {
-  engine::MooringSystemModel system;
-  std::vector<MooringLineDesign> lines;  ///< same order as system.lines
+/// The lines attached to the hull, ready for the engine's static analyses.
+/// Each engine line holds its warm start: one model per analysis thread.
+struct LineArrayModel {
+  Eigen::Vector3d reference_point_g = Eigen::Vector3d::Zero();  ///< hull reference point at rest
+  std::vector<std::unique_ptr<engine::StaticLine>> lines;
+  std::vector<MooringLineDesign> designs;  ///< same order as `lines`
 };
 
 /// Resolves every line type of the project (by name).
 std::vector<LineTypeProperties> resolve_line_types(const Project& project);
 
-/// Builds the mooring model of the project. `excluded_line`, when not empty,
-/// names a line to leave out (damaged condition). Throws std::invalid_argument
-/// for an unknown line name (the validation pass has caught the rest).
-MooringDesignModel build_mooring_model(const Project& project, const std::string& excluded_line = {});
+/// The engine catenary of one project line.
+engine::CatenaryLine catenary_of(const Project& project, const MooringLine& line,
+                                 const std::vector<LineTypeProperties>& types);
+
+/// The mooring lines of the project as quasi-static catenaries. `excluded_line`,
+/// when not empty, names a line to leave out (damaged condition). Throws
+/// std::invalid_argument for an unknown line name.
+LineArrayModel build_mooring_model(const Project& project, const std::string& excluded_line = {});
 
 }  // namespace spiral::design

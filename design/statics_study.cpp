@@ -5,86 +5,80 @@
 #include <cmath>
 #include <numbers>
 
+#include "engine/analysis/line_array.hpp"
+
 namespace spiral::design {
 
 namespace {
 
 constexpr double kRadToDeg = 180.0 / std::numbers::pi;
 // Profile points per segment for the tension along the line. Within a
-// catenary segment T^2 = H^2 + V(s)^2 with V linear in s, and on the seabed T
+// catenary segment T² = H² + V(s)² with V linear in s, and on the seabed T
 // falls monotonically towards the anchor, so the largest tension of a segment
-// is at one of its ends: a few points per segment find it exactly.
-constexpr int kProfilePointsPerSegment = 3;
-// Arc-length slack (m) when assigning profile points at a joint to both segments.
-constexpr double kJointSlack_m = 1e-9;
+// is at one of its ends: the end points find it exactly.
+constexpr int kProfilePointsPerSegment = 2;
 
-const char* regime_name(engine::CatenaryRegime regime) {
-  switch (regime) {
-    case engine::CatenaryRegime::suspended: return "suspended";
-    case engine::CatenaryRegime::touchdown: return "touchdown";
-    case engine::CatenaryRegime::slack_vertical: return "slack";
+LineStaticsRow row_of(const MooringLineDesign& design, const engine::LineState& state) {
+  LineStaticsRow row;
+  row.name = design.name;
+  const Eigen::Vector3d& top = state.top.force_g;
+  const Eigen::Vector3d& bottom = state.bottom_force_g;
+  row.fairlead_tension_N = top.norm();
+  row.fairlead_horizontal_N = top.head<2>().norm();
+  row.fairlead_vertical_N = -top.z();
+  row.fairlead_angle_deg = std::atan2(row.fairlead_vertical_N, row.fairlead_horizontal_N) * kRadToDeg;
+  row.anchor_tension_N = bottom.norm();
+  row.anchor_horizontal_N = bottom.head<2>().norm();
+  row.anchor_vertical_N = bottom.z();
+  row.anchor_uplift_angle_deg =
+      row.anchor_tension_N > 0.0 ? std::atan2(row.anchor_vertical_N, row.anchor_horizontal_N) * kRadToDeg : 0.0;
+  row.laid_length_m = state.laid_length_m;
+  row.touchdown_distance_m = state.touchdown_distance_m;
+  row.regime = state.regime;
+  row.iterations = state.top.iterations;
+
+  row.max_tension_N = std::max(row.fairlead_tension_N, row.anchor_tension_N);
+  std::vector<double> segment_max(design.segment_types.size(), 0.0);
+  for (const engine::LineProfilePoint& point : state.profile) {
+    const auto segment = static_cast<std::size_t>(point.segment);
+    if (segment < segment_max.size()) segment_max[segment] = std::max(segment_max[segment], point.tension_N);
+    row.max_tension_N = std::max(row.max_tension_N, point.tension_N);
   }
-  return "unknown";
-}
-
-void fill_utilization(const engine::CatenaryLine& line, const MooringLineDesign& design,
-                      const engine::CatenarySolution& solution, LineStaticsRow& row) {
-  row.max_tension_N = std::max(solution.fairlead_tension_N, solution.anchor_tension_N);
-  double segment_start_m = 0.0;
-  for (std::size_t i = 0; i < line.segments.size(); ++i) {
-    const double segment_end_m = segment_start_m + line.segments[i].length_m;
-    double segment_max_N = 0.0;
-    for (const auto& point : solution.profile) {
-      if (point.arc_length_m >= segment_start_m - kJointSlack_m &&
-          point.arc_length_m <= segment_end_m + kJointSlack_m) {
-        segment_max_N = std::max(segment_max_N, point.tension_N);
-      }
-    }
-    row.max_tension_N = std::max(row.max_tension_N, segment_max_N);
-    const double utilization = segment_max_N / design.segment_types[i].breaking_load_N;
+  for (std::size_t i = 0; i < segment_max.size(); ++i) {
+    const double utilization = segment_max[i] / design.segment_types[i].breaking_load_N;
     if (utilization >= row.utilization) {
       row.utilization = utilization;
       row.governing_segment_type = design.segment_types[i].name;
     }
-    segment_start_m = segment_end_m;
   }
+  return row;
 }
 
 }  // namespace
 
-StaticsResult run_statics(const MooringDesignModel& model, const engine::Vector6d& offset) {
-  const auto start = std::chrono::steady_clock::now();
-  engine::CatenaryOptions options;
-  options.profile_points_per_segment = kProfilePointsPerSegment;
-  const engine::MooringStaticResult mooring =
-      engine::solve_mooring_statics(model.system, offset, options);
+std::vector<LineStaticsRow> line_statics_rows(const LineArrayModel& model,
+                                              const std::vector<engine::LineState>& states) {
+  std::vector<LineStaticsRow> rows;
+  rows.reserve(states.size());
+  for (std::size_t i = 0; i < states.size(); ++i) rows.push_back(row_of(model.designs[i], states[i]));
+  return rows;
+}
 
+StaticsResult run_statics(LineArrayModel& model, const engine::Vector6d& offset) {
+  const auto start = std::chrono::steady_clock::now();
+  const engine::HullPose pose = engine::pose_from_offset(model.reference_point_g, offset);
   StaticsResult result;
   result.offset = offset;
-  result.hull_force = mooring.hull_force;
-  for (std::size_t i = 0; i < mooring.lines.size(); ++i) {
-    const engine::CatenarySolution& s = mooring.lines[i].solution;
-    LineStaticsRow row;
-    row.name = model.system.lines[i].name;
-    row.fairlead_tension_N = s.fairlead_tension_N;
-    row.fairlead_horizontal_N = s.fairlead_horizontal_N;
-    row.fairlead_vertical_N = s.fairlead_vertical_N;
-    row.fairlead_angle_deg = std::atan2(s.fairlead_vertical_N, s.fairlead_horizontal_N) * kRadToDeg;
-    row.anchor_tension_N = s.anchor_tension_N;
-    row.anchor_horizontal_N = s.anchor_horizontal_N;
-    row.anchor_vertical_N = s.anchor_vertical_N;
-    row.anchor_uplift_angle_deg =
-        s.anchor_tension_N > 0.0 ? std::atan2(s.anchor_vertical_N, s.anchor_horizontal_N) * kRadToDeg
-                                 : 0.0;
-    row.laid_length_m = s.laid_length_m;
-    row.touchdown_distance_m = s.touchdown_x_m;
-    row.regime = regime_name(s.regime);
-    row.iterations = s.iterations;
-    fill_utilization(model.system.lines[i].line, model.lines[i], s, row);
-    result.lines.push_back(std::move(row));
+  std::vector<engine::LineState> states;
+  states.reserve(model.lines.size());
+  for (const auto& line : model.lines) {
+    const Eigen::Vector3d arm = pose.rotation * line->attachment_b();
+    states.push_back(line->state(pose.reference_point_g + arm, kProfilePointsPerSegment));
+    result.hull_force.head<3>() += states.back().top.force_g;
+    result.hull_force.tail<3>() += arm.cross(states.back().top.force_g);
   }
-  result.wall_time_s =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.lines = line_statics_rows(model, states);
+  result.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }
 

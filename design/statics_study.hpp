@@ -9,6 +9,7 @@
 
 #include "design/mooring_model.hpp"
 #include "engine/analysis/rigid_body.hpp"
+#include "engine/analysis/static_line.hpp"
 
 namespace spiral::design {
 
@@ -38,7 +39,11 @@ struct StaticsResult {
   double wall_time_s = 0.0;
 };
 
+/// The table rows of every line in `states` (same order as model.designs).
+std::vector<LineStaticsRow> line_statics_rows(const LineArrayModel& model,
+                                              const std::vector<engine::LineState>& states);
+
 /// Solves the mooring of `model` at `offset`. Throws engine::SolverError naming the line.
-StaticsResult run_statics(const MooringDesignModel& model, const engine::Vector6d& offset);
+StaticsResult run_statics(LineArrayModel& model, const engine::Vector6d& offset);
 
 }  // namespace spiral::design

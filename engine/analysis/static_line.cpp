@@ -44,27 +44,61 @@ CatenaryStaticLine::CatenaryStaticLine(std::string name, Eigen::Vector3d anchor_
       line_(std::move(line)),
       options_(options) {}
 
-LineEndResponse CatenaryStaticLine::solve(const Eigen::Vector3d& attachment_g) {
+CatenaryStaticLine::Plane CatenaryStaticLine::plane_of(const Eigen::Vector3d& attachment_g) const {
   const Eigen::Vector3d chord = attachment_g - anchor_g_;
   const double span = std::hypot(chord.x(), chord.y());
-  const Eigen::Vector3d e =
+  // A vertical line has no plane of its own: keep the one of its rest layout.
+  const Eigen::Vector3d direction =
       span > kVerticalSpan_m ? Eigen::Vector3d(chord.x() / span, chord.y() / span, 0.0)
                              : Eigen::Vector3d::UnitX();
+  return {span, direction};
+}
+
+LineEndResponse CatenaryStaticLine::solve_in_plane(const Plane& plane, double vertical_span_m,
+                                                   const CatenaryOptions& options) {
   try {
-    last_ = solve_catenary(line_, {span, chord.z(), anchor_height_above_seabed_m_}, options_,
-                           warm_start_);
+    last_ = solve_catenary(line_, {plane.span_m, vertical_span_m, anchor_height_above_seabed_m_},
+                           options, warm_start_);
   } catch (const SolverError& error) {
     throw SolverError(fmt::format("line '{}': {}", name_, error.what()), error.diagnostics());
   }
   warm_start_ = CatenaryGuess{last_.fairlead_horizontal_N, last_.fairlead_vertical_N};
 
+  const Eigen::Vector3d& e = plane.direction_g;
   LineEndResponse response;
   response.force_g = -last_.fairlead_horizontal_N * e - last_.fairlead_vertical_N * Eigen::Vector3d::UnitZ();
   response.stiffness_g =
-      catenary_fairlead_stiffness(last_.tangent_stiffness, last_.fairlead_horizontal_N, span, e);
+      catenary_fairlead_stiffness(last_.tangent_stiffness, last_.fairlead_horizontal_N, plane.span_m, e);
   response.top_tension_N = last_.fairlead_tension_N;
   response.iterations = last_.iterations;
   return response;
+}
+
+LineEndResponse CatenaryStaticLine::solve(const Eigen::Vector3d& attachment_g) {
+  return solve_in_plane(plane_of(attachment_g), attachment_g.z() - anchor_g_.z(), options_);
+}
+
+LineState CatenaryStaticLine::state(const Eigen::Vector3d& attachment_g, int points_per_segment) {
+  const Plane plane = plane_of(attachment_g);
+  CatenaryOptions options = options_;
+  options.profile_points_per_segment = points_per_segment;
+  LineState state;
+  state.top = solve_in_plane(plane, attachment_g.z() - anchor_g_.z(), options);
+  const Eigen::Vector3d& e = plane.direction_g;
+  state.bottom_force_g = last_.anchor_horizontal_N * e + last_.anchor_vertical_N * Eigen::Vector3d::UnitZ();
+  state.laid_length_m = last_.laid_length_m;
+  state.touchdown_distance_m = last_.touchdown_x_m;
+  switch (last_.regime) {
+    case CatenaryRegime::suspended: state.regime = "suspended"; break;
+    case CatenaryRegime::touchdown: state.regime = "touchdown"; break;
+    case CatenaryRegime::slack_vertical: state.regime = "slack"; break;
+  }
+  state.profile.reserve(last_.profile.size());
+  for (const CatenaryProfilePoint& p : last_.profile) {
+    state.profile.push_back({anchor_g_ + p.x_m * e + p.z_m * Eigen::Vector3d::UnitZ(), p.arc_length_m,
+                             p.tension_N, p.segment, p.on_seabed});
+  }
+  return state;
 }
 
 }  // namespace spiral::engine

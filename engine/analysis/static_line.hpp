@@ -26,6 +26,25 @@ struct LineEndResponse {
   int iterations = 0;
 };
 
+/// A point of a line's static profile.
+struct LineProfilePoint {
+  Eigen::Vector3d position_g = Eigen::Vector3d::Zero();  ///< m
+  double arc_length_m = 0.0;  ///< unstretched, from the bottom end (anchor)
+  double tension_N = 0.0;     ///< effective tension
+  int segment = 0;            ///< index of the segment/section, bottom to top
+  bool on_seabed = false;
+};
+
+/// The full static state of a line, for results tables and reports.
+struct LineState {
+  LineEndResponse top;                                   ///< at the hull
+  Eigen::Vector3d bottom_force_g = Eigen::Vector3d::Zero();  ///< force of the line on its anchor, N
+  double laid_length_m = 0.0;        ///< unstretched length resting on the seabed
+  double touchdown_distance_m = 0.0; ///< horizontal, anchor to touchdown point (0: none)
+  std::string regime;                ///< suspended | touchdown | slack
+  std::vector<LineProfilePoint> profile;
+};
+
 class StaticLine {
  public:
   virtual ~StaticLine() = default;
@@ -35,6 +54,9 @@ class StaticLine {
   /// Solves the line with its top end at `attachment_g` (global, m). Throws
   /// SolverError naming the line when it cannot.
   virtual LineEndResponse solve(const Eigen::Vector3d& attachment_g) = 0;
+  /// Solves the line at `attachment_g` and returns its whole state, with
+  /// `points_per_segment` + 1 profile points on each segment (ends included).
+  virtual LineState state(const Eigen::Vector3d& attachment_g, int points_per_segment) = 0;
   /// Forgets the warm start (the next solve starts cold).
   virtual void reset() = 0;
 };
@@ -49,6 +71,7 @@ class CatenaryStaticLine final : public StaticLine {
   const std::string& name() const override { return name_; }
   const Eigen::Vector3d& attachment_b() const override { return attachment_b_; }
   LineEndResponse solve(const Eigen::Vector3d& attachment_g) override;
+  LineState state(const Eigen::Vector3d& attachment_g, int points_per_segment) override;
   void reset() override { warm_start_.reset(); }
   /// The full catenary solution of the last solve.
   const CatenarySolution& last_solution() const { return last_; }
@@ -62,6 +85,13 @@ class CatenaryStaticLine final : public StaticLine {
   CatenaryOptions options_;
   std::optional<CatenaryGuess> warm_start_;
   CatenarySolution last_;
+
+  struct Plane {
+    double span_m;
+    Eigen::Vector3d direction_g;  ///< horizontal unit vector, anchor -> fairlead
+  };
+  Plane plane_of(const Eigen::Vector3d& attachment_g) const;
+  LineEndResponse solve_in_plane(const Plane& plane, double vertical_span_m, const CatenaryOptions& options);
 };
 
 /// The 3×3 stiffness of a catenary's fairlead force in global axes from its

@@ -118,7 +118,7 @@ TEST(CliStatics, ImpossibleOffsetIsSolverFailureNamingTheLine) {
   const auto result =
       run_spiral("statics --offset 500,0,0,0,0,0 " + scenario("oc4-semisubmersible.yaml"));
   EXPECT_EQ(result.exit_code, app::kExitSolverFailure);
-  EXPECT_NE(result.err.find("mooring line"), std::string::npos) << result.err;
+  EXPECT_NE(result.err.find("line 'L2'"), std::string::npos) << result.err;
 }
 
 }  // namespace

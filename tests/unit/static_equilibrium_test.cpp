@@ -60,7 +60,7 @@ TEST(StaticEquilibrium, OffsetGrowsWithLoad) {
 
 /// Six OC4 lines in three clusters of two (cluster centres 60°, 180°, 300°, ±5°).
 std::vector<std::unique_ptr<StaticLine>> clustered_lines(int skipped = -1) {
-  const auto base = test::oc4_mooring_system().lines.front();
+  const auto base = test::oc4_lines().front();
   std::vector<std::unique_ptr<StaticLine>> lines;
   int index = 0;
   for (double centre : {60.0, 180.0, 300.0}) {
