@@ -153,6 +153,7 @@ bool closed(const Iterate& it, double tol) {
 /// line search on the closure norm.
 Attempt newton(const LineView& view, const CatenaryGeometry& g, double H0, double V0, double tol,
                int max_iterations) {
+  constexpr double kCollapsedH = 1e-12;  // H below this fraction of the vertical forces
   constexpr double kMinFraction = 0.05;  // H may fall to 5 % of its value in one step
   constexpr double kArmijo = 1e-4;
   constexpr int kMaxHalvings = 40;
@@ -169,6 +170,9 @@ Attempt newton(const LineView& view, const CatenaryGeometry& g, double H0, doubl
       a.converged = true;
       return a;
     }
+    // H collapsing towards 0: the answer is an H = 0 configuration (slack
+    // vertical) or none; stop instead of spending the iteration budget.
+    if (cur.H < kCollapsedH * (std::abs(cur.V) + std::abs(view.total_weight_N))) return a;
     // Newton step from the 2x2 Jacobian d(x, z)/d(H, V_F).
     const double j00 = cur.e.jacobian(0, 0), j01 = cur.e.jacobian(0, 1);
     const double j10 = cur.e.jacobian(1, 0), j11 = cur.e.jacobian(1, 1);
