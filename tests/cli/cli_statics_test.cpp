@@ -123,3 +123,81 @@ TEST(CliStatics, ImpossibleOffsetIsSolverFailureNamingTheLine) {
 
 }  // namespace
 }  // namespace spiral::test
+
+namespace spiral::test {
+namespace {
+
+// One end-to-end case per class of bad input: the CLI exits with 2 and the
+// message names the file, the line, the field path and the problem.
+struct BadInputCase {
+  const char* name;
+  const char* replace;    // text of the valid project to replace
+  const char* with;       // its faulty version
+  const char* expected;   // fragment the message must contain
+  int line;               // line the message must point at
+};
+
+constexpr const char* kValidProject = R"(version: 1
+name: cli bad-input base
+site: {depth: 200.0, water_density: 1025.0, gravity: 9.80665,
+       seabed: {friction_axial: 1.0, friction_lateral: 1.0, normal_stiffness: 1.0e5}}
+line_types:
+  - {name: c, kind: user, mass_per_length: 113.35, diameter: 0.0766, axial_stiffness: 7.536e8, breaking_load: 6.0e6}
+mooring:
+  lines:
+    - name: L1
+      anchor: [837.6, 0.0, -200.0]
+      fairlead: [40.868, 0.0, -14.0]
+      segments:
+        - {type: c, length: 835.35}
+hull: {reference_point: [0, 0, 0], mass: 1.0e7, center_of_gravity: [0, 0, -10], radii_of_gyration: [30, 30, 30],
+       displaced_volume: 1.0e4, center_of_buoyancy: [0, 0, -12], waterplane_area: 370.0,
+       waterplane_inertia: [1.4e5, 1.4e5]}
+environments: [{name: calm}]
+load_cases: [{name: still, environment: calm}]
+criteria: {mooring: {code: api_rp_2sk}}
+)";
+
+class CliBadInput : public ::testing::TestWithParam<BadInputCase> {};
+
+TEST_P(CliBadInput, ExitsTwoAndNamesFileLineAndField) {
+  const BadInputCase& c = GetParam();
+  std::string text = kValidProject;
+  const auto at = text.find(c.replace);
+  ASSERT_NE(at, std::string::npos) << c.replace;
+  text.replace(at, std::string(c.replace).size(), c.with);
+  const auto path = write_project(std::string("spiral-cli-") + c.name + ".yaml", text);
+  const auto result = run_spiral("statics '" + path.string() + "'");
+  EXPECT_EQ(result.exit_code, app::kExitBadInput) << result.err;
+  EXPECT_NE(result.err.find(path.filename().string() + ":" + std::to_string(c.line) + ":"),
+            std::string::npos)
+      << result.err;
+  EXPECT_NE(result.err.find(c.expected), std::string::npos) << result.err;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    EveryErrorClass, CliBadInput,
+    ::testing::Values(
+        BadInputCase{"unknown-key", "gravity: 9.80665", "gravty: 9.80665", "site.gravty: unknown key", 3},
+        BadInputCase{"wrong-type", "depth: 200.0", "depth: deep", "site.depth", 3},
+        BadInputCase{"bad-enum", "kind: user", "kind: usr", "line_types[0].kind", 6},
+        BadInputCase{"undefined-type", "{type: c, length: 835.35}", "{type: chain, length: 835.35}",
+                     "mooring.lines[0].segments[0].type", 13},
+        BadInputCase{"anchor-below-seabed", "anchor: [837.6, 0.0, -200.0]", "anchor: [837.6, 0.0, -210.0]",
+                     "mooring.lines[0].anchor", 10},
+        BadInputCase{"fairlead-above-water", "fairlead: [40.868, 0.0, -14.0]", "fairlead: [40.868, 0.0, 4.0]",
+                     "mooring.lines[0].fairlead", 11},
+        BadInputCase{"line-too-short", "length: 835.35", "length: 500.0", "too short", 13},
+        BadInputCase{"line-too-long", "length: 835.35", "length: 1500.0", "slack", 13},
+        BadInputCase{"duplicate-name", "environments: [{name: calm}]",
+                     "environments: [{name: calm}, {name: calm}]", "environments[1].name", 17},
+        BadInputCase{"undefined-environment", "environment: calm}", "environment: storm}",
+                     "load_cases[0].environment", 18}),
+    [](const ::testing::TestParamInfo<BadInputCase>& info) {
+      std::string name = info.param.name;
+      for (char& ch : name) if (ch == '-') ch = '_';
+      return name;
+    });
+
+}  // namespace
+}  // namespace spiral::test
