@@ -80,34 +80,6 @@ TEST(CliStatics, MissingFileIsBadInput) {
   EXPECT_NE(result.err.find("/nonexistent/project.yaml"), std::string::npos) << result.err;
 }
 
-TEST(CliStatics, InvalidFieldIsReportedWithPosition) {
-  const auto path = write_project("spiral-cli-negative-length.yaml", R"(version: 1
-name: bad
-site: {depth: 200.0, water_density: 1025.0, gravity: 9.80665,
-       seabed: {friction_axial: 1.0, friction_lateral: 1.0, normal_stiffness: 1.0e5}}
-line_types:
-  - {name: c, kind: user, mass_per_length: 113.35, diameter: 0.0766, axial_stiffness: 7.536e8, breaking_load: 6.0e6}
-mooring:
-  lines:
-    - name: L1
-      anchor: [837.6, 0.0, -200.0]
-      fairlead: [40.868, 0.0, -14.0]
-      segments:
-        - {type: c, length: -20.0}
-hull: {reference_point: [0, 0, 0], mass: 1.0e7, center_of_gravity: [0, 0, -10], radii_of_gyration: [30, 30, 30],
-       displaced_volume: 1.0e4, center_of_buoyancy: [0, 0, -12], waterplane_area: 370.0,
-       waterplane_inertia: [1.4e5, 1.4e5]}
-environments: [{name: calm}]
-load_cases: [{name: still, environment: calm}]
-criteria: {mooring: {code: api_rp_2sk}}
-)");
-  const auto result = run_spiral("validate '" + path.string() + "'");
-  EXPECT_EQ(result.exit_code, app::kExitBadInput);
-  EXPECT_NE(result.err.find(path.filename().string() + ":13:"), std::string::npos) << result.err;
-  EXPECT_NE(result.err.find("mooring.lines[0].segments[0].length"), std::string::npos) << result.err;
-  EXPECT_NE(result.err.find("-20"), std::string::npos) << result.err;
-}
-
 TEST(CliStatics, WrongOffsetArityIsBadInput) {
   const auto result = run_spiral("statics --offset 1,2,3 " + scenario("oc4-semisubmersible.yaml"));
   EXPECT_EQ(result.exit_code, app::kExitBadInput);
@@ -178,6 +150,8 @@ TEST_P(CliBadInput, ExitsTwoAndNamesFileLineAndField) {
 INSTANTIATE_TEST_SUITE_P(
     EveryErrorClass, CliBadInput,
     ::testing::Values(
+        BadInputCase{"negative-length", "length: 835.35", "length: -20.0",
+                     "mooring.lines[0].segments[0].length: must be > 0 m, got -20 m", 13},
         BadInputCase{"unknown-key", "gravity: 9.80665", "gravty: 9.80665", "site.gravty: unknown key", 3},
         BadInputCase{"wrong-type", "depth: 200.0", "depth: deep", "site.depth", 3},
         BadInputCase{"bad-enum", "kind: user", "kind: usr", "line_types[0].kind", 6},
