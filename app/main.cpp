@@ -12,6 +12,8 @@
 #include "design/input_error.hpp"
 #include "design/mooring_model.hpp"
 #include "design/project_summary.hpp"
+#include "design/static_case.hpp"
+#include "design/static_case_output.hpp"
 #include "design/statics_output.hpp"
 #include "design/statics_study.hpp"
 #include "design/validated_project.hpp"
@@ -49,6 +51,22 @@ int run_statics(const std::string& project_file, const std::vector<double>& offs
   return app::kExitOk;
 }
 
+enum class StaticCaseView { equilibrium, stiffness };
+
+int run_static_case_command(const std::string& project_file, const design::StaticCaseRequest& request,
+                            bool json, StaticCaseView view) {
+  const design::ValidatedProject loaded = design::load_validated_project(project_file);
+  const design::StaticCaseResult result = design::run_static_case(loaded, request);
+  if (json) {
+    fmt::print("{}\n", design::static_case_to_json(result, loaded.project.name).dump(2));
+  } else if (view == StaticCaseView::equilibrium) {
+    fmt::print("{}", design::equilibrium_table(result, loaded.project.name));
+  } else {
+    fmt::print("{}", design::stiffness_table(result, loaded.project.name));
+  }
+  return app::kExitOk;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -76,6 +94,20 @@ int main(int argc, char** argv) {
   statics->add_flag("--json", json, "Machine output (docs/output-format.md) instead of the table");
   statics->footer(kExitCodeHelp);
 
+  design::StaticCaseRequest case_request;
+  std::string case_name, damaged_line;
+  CLI::App* equilibrium = cli.add_subcommand(
+      "equilibrium", "Coupled static equilibrium of hull + every line for a load case");
+  CLI::App* stiffness = cli.add_subcommand(
+      "stiffness", "6x6 line-array stiffness and force vector at the static equilibrium of a load case");
+  for (CLI::App* sub : {equilibrium, stiffness}) {
+    sub->add_option("PROJECT", project_file, "Project YAML file")->required();
+    sub->add_option("--case", case_name, "Load case name (default: still water, no environment)");
+    sub->add_option("--damaged", damaged_line, "Mooring line to remove (damaged condition)");
+    sub->add_flag("--json", json, "Machine output (docs/output-format.md) instead of the table");
+    sub->footer(kExitCodeHelp);
+  }
+
   try {
     cli.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
@@ -86,6 +118,13 @@ int main(int argc, char** argv) {
   try {
     if (validate->parsed()) return run_validate(project_file);
     if (statics->parsed()) return run_statics(project_file, offset_input, json);
+    if (equilibrium->parsed() || stiffness->parsed()) {
+      if (!case_name.empty()) case_request.load_case = case_name;
+      if (!damaged_line.empty()) case_request.damaged_line = damaged_line;
+      return run_static_case_command(project_file, case_request, json,
+                                     equilibrium->parsed() ? StaticCaseView::equilibrium
+                                                           : StaticCaseView::stiffness);
+    }
   } catch (const design::InputError& error) {
     fmt::print(stderr, "{}\n", error.what());
     return app::kExitBadInput;

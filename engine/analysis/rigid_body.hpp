@@ -5,12 +5,12 @@
 // mapping body-frame vectors to the global frame — valid for large yaw.
 
 #include <Eigen/Core>
+
+#include "engine/common/eigen_types.hpp"
 #include <Eigen/Geometry>
 
 namespace spiral::engine {
 
-using Vector6d = Eigen::Matrix<double, 6, 1>;
-using Matrix6d = Eigen::Matrix<double, 6, 6>;
 
 /// Rotation body -> global for (roll, pitch, yaw) in rad.
 inline Eigen::Matrix3d rotation_matrix(const Eigen::Vector3d& roll_pitch_yaw_rad) {
@@ -26,6 +26,28 @@ inline Eigen::Vector3d body_point_to_global(const Eigen::Vector3d& reference_poi
                                             const Vector6d& offset,
                                             const Eigen::Vector3d& point_b) {
   return reference_point_g + offset.head<3>() + rotation_matrix(offset.tail<3>()) * point_b;
+}
+
+}  // namespace spiral::engine
+
+namespace spiral::engine {
+
+/// The 6×6 rigid-body mass matrix about the reference point (body axes =
+/// global axes at rest) of a body of mass m with its centre of gravity at
+/// r_g and inertia tensor I_g about the centre of gravity:
+///   [ m I        −m [r_g×]           ]
+///   [ m [r_g×]   I_g − m [r_g×][r_g×] ]   (Fossen 2011, §3.3; parallel axes)
+inline Matrix6d rigid_body_mass_matrix(double mass_kg, const Eigen::Vector3d& center_of_gravity_m,
+                                       const Eigen::Matrix3d& inertia_about_cog_kg_m2) {
+  Eigen::Matrix3d s;
+  const Eigen::Vector3d& r = center_of_gravity_m;
+  s << 0.0, -r.z(), r.y(), r.z(), 0.0, -r.x(), -r.y(), r.x(), 0.0;
+  Matrix6d m;
+  m.topLeftCorner<3, 3>() = mass_kg * Eigen::Matrix3d::Identity();
+  m.topRightCorner<3, 3>() = -mass_kg * s;
+  m.bottomLeftCorner<3, 3>() = mass_kg * s;
+  m.bottomRightCorner<3, 3>() = inertia_about_cog_kg_m2 - mass_kg * s * s;
+  return m;
 }
 
 }  // namespace spiral::engine

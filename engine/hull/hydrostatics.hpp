@@ -44,12 +44,12 @@
 
 #include <Eigen/Core>
 
+#include "engine/common/eigen_types.hpp"
+
 #include "engine/common/seawater.hpp"
 
 namespace spiral::engine {
 
-using Matrix6d = Eigen::Matrix<double, 6, 6>;
-using Vector6d = Eigen::Matrix<double, 6, 1>;
 
 /// Waterplane of the body at rest, integrals about the reference point's axes.
 struct WaterplaneProperties {

@@ -1,0 +1,49 @@
+#include "design/hull_model.hpp"
+
+#include <stdexcept>
+
+#include "engine/hull/wamit_hst.hpp"
+
+namespace spiral::design {
+
+HullModel build_hull_model(const Project& project) {
+  const Hull& hull = project.hull;
+  const engine::Seawater water{project.site.water_density_kg_per_m3, project.site.gravity_m_per_s2};
+  const engine::BodyMass mass{hull.mass_kg, hull.center_of_gravity_b};
+  if (!hull.displaced_volume_m3 || !hull.center_of_buoyancy_b) {
+    throw std::invalid_argument(
+        "hull.displaced_volume (m^3) and hull.center_of_buoyancy (m) are needed for the static "
+        "balance of buoyancy, weight and line loads");
+  }
+
+  HullModel model;
+  if (hull.hydrostatics_file) {
+    const auto hst = engine::read_wamit_hst(*hull.hydrostatics_file, {1.0, water});
+    model.restoring = engine::hydrostatic_restoring(hst.restoring_6x6, *hull.displaced_volume_m3,
+                                                    *hull.center_of_buoyancy_b, mass, water);
+  } else {
+    engine::HydrostaticBody body;
+    body.waterplane.area_m2 = hull.waterplane_area_m2.value_or(0.0);
+    if (hull.waterplane_inertia_m4) {
+      body.waterplane.second_moment_xx_m4 = hull.waterplane_inertia_m4->x();
+      body.waterplane.second_moment_yy_m4 = hull.waterplane_inertia_m4->y();
+    }
+    body.displaced_volume_m3 = *hull.displaced_volume_m3;
+    body.centre_of_buoyancy_m = *hull.center_of_buoyancy_b;
+    model.restoring = engine::hydrostatic_restoring(body, mass, water);
+  }
+  model.statics.reference_point_at_rest_g = hull.reference_point_g;
+  model.statics.hydrostatic_stiffness = model.restoring.total_6x6;
+  model.statics.rest_force = model.restoring.rest_force;
+
+  Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();
+  if (hull.inertia_kg_m2) {
+    inertia = *hull.inertia_kg_m2;
+  } else if (hull.radii_of_gyration_m) {
+    inertia.diagonal() = hull.mass_kg * hull.radii_of_gyration_m->cwiseProduct(*hull.radii_of_gyration_m);
+  }
+  model.mass_matrix = engine::rigid_body_mass_matrix(hull.mass_kg, hull.center_of_gravity_b, inertia);
+  return model;
+}
+
+}  // namespace spiral::design

@@ -1,0 +1,147 @@
+#include "design/static_case.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <numbers>
+
+#include <Eigen/Eigenvalues>
+#include <fmt/format.h>
+
+#include "design/hull_model.hpp"
+#include "design/mooring_model.hpp"
+#include "engine/analysis/line_array.hpp"
+#include "engine/analysis/static_equilibrium.hpp"
+
+namespace spiral::design {
+
+namespace {
+
+constexpr double kRadToDeg = 180.0 / std::numbers::pi;
+constexpr const char* kDofNames[6] = {"surge", "sway", "heave", "roll", "pitch", "yaw"};
+// Profile points per segment for the utilization along each line (the
+// largest tension of a catenary segment is at one of its ends).
+constexpr int kProfilePointsPerSegment = 2;
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+InputError argument_error(const Project& project, const std::string& option, const std::string& message) {
+  InputIssue issue;
+  issue.file = project.source_file;
+  issue.path = option;
+  issue.message = message;
+  issue.condition = "command_line_reference";
+  return InputError({issue});
+}
+
+OffsetSummary summarize_offset(const engine::Vector6d& offset, double depth_m) {
+  OffsetSummary s;
+  s.horizontal_m = std::hypot(offset(0), offset(1));
+  s.horizontal_pct_depth = 100.0 * s.horizontal_m / depth_m;
+  s.direction_deg = s.horizontal_m > 0.0 ? std::atan2(offset(1), offset(0)) * kRadToDeg : 0.0;
+  if (s.direction_deg < 0.0) s.direction_deg += 360.0;
+  s.heave_m = offset(2);
+  s.roll_deg = offset(3) * kRadToDeg;
+  s.pitch_deg = offset(4) * kRadToDeg;
+  s.yaw_deg = offset(5) * kRadToDeg;
+  return s;
+}
+
+/// Undamped modes of M ẍ + K x = 0. K is symmetrised: its antisymmetric part
+/// (seabed friction, a net moment on the turning arms) does no work over a
+/// cycle of small oscillation to first order and is below 2 % here.
+std::vector<NaturalMode> natural_modes(const engine::Matrix6d& stiffness, const engine::Matrix6d& mass) {
+  const engine::Matrix6d k = 0.5 * (stiffness + stiffness.transpose());
+  const Eigen::GeneralizedSelfAdjointEigenSolver<engine::Matrix6d> solver(k, mass);
+  std::vector<NaturalMode> modes;
+  if (solver.info() != Eigen::Success) return modes;
+  for (int i = 0; i < 6; ++i) {
+    const double omega_squared = solver.eigenvalues()(i);
+    if (!(omega_squared > 0.0)) continue;  // no restoring in this mode: no period
+    // The dominant DOF by kinetic-energy share: |x_j| sqrt(M_jj).
+    const engine::Vector6d shape = solver.eigenvectors().col(i).cwiseAbs().cwiseProduct(
+        mass.diagonal().cwiseSqrt());
+    Eigen::Index dominant = 0;
+    shape.maxCoeff(&dominant);
+    modes.push_back({2.0 * std::numbers::pi / std::sqrt(omega_squared), kDofNames[dominant]});
+  }
+  std::sort(modes.begin(), modes.end(),
+            [](const NaturalMode& a, const NaturalMode& b) { return a.period_s < b.period_s; });
+  return modes;
+}
+
+}  // namespace
+
+StaticCaseResult run_static_case(const ValidatedProject& validated, const StaticCaseRequest& request) {
+  const Project& project = validated.project;
+  StaticCaseResult result;
+  result.case_name = "still-water";
+  result.environment = "none";
+  std::optional<std::string> damaged = request.damaged_line;
+  if (request.load_case) {
+    const auto it = std::find_if(project.load_cases.begin(), project.load_cases.end(),
+                                 [&](const LoadCase& c) { return c.name == *request.load_case; });
+    if (it == project.load_cases.end()) {
+      std::string names;
+      for (const LoadCase& c : project.load_cases) names += (names.empty() ? "" : ", ") + c.name;
+      throw argument_error(project, "--case",
+                           fmt::format("no load case named \"{}\" (defined: {})", *request.load_case, names));
+    }
+    result.case_name = it->name;
+    result.environment = it->environment;
+    if (!damaged) damaged = it->damaged_line;
+  }
+  if (damaged && std::none_of(project.mooring.lines.begin(), project.mooring.lines.end(),
+                              [&](const MooringLine& l) { return l.name == *damaged; })) {
+    std::string names;
+    for (const MooringLine& l : project.mooring.lines) names += (names.empty() ? "" : ", ") + l.name;
+    throw argument_error(project, "--damaged",
+                         fmt::format("no mooring line named \"{}\" (defined: {})", *damaged, names));
+  }
+  result.damaged_line = damaged;
+  result.condition = damaged ? "damaged" : "intact";
+
+  const HullModel hull = build_hull_model(project);
+  LineArrayModel lines = build_mooring_model(project, damaged.value_or(""));
+
+  auto start = std::chrono::steady_clock::now();
+  const engine::EquilibriumResult equilibrium =
+      engine::solve_static_equilibrium(hull.statics, lines.lines, nullptr);
+  result.equilibrium_wall_s = seconds_since(start);
+  result.equilibrium_iterations = equilibrium.iterations;
+  result.offset = equilibrium.offset;
+  result.offset_summary = summarize_offset(equilibrium.offset, project.site.depth_m);
+  result.hydrostatic_force = equilibrium.hydrostatic_force;
+  result.environment_force = equilibrium.external_force;
+  result.residual = equilibrium.residual;
+  result.hydrostatic_stiffness = hull.statics.hydrostatic_stiffness;
+
+  start = std::chrono::steady_clock::now();
+  const engine::LineArrayResponse array = engine::evaluate_line_array(lines.lines, equilibrium.pose);
+  result.line_force = array.force;
+  result.stiffness = array.stiffness;
+  for (const auto& contribution : array.lines) result.line_stiffness.push_back(contribution.stiffness);
+  result.stiffness_wall_s = seconds_since(start);
+  if (request.finite_difference_check) {
+    result.stiffness_finite_difference = engine::finite_difference_stiffness(lines.lines, equilibrium.pose);
+    result.stiffness_check_relative_difference =
+        (result.stiffness - *result.stiffness_finite_difference).norm() /
+        result.stiffness_finite_difference->norm();
+  }
+
+  std::vector<engine::LineState> states;
+  for (const auto& line : lines.lines) {
+    states.push_back(line->state(equilibrium.pose.reference_point_g +
+                                     equilibrium.pose.rotation * line->attachment_b(),
+                                 kProfilePointsPerSegment));
+  }
+  result.lines = line_statics_rows(lines, states);
+
+  result.natural_modes = natural_modes(hull.statics.hydrostatic_stiffness + result.stiffness, hull.mass_matrix);
+  result.added_mass_included = false;
+  return result;
+}
+
+}  // namespace spiral::design

@@ -1,0 +1,74 @@
+#pragma once
+// One coupled static case of the project (step 1–2 of the semi-coupled
+// method, DESIGN.md §1): the equilibrium of hull + every line under a load
+// case (intact or with a line removed), then the line array's 6×6 stiffness
+// and force vector at that position, cross-checked by finite differences,
+// with the natural periods of the moored hull.
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "design/statics_study.hpp"
+#include "design/validated_project.hpp"
+#include "engine/analysis/rigid_body.hpp"
+
+namespace spiral::design {
+
+struct StaticCaseRequest {
+  std::optional<std::string> load_case;     ///< none: still water, intact
+  std::optional<std::string> damaged_line;  ///< overrides the load case's damaged line
+  bool finite_difference_check = true;      ///< also compute K by central differences
+};
+
+/// Horizontal and rotational offset of the hull reference point.
+struct OffsetSummary {
+  double horizontal_m = 0.0;
+  double horizontal_pct_depth = 0.0;
+  double direction_deg = 0.0;  ///< of the horizontal offset, CCW from +x, [0, 360)
+  double heave_m = 0.0;
+  double roll_deg = 0.0;
+  double pitch_deg = 0.0;
+  double yaw_deg = 0.0;
+};
+
+/// A natural mode of the moored hull (undamped, about the equilibrium).
+struct NaturalMode {
+  double period_s = 0.0;
+  std::string dominant_dof;  ///< surge, sway, heave, roll, pitch or yaw
+};
+
+struct StaticCaseResult {
+  std::string case_name;    ///< load case, or "still-water"
+  std::string environment;  ///< environment name, or "none"
+  std::string condition;    ///< "intact" or "damaged"
+  std::optional<std::string> damaged_line;
+
+  engine::Vector6d offset = engine::Vector6d::Zero();  ///< m, rad
+  OffsetSummary offset_summary;
+  std::vector<LineStaticsRow> lines;
+
+  engine::Vector6d line_force = engine::Vector6d::Zero();         ///< F of the line array, N, N·m
+  engine::Matrix6d stiffness = engine::Matrix6d::Zero();          ///< analytic K of the line array
+  std::optional<engine::Matrix6d> stiffness_finite_difference;    ///< central differences
+  std::optional<double> stiffness_check_relative_difference;      ///< ‖K − K_fd‖ / ‖K_fd‖
+  std::vector<engine::Matrix6d> line_stiffness;                   ///< per line, same order as `lines`
+  engine::Vector6d hydrostatic_force = engine::Vector6d::Zero();
+  engine::Vector6d environment_force = engine::Vector6d::Zero();
+  engine::Vector6d residual = engine::Vector6d::Zero();
+  engine::Matrix6d hydrostatic_stiffness = engine::Matrix6d::Zero();
+
+  std::vector<NaturalMode> natural_modes;  ///< ascending period
+  bool added_mass_included = false;
+
+  int equilibrium_iterations = 0;
+  double equilibrium_wall_s = 0.0;
+  double stiffness_wall_s = 0.0;
+};
+
+/// Throws InputError for an unknown load case or line, engine::SolverError when
+/// the equilibrium or a line cannot be solved (the message names it).
+StaticCaseResult run_static_case(const ValidatedProject& project, const StaticCaseRequest& request);
+
+}  // namespace spiral::design

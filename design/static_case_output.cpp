@@ -1,0 +1,124 @@
+#include "design/static_case_output.hpp"
+
+#include <fmt/format.h>
+
+#include "design/statics_output.hpp"
+
+namespace spiral::design {
+
+namespace {
+
+constexpr const char* kDofNames[6] = {"surge", "sway", "heave", "roll", "pitch", "yaw"};
+
+nlohmann::json six(const engine::Vector6d& v) {
+  return nlohmann::json::array({v(0), v(1), v(2), v(3), v(4), v(5)});
+}
+
+nlohmann::json six_by_six(const engine::Matrix6d& m) {
+  nlohmann::json rows = nlohmann::json::array();
+  for (int i = 0; i < 6; ++i) rows.push_back(six(m.row(i).transpose()));
+  return rows;
+}
+
+std::string case_heading(const StaticCaseResult& r, const std::string& project_name) {
+  return fmt::format("{} — case '{}' (environment {}, {}{})\n", project_name, r.case_name, r.environment,
+                     r.condition, r.damaged_line ? fmt::format(": line {} removed", *r.damaged_line) : "");
+}
+
+}  // namespace
+
+nlohmann::json static_case_to_json(const StaticCaseResult& r, const std::string& project_name) {
+  const nlohmann::json statics_lines = statics_to_json({r.offset, r.lines, r.line_force, 0.0}, project_name)["lines"];
+  nlohmann::json lines = nlohmann::json::array();
+  for (std::size_t i = 0; i < statics_lines.size(); ++i) {
+    nlohmann::json line = statics_lines[i];
+    line["stiffness_6x6"] = six_by_six(r.line_stiffness[i]);
+    lines.push_back(std::move(line));
+  }
+  nlohmann::json modes = nlohmann::json::array();
+  for (const NaturalMode& m : r.natural_modes) modes.push_back({{"period_s", m.period_s}, {"dominant_dof", m.dominant_dof}});
+  const OffsetSummary& o = r.offset_summary;
+  nlohmann::json doc = {
+      {"format", "spiral.static_case"},
+      {"format_version", 1},
+      {"project", project_name},
+      {"case", r.case_name},
+      {"environment", r.environment},
+      {"condition", r.condition},
+      {"damaged_line", r.damaged_line ? nlohmann::json(*r.damaged_line) : nlohmann::json(nullptr)},
+      {"offset_6dof", six(r.offset)},
+      {"offset",
+       {{"horizontal_m", o.horizontal_m},
+        {"horizontal_pct_depth", o.horizontal_pct_depth},
+        {"direction_deg", o.direction_deg},
+        {"heave_m", o.heave_m},
+        {"roll_deg", o.roll_deg},
+        {"pitch_deg", o.pitch_deg},
+        {"yaw_deg", o.yaw_deg}}},
+      {"force_6dof", six(r.line_force)},
+      {"stiffness_6x6", six_by_six(r.stiffness)},
+      {"hydrostatic_force_6dof", six(r.hydrostatic_force)},
+      {"environment_force_6dof", six(r.environment_force)},
+      {"residual_6dof", six(r.residual)},
+      {"hydrostatic_stiffness_6x6", six_by_six(r.hydrostatic_stiffness)},
+      {"natural_modes", modes},
+      {"added_mass_included", r.added_mass_included},
+      {"lines", lines},
+      {"equilibrium_iterations", r.equilibrium_iterations},
+      {"equilibrium_wall_s", r.equilibrium_wall_s},
+      {"stiffness_wall_s", r.stiffness_wall_s},
+  };
+  if (r.stiffness_finite_difference) {
+    doc["stiffness_finite_difference_6x6"] = six_by_six(*r.stiffness_finite_difference);
+    doc["stiffness_check_relative_difference"] = *r.stiffness_check_relative_difference;
+  }
+  return doc;
+}
+
+std::string equilibrium_table(const StaticCaseResult& r, const std::string& project_name) {
+  std::string out = "Coupled static equilibrium — " + case_heading(r, project_name);
+  const OffsetSummary& o = r.offset_summary;
+  out += fmt::format(
+      "Offset: {:.3f} m horizontal ({:.3f} % of depth) towards {:.1f}°, heave {:.4f} m, "
+      "roll {:.4f}°, pitch {:.4f}°, yaw {:.4f}°\n",
+      o.horizontal_m, o.horizontal_pct_depth, o.direction_deg, o.heave_m, o.roll_deg, o.pitch_deg, o.yaw_deg);
+  out += fmt::format("Converged in {} Newton iterations ({:.3f} ms); residual |F| {:.3g} N, |M| {:.3g} N·m\n\n",
+                     r.equilibrium_iterations, 1e3 * r.equilibrium_wall_s, r.residual.head<3>().norm(),
+                     r.residual.tail<3>().norm());
+  const std::string statics = statics_table({r.offset, r.lines, r.line_force, 0.0}, project_name);
+  // Reuse the per-line table of `spiral statics` (from its column header on).
+  out += statics.substr(statics.find("line "));
+  out += fmt::format("Hydrostatic + gravity force: Fz {:.1f} kN, Mx {:.1f} kN·m, My {:.1f} kN·m\n",
+                     r.hydrostatic_force(2) / 1e3, r.hydrostatic_force(3) / 1e3, r.hydrostatic_force(4) / 1e3);
+  return out;
+}
+
+std::string stiffness_table(const StaticCaseResult& r, const std::string& project_name) {
+  std::string out = "Line-array stiffness at the static equilibrium — " + case_heading(r, project_name);
+  out += "K (N/m, N/rad, N·m/m, N·m/rad; rows = force DOF, columns = displacement DOF):\n";
+  out += fmt::format("{:>8}", "");
+  for (const char* name : kDofNames) out += fmt::format(" {:>12}", name);
+  out += "\n";
+  for (int i = 0; i < 6; ++i) {
+    out += fmt::format("{:>8}", kDofNames[i]);
+    for (int j = 0; j < 6; ++j) out += fmt::format(" {:>12.4e}", r.stiffness(i, j));
+    out += "\n";
+  }
+  out += "\nF (N, N·m):";
+  for (int i = 0; i < 6; ++i) out += fmt::format(" {}={:.4e}", kDofNames[i], r.line_force(i));
+  out += "\n";
+  if (r.stiffness_check_relative_difference) {
+    out += fmt::format("Analytic vs central finite differences (±1 cm, ±1e-4 rad): ‖K − K_fd‖/‖K_fd‖ = {:.2e}\n",
+                       *r.stiffness_check_relative_difference);
+  }
+  out += fmt::format("Computed in {:.3f} ms after the equilibrium.\n", 1e3 * r.stiffness_wall_s);
+  if (!r.natural_modes.empty()) {
+    out += fmt::format("\nNatural periods of the moored hull (stiffness: hydrostatics + lines; mass: {}):\n",
+                       r.added_mass_included ? "rigid body + added mass"
+                                             : "rigid body only — no added mass given, so the periods are too short");
+    for (const NaturalMode& m : r.natural_modes) out += fmt::format("  {:>8.2f} s  {}\n", m.period_s, m.dominant_dof);
+  }
+  return out;
+}
+
+}  // namespace spiral::design
