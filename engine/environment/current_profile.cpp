@@ -42,8 +42,8 @@ void validate_current_profile(const CurrentProfile& p) {
 Eigen::Vector3d current_velocity_g(const CurrentProfile& p, double z_m) {
   validate_current_profile(p);
   if (!std::isfinite(z_m)) {
-    throw std::invalid_argument(fmt::format("current profile: query z must be finite (m), got {}",
-                                            z_m));
+    throw std::invalid_argument(
+        fmt::format("current profile: query z must be finite (m), got {}", z_m));
   }
   double speed = 0.0;
   const auto& z = p.z_m;
@@ -62,13 +62,12 @@ Eigen::Vector3d current_velocity_g(const CurrentProfile& p, double z_m) {
 
 CurrentProfile power_law_current_profile(const PowerLawCurrentInput& in) {
   if (!(in.surface_speed_m_per_s >= 0.0) || !std::isfinite(in.surface_speed_m_per_s)) {
-    throw std::invalid_argument(
-        fmt::format("power-law current: surface speed must be >= 0 m/s, got {} m/s",
-                    in.surface_speed_m_per_s));
+    throw std::invalid_argument(fmt::format(
+        "power-law current: surface speed must be >= 0 m/s, got {} m/s", in.surface_speed_m_per_s));
   }
   if (!(in.water_depth_m > 0.0) || !std::isfinite(in.water_depth_m)) {
-    throw std::invalid_argument(fmt::format(
-        "power-law current: water depth must be > 0 m, got {} m", in.water_depth_m));
+    throw std::invalid_argument(
+        fmt::format("power-law current: water depth must be > 0 m, got {} m", in.water_depth_m));
   }
   if (!(in.exponent > 0.0) || !std::isfinite(in.exponent)) {
     throw std::invalid_argument(

@@ -20,16 +20,15 @@
 //
 // Errors: std::invalid_argument naming the field and its unit.
 
-#include <vector>
-
 #include <Eigen/Core>
+#include <vector>
 
 namespace spiral::engine {
 
 struct CurrentProfile {
-  std::vector<double> z_m;               ///< strictly increasing, finite
-  std::vector<double> speed_m_per_s;     ///< same size as z_m, each >= 0
-  double heading_rad = 0.0;              ///< direction of propagation, CCW from +x
+  std::vector<double> z_m;            ///< strictly increasing, finite
+  std::vector<double> speed_m_per_s;  ///< same size as z_m, each >= 0
+  double heading_rad = 0.0;           ///< direction of propagation, CCW from +x
 };
 
 /// Throws std::invalid_argument if the table is empty, sizes differ, z is not

@@ -47,8 +47,8 @@ double wrap_deviation(double theta) {
 double gamma_half_ratio(double x) {
   if (x < 100.0) return std::tgamma(x + 0.5) / std::tgamma(x);
   const double r = 1.0 / x;
-  return std::sqrt(x) *
-         (1.0 - r / 8.0 + r * r / 128.0 + 5.0 * r * r * r / 1024.0 - 21.0 * r * r * r * r / 32768.0);
+  return std::sqrt(x) * (1.0 - r / 8.0 + r * r / 128.0 + 5.0 * r * r * r / 1024.0 -
+                         21.0 * r * r * r * r / 32768.0);
 }
 
 double spreading_half_width(SpreadingForm form) {
@@ -57,7 +57,9 @@ double spreading_half_width(SpreadingForm form) {
 
 }  // namespace
 
-double WaveSpectrum::peak_rad_per_s() const { return 2.0 * kPi / Tp_s; }
+double WaveSpectrum::peak_rad_per_s() const {
+  return 2.0 * kPi / Tp_s;
+}
 
 double default_jonswap_gamma(double Hs_m, double Tp_s) {
   require_positive(Hs_m, "Hs", "m");
@@ -154,8 +156,8 @@ SpectralMoments spectral_moments(const WaveSpectrum& spectrum,
 double spreading_density_per_rad(const DirectionalSpreading& spreading, double deviation_rad) {
   const double e = spreading.exponent;
   if (!(e >= 0.0) || !std::isfinite(e)) {
-    throw std::invalid_argument(fmt::format(
-        "directional spreading: exponent must be >= 0 (dimensionless), got {}", e));
+    throw std::invalid_argument(
+        fmt::format("directional spreading: exponent must be >= 0 (dimensionless), got {}", e));
   }
   const double t = wrap_deviation(deviation_rad);
   if (std::abs(t) > spreading_half_width(spreading.form)) return 0.0;

@@ -28,20 +28,19 @@
 //
 // Errors: std::invalid_argument naming the quantity and its unit.
 
-#include <vector>
-
 #include <Eigen/Core>
+#include <vector>
 
 namespace spiral::engine {
 
 /// A validated one-sided JONSWAP spectrum (gamma = 1: Pierson-Moskowitz).
 /// Build it with make_jonswap_spectrum / make_pierson_moskowitz_spectrum.
 struct WaveSpectrum {
-  double Hs_m = 0.0;            ///< significant wave height (spectral, 4 sqrt(m0) nominal), > 0
-  double Tp_s = 0.0;            ///< peak period, > 0
-  double gamma = 1.0;           ///< peak-shape (enhancement) factor, >= 1
-  double sigma_below = 0.07;    ///< spectral width parameter for w <= wp
-  double sigma_above = 0.09;    ///< spectral width parameter for w > wp
+  double Hs_m = 0.0;              ///< significant wave height (spectral, 4 sqrt(m0) nominal), > 0
+  double Tp_s = 0.0;              ///< peak period, > 0
+  double gamma = 1.0;             ///< peak-shape (enhancement) factor, >= 1
+  double sigma_below = 0.07;      ///< spectral width parameter for w <= wp
+  double sigma_above = 0.09;      ///< spectral width parameter for w > wp
   double peak_rad_per_s() const;  ///< wp = 2 pi / Tp
 };
 
@@ -70,16 +69,16 @@ double spectral_density_m2s_per_rad(const WaveSpectrum& spectrum, double omega_r
 /// int_W^inf w^n S dw = S(W) W^(n+1) / (4 - n) exactly for a pure w^-5 tail.
 struct SpectrumQuadrature {
   Eigen::VectorXd omega_rad_per_s;
-  Eigen::VectorXd weight_m2;     ///< variance carried by each node, m^2
+  Eigen::VectorXd weight_m2;  ///< variance carried by each node, m^2
   double tail_start_rad_per_s = 0.0;
   double tail_density_m2s_per_rad = 0.0;  ///< S(tail_start)
   double tail_m0_m2 = 0.0;                ///< int_W^inf S dw = S(W) W / 4
 };
 
 struct SpectrumQuadratureOptions {
-  double upper_limit_over_peak = 10.0;  ///< W = this x wp (and at least `min_upper_limit`), > 1
+  double upper_limit_over_peak = 10.0;     ///< W = this x wp (and at least `min_upper_limit`), > 1
   double min_upper_limit_rad_per_s = 0.0;  ///< raise W to cover e.g. a coefficient table
-  int intervals = 4000;                 ///< Simpson intervals on [0, W], even, >= 2
+  int intervals = 4000;                    ///< Simpson intervals on [0, W], even, >= 2
 };
 
 SpectrumQuadrature spectrum_quadrature(const WaveSpectrum& spectrum,

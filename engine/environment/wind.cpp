@@ -22,7 +22,7 @@ void require_non_negative(double value, const char* what, const char* unit) {
   }
 }
 
-constexpr double kReferenceHeight_m = 10.0;   // NPD / ISO 19901-1 reference height
+constexpr double kReferenceHeight_m = 10.0;    // NPD / ISO 19901-1 reference height
 constexpr double kReferencePeriod_s = 3600.0;  // 1-hour mean
 constexpr double kNpdExponent = 0.468;         // n of the NPD spectrum
 
@@ -45,8 +45,8 @@ double npd_turbulence_intensity(double U0_m_per_s, double height_m) {
 double mean_wind_speed_m_per_s(const WindProfileInput& in) {
   require_positive(in.height_m, "height above mean water level", "m");
   if (!(in.averaging_time_s > 0.0) || !(in.averaging_time_s <= kReferencePeriod_s)) {
-    throw std::invalid_argument(fmt::format(
-        "wind: averaging time must be in (0, 3600] s, got {} s", in.averaging_time_s));
+    throw std::invalid_argument(
+        fmt::format("wind: averaging time must be in (0, 3600] s, got {} s", in.averaging_time_s));
   }
   const double U0 = in.U0_m_per_s;
   const double C = wind_profile_coefficient(U0, in.standard);

@@ -39,8 +39,8 @@ enum class WindProfileStandard {
 };
 
 struct WindProfileInput {
-  double U0_m_per_s = 0.0;        ///< 1-hour mean wind speed at 10 m, >= 0
-  double height_m = 10.0;         ///< z > 0 above mean water level
+  double U0_m_per_s = 0.0;           ///< 1-hour mean wind speed at 10 m, >= 0
+  double height_m = 10.0;            ///< z > 0 above mean water level
   double averaging_time_s = 3600.0;  ///< t, 0 < t <= 3600 s (gust factor for t < 3600 s)
   WindProfileStandard standard = WindProfileStandard::iso_19901_1;
 };

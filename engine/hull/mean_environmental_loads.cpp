@@ -97,9 +97,9 @@ void validate_coefficient_table(const CoefficientTable& t) {
   const std::size_t n = t.headings_rad.size();
   if (n == 0) throw std::invalid_argument("coefficient table: no headings");
   if (t.Cx_m2.size() != n || t.Cy_m2.size() != n || t.Cmz_m3.size() != n) {
-    throw std::invalid_argument(fmt::format(
-        "coefficient table: {} headings but {} Cx_m2, {} Cy_m2, {} Cmz_m3 values", n,
-        t.Cx_m2.size(), t.Cy_m2.size(), t.Cmz_m3.size()));
+    throw std::invalid_argument(
+        fmt::format("coefficient table: {} headings but {} Cx_m2, {} Cy_m2, {} Cmz_m3 values", n,
+                    t.Cx_m2.size(), t.Cy_m2.size(), t.Cmz_m3.size()));
   }
   for (std::size_t j = 0; j < n; ++j) {
     const double h = t.headings_rad[j];
@@ -109,8 +109,8 @@ void validate_coefficient_table(const CoefficientTable& t) {
     }
     if (j > 0 && !(h > t.headings_rad[j - 1])) {
       throw std::invalid_argument(fmt::format(
-          "coefficient table: headings_rad must be strictly increasing, got {} rad after {} rad",
-          h, t.headings_rad[j - 1]));
+          "coefficient table: headings_rad must be strictly increasing, got {} rad after {} rad", h,
+          t.headings_rad[j - 1]));
     }
     if (!std::isfinite(t.Cx_m2[j]) || !std::isfinite(t.Cy_m2[j]) || !std::isfinite(t.Cmz_m3[j])) {
       throw std::invalid_argument(
@@ -123,9 +123,10 @@ CoefficientLoadResult coefficient_load(const CoefficientTable& table,
                                        const CoefficientLoadInput& in) {
   validate_coefficient_table(table);
   if (!(in.fluid_density_kg_per_m3 > 0.0) || !std::isfinite(in.fluid_density_kg_per_m3)) {
-    throw std::invalid_argument(fmt::format("coefficient load: fluid density must be > 0 kg/m^3, "
-                                            "got {} kg/m^3",
-                                            in.fluid_density_kg_per_m3));
+    throw std::invalid_argument(
+        fmt::format("coefficient load: fluid density must be > 0 kg/m^3, "
+                    "got {} kg/m^3",
+                    in.fluid_density_kg_per_m3));
   }
   require_finite(in.flow_velocity_g.x(), "coefficient load: flow velocity x", "m/s");
   require_finite(in.flow_velocity_g.y(), "coefficient load: flow velocity y", "m/s");
@@ -137,7 +138,8 @@ CoefficientLoadResult coefficient_load(const CoefficientTable& table,
       r.speed_m_per_s > 0.0 ? std::atan2(in.flow_velocity_g.y(), in.flow_velocity_g.x()) : 0.0;
   r.relative_heading_rad = wrap_0_2pi(direction - in.hull_yaw_rad);
   if (r.speed_m_per_s == 0.0) return r;  // no flow, no load (and no heading to look up)
-  const Bracket b = heading_bracket(table.headings_rad, r.relative_heading_rad, "coefficient table");
+  const Bracket b =
+      heading_bracket(table.headings_rad, r.relative_heading_rad, "coefficient table");
   r.coefficients << lerp(table.Cx_m2, b), lerp(table.Cy_m2, b), lerp(table.Cmz_m3, b);
   // OCIMF form: F = 1/2 rho (C A)(beta) V|V|, V = |V| >= 0 (direction carried by beta).
   const double q = 0.5 * in.fluid_density_kg_per_m3 * r.speed_m_per_s * r.speed_m_per_s;
@@ -157,8 +159,8 @@ CoefficientLoadResult current_load(const CoefficientTable& table, const CurrentP
         "{} m",
         reference_z_m));
   }
-  return coefficient_load(table, {water_density_kg_per_m3,
-                                  current_velocity_g(current, reference_z_m), hull_yaw_rad});
+  return coefficient_load(
+      table, {water_density_kg_per_m3, current_velocity_g(current, reference_z_m), hull_yaw_rad});
 }
 
 CoefficientLoadResult wind_load(const CoefficientTable& table, double wind_speed_m_per_s,
@@ -181,8 +183,8 @@ void validate_mean_drift_table(const MeanDriftTable& t) {
   const std::size_t nw = t.omega_rad_per_s.size();
   const std::size_t nb = t.headings_rad.size();
   if (nw == 0 || nb == 0) {
-    throw std::invalid_argument(fmt::format(
-        "mean drift table: needs >= 1 frequency and heading, got {} and {}", nw, nb));
+    throw std::invalid_argument(
+        fmt::format("mean drift table: needs >= 1 frequency and heading, got {} and {}", nw, nb));
   }
   for (std::size_t k = 0; k < nw; ++k) {
     const double w = t.omega_rad_per_s[k];
@@ -247,9 +249,9 @@ Vector6d mean_drift_coefficients(const MeanDriftTable& table, double omega,
   validate_mean_drift_table(table);
   require_finite(omega, "mean drift: frequency", "rad/s");
   require_finite(relative_heading_rad, "mean drift: relative heading", "rad");
-  return interpolate_drift(table, frequency_bracket(table.omega_rad_per_s, omega),
-                           heading_bracket(table.headings_rad, relative_heading_rad,
-                                           "mean drift table"));
+  return interpolate_drift(
+      table, frequency_bracket(table.omega_rad_per_s, omega),
+      heading_bracket(table.headings_rad, relative_heading_rad, "mean drift table"));
 }
 
 MeanDriftResult mean_wave_drift_load(const MeanDriftTable& table, const MeanDriftInput& in) {
@@ -259,7 +261,8 @@ MeanDriftResult mean_wave_drift_load(const MeanDriftTable& table, const MeanDrif
 
   MeanDriftResult r;
   if (in.spreading) {
-    r.directions = discretise_spreading(*in.spreading, in.wave_heading_rad, in.spreading_directions);
+    r.directions =
+        discretise_spreading(*in.spreading, in.wave_heading_rad, in.spreading_directions);
   } else {
     r.directions = {{in.wave_heading_rad, 1.0}};
   }
@@ -285,14 +288,15 @@ MeanDriftResult mean_wave_drift_load(const MeanDriftTable& table, const MeanDrif
   // Frequency brackets do not depend on the direction: compute them once.
   std::vector<Bracket> fw(static_cast<std::size_t>(nodes) + 1);
   for (Eigen::Index i = 0; i < nodes; ++i) {
-    fw[static_cast<std::size_t>(i)] = frequency_bracket(table.omega_rad_per_s, q.omega_rad_per_s(i));
+    fw[static_cast<std::size_t>(i)] =
+        frequency_bracket(table.omega_rad_per_s, q.omega_rad_per_s(i));
   }
   fw.back() = frequency_bracket(table.omega_rad_per_s, q.tail_start_rad_per_s);
 
   for (const SpreadingDirection& dir : r.directions) {
     if (dir.weight == 0.0) continue;
-    const Bracket fb = heading_bracket(table.headings_rad, dir.heading_rad - in.hull_yaw_rad,
-                                       "mean drift table");
+    const Bracket fb =
+        heading_bracket(table.headings_rad, dir.heading_rad - in.hull_yaw_rad, "mean drift table");
     // Faltinsen (1990) ch. 5 / Newman (1974): F = 2 int S(w) D(w, beta) dw.
     Vector6d integral = Vector6d::Zero();
     for (Eigen::Index i = 0; i < nodes; ++i) {

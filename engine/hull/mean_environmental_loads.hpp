@@ -57,11 +57,10 @@
 //    to the table's last frequency, so the analytic w^-5 tail lies where D is
 //    held constant.
 
+#include <Eigen/Core>
 #include <array>
 #include <optional>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "engine/analysis/rigid_body.hpp"
 #include "engine/environment/current_profile.hpp"
@@ -82,9 +81,9 @@ struct CoefficientTable {
 void validate_coefficient_table(const CoefficientTable& table);
 
 struct CoefficientLoadInput {
-  double fluid_density_kg_per_m3 = 0.0;  ///< > 0 (air ~1.225, sea water 1025)
+  double fluid_density_kg_per_m3 = 0.0;                       ///< > 0 (air ~1.225, sea water 1025)
   Eigen::Vector3d flow_velocity_g = Eigen::Vector3d::Zero();  ///< m/s; z component ignored
-  double hull_yaw_rad = 0.0;  ///< psi
+  double hull_yaw_rad = 0.0;                                  ///< psi
 };
 
 struct CoefficientLoadResult {
@@ -128,17 +127,17 @@ Vector6d mean_drift_coefficients(const MeanDriftTable& table, double omega_rad_p
 
 struct MeanDriftInput {
   WaveSpectrum spectrum;
-  double wave_heading_rad = 0.0;  ///< mean direction of propagation, global
-  double hull_yaw_rad = 0.0;      ///< psi
+  double wave_heading_rad = 0.0;                  ///< mean direction of propagation, global
+  double hull_yaw_rad = 0.0;                      ///< psi
   std::optional<DirectionalSpreading> spreading;  ///< none: long-crested
   int spreading_directions = 15;                  ///< N for discretise_spreading, >= 1
   SpectrumQuadratureOptions quadrature;           ///< frequency integration
 };
 
 struct MeanDriftResult {
-  Vector6d load_g = Vector6d::Zero();  ///< N, N m, global frame
-  Vector6d load_b = Vector6d::Zero();  ///< N, N m, hull frame
-  double m0_m2 = 0.0;                  ///< variance of the spectrum as integrated
+  Vector6d load_g = Vector6d::Zero();          ///< N, N m, global frame
+  Vector6d load_b = Vector6d::Zero();          ///< N, N m, hull frame
+  double m0_m2 = 0.0;                          ///< variance of the spectrum as integrated
   double variance_fraction_below_table = 0.0;  ///< share of m0 at w < first table frequency
   double variance_fraction_above_table = 0.0;  ///< share of m0 at w > last table frequency
   std::vector<SpreadingDirection> directions;  ///< global headings and weights used

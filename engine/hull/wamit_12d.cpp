@@ -119,8 +119,8 @@ MeanDriftTable parse_wamit_12d_mean_drift(std::istream& text, const std::string&
         continue;
       }
       if (!parse_real(tokens[k], v[k])) {
-        static constexpr std::array<const char*, 9> kNames = {
-            "PER1", "PER2", "BETA1", "BETA2", "I", "MOD", "PHS", "RE", "IM"};
+        static constexpr std::array<const char*, 9> kNames = {"PER1", "PER2", "BETA1", "BETA2", "I",
+                                                              "MOD",  "PHS",  "RE",    "IM"};
         throw FileFormatError(file_name, line_number,
                               fmt::format("field {} ({}) must be a finite real number, got \"{}\"",
                                           k + 1, kNames[k], tokens[k]));
@@ -177,8 +177,8 @@ MeanDriftTable parse_wamit_12d_mean_drift(std::istream& text, const std::string&
     const std::size_t i = static_cast<std::size_t>(e.dof - 1);
     if (!table.present[i]) {
       table.present[i] = true;
-      table.coefficient[i] = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(np),
-                                                   static_cast<Eigen::Index>(nb));
+      table.coefficient[i] =
+          Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(np), static_cast<Eigen::Index>(nb));
       source_line[i].assign(np * nb, 0);
     }
     const std::size_t kp = index_of(periods, e.period_s, period_tol);
@@ -187,8 +187,8 @@ MeanDriftTable parse_wamit_12d_mean_drift(std::istream& text, const std::string&
     // WAMIT normalisation of second-order loads: rho g ULEN^k, k = 1 forces, 2 moments.
     const double value = rho * g * std::pow(ulen, e.dof <= 3 ? 1 : 2) * e.re;
     std::size_t& seen = source_line[i][row * nb + col];
-    auto& slot = table.coefficient[i](static_cast<Eigen::Index>(row),
-                                      static_cast<Eigen::Index>(col));
+    auto& slot =
+        table.coefficient[i](static_cast<Eigen::Index>(row), static_cast<Eigen::Index>(col));
     if (seen != 0) {
       if (std::abs(slot - value) > 1e-9 * std::max(std::abs(slot), std::abs(value))) {
         throw FileFormatError(
@@ -219,8 +219,8 @@ MeanDriftTable parse_wamit_12d_mean_drift(std::istream& text, const std::string&
   return table;
 }
 
-MeanDriftTable read_wamit_12d_mean_drift(const std::filesystem::path& path, double rho,
-                                         double g, double ulen) {
+MeanDriftTable read_wamit_12d_mean_drift(const std::filesystem::path& path, double rho, double g,
+                                         double ulen) {
   std::ifstream in(path);
   if (!in) throw FileFormatError(path.string(), 0, "cannot open WAMIT .12d file");
   return parse_wamit_12d_mean_drift(in, path.string(), rho, g, ulen);

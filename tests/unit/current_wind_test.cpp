@@ -141,8 +141,9 @@ TEST(WindSpectrum, NpdStandardDeviationIsConsistentWithNpdTurbulenceIntensity) {
   // sigma = I_u U0 (the intensity is defined on the 1-hour mean at z; at 10 m,
   // U(10) = U0). At U0 = 40 m/s: 6.528 m/s; the spectrum gives 6.911 m/s.
   const double U0 = 40.0;
-  const double sigma_spectrum =
-      std::sqrt(integrate_log([&](double f) { return npd_wind_spectrum({U0, 10.0}, f); }));
+  const double sigma_spectrum = std::sqrt(integrate_log([&](double f) {
+    return npd_wind_spectrum({U0, 10.0}, f);
+  }));
   const double sigma_intensity = npd_turbulence_intensity(U0, 10.0) * U0;
   EXPECT_REL_NEAR(sigma_spectrum, sigma_intensity, kNpdConsistencyRelTol);
 }

@@ -6,6 +6,8 @@
 // Integrals in the tests are computed here with an independent trapezoid rule
 // on a fine grid, not with the kernel's quadrature.
 
+#include "engine/environment/wave_spectrum.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -14,7 +16,6 @@
 #include <stdexcept>
 #include <string>
 
-#include "engine/environment/wave_spectrum.hpp"
 #include "support/expect_near.hpp"
 
 namespace spiral::engine {
@@ -53,9 +54,8 @@ double trapezoid(const std::function<double(double)>& f, double a, double b, int
 // m_n integrated independently to 10 wp (the brief's upper limit).
 double moment_to_10wp(const WaveSpectrum& s, int n) {
   const double wp = s.peak_rad_per_s();
-  return trapezoid(
-      [&](double w) { return std::pow(w, n) * spectral_density_m2s_per_rad(s, w); }, 0.0,
-      10.0 * wp, 200000);
+  return trapezoid([&](double w) { return std::pow(w, n) * spectral_density_m2s_per_rad(s, w); },
+                   0.0, 10.0 * wp, 200000);
 }
 
 TEST(WaveSpectrum, PiersonMoskowitzVarianceIsHsSquaredOver16) {
@@ -160,13 +160,13 @@ TEST(WaveSpectrum, InvalidInputsNameTheQuantityAndUnit) {
 TEST(DirectionalSpreading, DensityIntegratesToOne) {
   for (const auto form : {SpreadingForm::cos_2s, SpreadingForm::cos_power}) {
     for (const double e : {0.0, 1.0, 2.0, 7.5, 30.0, 400.0}) {
-      SCOPED_TRACE(std::string(form == SpreadingForm::cos_2s ? "cos-2s" : "cos^n") +
-                   ", exponent " + std::to_string(e));
+      SCOPED_TRACE(std::string(form == SpreadingForm::cos_2s ? "cos-2s" : "cos^n") + ", exponent " +
+                   std::to_string(e));
       const DirectionalSpreading d{form, e};
       // Over the support (the cos^n density is a box for n = 0: no jump inside the range).
       const double half = form == SpreadingForm::cos_2s ? kPi : 0.5 * kPi;
-      const double integral = trapezoid(
-          [&](double t) { return spreading_density_per_rad(d, t); }, -half, half, 20000);
+      const double integral =
+          trapezoid([&](double t) { return spreading_density_per_rad(d, t); }, -half, half, 20000);
       EXPECT_REL_NEAR(integral, 1.0, kSpreadingRelTol);
     }
   }
@@ -188,8 +188,8 @@ TEST(DirectionalSpreading, DiscreteWeightsSumToOneAndAreSymmetric) {
     }
   }
   // Odd N puts the central direction on the mean.
-  EXPECT_REL_NEAR(discretise_spreading({SpreadingForm::cos_2s, 10.0}, 1.0, 15)[7].heading_rad,
-                  1.0, kSpreadingRelTol);
+  EXPECT_REL_NEAR(discretise_spreading({SpreadingForm::cos_2s, 10.0}, 1.0, 15)[7].heading_rad, 1.0,
+                  kSpreadingRelTol);
   EXPECT_THROW(discretise_spreading({SpreadingForm::cos_2s, 10.0}, 0.0, 0), std::invalid_argument);
   EXPECT_THROW(spreading_density_per_rad({SpreadingForm::cos_2s, -1.0}, 0.0),
                std::invalid_argument);
