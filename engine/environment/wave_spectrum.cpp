@@ -77,7 +77,7 @@ WaveSpectrum make_jonswap_spectrum(const JonswapInput& input) {
   s.Tp_s = input.Tp_s;
   require_positive(s.Hs_m, "Hs", "m");
   require_positive(s.Tp_s, "Tp", "s");
-  s.gamma = input.gamma == 0.0 ? default_jonswap_gamma(input.Hs_m, input.Tp_s) : input.gamma;
+  s.gamma = input.gamma ? *input.gamma : default_jonswap_gamma(input.Hs_m, input.Tp_s);
   validate(s);
   return s;
 }

@@ -29,6 +29,7 @@
 // Errors: std::invalid_argument naming the quantity and its unit.
 
 #include <Eigen/Core>
+#include <optional>
 #include <vector>
 
 namespace spiral::engine {
@@ -48,12 +49,12 @@ struct WaveSpectrum {
 double default_jonswap_gamma(double Hs_m, double Tp_s);
 
 struct JonswapInput {
-  double Hs_m = 0.0;   ///< > 0
-  double Tp_s = 0.0;   ///< > 0
-  double gamma = 0.0;  ///< >= 1; 0 (the default) selects default_jonswap_gamma(Hs, Tp)
+  double Hs_m = 0.0;            ///< > 0
+  double Tp_s = 0.0;            ///< > 0
+  std::optional<double> gamma;  ///< >= 1; empty selects default_jonswap_gamma(Hs, Tp)
 };
 
-/// Validates Hs > 0 m, Tp > 0 s, gamma >= 1 (or 0 = default); throws std::invalid_argument.
+/// Validates Hs > 0 m, Tp > 0 s, gamma >= 1 (if given); throws std::invalid_argument.
 WaveSpectrum make_jonswap_spectrum(const JonswapInput& input);
 /// Pierson-Moskowitz = JONSWAP with gamma = 1. Validates Hs > 0 m, Tp > 0 s.
 WaveSpectrum make_pierson_moskowitz_spectrum(double Hs_m, double Tp_s);

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <functional>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -111,8 +112,9 @@ TEST(WaveSpectrum, DefaultGammaFollowsDnvRpC205) {
   EXPECT_EQ(default_jonswap_gamma(4.0, 11.0), 1.0);
   // 1-yr GoM, Hs 4 m, Tp 10 s: ratio 5.0 exactly -> 1 (reference-platforms.md §2.6).
   EXPECT_EQ(default_jonswap_gamma(4.0, 10.0), 1.0);
-  // gamma = 0 selects the default.
-  EXPECT_EQ(make_jonswap_spectrum({12.0, 14.0, 0.0}).gamma, default_jonswap_gamma(12.0, 14.0));
+  // No gamma given: the default.
+  EXPECT_EQ(make_jonswap_spectrum({12.0, 14.0, std::nullopt}).gamma,
+            default_jonswap_gamma(12.0, 14.0));
 }
 
 TEST(WaveSpectrum, PiersonMoskowitzPeriodRatios) {
