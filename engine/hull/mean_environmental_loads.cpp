@@ -1,0 +1,313 @@
+#include "engine/hull/mean_environmental_loads.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+namespace spiral::engine {
+namespace {
+
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+// Relative headings closer than this to a table end count as on it (rounding of
+// degrees written with 5-6 significant digits).
+constexpr double kHeadingTolerance_rad = 1e-6;
+
+double wrap_0_2pi(double angle) {
+  double a = std::fmod(angle, kTwoPi);
+  if (a < 0.0) a += kTwoPi;
+  if (a >= kTwoPi) a = 0.0;
+  return a;
+}
+
+// Linear interpolation bracket: value = (1 - t) v[j0] + t v[j1].
+struct Bracket {
+  std::size_t j0 = 0;
+  std::size_t j1 = 0;
+  double t = 0.0;
+};
+
+// Heading rule documented in the header: periodic when the wrap-around gap is
+// no larger than the largest interior gap, otherwise no extrapolation.
+Bracket heading_bracket(const std::vector<double>& h, double beta, const char* table_name) {
+  const std::size_t n = h.size();
+  const double first = h.front();
+  const double last = h.back();
+  const double b = first + wrap_0_2pi(beta - first);  // in [first, first + 2 pi)
+  if (b <= last) {
+    const auto it = std::upper_bound(h.begin(), h.end(), b);
+    if (it == h.end()) return {n - 1, n - 1, 0.0};  // b == last
+    const std::size_t j1 = static_cast<std::size_t>(it - h.begin());
+    const std::size_t j0 = j1 - 1;
+    return {j0, j1, (b - h[j0]) / (h[j1] - h[j0])};
+  }
+  const double wrap_gap = first + kTwoPi - last;
+  double largest_gap = 0.0;
+  for (std::size_t j = 1; j < n; ++j) largest_gap = std::max(largest_gap, h[j] - h[j - 1]);
+  if (n > 1 && wrap_gap <= largest_gap + kHeadingTolerance_rad) {
+    return {n - 1, 0, (b - last) / wrap_gap};
+  }
+  if (b - last <= kHeadingTolerance_rad) return {n - 1, n - 1, 0.0};
+  if (first + kTwoPi - b <= kHeadingTolerance_rad) return {0, 0, 0.0};
+  throw std::invalid_argument(fmt::format(
+      "{}: relative heading {:.6g} deg lies outside the tabulated headings {:.6g}..{:.6g} deg "
+      "and the table does not cover the circle (no extrapolation in heading)",
+      table_name, b * 180.0 / std::numbers::pi, first * 180.0 / std::numbers::pi,
+      last * 180.0 / std::numbers::pi));
+}
+
+// Frequency bracket with the end values held outside the table.
+Bracket frequency_bracket(const std::vector<double>& w, double omega) {
+  const std::size_t n = w.size();
+  if (omega <= w.front()) return {0, 0, 0.0};
+  if (omega >= w.back()) return {n - 1, n - 1, 0.0};
+  const auto it = std::upper_bound(w.begin(), w.end(), omega);
+  const std::size_t j1 = static_cast<std::size_t>(it - w.begin());
+  const std::size_t j0 = j1 - 1;
+  return {j0, j1, (omega - w[j0]) / (w[j1] - w[j0])};
+}
+
+double lerp(const std::vector<double>& v, const Bracket& b) {
+  return (1.0 - b.t) * v[b.j0] + b.t * v[b.j1];
+}
+
+// Body -> global for a yaw psi: (Fx, Fy) and (Mx, My) rotate, Fz and Mz do not.
+Vector6d body_to_global(const Vector6d& load_b, double psi) {
+  const double c = std::cos(psi);
+  const double s = std::sin(psi);
+  Vector6d g = load_b;
+  g(0) = c * load_b(0) - s * load_b(1);
+  g(1) = s * load_b(0) + c * load_b(1);
+  g(3) = c * load_b(3) - s * load_b(4);
+  g(4) = s * load_b(3) + c * load_b(4);
+  return g;
+}
+
+void require_finite(double value, const char* what, const char* unit) {
+  if (!std::isfinite(value)) {
+    throw std::invalid_argument(fmt::format("{} must be finite ({}), got {}", what, unit, value));
+  }
+}
+
+}  // namespace
+
+void validate_coefficient_table(const CoefficientTable& t) {
+  const std::size_t n = t.headings_rad.size();
+  if (n == 0) throw std::invalid_argument("coefficient table: no headings");
+  if (t.Cx_m2.size() != n || t.Cy_m2.size() != n || t.Cmz_m3.size() != n) {
+    throw std::invalid_argument(
+        fmt::format("coefficient table: {} headings but {} Cx_m2, {} Cy_m2, {} Cmz_m3 values", n,
+                    t.Cx_m2.size(), t.Cy_m2.size(), t.Cmz_m3.size()));
+  }
+  for (std::size_t j = 0; j < n; ++j) {
+    const double h = t.headings_rad[j];
+    if (!(h >= 0.0 && h < kTwoPi)) {
+      throw std::invalid_argument(fmt::format(
+          "coefficient table: headings_rad[{}] must be in [0, 2 pi) rad, got {} rad", j, h));
+    }
+    if (j > 0 && !(h > t.headings_rad[j - 1])) {
+      throw std::invalid_argument(fmt::format(
+          "coefficient table: headings_rad must be strictly increasing, got {} rad after {} rad", h,
+          t.headings_rad[j - 1]));
+    }
+    if (!std::isfinite(t.Cx_m2[j]) || !std::isfinite(t.Cy_m2[j]) || !std::isfinite(t.Cmz_m3[j])) {
+      throw std::invalid_argument(
+          fmt::format("coefficient table: non-finite coefficient at heading {} rad", h));
+    }
+  }
+}
+
+CoefficientLoadResult coefficient_load(const CoefficientTable& table,
+                                       const CoefficientLoadInput& in) {
+  validate_coefficient_table(table);
+  if (!(in.fluid_density_kg_per_m3 > 0.0) || !std::isfinite(in.fluid_density_kg_per_m3)) {
+    throw std::invalid_argument(
+        fmt::format("coefficient load: fluid density must be > 0 kg/m^3, "
+                    "got {} kg/m^3",
+                    in.fluid_density_kg_per_m3));
+  }
+  require_finite(in.flow_velocity_g.x(), "coefficient load: flow velocity x", "m/s");
+  require_finite(in.flow_velocity_g.y(), "coefficient load: flow velocity y", "m/s");
+  require_finite(in.hull_yaw_rad, "coefficient load: hull yaw", "rad");
+
+  CoefficientLoadResult r;
+  r.speed_m_per_s = std::hypot(in.flow_velocity_g.x(), in.flow_velocity_g.y());
+  const double direction =
+      r.speed_m_per_s > 0.0 ? std::atan2(in.flow_velocity_g.y(), in.flow_velocity_g.x()) : 0.0;
+  r.relative_heading_rad = wrap_0_2pi(direction - in.hull_yaw_rad);
+  if (r.speed_m_per_s == 0.0) return r;  // no flow, no load (and no heading to look up)
+  const Bracket b =
+      heading_bracket(table.headings_rad, r.relative_heading_rad, "coefficient table");
+  r.coefficients << lerp(table.Cx_m2, b), lerp(table.Cy_m2, b), lerp(table.Cmz_m3, b);
+  // OCIMF form: F = 1/2 rho (C A)(beta) V|V|, V = |V| >= 0 (direction carried by beta).
+  const double q = 0.5 * in.fluid_density_kg_per_m3 * r.speed_m_per_s * r.speed_m_per_s;
+  r.load_b(0) = q * r.coefficients(0);
+  r.load_b(1) = q * r.coefficients(1);
+  r.load_b(5) = q * r.coefficients(2);
+  r.load_g = body_to_global(r.load_b, in.hull_yaw_rad);
+  return r;
+}
+
+CoefficientLoadResult current_load(const CoefficientTable& table, const CurrentProfile& current,
+                                   double water_density_kg_per_m3, double hull_yaw_rad,
+                                   double reference_z_m) {
+  if (!(reference_z_m <= 0.0)) {
+    throw std::invalid_argument(fmt::format(
+        "current load: reference depth z must be <= 0 m (at or below the mean water level), got "
+        "{} m",
+        reference_z_m));
+  }
+  return coefficient_load(
+      table, {water_density_kg_per_m3, current_velocity_g(current, reference_z_m), hull_yaw_rad});
+}
+
+CoefficientLoadResult wind_load(const CoefficientTable& table, double wind_speed_m_per_s,
+                                double wind_heading_rad, double hull_yaw_rad,
+                                double air_density_kg_per_m3) {
+  if (!(wind_speed_m_per_s >= 0.0) || !std::isfinite(wind_speed_m_per_s)) {
+    throw std::invalid_argument(
+        fmt::format("wind load: wind speed must be >= 0 m/s, got {} m/s", wind_speed_m_per_s));
+  }
+  require_finite(wind_heading_rad, "wind load: wind heading", "rad");
+  const Eigen::Vector3d v(wind_speed_m_per_s * std::cos(wind_heading_rad),
+                          wind_speed_m_per_s * std::sin(wind_heading_rad), 0.0);
+  CoefficientLoadResult r = coefficient_load(table, {air_density_kg_per_m3, v, hull_yaw_rad});
+  // A zero speed has no direction of its own: report the stated heading.
+  r.relative_heading_rad = wrap_0_2pi(wind_heading_rad - hull_yaw_rad);
+  return r;
+}
+
+void validate_mean_drift_table(const MeanDriftTable& t) {
+  const std::size_t nw = t.omega_rad_per_s.size();
+  const std::size_t nb = t.headings_rad.size();
+  if (nw == 0 || nb == 0) {
+    throw std::invalid_argument(
+        fmt::format("mean drift table: needs >= 1 frequency and heading, got {} and {}", nw, nb));
+  }
+  for (std::size_t k = 0; k < nw; ++k) {
+    const double w = t.omega_rad_per_s[k];
+    if (!(w > 0.0) || !std::isfinite(w) || (k > 0 && !(w > t.omega_rad_per_s[k - 1]))) {
+      throw std::invalid_argument(fmt::format(
+          "mean drift table: frequencies must be > 0 rad/s and strictly increasing, got "
+          "omega[{}] = {} rad/s",
+          k, w));
+    }
+  }
+  for (std::size_t j = 0; j < nb; ++j) {
+    const double h = t.headings_rad[j];
+    if (!std::isfinite(h) || (j > 0 && !(h > t.headings_rad[j - 1]))) {
+      throw std::invalid_argument(fmt::format(
+          "mean drift table: headings must be finite and strictly increasing, got heading[{}] = "
+          "{} rad",
+          j, h));
+    }
+  }
+  if (t.headings_rad.back() - t.headings_rad.front() > kTwoPi + kHeadingTolerance_rad) {
+    throw std::invalid_argument("mean drift table: headings span more than 2 pi rad");
+  }
+  bool any = false;
+  for (std::size_t i = 0; i < 6; ++i) {
+    if (!t.present[i]) continue;
+    any = true;
+    const auto& c = t.coefficient[i];
+    if (static_cast<std::size_t>(c.rows()) != nw || static_cast<std::size_t>(c.cols()) != nb) {
+      throw std::invalid_argument(fmt::format(
+          "mean drift table: DOF {} coefficients are {}x{}, expected {}x{} (frequencies x "
+          "headings)",
+          i + 1, c.rows(), c.cols(), nw, nb));
+    }
+    if (!c.allFinite()) {
+      throw std::invalid_argument(
+          fmt::format("mean drift table: DOF {} has non-finite coefficients", i + 1));
+    }
+  }
+  if (!any) throw std::invalid_argument("mean drift table: no DOF has coefficients");
+}
+
+namespace {
+
+Vector6d interpolate_drift(const MeanDriftTable& t, const Bracket& fw, const Bracket& fb) {
+  Vector6d d = Vector6d::Zero();
+  for (std::size_t i = 0; i < 6; ++i) {
+    if (!t.present[i]) continue;
+    const auto& c = t.coefficient[i];
+    const auto at = [&](std::size_t k, const Bracket& b) {
+      return (1.0 - b.t) * c(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(b.j0)) +
+             b.t * c(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(b.j1));
+    };
+    d(static_cast<Eigen::Index>(i)) = (1.0 - fw.t) * at(fw.j0, fb) + fw.t * at(fw.j1, fb);
+  }
+  return d;
+}
+
+}  // namespace
+
+Vector6d mean_drift_coefficients(const MeanDriftTable& table, double omega,
+                                 double relative_heading_rad) {
+  validate_mean_drift_table(table);
+  require_finite(omega, "mean drift: frequency", "rad/s");
+  require_finite(relative_heading_rad, "mean drift: relative heading", "rad");
+  return interpolate_drift(
+      table, frequency_bracket(table.omega_rad_per_s, omega),
+      heading_bracket(table.headings_rad, relative_heading_rad, "mean drift table"));
+}
+
+MeanDriftResult mean_wave_drift_load(const MeanDriftTable& table, const MeanDriftInput& in) {
+  validate_mean_drift_table(table);
+  require_finite(in.wave_heading_rad, "mean drift: wave heading", "rad");
+  require_finite(in.hull_yaw_rad, "mean drift: hull yaw", "rad");
+
+  MeanDriftResult r;
+  if (in.spreading) {
+    r.directions =
+        discretise_spreading(*in.spreading, in.wave_heading_rad, in.spreading_directions);
+  } else {
+    r.directions = {{in.wave_heading_rad, 1.0}};
+  }
+
+  // Raise the quadrature limit to the table's last frequency so that the
+  // analytic tail lies where D is held constant (exact for the w^-5 tail).
+  SpectrumQuadratureOptions options = in.quadrature;
+  options.min_upper_limit_rad_per_s =
+      std::max(options.min_upper_limit_rad_per_s, table.omega_rad_per_s.back());
+  const SpectrumQuadrature q = spectrum_quadrature(in.spectrum, options);
+  const Eigen::Index nodes = q.omega_rad_per_s.size();
+
+  r.m0_m2 = q.weight_m2.sum() + q.tail_m0_m2;
+  double below = 0.0;
+  double above = q.tail_m0_m2;
+  for (Eigen::Index i = 0; i < nodes; ++i) {
+    if (q.omega_rad_per_s(i) < table.omega_rad_per_s.front()) below += q.weight_m2(i);
+    if (q.omega_rad_per_s(i) > table.omega_rad_per_s.back()) above += q.weight_m2(i);
+  }
+  r.variance_fraction_below_table = below / r.m0_m2;
+  r.variance_fraction_above_table = above / r.m0_m2;
+
+  // Frequency brackets do not depend on the direction: compute them once.
+  std::vector<Bracket> fw(static_cast<std::size_t>(nodes) + 1);
+  for (Eigen::Index i = 0; i < nodes; ++i) {
+    fw[static_cast<std::size_t>(i)] =
+        frequency_bracket(table.omega_rad_per_s, q.omega_rad_per_s(i));
+  }
+  fw.back() = frequency_bracket(table.omega_rad_per_s, q.tail_start_rad_per_s);
+
+  for (const SpreadingDirection& dir : r.directions) {
+    if (dir.weight == 0.0) continue;
+    const Bracket fb =
+        heading_bracket(table.headings_rad, dir.heading_rad - in.hull_yaw_rad, "mean drift table");
+    // Faltinsen (1990) ch. 5 / Newman (1974): F = 2 int S(w) D(w, beta) dw.
+    Vector6d integral = Vector6d::Zero();
+    for (Eigen::Index i = 0; i < nodes; ++i) {
+      if (q.weight_m2(i) == 0.0) continue;
+      integral += q.weight_m2(i) * interpolate_drift(table, fw[static_cast<std::size_t>(i)], fb);
+    }
+    integral += q.tail_m0_m2 * interpolate_drift(table, fw.back(), fb);
+    r.load_b += 2.0 * dir.weight * integral;
+  }
+  r.load_g = body_to_global(r.load_b, in.hull_yaw_rad);
+  return r;
+}
+
+}  // namespace spiral::engine
