@@ -19,9 +19,6 @@ namespace {
 
 constexpr double kRadToDeg = 180.0 / std::numbers::pi;
 constexpr const char* kDofNames[6] = {"surge", "sway", "heave", "roll", "pitch", "yaw"};
-// Profile points per segment for the utilization along each line (the
-// largest tension of a catenary segment is at one of its ends).
-constexpr int kProfilePointsPerSegment = 2;
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -135,7 +132,7 @@ StaticCaseResult run_static_case(const ValidatedProject& validated, const Static
   for (const auto& line : lines.lines) {
     states.push_back(line->state(equilibrium.pose.reference_point_g +
                                      equilibrium.pose.rotation * line->attachment_b(),
-                                 kProfilePointsPerSegment));
+                                 kResultProfilePointsPerSegment));
   }
   result.lines = line_statics_rows(lines, states);
 

@@ -12,11 +12,6 @@ namespace spiral::design {
 namespace {
 
 constexpr double kRadToDeg = 180.0 / std::numbers::pi;
-// Profile points per segment for the tension along the line. Within a
-// catenary segment T² = H² + V(s)² with V linear in s, and on the seabed T
-// falls monotonically towards the anchor, so the largest tension of a segment
-// is at one of its ends: the end points find it exactly.
-constexpr int kProfilePointsPerSegment = 2;
 
 LineStaticsRow row_of(const MooringLineDesign& design, const engine::LineState& state) {
   LineStaticsRow row;
@@ -44,6 +39,9 @@ LineStaticsRow row_of(const MooringLineDesign& design, const engine::LineState& 
     if (segment < segment_max.size()) segment_max[segment] = std::max(segment_max[segment], point.tension_N);
     row.max_tension_N = std::max(row.max_tension_N, point.tension_N);
   }
+  // Within a catenary segment T² = H² + V(s)² with V linear in s, and on the
+  // seabed T falls monotonically towards the anchor: the largest tension of a
+  // segment is at one of its ends, which the profile always contains.
   for (std::size_t i = 0; i < segment_max.size(); ++i) {
     const double utilization = segment_max[i] / design.segment_types[i].breaking_load_N;
     if (utilization >= row.utilization) {
@@ -51,6 +49,7 @@ LineStaticsRow row_of(const MooringLineDesign& design, const engine::LineState& 
       row.governing_segment_type = design.segment_types[i].name;
     }
   }
+  row.profile = state.profile;
   return row;
 }
 
@@ -73,7 +72,7 @@ StaticsResult run_statics(LineArrayModel& model, const engine::Vector6d& offset)
   states.reserve(model.lines.size());
   for (const auto& line : model.lines) {
     const Eigen::Vector3d arm = pose.rotation * line->attachment_b();
-    states.push_back(line->state(pose.reference_point_g + arm, kProfilePointsPerSegment));
+    states.push_back(line->state(pose.reference_point_g + arm, kResultProfilePointsPerSegment));
     result.hull_force.head<3>() += states.back().top.force_g;
     result.hull_force.tail<3>() += arm.cross(states.back().top.force_g);
   }

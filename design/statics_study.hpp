@@ -30,7 +30,15 @@ struct LineStaticsRow {
   std::string governing_segment_type;    ///< line type of the segment that sets the utilization
   std::string regime;                    ///< suspended | touchdown | slack
   int iterations = 0;
+  /// Points along the line, anchor to fairlead: positions and effective
+  /// tension (for profile plots, 3D views and tension-along-line plots).
+  std::vector<engine::LineProfilePoint> profile;
 };
+
+/// Profile points per segment in the results (the largest tension of a
+/// catenary segment is at one of its ends, so any count finds it; 20 draws
+/// a smooth curve in plots and 3D views).
+inline constexpr int kResultProfilePointsPerSegment = 20;
 
 struct StaticsResult {
   engine::Vector6d offset = engine::Vector6d::Zero();      ///< m, rad
