@@ -238,12 +238,12 @@ struct RiserDesignFactors {
 /// Riser acceptance criteria (DESIGN.md §6) after per-riser overrides.
 struct RiserCriteria {
   RiserDesignFactors design_factor;
-  double min_effective_tension_N = 0.0;                ///< >= 0, everywhere along the riser
-  std::optional<double> max_top_tension_N;             ///< > 0
-  std::optional<double> max_top_angle_rad;             ///< from vertical, (0, pi/2)
-  std::optional<double> max_flex_joint_rotation_rad;   ///< from the at-rest angle, (0, pi/2)
-  std::optional<double> min_bending_radius_m;          ///< > 0; required for flexible risers
-  std::optional<double> max_touchdown_excursion_m;     ///< TDP horizontal travel from rest, > 0
+  double min_effective_tension_N = 0.0;               ///< >= 0, everywhere along the riser
+  std::optional<double> max_top_tension_N;            ///< > 0
+  std::optional<double> max_top_angle_rad;            ///< from vertical, (0, pi/2)
+  std::optional<double> max_flex_joint_rotation_rad;  ///< from the at-rest angle, (0, pi/2)
+  std::optional<double> min_bending_radius_m;         ///< > 0; required for flexible risers
+  std::optional<double> max_touchdown_excursion_m;    ///< TDP horizontal travel from rest, > 0
 };
 
 /// Per-riser overrides of `criteria.risers`: only the keys given replace the
@@ -350,7 +350,7 @@ struct MooringCriteria {
 
 struct Criteria {
   MooringCriteria mooring;
-  RiserCriteria risers;  ///< project-wide; see Riser::criteria for overrides
+  RiserCriteria risers;                        ///< project-wide; see Riser::criteria for overrides
   std::optional<double> max_offset_pct_depth;  ///< %, of water depth, > 0
 };
 

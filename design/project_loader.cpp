@@ -222,8 +222,7 @@ std::optional<std::vector<double>> to_number_list(Context& ctx, const YAML::Node
 
 /// A list of rows of numbers, [[...], [...]]; rows may differ in length here
 /// (the validation pass checks them against the table's axes).
-std::optional<std::vector<std::vector<double>>> to_number_rows(Context& ctx,
-                                                               const YAML::Node& node,
+std::optional<std::vector<std::vector<double>>> to_number_rows(Context& ctx, const YAML::Node& node,
                                                                const std::string& path,
                                                                std::string_view unit) {
   if (!node.IsSequence()) {
@@ -470,8 +469,7 @@ const EnumTable<WaveSpectrum> kWaveSpectra = {
     {"jonswap", WaveSpectrum::jonswap}, {"pierson_moskowitz", WaveSpectrum::pierson_moskowitz}};
 const EnumTable<WindSpectrum> kWindSpectra = {
     {"api", WindSpectrum::api}, {"npd", WindSpectrum::npd}, {"none", WindSpectrum::none}};
-const EnumTable<LineModel> kLineModels = {{"catenary", LineModel::catenary},
-                                          {"fe", LineModel::fe}};
+const EnumTable<LineModel> kLineModels = {{"catenary", LineModel::catenary}, {"fe", LineModel::fe}};
 const EnumTable<DesignCondition> kDesignConditions = {{"normal", DesignCondition::normal},
                                                       {"extreme", DesignCondition::extreme},
                                                       {"survival", DesignCondition::survival}};
@@ -628,7 +626,8 @@ MeanDrift read_mean_drift(MapReader& r, const std::filesystem::path& base_folder
   r.child("file", kOptional);  // known key, for suggestions
   if (const auto node = r.child("ulen", kOptional)) {
     r.context().add(node->Mark(), r.path_of("ulen"),
-                    "applies to a WAMIT file (file: path.12d) only, got a table", "key_not_applicable");
+                    "applies to a WAMIT file (file: path.12d) only, got a table",
+                    "key_not_applicable");
   }
   MeanDriftTable t;
   assign(t.headings_rad, r.angles("headings", kRequired));

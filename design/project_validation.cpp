@@ -140,8 +140,7 @@ void check_headings(Reporter& r, const std::string& at, const std::vector<double
                     std::size_t minimum) {
   const char* c = "headings_valid";
   if (headings_rad.size() < minimum) {
-    r.fail(at, c,
-           fmt::format("needs at least {} headings, got {}", minimum, headings_rad.size()));
+    r.fail(at, c, fmt::format("needs at least {} headings, got {}", minimum, headings_rad.size()));
   }
   for (std::size_t k = 0; k < headings_rad.size(); ++k) {
     const double deg = headings_rad[k] * kRadToDeg;
@@ -187,9 +186,9 @@ void check_mean_drift_table(Reporter& r, const std::string& at, const MeanDriftT
                          f[k - 1]));
     }
   }
-  for (const auto& [key, rows] : {std::pair{".surge", &t.surge_N_per_m2},
-                                  std::pair{".sway", &t.sway_N_per_m2},
-                                  std::pair{".yaw", &t.yaw_N_m_per_m2}}) {
+  for (const auto& [key, rows] :
+       {std::pair{".surge", &t.surge_N_per_m2}, std::pair{".sway", &t.sway_N_per_m2},
+        std::pair{".yaw", &t.yaw_N_m_per_m2}}) {
     check_length(r, at + key, rows->size(), t.headings_rad.size(), "headings_deg (rows)");
     for (std::size_t i = 0; i < rows->size(); ++i) {
       check_length(r, fmt::format("{}{}[{}]", at, key, i), (*rows)[i].size(), f.size(),

@@ -176,8 +176,8 @@ TEST(ProjectLoader, FormatSampleLoadsWithExpectedValues) {
   EXPECT_EQ(flexible.kind, RiserKind::flexible);
   EXPECT_DOUBLE_EQ(*flexible.sections[0].bending_stiffness_N_m2, 1.208e5);
   EXPECT_DOUBLE_EQ(*flexible.criteria.min_bending_radius_m, 3.0);
-  EXPECT_DOUBLE_EQ(flexible.internal_pressure_Pa, 0.0);     // default
-  EXPECT_DOUBLE_EQ(flexible.fe.element_length_m, 5.0);      // riser default
+  EXPECT_DOUBLE_EQ(flexible.internal_pressure_Pa, 0.0);  // default
+  EXPECT_DOUBLE_EQ(flexible.fe.element_length_m, 5.0);   // riser default
   EXPECT_FALSE(flexible.fe.touchdown_refinement.has_value());
 
   ASSERT_EQ(p.environments.size(), 2u);
@@ -398,9 +398,9 @@ TEST(ProjectLoader, TouchdownRefinementNeedsBothValues) {
 }
 
 TEST(ProjectLoader, BadLoadCaseConditionIsAnError) {
-  const auto issues = issues_of(
-      replace(kMinimal, "{name: lc1, environment: calm}", "{name: lc1, environment: calm, "
-                                                          "condition: survivl}"));
+  const auto issues = issues_of(replace(kMinimal, "{name: lc1, environment: calm}",
+                                        "{name: lc1, environment: calm, "
+                                        "condition: survivl}"));
   ASSERT_EQ(issues.size(), 1u);
   EXPECT_EQ(issues[0].condition, "bad_enum");
   EXPECT_NE(issues[0].message.find("did you mean \"survival\""), std::string::npos);
@@ -503,7 +503,8 @@ TEST(ProjectLoader, RiserCriteriaOverridesMergeWithTheProjectCriteria) {
       "    azimuth_deg: 0.0\n"
       "    top_angle_deg: 10.0\n"
       "    sections:\n"
-      "      - {length: 300.0, outer_diameter: 0.3, wall_thickness: 0.02, youngs_modulus: 2.07e11,\n"
+      "      - {length: 300.0, outer_diameter: 0.3, wall_thickness: 0.02, youngs_modulus: "
+      "2.07e11,\n"
       "         yield_stress: 4.48e8, steel_density: 7850.0, contents_density: 800.0}\n"
       "    internal_pressure: 2.5e7\n"
       "    criteria: {design_factor: {extreme: 0.7}, max_top_tension: 3.0e6}\n";

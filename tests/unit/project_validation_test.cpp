@@ -279,18 +279,18 @@ TEST(ProjectValidation, RiserElementLengthAndRefinementMustBePositive) {
 }
 
 TEST(ProjectValidation, TouchdownRefinementMustBeFinerThanTheMesh) {
-  const auto issues = check(replace(
-      kMinimal, kLine,
-      kLine + "      fe: {touchdown_refinement: {length: 100.0, element_length: 20.0}}\n"));
+  const auto issues = check(
+      replace(kMinimal, kLine,
+              kLine + "      fe: {touchdown_refinement: {length: 100.0, element_length: 20.0}}\n"));
   expect_single(issues, "touchdown_refinement_finer",
                 "mooring.lines[0].fe.touchdown_refinement.element_length");
   EXPECT_EQ(issues[0].message, "must be <= element_length 10 m (a refinement), got 20 m");
 }
 
 TEST(ProjectValidation, CoefficientListsMustMatchTheHeadings) {
-  const auto issues = check(with_hull(
-      "  wind_coefficients: {headings_deg: [0, 90, 180], surge: [1, 0, -1], sway: [0, 1],"
-      " yaw: [0, 0, 0]}\n"));
+  const auto issues = check(
+      with_hull("  wind_coefficients: {headings_deg: [0, 90, 180], surge: [1, 0, -1], sway: [0, 1],"
+                " yaw: [0, 0, 0]}\n"));
   expect_single(issues, "table_lengths_match", "hull.wind_coefficients.sway");
   EXPECT_EQ(format_issue(issues[0]),
             "test.yaml:26:76: hull.wind_coefficients.sway: must have one value per entry of "
@@ -298,16 +298,16 @@ TEST(ProjectValidation, CoefficientListsMustMatchTheHeadings) {
 }
 
 TEST(ProjectValidation, HeadingsOutOfRange) {
-  const auto issues = check(with_hull(
-      "  current_coefficients: {headings_deg: [0, 180, 360], surge: [1, -1, 1],"
-      " sway: [0, 0, 0], yaw: [0, 0, 0]}\n"));
+  const auto issues =
+      check(with_hull("  current_coefficients: {headings_deg: [0, 180, 360], surge: [1, -1, 1],"
+                      " sway: [0, 0, 0], yaw: [0, 0, 0]}\n"));
   expect_single(issues, "headings_valid", "hull.current_coefficients.headings_deg[2]");
   EXPECT_EQ(format_issue(issues[0]),
             "test.yaml:26:49: hull.current_coefficients.headings_deg[2]: must be in [0, 360) "
             "deg, got 360 deg");
-  const auto negative = check(with_hull(
-      "  current_coefficients: {headings_deg: [-90, 90], surge: [0, 0], sway: [1, -1],"
-      " yaw: [0, 0]}\n"));
+  const auto negative = check(
+      with_hull("  current_coefficients: {headings_deg: [-90, 90], surge: [0, 0], sway: [1, -1],"
+                " yaw: [0, 0]}\n"));
   expect_single(negative, "headings_valid", "hull.current_coefficients.headings_deg[0]");
 }
 
@@ -333,20 +333,21 @@ TEST(ProjectValidation, MeanDriftFileThatExistsIsAccepted) {
   const std::filesystem::path folder =
       std::filesystem::temp_directory_path() / "spiral-validation-mean-drift";
   std::filesystem::create_directories(folder);
-  std::ofstream(folder / "hull.12d") << "    0.62832E+01    0.62832E+01    0.0    0.0    1    0.0    "
-                                        "0.0    0.0    0.0\n";
-  const Project p = parse_project(with_hull("  mean_drift: {file: hull.12d}\n"),
-                                  (folder / "p.yaml").string());
+  std::ofstream(folder / "hull.12d")
+      << "    0.62832E+01    0.62832E+01    0.0    0.0    1    0.0    "
+         "0.0    0.0    0.0\n";
+  const Project p =
+      parse_project(with_hull("  mean_drift: {file: hull.12d}\n"), (folder / "p.yaml").string());
   const auto issues = check_project(p);
   EXPECT_TRUE(issues.empty()) << all(issues);
   std::filesystem::remove_all(folder);
 }
 
 TEST(ProjectValidation, MeanDriftTableShapeAndFrequencies) {
-  const auto issues = check(with_hull(
-      "  mean_drift: {headings_deg: [0, 180], frequencies: [0.4, 0.4, 0.8],\n"
-      "               surge: [[1, 2, 3], [1, 2]], sway: [[0, 0, 0]],\n"
-      "               yaw: [[0, 0, 0], [0, 0, 0]]}\n"));
+  const auto issues =
+      check(with_hull("  mean_drift: {headings_deg: [0, 180], frequencies: [0.4, 0.4, 0.8],\n"
+                      "               surge: [[1, 2, 3], [1, 2]], sway: [[0, 0, 0]],\n"
+                      "               yaw: [[0, 0, 0], [0, 0, 0]]}\n"));
   ASSERT_EQ(issues.size(), 3u) << all(issues);
   EXPECT_EQ(conditions(issues),
             (std::vector<std::string>{"frequencies_valid", "table_lengths_match",
@@ -358,10 +359,10 @@ TEST(ProjectValidation, MeanDriftTableShapeAndFrequencies) {
 }
 
 TEST(ProjectValidation, HullGeometryMembersMustBeSolid) {
-  const auto issues = check(with_hull(
-      "  geometry:\n"
-      "    columns: [{center: [0, 0], z_bottom: 10, z_top: -20, diameter: 6.5}]\n"
-      "    pontoons: [{from: [1, 2, -17], to: [1, 2, -17], diameter: -1.6}]\n"));
+  const auto issues =
+      check(with_hull("  geometry:\n"
+                      "    columns: [{center: [0, 0], z_bottom: 10, z_top: -20, diameter: 6.5}]\n"
+                      "    pontoons: [{from: [1, 2, -17], to: [1, 2, -17], diameter: -1.6}]\n"));
   ASSERT_EQ(issues.size(), 3u) << all(issues);
   EXPECT_EQ(conditions(issues),
             (std::vector<std::string>{"column_top_above_bottom", "pontoon_length_positive",
@@ -376,7 +377,8 @@ TEST(ProjectValidation, FlexibleRiserNeedsAMinimumBendingRadius) {
   expect_single(issues, "flexible_min_bending_radius", "risers[0].criteria.min_bending_radius");
   EXPECT_EQ(issues[0].line, 33);  // the riser entry: no criteria map was written
   // Either level satisfies it.
-  EXPECT_TRUE(check(kMinimal + kFlexibleRiser + "    criteria: {min_bending_radius: 3.0}\n").empty());
+  EXPECT_TRUE(
+      check(kMinimal + kFlexibleRiser + "    criteria: {min_bending_radius: 3.0}\n").empty());
   const std::string project_level =
       replace(kMinimal, "  mooring: {code: api_rp_2sk}\n",
               "  mooring: {code: api_rp_2sk}\n  risers: {min_bending_radius: 3.0}\n");
@@ -406,7 +408,8 @@ TEST(ProjectValidation, RiserCriteriaRanges) {
 }
 
 TEST(ProjectValidation, AirDensityMustBePositive) {
-  const auto issues = check(replace(kMinimal, "  gravity: 9.81\n", "  gravity: 9.81\n  air_density: 0\n"));
+  const auto issues =
+      check(replace(kMinimal, "  gravity: 9.81\n", "  gravity: 9.81\n  air_density: 0\n"));
   expect_single(issues, "air_density_positive", "site.air_density");
 }
 
