@@ -526,5 +526,33 @@ TEST(ProjectLoader, RiserCriteriaOverridesMergeWithTheProjectCriteria) {
   EXPECT_DOUBLE_EQ(design_factor(c.design_factor, DesignCondition::extreme), 0.7);
 }
 
+TEST(ProjectLoader, ScenariosCarryTheCoupledStaticsData) {
+  const std::string folder = std::string(SPIRAL_SOURCE_DIR) + "/scenarios/";
+  const Project oc4 = load_project(folder + "oc4-semisubmersible.yaml");
+  ASSERT_TRUE(oc4.hull.geometry.has_value());
+  EXPECT_EQ(oc4.hull.geometry->columns.size(), 7u);    // main + 3 upper + 3 base (ref §1.3)
+  EXPECT_EQ(oc4.hull.geometry->pontoons.size(), 15u);  // members 8-22
+  EXPECT_FALSE(oc4.hull.wind_coefficients || oc4.hull.current_coefficients || oc4.hull.mean_drift);
+
+  const Project fps = load_project(folder + "deepwater-fps.yaml");
+  ASSERT_TRUE(fps.hull.geometry && fps.hull.current_coefficients && fps.hull.wind_coefficients);
+  EXPECT_FALSE(fps.hull.mean_drift.has_value());
+  // The lambda = 2 geometry: main column 13 m from -40 to +20 m.
+  EXPECT_DOUBLE_EQ(fps.hull.geometry->columns[0].diameter_m, 13.0);
+  EXPECT_DOUBLE_EQ(fps.hull.geometry->columns[0].z_bottom_m, -40.0);
+  // Current C A of the submerged columns (the scenario's arithmetic): 2,696 m^2.
+  EXPECT_DOUBLE_EQ(fps.hull.current_coefficients->surge_m2[0], 2696.0);
+  EXPECT_DOUBLE_EQ(fps.hull.current_coefficients->sway_m2[3], 2696.0);
+  for (const Riser& riser : fps.risers) {
+    ASSERT_TRUE(riser.fe.touchdown_refinement.has_value()) << riser.name;
+    EXPECT_DOUBLE_EQ(riser.fe.touchdown_refinement->element_length_m, 1.0) << riser.name;
+  }
+  EXPECT_DOUBLE_EQ(*fps.criteria.risers.max_top_tension_N, 4.0e6);
+  ASSERT_EQ(fps.load_cases.size(), 5u);
+  EXPECT_EQ(fps.load_cases[0].condition, DesignCondition::extreme);
+  EXPECT_EQ(fps.load_cases[2].condition, DesignCondition::survival);  // 100-yr, line damaged
+  EXPECT_EQ(fps.load_cases[4].condition, DesignCondition::normal);    // 1-yr operating
+}
+
 }  // namespace
 }  // namespace spiral::design
