@@ -1,5 +1,7 @@
 #include "design/project.hpp"
 
+#include <utility>
+
 namespace spiral::design {
 
 DnvOsE301Factors dnv_os_e301_defaults(int consequence_class) {
@@ -65,6 +67,59 @@ const char* to_string(MooringCode code) {
       return "dnv_os_e301";
   }
   return "?";
+}
+
+const char* to_string(LineModel model) {
+  switch (model) {
+    case LineModel::catenary:
+      return "catenary";
+    case LineModel::fe:
+      return "fe";
+  }
+  return "?";
+}
+
+const char* to_string(DesignCondition condition) {
+  switch (condition) {
+    case DesignCondition::normal:
+      return "normal";
+    case DesignCondition::extreme:
+      return "extreme";
+    case DesignCondition::survival:
+      return "survival";
+  }
+  return "?";
+}
+
+RiserCriteria riser_criteria(const Criteria& criteria, const Riser& riser) {
+  return with_overrides(criteria.risers, riser.criteria);
+}
+
+RiserCriteria with_overrides(RiserCriteria base, const RiserCriteriaOverrides& o) {
+  RiserCriteria out = std::move(base);
+  out.design_factor.normal = o.design_factor_normal.value_or(out.design_factor.normal);
+  out.design_factor.extreme = o.design_factor_extreme.value_or(out.design_factor.extreme);
+  out.design_factor.survival = o.design_factor_survival.value_or(out.design_factor.survival);
+  out.min_effective_tension_N = o.min_effective_tension_N.value_or(out.min_effective_tension_N);
+  if (o.max_top_tension_N) out.max_top_tension_N = o.max_top_tension_N;
+  if (o.max_top_angle_rad) out.max_top_angle_rad = o.max_top_angle_rad;
+  if (o.max_flex_joint_rotation_rad)
+    out.max_flex_joint_rotation_rad = o.max_flex_joint_rotation_rad;
+  if (o.min_bending_radius_m) out.min_bending_radius_m = o.min_bending_radius_m;
+  if (o.max_touchdown_excursion_m) out.max_touchdown_excursion_m = o.max_touchdown_excursion_m;
+  return out;
+}
+
+double design_factor(const RiserDesignFactors& factors, DesignCondition condition) {
+  switch (condition) {
+    case DesignCondition::normal:
+      return factors.normal;
+    case DesignCondition::extreme:
+      return factors.extreme;
+    case DesignCondition::survival:
+      return factors.survival;
+  }
+  return factors.extreme;
 }
 
 }  // namespace spiral::design

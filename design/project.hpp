@@ -21,6 +21,7 @@
 #include <optional>
 #include <string>
 #include <utility>
+#include <variant>
 #include <vector>
 
 #include "design/line_properties.hpp"
@@ -29,6 +30,10 @@ namespace spiral::design {
 
 /// The format version this build reads (the `version` key).
 inline constexpr int kProjectFormatVersion = 1;
+
+/// Air density used with the hull wind coefficients when the site gives none:
+/// ISO 2533 standard atmosphere at sea level.
+inline constexpr double kStandardAirDensity_kg_per_m3 = 1.225;
 
 struct Seabed {
   double friction_axial = 0.0;             ///< -, Coulomb coefficient along the line, >= 0
@@ -40,6 +45,7 @@ struct Site {
   double depth_m = 0.0;                  ///< water depth, > 0; seabed at z_g = -depth_m
   double water_density_kg_per_m3 = 0.0;  ///< > 0
   double gravity_m_per_s2 = 0.0;         ///< > 0
+  double air_density_kg_per_m3 = kStandardAirDensity_kg_per_m3;  ///< > 0, for hull wind loads
   Seabed seabed;
 };
 
@@ -58,12 +64,36 @@ struct LineSegment {
   double length_m = 0.0;  ///< unstretched, > 0
 };
 
+/// The static model of a mooring line in the statics and equilibrium
+/// analyses: the multi-segment elastic catenary, or the FE line (Newton
+/// statics with current drag and bending). Dynamic analyses always build an
+/// FE model from `MooringLine::fe`.
+enum class LineModel { catenary, fe };
+
+/// Default FE element lengths (docs/project-format.md): mooring lines, risers.
+inline constexpr double kDefaultLineElementLength_m = 10.0;
+inline constexpr double kDefaultRiserElementLength_m = 5.0;
+
+/// A finer mesh around the touchdown point of the at-rest static shape.
+struct TouchdownRefinement {
+  double length_m = 0.0;          ///< arc length of the refined zone, centred on the TDP, > 0
+  double element_length_m = 0.0;  ///< element length inside it, > 0, <= FeMesh::element_length_m
+};
+
+/// Discretization of a line or riser into finite elements (unstretched lengths).
+struct FeMesh {
+  double element_length_m = kDefaultLineElementLength_m;  ///< target element length, > 0
+  std::optional<TouchdownRefinement> touchdown_refinement;
+};
+
 struct MooringLine {
   std::string name;
   Eigen::Vector3d anchor_g = Eigen::Vector3d::Zero();    ///< global frame, m
   Eigen::Vector3d fairlead_b = Eigen::Vector3d::Zero();  ///< hull body frame, m
   std::vector<LineSegment> segments;                     ///< from the anchor to the fairlead
   std::vector<Attachment> attachments;
+  LineModel model = LineModel::catenary;
+  FeMesh fe{kDefaultLineElementLength_m, std::nullopt};
 };
 
 struct LineGroup {
@@ -74,6 +104,68 @@ struct LineGroup {
 struct Mooring {
   std::vector<MooringLine> lines;
   std::vector<LineGroup> groups;
+};
+
+/// Mean wind or current load coefficients of the hull against the relative
+/// heading (the direction of propagation of the wind or current in the body
+/// frame: its global heading minus the hull yaw). Loads in body axes, about the
+/// hull reference point: F_x = 1/2 rho V^2 surge(beta), F_y = 1/2 rho V^2
+/// sway(beta), M_z = 1/2 rho V^2 yaw(beta); rho the air (wind) or water
+/// (current) density, V the wind speed at `reference_height_m` or the surface
+/// current speed. Linear interpolation in heading, periodic over 360 deg.
+struct HullLoadCoefficients {
+  std::vector<double> headings_rad;  ///< >= 2 values, strictly increasing, in [0, 2 pi)
+  std::vector<double> surge_m2;      ///< C A per heading, m^2 (signed, body x)
+  std::vector<double> sway_m2;       ///< C A per heading, m^2 (signed, body y)
+  std::vector<double> yaw_m3;        ///< C A L per heading, m^3 (signed, about body z)
+};
+
+struct WindCoefficients : HullLoadCoefficients {
+  double reference_height_m = 10.0;  ///< height of the speed V above mean water level, > 0
+};
+
+/// Mean drift coefficients from a WAMIT .12d file (difference-frequency QTF;
+/// its diagonal gives the mean drift). Dimensional values follow the WAMIT
+/// manual (ch. 4) with the file's length scale `ulen_m`.
+struct MeanDriftFile {
+  std::filesystem::path file;  ///< resolved relative to the project file's folder
+  double ulen_m = 1.0;         ///< WAMIT ULEN of the file, > 0
+};
+
+/// Mean drift coefficients as a table: force per wave amplitude squared
+/// (mean force in regular waves of amplitude a is coefficient x a^2), body
+/// axes about the reference point; headings as for the wave heading relative
+/// to the hull (direction of propagation in the body frame).
+struct MeanDriftTable {
+  std::vector<double> headings_rad;           ///< >= 2, strictly increasing, in [0, 2 pi)
+  std::vector<double> frequencies_rad_per_s;  ///< >= 1, > 0, strictly increasing
+  /// [heading][frequency]; N/m^2 (surge, sway) and N m/m^2 (yaw).
+  std::vector<std::vector<double>> surge_N_per_m2;
+  std::vector<std::vector<double>> sway_N_per_m2;
+  std::vector<std::vector<double>> yaw_N_m_per_m2;
+};
+
+using MeanDrift = std::variant<MeanDriftFile, MeanDriftTable>;
+
+/// A vertical circular column (body frame).
+struct HullColumn {
+  Eigen::Vector2d center_b = Eigen::Vector2d::Zero();  ///< axis position [x, y], m
+  double z_bottom_m = 0.0;                             ///< body z of the bottom, < z_top_m
+  double z_top_m = 0.0;                                ///< body z of the top
+  double diameter_m = 0.0;                             ///< > 0
+};
+
+/// A circular pontoon or brace between two points (body frame).
+struct HullPontoon {
+  Eigen::Vector3d from_b = Eigen::Vector3d::Zero();  ///< m
+  Eigen::Vector3d to_b = Eigen::Vector3d::Zero();    ///< m, distinct from from_b
+  double diameter_m = 0.0;                           ///< > 0
+};
+
+/// Simple member geometry of the hull, for rendering and Morison members.
+struct HullGeometry {
+  std::vector<HullColumn> columns;
+  std::vector<HullPontoon> pontoons;
 };
 
 struct Hull {
@@ -92,6 +184,12 @@ struct Hull {
   std::optional<Eigen::Vector2d> waterplane_inertia_m4;  ///< second moments about body x, y
   /// WAMIT .hst file, resolved relative to the project file's folder.
   std::optional<std::filesystem::path> hydrostatics_file;
+  /// Mean environmental loads (absent: no wind / current load on the hull, no
+  /// mean drift).
+  std::optional<WindCoefficients> wind_coefficients;
+  std::optional<HullLoadCoefficients> current_coefficients;
+  std::optional<MeanDrift> mean_drift;
+  std::optional<HullGeometry> geometry;
 };
 
 enum class RiserKind { scr, lazy_wave, flexible };
@@ -123,6 +221,45 @@ struct RiserSection {
   double added_mass_axial = 0.0;
 };
 
+/// The design condition of a load case (API RP 2RD): it selects the riser
+/// design factor. 1-yr operating: normal; 100-yr: extreme; beyond 100-yr or
+/// damaged: survival.
+enum class DesignCondition { normal, extreme, survival };
+
+/// API RP 2RD allowable-stress design factors: von Mises stress <= factor x
+/// yield stress, the factor being C_f C_a with C_a = 2/3 and C_f = 1.0, 1.2,
+/// 1.5. Each in (0, 1].
+struct RiserDesignFactors {
+  double normal = 0.67;
+  double extreme = 0.80;
+  double survival = 1.00;
+};
+
+/// Riser acceptance criteria (DESIGN.md §6) after per-riser overrides.
+struct RiserCriteria {
+  RiserDesignFactors design_factor;
+  double min_effective_tension_N = 0.0;               ///< >= 0, everywhere along the riser
+  std::optional<double> max_top_tension_N;            ///< > 0
+  std::optional<double> max_top_angle_rad;            ///< from vertical, (0, pi/2)
+  std::optional<double> max_flex_joint_rotation_rad;  ///< from the at-rest angle, (0, pi/2)
+  std::optional<double> min_bending_radius_m;         ///< > 0; required for flexible risers
+  std::optional<double> max_touchdown_excursion_m;    ///< TDP horizontal travel from rest, > 0
+};
+
+/// Per-riser overrides of `criteria.risers`: only the keys given replace the
+/// project values (riser_criteria() merges them).
+struct RiserCriteriaOverrides {
+  std::optional<double> design_factor_normal;
+  std::optional<double> design_factor_extreme;
+  std::optional<double> design_factor_survival;
+  std::optional<double> min_effective_tension_N;
+  std::optional<double> max_top_tension_N;
+  std::optional<double> max_top_angle_rad;
+  std::optional<double> max_flex_joint_rotation_rad;
+  std::optional<double> min_bending_radius_m;
+  std::optional<double> max_touchdown_excursion_m;
+};
+
 struct Riser {
   std::string name;
   RiserKind kind = RiserKind::scr;
@@ -130,6 +267,11 @@ struct Riser {
   double azimuth_rad = 0.0;    ///< global direction the riser runs away from the hull
   double top_angle_rad = 0.0;  ///< from vertical, [0, pi/2)
   std::vector<RiserSection> sections;
+  /// Internal pressure at the hang-off above ambient (gauge), >= 0; below the
+  /// hang-off the contents head is added.
+  double internal_pressure_Pa = 0.0;
+  FeMesh fe{kDefaultRiserElementLength_m, std::nullopt};
+  RiserCriteriaOverrides criteria;
 };
 
 enum class WaveSpectrum { jonswap, pierson_moskowitz };
@@ -173,6 +315,7 @@ struct LoadCase {
   std::string name;
   std::string environment;                  ///< name of an `environments` entry
   std::optional<std::string> damaged_line;  ///< name of a mooring line removed in this case
+  DesignCondition condition = DesignCondition::extreme;  ///< selects the riser design factor
 };
 
 enum class MooringCode { api_rp_2sk, dnv_os_e301 };
@@ -207,6 +350,7 @@ struct MooringCriteria {
 
 struct Criteria {
   MooringCriteria mooring;
+  RiserCriteria risers;                        ///< project-wide; see Riser::criteria for overrides
   std::optional<double> max_offset_pct_depth;  ///< %, of water depth, > 0
 };
 
@@ -247,5 +391,16 @@ const char* to_string(RiserKind kind);
 const char* to_string(WaveSpectrum spectrum);
 const char* to_string(WindSpectrum spectrum);
 const char* to_string(MooringCode code);
+const char* to_string(LineModel model);
+const char* to_string(DesignCondition condition);
+
+/// `base` with the values given in `overrides` replacing its own.
+RiserCriteria with_overrides(RiserCriteria base, const RiserCriteriaOverrides& overrides);
+
+/// The criteria of `riser`: `criteria.risers` with the riser's overrides applied.
+RiserCriteria riser_criteria(const Criteria& criteria, const Riser& riser);
+
+/// The design factor of `condition`.
+double design_factor(const RiserDesignFactors& factors, DesignCondition condition);
 
 }  // namespace spiral::design

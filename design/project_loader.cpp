@@ -199,6 +199,51 @@ std::optional<Eigen::Matrix<double, N, 1>> to_vector(Context& ctx, const YAML::N
   return ok ? std::optional(out) : std::nullopt;
 }
 
+/// A list of numbers of any length, e.g. [0, 30, 60]; item positions are recorded.
+std::optional<std::vector<double>> to_number_list(Context& ctx, const YAML::Node& node,
+                                                  const std::string& path, std::string_view unit) {
+  if (!node.IsSequence()) {
+    ctx.add(node.Mark(), path,
+            fmt::format("expected a list of numbers{}, got {}", with_unit(unit), describe(node)),
+            "wrong_type");
+    return std::nullopt;
+  }
+  std::vector<double> out;
+  bool ok = true;
+  for (std::size_t i = 0; i < node.size(); ++i) {
+    const std::string item_path = index_path(path, i);
+    ctx.record(item_path, node[i].Mark());
+    const auto value = to_number(ctx, node[i], item_path, unit);
+    ok = ok && value.has_value();
+    if (value) out.push_back(*value);
+  }
+  return ok ? std::optional(out) : std::nullopt;
+}
+
+/// A list of rows of numbers, [[...], [...]]; rows may differ in length here
+/// (the validation pass checks them against the table's axes).
+std::optional<std::vector<std::vector<double>>> to_number_rows(Context& ctx, const YAML::Node& node,
+                                                               const std::string& path,
+                                                               std::string_view unit) {
+  if (!node.IsSequence()) {
+    ctx.add(node.Mark(), path,
+            fmt::format("expected a list of rows (lists of numbers{}), got {}", with_unit(unit),
+                        describe(node)),
+            "wrong_type");
+    return std::nullopt;
+  }
+  std::vector<std::vector<double>> out;
+  bool ok = true;
+  for (std::size_t i = 0; i < node.size(); ++i) {
+    const std::string row_path = index_path(path, i);
+    ctx.record(row_path, node[i].Mark());
+    const auto row = to_number_list(ctx, node[i], row_path, unit);
+    ok = ok && row.has_value();
+    if (row) out.push_back(*row);
+  }
+  return ok ? std::optional(out) : std::nullopt;
+}
+
 // ------------------------------------------------------------------ maps ----
 
 /// Reads one YAML map: every key must be looked up, or it is reported as
@@ -280,6 +325,25 @@ class MapReader {
   std::optional<std::string> text(std::string_view key, Presence presence) {
     const auto node = child(key, presence);
     return node ? to_string_value(ctx_, *node, path_of(key)) : std::nullopt;
+  }
+  std::optional<std::vector<double>> numbers(std::string_view key, std::string_view unit,
+                                             Presence presence) {
+    const auto node = child(key, presence, unit);
+    return node ? to_number_list(ctx_, *node, path_of(key), unit) : std::nullopt;
+  }
+  /// Reads the list `<key>_deg` in degrees and returns radians.
+  std::optional<std::vector<double>> angles(std::string_view key, Presence presence) {
+    auto values = numbers(fmt::format("{}_deg", key), "deg", presence);
+    if (values) {
+      for (double& v : *values) v *= kDegToRad;
+    }
+    return values;
+  }
+  std::optional<std::vector<std::vector<double>>> number_rows(std::string_view key,
+                                                              std::string_view unit,
+                                                              Presence presence) {
+    const auto node = child(key, presence, unit);
+    return node ? to_number_rows(ctx_, *node, path_of(key), unit) : std::nullopt;
   }
   template <typename E>
   std::optional<E> enumeration(std::string_view key, const EnumTable<E>& table, Presence presence) {
@@ -405,6 +469,10 @@ const EnumTable<WaveSpectrum> kWaveSpectra = {
     {"jonswap", WaveSpectrum::jonswap}, {"pierson_moskowitz", WaveSpectrum::pierson_moskowitz}};
 const EnumTable<WindSpectrum> kWindSpectra = {
     {"api", WindSpectrum::api}, {"npd", WindSpectrum::npd}, {"none", WindSpectrum::none}};
+const EnumTable<LineModel> kLineModels = {{"catenary", LineModel::catenary}, {"fe", LineModel::fe}};
+const EnumTable<DesignCondition> kDesignConditions = {{"normal", DesignCondition::normal},
+                                                      {"extreme", DesignCondition::extreme},
+                                                      {"survival", DesignCondition::survival}};
 const EnumTable<MooringCode> kMooringCodes = {{"api_rp_2sk", MooringCode::api_rp_2sk},
                                               {"dnv_os_e301", MooringCode::dnv_os_e301}};
 
@@ -418,6 +486,7 @@ Site read_site(MapReader& r) {
   assign(site.depth_m, r.number("depth", "m", kRequired));
   assign(site.water_density_kg_per_m3, r.number("water_density", "kg/m^3", kRequired));
   assign(site.gravity_m_per_s2, r.number("gravity", "m/s^2", kRequired));
+  assign(site.air_density_kg_per_m3, r.number("air_density", "kg/m^3", kOptional));
   r.map("seabed", kRequired, [&](MapReader& s) {
     assign(site.seabed.friction_axial, s.number("friction_axial", "", kRequired));
     assign(site.seabed.friction_lateral, s.number("friction_lateral", "", kRequired));
@@ -463,6 +532,20 @@ LineTypeInput read_line_type(MapReader& r) {
   return t;
 }
 
+/// `fe: {element_length, touchdown_refinement: {length, element_length}}`;
+/// `mesh` holds the default element length on entry.
+void read_fe_mesh(MapReader& r, FeMesh& mesh) {
+  r.map("fe", kOptional, [&](MapReader& f) {
+    assign(mesh.element_length_m, f.number("element_length", "m", kOptional));
+    f.map("touchdown_refinement", kOptional, [&](MapReader& t) {
+      TouchdownRefinement refinement;
+      assign(refinement.length_m, t.number("length", "m", kRequired));
+      assign(refinement.element_length_m, t.number("element_length", "m", kRequired));
+      mesh.touchdown_refinement = refinement;
+    });
+  });
+}
+
 MooringLine read_mooring_line(MapReader& r, std::optional<double> seabed_z) {
   MooringLine line;
   assign(line.name, r.text("name", kRequired));
@@ -482,6 +565,8 @@ MooringLine read_mooring_line(MapReader& r, std::optional<double> seabed_z) {
     assign(attachment.volume_m3, a.number("volume", "m^3", kRequired));
     line.attachments.push_back(attachment);
   });
+  assign(line.model, r.enumeration("model", kLineModels, kOptional));
+  read_fe_mesh(r, line.fe);
   return line;
 }
 
@@ -503,6 +588,74 @@ Mooring read_mooring(MapReader& r, std::optional<double> seabed_z) {
     mooring.groups.push_back(group);
   });
   return mooring;
+}
+
+std::filesystem::path resolve(const std::string& file, const std::filesystem::path& base_folder) {
+  const std::filesystem::path path(file);
+  return path.is_absolute() ? path : base_folder / path;
+}
+
+/// `{headings_deg, surge, sway, yaw}`; equal lengths are checked in validation.
+void read_load_coefficients(MapReader& r, HullLoadCoefficients& c) {
+  assign(c.headings_rad, r.angles("headings", kRequired));
+  assign(c.surge_m2, r.numbers("surge", "m^2", kRequired));
+  assign(c.sway_m2, r.numbers("sway", "m^2", kRequired));
+  assign(c.yaw_m3, r.numbers("yaw", "m^3", kRequired));
+}
+
+/// Either `{file, ulen}` (WAMIT .12d) or a table `{headings_deg, frequencies,
+/// surge, sway, yaw}`; the presence of `file` chooses.
+MeanDrift read_mean_drift(MapReader& r, const std::filesystem::path& base_folder) {
+  static constexpr std::string_view kTableKeys[] = {"headings_deg", "frequencies", "surge", "sway",
+                                                    "yaw"};
+  if (r.has("file")) {
+    MeanDriftFile f;
+    if (const auto file = r.text("file", kRequired)) f.file = resolve(*file, base_folder);
+    assign(f.ulen_m, r.number("ulen", "m", kOptional));
+    for (const auto key : kTableKeys) {
+      const auto node = r.child(key, kOptional);
+      if (!node) continue;
+      r.context().add(node->Mark(), r.path_of(key),
+                      fmt::format("give either file (WAMIT .12d) or a table (headings_deg, "
+                                  "frequencies, surge, sway, yaw), not both; got {} with file",
+                                  key),
+                      "conflicting_keys");
+    }
+    return f;
+  }
+  r.child("file", kOptional);  // known key, for suggestions
+  if (const auto node = r.child("ulen", kOptional)) {
+    r.context().add(node->Mark(), r.path_of("ulen"),
+                    "applies to a WAMIT file (file: path.12d) only, got a table",
+                    "key_not_applicable");
+  }
+  MeanDriftTable t;
+  assign(t.headings_rad, r.angles("headings", kRequired));
+  assign(t.frequencies_rad_per_s, r.numbers("frequencies", "rad/s", kRequired));
+  assign(t.surge_N_per_m2, r.number_rows("surge", "N/m^2", kRequired));
+  assign(t.sway_N_per_m2, r.number_rows("sway", "N/m^2", kRequired));
+  assign(t.yaw_N_m_per_m2, r.number_rows("yaw", "N m/m^2", kRequired));
+  return t;
+}
+
+HullGeometry read_hull_geometry(MapReader& r) {
+  HullGeometry g;
+  r.list_of_maps("columns", kOptional, [&](MapReader& c) {
+    HullColumn column;
+    assign(column.center_b, c.vector<2>("center", "m", kRequired));
+    assign(column.z_bottom_m, c.number("z_bottom", "m", kRequired));
+    assign(column.z_top_m, c.number("z_top", "m", kRequired));
+    assign(column.diameter_m, c.number("diameter", "m", kRequired));
+    g.columns.push_back(column);
+  });
+  r.list_of_maps("pontoons", kOptional, [&](MapReader& p) {
+    HullPontoon pontoon;
+    assign(pontoon.from_b, p.position("from", kRequired));
+    assign(pontoon.to_b, p.position("to", kRequired));
+    assign(pontoon.diameter_m, p.number("diameter", "m", kRequired));
+    g.pontoons.push_back(pontoon);
+  });
+  return g;
 }
 
 Hull read_hull(MapReader& r, const std::filesystem::path& base_folder) {
@@ -535,9 +688,22 @@ Hull read_hull(MapReader& r, const std::filesystem::path& base_folder) {
   hull.waterplane_area_m2 = r.number("waterplane_area", "m^2", kOptional);
   hull.waterplane_inertia_m4 = r.vector<2>("waterplane_inertia", "m^4", kOptional);
   if (const auto file = r.text("hydrostatics_file", kOptional)) {
-    const std::filesystem::path path(*file);
-    hull.hydrostatics_file = path.is_absolute() ? path : base_folder / path;
+    hull.hydrostatics_file = resolve(*file, base_folder);
   }
+  r.map("wind_coefficients", kOptional, [&](MapReader& w) {
+    WindCoefficients c;
+    read_load_coefficients(w, c);
+    assign(c.reference_height_m, w.number("reference_height", "m", kOptional));
+    hull.wind_coefficients = c;
+  });
+  r.map("current_coefficients", kOptional, [&](MapReader& w) {
+    HullLoadCoefficients c;
+    read_load_coefficients(w, c);
+    hull.current_coefficients = c;
+  });
+  r.map("mean_drift", kOptional,
+        [&](MapReader& d) { hull.mean_drift = read_mean_drift(d, base_folder); });
+  r.map("geometry", kOptional, [&](MapReader& g) { hull.geometry = read_hull_geometry(g); });
   return hull;
 }
 
@@ -564,6 +730,23 @@ RiserSection read_riser_section(MapReader& r) {
   return s;
 }
 
+/// The keys of `criteria.risers` and `risers[i].criteria`, all optional.
+RiserCriteriaOverrides read_riser_criteria(MapReader& r) {
+  RiserCriteriaOverrides c;
+  r.map("design_factor", kOptional, [&](MapReader& f) {
+    c.design_factor_normal = f.number("normal", "", kOptional);
+    c.design_factor_extreme = f.number("extreme", "", kOptional);
+    c.design_factor_survival = f.number("survival", "", kOptional);
+  });
+  c.min_effective_tension_N = r.number("min_effective_tension", "N", kOptional);
+  c.max_top_tension_N = r.number("max_top_tension", "N", kOptional);
+  c.max_top_angle_rad = r.angle("max_top_angle", kOptional);
+  c.max_flex_joint_rotation_rad = r.angle("max_flex_joint_rotation", kOptional);
+  c.min_bending_radius_m = r.number("min_bending_radius", "m", kOptional);
+  c.max_touchdown_excursion_m = r.number("max_touchdown_excursion", "m", kOptional);
+  return c;
+}
+
 Riser read_riser(MapReader& r) {
   Riser riser;
   assign(riser.name, r.text("name", kRequired));
@@ -573,6 +756,9 @@ Riser read_riser(MapReader& r) {
   assign(riser.top_angle_rad, r.angle("top_angle", kRequired));
   r.list_of_maps("sections", kRequired,
                  [&](MapReader& s) { riser.sections.push_back(read_riser_section(s)); });
+  assign(riser.internal_pressure_Pa, r.number("internal_pressure", "Pa", kOptional));
+  read_fe_mesh(r, riser.fe);
+  r.map("criteria", kOptional, [&](MapReader& c) { riser.criteria = read_riser_criteria(c); });
   return riser;
 }
 
@@ -642,6 +828,9 @@ Criteria read_criteria(MapReader& r) {
       criteria.mooring.dnv_os_e301 = f;
     }
   });
+  r.map("risers", kOptional, [&](MapReader& x) {
+    criteria.risers = with_overrides(RiserCriteria{}, read_riser_criteria(x));
+  });
   criteria.max_offset_pct_depth = r.number("max_offset_pct_depth", "%", kOptional);
   return criteria;
 }
@@ -679,6 +868,7 @@ void read_project(MapReader& r, Project& p, const std::filesystem::path& base_fo
     assign(load_case.name, c.text("name", kRequired));
     assign(load_case.environment, c.text("environment", kRequired));
     load_case.damaged_line = c.text("damaged_line", kOptional);
+    assign(load_case.condition, c.enumeration("condition", kDesignConditions, kOptional));
     p.load_cases.push_back(load_case);
   });
   r.map("criteria", kRequired, [&](MapReader& c) { p.criteria = read_criteria(c); });

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <variant>
 
 #include "unit/project_fixture.hpp"
 
@@ -46,6 +47,21 @@ TEST(ProjectLoader, MinimalProjectLoadsWithDefaults) {
   EXPECT_DOUBLE_EQ(p.criteria.mooring.api_rp_2sk->damaged_quasi_static, 1.43);
   EXPECT_DOUBLE_EQ(p.criteria.mooring.api_rp_2sk->damaged_dynamic, 1.25);
   EXPECT_FALSE(p.criteria.mooring.dnv_os_e301.has_value());
+  // Format additions for coupled statics: all optional, with documented defaults.
+  EXPECT_DOUBLE_EQ(p.site.air_density_kg_per_m3, 1.225);
+  EXPECT_EQ(p.mooring.lines[0].model, LineModel::catenary);
+  EXPECT_DOUBLE_EQ(p.mooring.lines[0].fe.element_length_m, 10.0);
+  EXPECT_FALSE(p.mooring.lines[0].fe.touchdown_refinement.has_value());
+  EXPECT_FALSE(p.hull.wind_coefficients || p.hull.current_coefficients || p.hull.mean_drift ||
+               p.hull.geometry);
+  EXPECT_EQ(p.load_cases[0].condition, DesignCondition::extreme);
+  EXPECT_DOUBLE_EQ(p.criteria.risers.design_factor.normal, 0.67);
+  EXPECT_DOUBLE_EQ(p.criteria.risers.design_factor.extreme, 0.80);
+  EXPECT_DOUBLE_EQ(p.criteria.risers.design_factor.survival, 1.00);
+  EXPECT_DOUBLE_EQ(p.criteria.risers.min_effective_tension_N, 0.0);
+  EXPECT_FALSE(p.criteria.risers.max_top_tension_N.has_value());
+  EXPECT_FALSE(p.criteria.risers.min_bending_radius_m.has_value());
+  EXPECT_DOUBLE_EQ(design_factor(p.criteria.risers.design_factor, DesignCondition::normal), 0.67);
 }
 
 TEST(ProjectLoader, FormatSampleLoadsWithExpectedValues) {
@@ -59,6 +75,7 @@ TEST(ProjectLoader, FormatSampleLoadsWithExpectedValues) {
   EXPECT_DOUBLE_EQ(p.site.water_density_kg_per_m3, 1025.0);
   EXPECT_DOUBLE_EQ(p.site.gravity_m_per_s2, 9.80665);
   EXPECT_DOUBLE_EQ(p.site.seabed.normal_stiffness_Pa_per_m, 1.0e5);
+  EXPECT_DOUBLE_EQ(p.site.air_density_kg_per_m3, 1.225);
 
   ASSERT_EQ(p.line_types.size(), 4u);
   EXPECT_EQ(p.line_types[0].name, "chain76");
@@ -93,6 +110,14 @@ TEST(ProjectLoader, FormatSampleLoadsWithExpectedValues) {
   EXPECT_EQ(l2.attachments[1].kind, AttachmentKind::buoy);
   EXPECT_DOUBLE_EQ(l2.attachments[1].volume_m3, 30.0);
   EXPECT_DOUBLE_EQ(p.mooring.lines[0].anchor_g.y(), 725.383);
+  EXPECT_EQ(p.mooring.lines[0].model, LineModel::catenary);
+  EXPECT_DOUBLE_EQ(p.mooring.lines[0].fe.element_length_m, 10.0);
+  const MooringLine& l3 = p.mooring.lines[2];
+  EXPECT_EQ(l3.model, LineModel::fe);
+  EXPECT_DOUBLE_EQ(l3.fe.element_length_m, 8.0);
+  ASSERT_TRUE(l3.fe.touchdown_refinement.has_value());
+  EXPECT_DOUBLE_EQ(l3.fe.touchdown_refinement->length_m, 100.0);
+  EXPECT_DOUBLE_EQ(l3.fe.touchdown_refinement->element_length_m, 2.0);
   ASSERT_EQ(p.mooring.groups.size(), 1u);
   EXPECT_EQ(p.mooring.groups[0].lines, (std::vector<std::string>{"L1", "L2", "L3"}));
 
@@ -105,7 +130,32 @@ TEST(ProjectLoader, FormatSampleLoadsWithExpectedValues) {
   EXPECT_DOUBLE_EQ(p.hull.waterplane_inertia_m4->y(), 144513.0);
   EXPECT_FALSE(p.hull.hydrostatics_file.has_value());
 
-  ASSERT_EQ(p.risers.size(), 1u);
+  ASSERT_TRUE(p.hull.wind_coefficients.has_value());
+  const WindCoefficients& wind = *p.hull.wind_coefficients;
+  ASSERT_EQ(wind.headings_rad.size(), 4u);
+  EXPECT_NEAR(wind.headings_rad[3], 1.5 * std::numbers::pi, kTol);
+  EXPECT_DOUBLE_EQ(wind.surge_m2[2], -1500.0);
+  EXPECT_DOUBLE_EQ(wind.sway_m2[1], 1600.0);
+  EXPECT_DOUBLE_EQ(wind.yaw_m3[3], -2000.0);
+  EXPECT_DOUBLE_EQ(wind.reference_height_m, 10.0);
+  ASSERT_TRUE(p.hull.current_coefficients.has_value());
+  EXPECT_EQ(p.hull.current_coefficients->headings_rad.size(), 2u);
+  EXPECT_DOUBLE_EQ(p.hull.current_coefficients->surge_m2[0], 900.0);
+  ASSERT_TRUE(p.hull.mean_drift.has_value());
+  const auto* drift = std::get_if<MeanDriftTable>(&*p.hull.mean_drift);
+  ASSERT_NE(drift, nullptr);
+  EXPECT_EQ(drift->frequencies_rad_per_s, (std::vector<double>{0.3, 0.6, 0.9}));
+  ASSERT_EQ(drift->surge_N_per_m2.size(), 2u);
+  EXPECT_DOUBLE_EQ(drift->surge_N_per_m2[1][2], -2.0e4);
+  EXPECT_EQ(drift->yaw_N_m_per_m2[0].size(), 3u);
+  ASSERT_TRUE(p.hull.geometry.has_value());
+  ASSERT_EQ(p.hull.geometry->columns.size(), 1u);
+  EXPECT_DOUBLE_EQ(p.hull.geometry->columns[0].z_bottom_m, -20.0);
+  EXPECT_DOUBLE_EQ(p.hull.geometry->columns[0].diameter_m, 6.5);
+  ASSERT_EQ(p.hull.geometry->pontoons.size(), 1u);
+  EXPECT_DOUBLE_EQ(p.hull.geometry->pontoons[0].to_b.y(), 14.608);
+
+  ASSERT_EQ(p.risers.size(), 2u);
   const Riser& riser = p.risers[0];
   EXPECT_EQ(riser.kind, RiserKind::scr);
   EXPECT_NEAR(riser.hang_off_b.y(), 35.0, kTol * 35.0);
@@ -115,6 +165,20 @@ TEST(ProjectLoader, FormatSampleLoadsWithExpectedValues) {
   EXPECT_DOUBLE_EQ(*riser.sections[0].wall_thickness_m, 0.0254);
   EXPECT_DOUBLE_EQ(riser.sections[0].contents_density_kg_per_m3, 800.0);
   EXPECT_FALSE(riser.sections[0].coating_thickness_m.has_value());
+  EXPECT_DOUBLE_EQ(riser.internal_pressure_Pa, 1.0e7);
+  EXPECT_DOUBLE_EQ(riser.fe.element_length_m, 4.0);
+  ASSERT_TRUE(riser.fe.touchdown_refinement.has_value());
+  EXPECT_DOUBLE_EQ(riser.fe.touchdown_refinement->length_m, 50.0);
+  EXPECT_DOUBLE_EQ(riser.fe.touchdown_refinement->element_length_m, 1.0);
+  EXPECT_NEAR(*riser.criteria.max_top_angle_rad, 15.0 * std::numbers::pi / 180.0, kTol);
+  EXPECT_FALSE(riser.criteria.max_top_tension_N.has_value());
+  const Riser& flexible = p.risers[1];
+  EXPECT_EQ(flexible.kind, RiserKind::flexible);
+  EXPECT_DOUBLE_EQ(*flexible.sections[0].bending_stiffness_N_m2, 1.208e5);
+  EXPECT_DOUBLE_EQ(*flexible.criteria.min_bending_radius_m, 3.0);
+  EXPECT_DOUBLE_EQ(flexible.internal_pressure_Pa, 0.0);  // default
+  EXPECT_DOUBLE_EQ(flexible.fe.element_length_m, 5.0);   // riser default
+  EXPECT_FALSE(flexible.fe.touchdown_refinement.has_value());
 
   ASSERT_EQ(p.environments.size(), 2u);
   EXPECT_FALSE(p.environments[0].waves.has_value());
@@ -133,17 +197,33 @@ TEST(ProjectLoader, FormatSampleLoadsWithExpectedValues) {
   ASSERT_EQ(p.load_cases.size(), 2u);
   EXPECT_FALSE(p.load_cases[0].damaged_line.has_value());
   EXPECT_EQ(p.load_cases[1].damaged_line, "L1");
+  EXPECT_EQ(p.load_cases[0].condition, DesignCondition::normal);
+  EXPECT_EQ(p.load_cases[1].condition, DesignCondition::extreme);  // default
 
   EXPECT_EQ(p.criteria.mooring.code, MooringCode::api_rp_2sk);
   EXPECT_DOUBLE_EQ(p.criteria.mooring.api_rp_2sk->damaged_dynamic, 1.25);
   EXPECT_DOUBLE_EQ(*p.criteria.max_offset_pct_depth, 10.0);
+  const RiserCriteria& rc = p.criteria.risers;
+  EXPECT_DOUBLE_EQ(rc.design_factor.normal, 0.67);
+  EXPECT_DOUBLE_EQ(rc.design_factor.survival, 1.0);
+  EXPECT_DOUBLE_EQ(rc.min_effective_tension_N, 0.0);
+  EXPECT_DOUBLE_EQ(*rc.max_top_tension_N, 4.0e6);
+  EXPECT_NEAR(*rc.max_top_angle_rad, 20.0 * std::numbers::pi / 180.0, kTol);
+  EXPECT_NEAR(*rc.max_flex_joint_rotation_rad, 12.0 * std::numbers::pi / 180.0, kTol);
+  EXPECT_FALSE(rc.min_bending_radius_m.has_value());
+  EXPECT_DOUBLE_EQ(*rc.max_touchdown_excursion_m, 50.0);
+  // Per-riser overrides replace only the keys they give.
+  const RiserCriteria p1 = riser_criteria(p.criteria, p.risers[0]);
+  EXPECT_NEAR(*p1.max_top_angle_rad, 15.0 * std::numbers::pi / 180.0, kTol);
+  EXPECT_DOUBLE_EQ(*p1.max_top_tension_N, 4.0e6);
+  EXPECT_DOUBLE_EQ(*riser_criteria(p.criteria, p.risers[1]).min_bending_radius_m, 3.0);
   ASSERT_EQ(p.stages.size(), 3u);
   EXPECT_EQ(p.stages[2].name, "advanced");
 
   // Positions are kept for the validation pass.
   const auto at = p.source_map.find("mooring.lines[1].segments[1].length");
   ASSERT_NE(at, p.source_map.end());
-  EXPECT_EQ(at->second.line, 55);  // the `{type: poly254, length: 600.0}` row of the sample
+  EXPECT_EQ(at->second.line, 56);  // the `{type: poly254, length: 600.0}` row of the sample
 }
 
 TEST(ProjectLoader, UnknownKeyIsReportedWithPositionAndSuggestion) {
@@ -284,6 +364,194 @@ TEST(ProjectLoader, InertiaAcceptsSixComponents) {
   EXPECT_DOUBLE_EQ((*p.hull.inertia_kg_m2)(0, 1), 1.0e8);
   EXPECT_DOUBLE_EQ((*p.hull.inertia_kg_m2)(1, 0), 1.0e8);
   EXPECT_DOUBLE_EQ((*p.hull.inertia_kg_m2)(2, 2), 3.0e10);
+}
+
+// ------------------------------------------ coupled-statics format additions ----
+
+const std::string kLine = "        - {type: c, length: 550.0}\n";
+const std::string kWaterplane = "  waterplane_inertia: [1.0e5, 1.0e5]\n";
+
+TEST(ProjectLoader, BadLineModelListsAllowedValues) {
+  const auto issues = issues_of(replace(kMinimal, kLine, kLine + "      model: finite\n"));
+  ASSERT_EQ(issues.size(), 1u);
+  EXPECT_EQ(issues[0].condition, "bad_enum");
+  EXPECT_EQ(format_issue(issues[0]),
+            "test.yaml:17:14: mooring.lines[0].model: unknown value \"finite\"; allowed: "
+            "catenary | fe");
+}
+
+TEST(ProjectLoader, UnknownKeyInFeMeshIsReported) {
+  const auto issues =
+      issues_of(replace(kMinimal, kLine, kLine + "      fe: {element_lenght: 5.0}\n"));
+  ASSERT_EQ(issues.size(), 1u);
+  EXPECT_EQ(issues[0].condition, "unknown_key");
+  EXPECT_EQ(issues[0].path, "mooring.lines[0].fe.element_lenght");
+  EXPECT_NE(issues[0].message.find("did you mean \"element_length\""), std::string::npos);
+}
+
+TEST(ProjectLoader, TouchdownRefinementNeedsBothValues) {
+  const auto issues = issues_of(
+      replace(kMinimal, kLine, kLine + "      fe: {touchdown_refinement: {length: 50.0}}\n"));
+  ASSERT_EQ(issues.size(), 1u);
+  EXPECT_EQ(issues[0].condition, "missing_key");
+  EXPECT_EQ(issues[0].path, "mooring.lines[0].fe.touchdown_refinement.element_length");
+}
+
+TEST(ProjectLoader, BadLoadCaseConditionIsAnError) {
+  const auto issues = issues_of(replace(kMinimal, "{name: lc1, environment: calm}",
+                                        "{name: lc1, environment: calm, "
+                                        "condition: survivl}"));
+  ASSERT_EQ(issues.size(), 1u);
+  EXPECT_EQ(issues[0].condition, "bad_enum");
+  EXPECT_NE(issues[0].message.find("did you mean \"survival\""), std::string::npos);
+}
+
+TEST(ProjectLoader, CoefficientHeadingsAreReadInDegrees) {
+  const auto p = parse_project(
+      replace(kMinimal, kWaterplane,
+              kWaterplane + "  current_coefficients: {headings_deg: [0, 45, 315], surge: [1, 2, 3],"
+                            " sway: [0, 1, 0], yaw: [0, 0, 0]}\n"),
+      "t.yaml");
+  ASSERT_TRUE(p.hull.current_coefficients.has_value());
+  EXPECT_NEAR(p.hull.current_coefficients->headings_rad[1], std::numbers::pi / 4, kTol);
+  EXPECT_NEAR(p.hull.current_coefficients->headings_rad[2], 1.75 * std::numbers::pi, kTol);
+  // Each item is placed, for the validation pass.
+  EXPECT_EQ(p.source_map.at("hull.current_coefficients.headings_deg[2]").line, 26);
+}
+
+TEST(ProjectLoader, CoefficientValuesMustBeNumbers) {
+  const auto issues = issues_of(replace(
+      kMinimal, kWaterplane,
+      kWaterplane + "  wind_coefficients: {headings_deg: [0, 180], surge: [1, big], sway: [0, 0],"
+                    " yaw: 0}\n"));
+  ASSERT_EQ(issues.size(), 2u);
+  EXPECT_EQ(issues[0].path, "hull.wind_coefficients.surge[1]");
+  EXPECT_EQ(issues[0].message, "expected a finite number in m^2, got \"big\"");
+  EXPECT_EQ(issues[1].path, "hull.wind_coefficients.yaw");
+  EXPECT_EQ(issues[1].message, "expected a list of numbers in m^3, got \"0\"");
+}
+
+TEST(ProjectLoader, MeanDriftFileResolvesAgainstTheProjectFolder) {
+  const auto p =
+      parse_project(replace(kMinimal, kWaterplane,
+                            kWaterplane + "  mean_drift: {file: hydro/hull.12d, ulen: 2.0}\n"),
+                    "/some/dir/p.yaml");
+  ASSERT_TRUE(p.hull.mean_drift.has_value());
+  const auto* file = std::get_if<MeanDriftFile>(&*p.hull.mean_drift);
+  ASSERT_NE(file, nullptr);
+  EXPECT_EQ(file->file, std::filesystem::path("/some/dir/hydro/hull.12d"));
+  EXPECT_DOUBLE_EQ(file->ulen_m, 2.0);
+  // ulen defaults to 1 m.
+  const auto q = parse_project(
+      replace(kMinimal, kWaterplane, kWaterplane + "  mean_drift: {file: hull.12d}\n"), "p.yaml");
+  EXPECT_DOUBLE_EQ(std::get<MeanDriftFile>(*q.hull.mean_drift).ulen_m, 1.0);
+}
+
+TEST(ProjectLoader, MeanDriftIsEitherAFileOrATable) {
+  auto issues = issues_of(replace(
+      kMinimal, kWaterplane,
+      kWaterplane + "  mean_drift: {file: hull.12d, frequencies: [0.5], surge: [[1.0]]}\n"));
+  ASSERT_EQ(issues.size(), 2u);
+  EXPECT_EQ(issues[0].condition, "conflicting_keys");
+  EXPECT_EQ(issues[0].path, "hull.mean_drift.frequencies");
+  EXPECT_EQ(issues[1].path, "hull.mean_drift.surge");
+
+  issues = issues_of(replace(kMinimal, kWaterplane,
+                             kWaterplane + "  mean_drift: {ulen: 2.0, headings_deg: [0, 90], "
+                                           "frequencies: [0.5], surge: [[1], [2]], sway: [[0], "
+                                           "[0]]}\n"));
+  ASSERT_EQ(issues.size(), 2u);
+  EXPECT_EQ(issues[0].condition, "missing_key");  // yaw, reported at the map
+  EXPECT_EQ(issues[0].path, "hull.mean_drift.yaw");
+  EXPECT_EQ(issues[1].condition, "key_not_applicable");
+  EXPECT_EQ(issues[1].path, "hull.mean_drift.ulen");
+}
+
+TEST(ProjectLoader, MeanDriftTableRowsMustBeLists) {
+  const auto issues = issues_of(replace(
+      kMinimal, kWaterplane,
+      kWaterplane + "  mean_drift: {headings_deg: [0, 90], frequencies: [0.5], surge: [1, 2], "
+                    "sway: [[0], [0]], yaw: [[0], [0]]}\n"));
+  ASSERT_EQ(issues.size(), 2u);
+  EXPECT_EQ(issues[0].condition, "wrong_type");
+  EXPECT_EQ(issues[0].path, "hull.mean_drift.surge[0]");
+  EXPECT_EQ(issues[1].path, "hull.mean_drift.surge[1]");
+}
+
+TEST(ProjectLoader, HullGeometryColumnsAndPontoons) {
+  const auto p = parse_project(
+      replace(kMinimal, kWaterplane,
+              kWaterplane +
+                  "  geometry:\n"
+                  "    columns: [{center: [28.868, 0.0], z_bottom: -20, z_top: 12, diameter: 12}]\n"
+                  "    pontoons: [{from: {radius: 10.0, azimuth_deg: 90.0, z: -17.0},\n"
+                  "                to: [0.0, 0.0, -17.0], diameter: 1.6}]\n"),
+      "t.yaml");
+  ASSERT_TRUE(p.hull.geometry.has_value());
+  EXPECT_DOUBLE_EQ(p.hull.geometry->columns[0].center_b.x(), 28.868);
+  EXPECT_DOUBLE_EQ(p.hull.geometry->columns[0].z_top_m, 12.0);
+  EXPECT_NEAR(p.hull.geometry->pontoons[0].from_b.y(), 10.0, kTol * 10.0);
+  EXPECT_DOUBLE_EQ(p.hull.geometry->pontoons[0].diameter_m, 1.6);
+}
+
+TEST(ProjectLoader, RiserCriteriaOverridesMergeWithTheProjectCriteria) {
+  const std::string riser =
+      "risers:\n"
+      "  - name: R1\n"
+      "    kind: scr\n"
+      "    hang_off: [30.0, 0.0, -10.0]\n"
+      "    azimuth_deg: 0.0\n"
+      "    top_angle_deg: 10.0\n"
+      "    sections:\n"
+      "      - {length: 300.0, outer_diameter: 0.3, wall_thickness: 0.02, youngs_modulus: "
+      "2.07e11,\n"
+      "         yield_stress: 4.48e8, steel_density: 7850.0, contents_density: 800.0}\n"
+      "    internal_pressure: 2.5e7\n"
+      "    criteria: {design_factor: {extreme: 0.7}, max_top_tension: 3.0e6}\n";
+  const std::string text =
+      replace(kMinimal, "  mooring: {code: api_rp_2sk}\n",
+              "  mooring: {code: api_rp_2sk}\n  risers: {design_factor: {normal: 0.6}, "
+              "min_effective_tension: 1.0e4, max_top_tension: 5.0e6}\n") +
+      riser;
+  const auto p = parse_project(text, "t.yaml");
+  ASSERT_EQ(p.risers.size(), 1u);
+  EXPECT_DOUBLE_EQ(p.risers[0].internal_pressure_Pa, 2.5e7);
+  EXPECT_DOUBLE_EQ(p.risers[0].fe.element_length_m, 5.0);
+  const RiserCriteria c = riser_criteria(p.criteria, p.risers[0]);
+  EXPECT_DOUBLE_EQ(c.design_factor.normal, 0.6);    // project
+  EXPECT_DOUBLE_EQ(c.design_factor.extreme, 0.7);   // riser
+  EXPECT_DOUBLE_EQ(c.design_factor.survival, 1.0);  // default
+  EXPECT_DOUBLE_EQ(c.min_effective_tension_N, 1.0e4);
+  EXPECT_DOUBLE_EQ(*c.max_top_tension_N, 3.0e6);
+  EXPECT_DOUBLE_EQ(design_factor(c.design_factor, DesignCondition::extreme), 0.7);
+}
+
+TEST(ProjectLoader, ScenariosCarryTheCoupledStaticsData) {
+  const std::string folder = std::string(SPIRAL_SOURCE_DIR) + "/scenarios/";
+  const Project oc4 = load_project(folder + "oc4-semisubmersible.yaml");
+  ASSERT_TRUE(oc4.hull.geometry.has_value());
+  EXPECT_EQ(oc4.hull.geometry->columns.size(), 7u);    // main + 3 upper + 3 base (ref §1.3)
+  EXPECT_EQ(oc4.hull.geometry->pontoons.size(), 15u);  // members 8-22
+  EXPECT_FALSE(oc4.hull.wind_coefficients || oc4.hull.current_coefficients || oc4.hull.mean_drift);
+
+  const Project fps = load_project(folder + "deepwater-fps.yaml");
+  ASSERT_TRUE(fps.hull.geometry && fps.hull.current_coefficients && fps.hull.wind_coefficients);
+  EXPECT_FALSE(fps.hull.mean_drift.has_value());
+  // The lambda = 2 geometry: main column 13 m from -40 to +20 m.
+  EXPECT_DOUBLE_EQ(fps.hull.geometry->columns[0].diameter_m, 13.0);
+  EXPECT_DOUBLE_EQ(fps.hull.geometry->columns[0].z_bottom_m, -40.0);
+  // Current C A of the submerged columns (the scenario's arithmetic): 2,696 m^2.
+  EXPECT_DOUBLE_EQ(fps.hull.current_coefficients->surge_m2[0], 2696.0);
+  EXPECT_DOUBLE_EQ(fps.hull.current_coefficients->sway_m2[3], 2696.0);
+  for (const Riser& riser : fps.risers) {
+    ASSERT_TRUE(riser.fe.touchdown_refinement.has_value()) << riser.name;
+    EXPECT_DOUBLE_EQ(riser.fe.touchdown_refinement->element_length_m, 1.0) << riser.name;
+  }
+  EXPECT_DOUBLE_EQ(*fps.criteria.risers.max_top_tension_N, 4.0e6);
+  ASSERT_EQ(fps.load_cases.size(), 5u);
+  EXPECT_EQ(fps.load_cases[0].condition, DesignCondition::extreme);
+  EXPECT_EQ(fps.load_cases[2].condition, DesignCondition::survival);  // 100-yr, line damaged
+  EXPECT_EQ(fps.load_cases[4].condition, DesignCondition::normal);    // 1-yr operating
 }
 
 }  // namespace

@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "design/project_loader.hpp"
@@ -236,6 +238,179 @@ TEST(ProjectValidation, SeveralErrorsAreReportedAtOnceInFileOrder) {
     EXPECT_NE(what.find("test.yaml:4:10: site.depth: must be > 0 m, got -100 m"), std::string::npos)
         << what;
   }
+}
+
+// ------------------------------------------ coupled-statics format additions ----
+
+const std::string kLine = "        - {type: c, length: 550.0}\n";
+const std::string kWaterplane = "  waterplane_inertia: [1.0e5, 1.0e5]\n";
+
+std::string with_hull(const std::string& keys) {
+  return replace(kMinimal, kWaterplane, kWaterplane + keys);
+}
+
+const std::string kFlexibleRiser = R"(risers:
+  - name: F1
+    kind: flexible
+    hang_off: [30.0, 0.0, -10.0]
+    azimuth_deg: 0.0
+    top_angle_deg: 8.0
+    sections:
+      - {length: 150.0, outer_diameter: 0.396, axial_stiffness: 5.0e8, bending_stiffness: 1.208e5,
+         mass_per_length: 165.0, contents_density: 800.0}
+)";
+
+TEST(ProjectValidation, NegativeElementLengthIsReportedAtItsKey) {
+  const auto issues = check(replace(kMinimal, kLine, kLine + "      fe: {element_length: -5}\n"));
+  expect_single(issues, "fe_mesh_positive", "mooring.lines[0].fe.element_length");
+  EXPECT_EQ(format_issue(issues[0]),
+            "test.yaml:17:28: mooring.lines[0].fe.element_length: must be > 0 m, got -5 m");
+}
+
+TEST(ProjectValidation, RiserElementLengthAndRefinementMustBePositive) {
+  const auto issues = check(
+      kMinimal + kSteelRiser +
+      "    fe: {element_length: 0.0, touchdown_refinement: {length: -10.0, element_length: 1}}\n");
+  ASSERT_EQ(issues.size(), 3u) << all(issues);
+  EXPECT_EQ(conditions(issues), (std::vector<std::string>{"fe_mesh_positive", "fe_mesh_positive",
+                                                          "touchdown_refinement_finer"}));
+  EXPECT_EQ(issues[0].path, "risers[0].fe.element_length");
+  EXPECT_EQ(issues[1].path, "risers[0].fe.touchdown_refinement.length");
+}
+
+TEST(ProjectValidation, TouchdownRefinementMustBeFinerThanTheMesh) {
+  const auto issues = check(
+      replace(kMinimal, kLine,
+              kLine + "      fe: {touchdown_refinement: {length: 100.0, element_length: 20.0}}\n"));
+  expect_single(issues, "touchdown_refinement_finer",
+                "mooring.lines[0].fe.touchdown_refinement.element_length");
+  EXPECT_EQ(issues[0].message, "must be <= element_length 10 m (a refinement), got 20 m");
+}
+
+TEST(ProjectValidation, CoefficientListsMustMatchTheHeadings) {
+  const auto issues = check(
+      with_hull("  wind_coefficients: {headings_deg: [0, 90, 180], surge: [1, 0, -1], sway: [0, 1],"
+                " yaw: [0, 0, 0]}\n"));
+  expect_single(issues, "table_lengths_match", "hull.wind_coefficients.sway");
+  EXPECT_EQ(format_issue(issues[0]),
+            "test.yaml:26:76: hull.wind_coefficients.sway: must have one value per entry of "
+            "headings_deg (3), got 2");
+}
+
+TEST(ProjectValidation, HeadingsOutOfRange) {
+  const auto issues =
+      check(with_hull("  current_coefficients: {headings_deg: [0, 180, 360], surge: [1, -1, 1],"
+                      " sway: [0, 0, 0], yaw: [0, 0, 0]}\n"));
+  expect_single(issues, "headings_valid", "hull.current_coefficients.headings_deg[2]");
+  EXPECT_EQ(format_issue(issues[0]),
+            "test.yaml:26:49: hull.current_coefficients.headings_deg[2]: must be in [0, 360) "
+            "deg, got 360 deg");
+  const auto negative = check(
+      with_hull("  current_coefficients: {headings_deg: [-90, 90], surge: [0, 0], sway: [1, -1],"
+                " yaw: [0, 0]}\n"));
+  expect_single(negative, "headings_valid", "hull.current_coefficients.headings_deg[0]");
+}
+
+TEST(ProjectValidation, HeadingsMustIncreaseAndBeAtLeastTwo) {
+  auto issues = check(with_hull(
+      "  wind_coefficients: {headings_deg: [0, 180, 90], surge: [1, -1, 0], sway: [0, 0, 1],"
+      " yaw: [0, 0, 0]}\n"));
+  expect_single(issues, "headings_valid", "hull.wind_coefficients.headings_deg[2]");
+  EXPECT_EQ(issues[0].message, "headings must increase strictly, got 90 deg after 180 deg");
+  issues = check(
+      with_hull("  wind_coefficients: {headings_deg: [0], surge: [1], sway: [0], yaw: [0]}\n"));
+  expect_single(issues, "headings_valid", "hull.wind_coefficients.headings_deg");
+}
+
+TEST(ProjectValidation, MeanDriftFileMustExist) {
+  const auto issues = check(with_hull("  mean_drift: {file: no-such-hull.12d, ulen: 2.0}\n"));
+  expect_single(issues, "file_exists", "hull.mean_drift.file");
+  EXPECT_EQ(issues[0].message, "file not found: no-such-hull.12d");
+  EXPECT_EQ(issues[0].line, 26);
+}
+
+TEST(ProjectValidation, MeanDriftFileThatExistsIsAccepted) {
+  const std::filesystem::path folder =
+      std::filesystem::temp_directory_path() / "spiral-validation-mean-drift";
+  std::filesystem::create_directories(folder);
+  std::ofstream(folder / "hull.12d")
+      << "    0.62832E+01    0.62832E+01    0.0    0.0    1    0.0    "
+         "0.0    0.0    0.0\n";
+  const Project p =
+      parse_project(with_hull("  mean_drift: {file: hull.12d}\n"), (folder / "p.yaml").string());
+  const auto issues = check_project(p);
+  EXPECT_TRUE(issues.empty()) << all(issues);
+  std::filesystem::remove_all(folder);
+}
+
+TEST(ProjectValidation, MeanDriftTableShapeAndFrequencies) {
+  const auto issues =
+      check(with_hull("  mean_drift: {headings_deg: [0, 180], frequencies: [0.4, 0.4, 0.8],\n"
+                      "               surge: [[1, 2, 3], [1, 2]], sway: [[0, 0, 0]],\n"
+                      "               yaw: [[0, 0, 0], [0, 0, 0]]}\n"));
+  ASSERT_EQ(issues.size(), 3u) << all(issues);
+  EXPECT_EQ(conditions(issues),
+            (std::vector<std::string>{"frequencies_valid", "table_lengths_match",
+                                      "table_lengths_match"}));
+  EXPECT_EQ(issues[0].path, "hull.mean_drift.frequencies[1]");
+  EXPECT_EQ(issues[1].path, "hull.mean_drift.surge[1]");
+  EXPECT_EQ(issues[1].message, "must have one value per entry of frequencies (3), got 2");
+  EXPECT_EQ(issues[2].path, "hull.mean_drift.sway");
+}
+
+TEST(ProjectValidation, HullGeometryMembersMustBeSolid) {
+  const auto issues =
+      check(with_hull("  geometry:\n"
+                      "    columns: [{center: [0, 0], z_bottom: 10, z_top: -20, diameter: 6.5}]\n"
+                      "    pontoons: [{from: [1, 2, -17], to: [1, 2, -17], diameter: -1.6}]\n"));
+  ASSERT_EQ(issues.size(), 3u) << all(issues);
+  EXPECT_EQ(conditions(issues),
+            (std::vector<std::string>{"column_top_above_bottom", "pontoon_length_positive",
+                                      "hull_value_positive"}));
+  EXPECT_EQ(issues[0].path, "hull.geometry.columns[0].z_top");
+  EXPECT_EQ(issues[2].path, "hull.geometry.pontoons[0].diameter");
+  expect_single(check(with_hull("  geometry: {}\n")), "hull_geometry_members", "hull.geometry");
+}
+
+TEST(ProjectValidation, FlexibleRiserNeedsAMinimumBendingRadius) {
+  const auto issues = check(kMinimal + kFlexibleRiser);
+  expect_single(issues, "flexible_min_bending_radius", "risers[0].criteria.min_bending_radius");
+  EXPECT_EQ(issues[0].line, 33);  // the riser entry: no criteria map was written
+  // Either level satisfies it.
+  EXPECT_TRUE(
+      check(kMinimal + kFlexibleRiser + "    criteria: {min_bending_radius: 3.0}\n").empty());
+  const std::string project_level =
+      replace(kMinimal, "  mooring: {code: api_rp_2sk}\n",
+              "  mooring: {code: api_rp_2sk}\n  risers: {min_bending_radius: 3.0}\n");
+  EXPECT_TRUE(check(project_level + kFlexibleRiser).empty());
+  // A steel riser does not need one.
+  EXPECT_TRUE(check(kMinimal + kSteelRiser).empty());
+}
+
+TEST(ProjectValidation, RiserCriteriaRanges) {
+  const std::string text =
+      replace(kMinimal, "  mooring: {code: api_rp_2sk}\n",
+              "  mooring: {code: api_rp_2sk}\n  risers: {design_factor: {survival: 1.2}, "
+              "min_effective_tension: -1.0, max_top_angle_deg: 95.0}\n") +
+      kSteelRiser + "    internal_pressure: -1.0e5\n    criteria: {max_top_tension: 0.0}\n";
+  const auto issues = check(text);
+  ASSERT_EQ(issues.size(), 5u) << all(issues);
+  EXPECT_EQ(conditions(issues),
+            (std::vector<std::string>{"design_factor_range", "riser_criterion_non_negative",
+                                      "riser_angle_limit_range", "riser_value_non_negative",
+                                      "riser_criterion_positive"}));
+  EXPECT_EQ(issues[0].path, "criteria.risers.design_factor.survival");
+  EXPECT_EQ(issues[0].message, "must be in (0, 1] (fraction of the yield stress), got 1.2");
+  EXPECT_EQ(issues[2].path, "criteria.risers.max_top_angle_deg");
+  EXPECT_EQ(issues[2].message, "must be in (0, 90) deg, got 95 deg");
+  EXPECT_EQ(issues[3].path, "risers[0].internal_pressure");
+  EXPECT_EQ(issues[4].path, "risers[0].criteria.max_top_tension");
+}
+
+TEST(ProjectValidation, AirDensityMustBePositive) {
+  const auto issues =
+      check(replace(kMinimal, "  gravity: 9.81\n", "  gravity: 9.81\n  air_density: 0\n"));
+  expect_single(issues, "air_density_positive", "site.air_density");
 }
 
 }  // namespace
