@@ -8,6 +8,7 @@
 #include <Eigen/Eigenvalues>
 #include <fmt/format.h>
 
+#include "design/environment_loads.hpp"
 #include "design/hull_model.hpp"
 #include "design/mooring_model.hpp"
 #include "engine/analysis/line_array.hpp"
@@ -90,6 +91,18 @@ StaticCaseResult run_static_case(const ValidatedProject& validated, const Static
     result.environment = it->environment;
     if (!damaged) damaged = it->damaged_line;
   }
+  engine::ExternalLoad environment_load;
+  if (request.load_case) {
+    const auto environment = std::find_if(project.environments.begin(), project.environments.end(),
+                                          [&](const Environment& e) { return e.name == result.environment; });
+    MeanEnvironmentLoad mean = mean_environment_load(project, *environment);
+    environment_load = std::move(mean.load);
+    result.notes = std::move(mean.notes);
+    if (environment->current && !environment->current->profile.empty()) {
+      result.notes.push_back(
+          "current on the lines: the quasi-static catenary carries no current drag (use an FE line model)");
+    }
+  }
   if (damaged && std::none_of(project.mooring.lines.begin(), project.mooring.lines.end(),
                               [&](const MooringLine& l) { return l.name == *damaged; })) {
     std::string names;
@@ -105,7 +118,7 @@ StaticCaseResult run_static_case(const ValidatedProject& validated, const Static
 
   auto start = std::chrono::steady_clock::now();
   const engine::EquilibriumResult equilibrium =
-      engine::solve_static_equilibrium(hull.statics, lines.lines, nullptr);
+      engine::solve_static_equilibrium(hull.statics, lines.lines, environment_load);
   result.equilibrium_wall_s = seconds_since(start);
   result.equilibrium_iterations = equilibrium.iterations;
   result.offset = equilibrium.offset;

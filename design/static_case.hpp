@@ -59,6 +59,10 @@ struct StaticCaseResult {
   engine::Vector6d residual = engine::Vector6d::Zero();
   engine::Matrix6d hydrostatic_stiffness = engine::Matrix6d::Zero();
 
+  /// What the case does not model although the input asks for it (e.g. wind
+  /// without wind coefficients), so that no load is silently dropped.
+  std::vector<std::string> notes;
+
   std::vector<NaturalMode> natural_modes;  ///< ascending period
   bool added_mass_included = false;
 

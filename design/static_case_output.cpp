@@ -62,6 +62,7 @@ nlohmann::json static_case_to_json(const StaticCaseResult& r, const std::string&
       {"residual_6dof", six(r.residual)},
       {"hydrostatic_stiffness_6x6", six_by_six(r.hydrostatic_stiffness)},
       {"natural_modes", modes},
+      {"notes", r.notes},
       {"added_mass_included", r.added_mass_included},
       {"lines", lines},
       {"equilibrium_iterations", r.equilibrium_iterations},
@@ -90,6 +91,10 @@ std::string equilibrium_table(const StaticCaseResult& r, const std::string& proj
   out += statics.substr(statics.find("line "));
   out += fmt::format("Hydrostatic + gravity force: Fz {:.1f} kN, Mx {:.1f} kN·m, My {:.1f} kN·m\n",
                      r.hydrostatic_force(2) / 1e3, r.hydrostatic_force(3) / 1e3, r.hydrostatic_force(4) / 1e3);
+  const engine::Vector6d& e = r.environment_force;
+  out += fmt::format("Mean environmental load on the hull: Fx {:.1f} kN, Fy {:.1f} kN, Mz {:.1f} kN·m\n",
+                     e(0) / 1e3, e(1) / 1e3, e(5) / 1e3);
+  for (const std::string& note : r.notes) out += "Note: " + note + "\n";
   return out;
 }
 
