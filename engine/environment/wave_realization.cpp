@@ -124,8 +124,9 @@ WaveRealization make_wave_realization(const WaveRealizationInput& in) {
   require_positive(in.water.density_kg_per_m3, "water density", "kg/m^3");
   if (in.water_depth_m) require_positive(*in.water_depth_m, "water depth", "m");
   if (in.components_per_direction < 1) {
-    throw std::invalid_argument(fmt::format(
-        "wave realization: components_per_direction must be >= 1, got {}", in.components_per_direction));
+    throw std::invalid_argument(
+        fmt::format("wave realization: components_per_direction must be >= 1, got {}",
+                    in.components_per_direction));
   }
   if (in.direction_count < 1) {
     throw std::invalid_argument(
@@ -173,11 +174,13 @@ WaveRealization make_wave_realization(const WaveRealizationInput& in) {
   }
   const double band_m0 = cumulative.back();
   if (!(band_m0 > 0.0)) {
-    throw std::invalid_argument(fmt::format(
-        "wave realization: the spectrum carries no variance in [{:.4g}, {:.4g}] rad/s", w_lo, w_hi));
+    throw std::invalid_argument(
+        fmt::format("wave realization: the spectrum carries no variance in [{:.4g}, {:.4g}] rad/s",
+                    w_lo, w_hi));
   }
   // F at any w (piecewise linear in the table) and its inverse.
-  const auto cumulative_at = [&](double w) {
+  const auto cumulative_at = [&](double w_any) {
+    const double w = std::clamp(w_any, w_lo, w_hi);
     const double s = (w - w_lo) / (w_hi - w_lo) * kCumulativeIntervals;
     const int i = std::clamp(static_cast<int>(s), 0, kCumulativeIntervals - 1);
     const double f = s - i;
@@ -201,6 +204,15 @@ WaveRealization make_wave_realization(const WaveRealizationInput& in) {
     edges[k] = in.frequency_selection == FrequencySelection::equal_energy_random
                    ? frequency_at(band_m0 * k / n)
                    : w_lo + mean_dw * k;
+  }
+  // Grid: frequencies at whole multiples j dw (as in an FFT synthesis), so
+  // that the record is exactly periodic with 2 pi / dw; bins [w_k -+ dw/2]
+  // clipped to the band.
+  std::vector<double> grid_centres;
+  if (in.frequency_selection == FrequencySelection::equal_spacing_grid) {
+    const double j0 = std::max(1.0, std::round(w_lo / mean_dw + 0.5));
+    for (int k = 0; k < n; ++k) grid_centres.push_back((j0 + k) * mean_dw);
+    for (int k = 0; k <= n; ++k) edges[k] = (j0 + k - 0.5) * mean_dw;
   }
   std::vector<double> bin_variance(n);
   for (int k = 0; k < n; ++k) {
@@ -228,7 +240,7 @@ WaveRealization make_wave_realization(const WaveRealizationInput& in) {
     for (int k = 0; k < n; ++k) {
       WaveComponent c;
       if (in.frequency_selection == FrequencySelection::equal_spacing_grid) {
-        c.omega_rad_per_s = 0.5 * (edges[k] + edges[k + 1]);
+        c.omega_rad_per_s = grid_centres[k];
       } else {
         c.omega_rad_per_s = edges[k] + uniform01(rng) * (edges[k + 1] - edges[k]);
       }
@@ -289,8 +301,8 @@ WaveKinematics wave_kinematics(const WaveRealization& sea, const Eigen::Vector3d
   WaveKinematics out;
   const auto& h = sea.water_depth_m;
   if (h && p.z() < -*h) {
-    throw std::invalid_argument(fmt::format(
-        "wave kinematics: point z = {} m is below the seabed (z = -{} m)", p.z(), *h));
+    throw std::invalid_argument(
+        fmt::format("wave kinematics: point z = {} m is below the seabed (z = -{} m)", p.z(), *h));
   }
   out.elevation_m = surface_elevation_m(sea, p.x(), p.y(), t_s);
   const double eta = out.elevation_m;
@@ -300,8 +312,8 @@ WaveKinematics wave_kinematics(const WaveRealization& sea, const Eigen::Vector3d
   if (h) {
     if (!(*h + eta > 0.0)) {
       throw std::invalid_argument(fmt::format(
-          "wave kinematics: trough eta = {} m reaches the seabed (depth {} m) at t = {} s", eta,
-          *h, t_s));
+          "wave kinematics: trough eta = {} m reaches the seabed (depth {} m) at t = {} s", eta, *h,
+          t_s));
     }
     out.stretched_z_m = (p.z() - eta) * *h / (*h + eta);
   } else {
@@ -310,8 +322,8 @@ WaveKinematics wave_kinematics(const WaveRealization& sea, const Eigen::Vector3d
   const double rho_g = sea.water.density_kg_per_m3 * sea.water.gravity_m_per_s2;
   double u_h_x = 0.0, u_h_y = 0.0, u_z = 0.0, a_x = 0.0, a_y = 0.0, a_z = 0.0, pressure = 0.0;
   for (const auto& c : sea.components) {
-    const double theta = c.omega_rad_per_s * t_s - c.kx_rad_per_m * p.x() -
-                         c.ky_rad_per_m * p.y() + c.phase_rad;
+    const double theta =
+        c.omega_rad_per_s * t_s - c.kx_rad_per_m * p.x() - c.ky_rad_per_m * p.y() + c.phase_rad;
     const double cos_t = std::cos(theta);
     const double sin_t = std::sin(theta);
     const Profiles f = profiles(c, out.stretched_z_m, h);

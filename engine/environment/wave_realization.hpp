@@ -30,8 +30,10 @@
 // deviation ~ sqrt(sum (a_k^2/2)^2 / 2) / m0 = 1 / sqrt(2N) = 0.05 for N = 200
 // equal-variance components, instead of 1. Two draws may fall close across a bin
 // edge; that only creates a slow beat, not a repetition.
-// The grid (FrequencySelection::equal_spacing_grid, bin centres) is kept for
-// comparisons and requires 2 pi / dw >= duration_s (else std::invalid_argument).
+// The grid (FrequencySelection::equal_spacing_grid: w_k = j dw, whole multiples
+// as in an FFT synthesis, so exactly periodic with 2 pi / dw; bins of width dw
+// around them clipped to the band) is kept for comparisons and requires
+// 2 pi / dw >= duration_s (else std::invalid_argument).
 //
 // Reproducibility: one std::mt19937_64 seeded with `seed`; uniform numbers are
 // (r >> 11) 2^-53 (not std::uniform_real_distribution, whose algorithm is
@@ -65,14 +67,14 @@ namespace spiral::engine {
 // ---------------------------------------------------------------- dispersion
 
 struct DispersionInput {
-  double omega_rad_per_s = 0.0;          ///< > 0
-  std::optional<double> water_depth_m;   ///< > 0; empty: deep water
-  double gravity_m_per_s2 = 9.80665;     ///< > 0
+  double omega_rad_per_s = 0.0;         ///< > 0
+  std::optional<double> water_depth_m;  ///< > 0; empty: deep water
+  double gravity_m_per_s2 = 9.80665;    ///< > 0
 };
 
 struct DispersionSolution {
   double wavenumber_rad_per_m = 0.0;
-  int iterations = 0;           ///< Newton iterations (0 for deep water)
+  int iterations = 0;              ///< Newton iterations (0 for deep water)
   double relative_residual = 0.0;  ///< |k g tanh(kh) - w^2| / w^2
 };
 
@@ -86,22 +88,22 @@ DispersionSolution solve_dispersion(const DispersionInput& input);
 enum class FrequencySelection {
   equal_energy_random,   ///< equal-variance bins, random frequency inside each (default)
   equal_spacing_random,  ///< equal-width bins, random frequency inside each
-  equal_spacing_grid,    ///< equal-width bins, bin centres (periodic: 2 pi / dw >= duration)
+  equal_spacing_grid,    ///< w_k = j dw (periodic with 2 pi / dw; must be >= duration)
 };
 
 struct WaveRealizationInput {
-  WaveSpectrum spectrum;                   ///< make_jonswap_spectrum / make_pierson_moskowitz_spectrum
-  double mean_heading_rad = 0.0;           ///< direction of propagation, global, CCW from +x
+  WaveSpectrum spectrum;          ///< make_jonswap_spectrum / make_pierson_moskowitz_spectrum
+  double mean_heading_rad = 0.0;  ///< direction of propagation, global, CCW from +x
   std::optional<DirectionalSpreading> spreading;  ///< empty: long-crested
-  int direction_count = 1;                 ///< >= 1; must be 1 when long-crested
-  int components_per_direction = 200;      ///< >= 1
+  int direction_count = 1;                        ///< >= 1; must be 1 when long-crested
+  int components_per_direction = 200;             ///< >= 1
   FrequencySelection frequency_selection = FrequencySelection::equal_energy_random;
   std::optional<double> omega_min_rad_per_s;  ///< band start, > 0; default 0.5 wp
   std::optional<double> omega_max_rad_per_s;  ///< band end, > start; default 5 wp
-  double duration_s = 10800.0;             ///< simulation length the record is meant for, > 0
+  double duration_s = 10800.0;                ///< simulation length the record is meant for, > 0
   std::uint64_t seed = 1;
-  std::optional<double> water_depth_m;     ///< > 0; empty: deep water
-  Seawater water;                          ///< rho (pressure) and g (dispersion)
+  std::optional<double> water_depth_m;  ///< > 0; empty: deep water
+  Seawater water;                       ///< rho (pressure) and g (dispersion)
 };
 
 /// One regular component; derived members are filled by the factories.
@@ -114,8 +116,8 @@ struct WaveComponent {
   // derived
   double cos_heading = 1.0;
   double sin_heading = 0.0;
-  double kx_rad_per_m = 0.0;  ///< k cos b
-  double ky_rad_per_m = 0.0;  ///< k sin b
+  double kx_rad_per_m = 0.0;        ///< k cos b
+  double ky_rad_per_m = 0.0;        ///< k sin b
   double inv_one_minus_e2kh = 1.0;  ///< 1 / (1 - e^{-2kh}); 1 in deep water
   double inv_one_plus_e2kh = 1.0;   ///< 1 / (1 + e^{-2kh}); 1 in deep water
 };
@@ -127,8 +129,8 @@ struct WaveRealization {
   // diagnostics
   double omega_min_rad_per_s = 0.0;
   double omega_max_rad_per_s = 0.0;
-  double band_variance_m2 = 0.0;      ///< sum a_k^2 / 2 (variance the realization carries)
-  double spectrum_variance_m2 = 0.0;  ///< m0 of the whole spectrum (spectral_moments)
+  double band_variance_m2 = 0.0;            ///< sum a_k^2 / 2 (variance the realization carries)
+  double spectrum_variance_m2 = 0.0;        ///< m0 of the whole spectrum (spectral_moments)
   double mean_delta_omega_rad_per_s = 0.0;  ///< (w_max - w_min) / N
   double grid_repeat_period_s = 0.0;  ///< 2 pi / mean dw: period of a uniform grid of that spacing
   double duration_s = 0.0;
@@ -138,8 +140,8 @@ struct WaveRealization {
 WaveRealization make_wave_realization(const WaveRealizationInput& input);
 
 struct RegularWaveInput {
-  double amplitude_m = 0.0;        ///< >= 0
-  double omega_rad_per_s = 0.0;    ///< > 0
+  double amplitude_m = 0.0;      ///< >= 0
+  double omega_rad_per_s = 0.0;  ///< > 0
   double heading_rad = 0.0;
   double phase_rad = 0.0;
   std::optional<double> water_depth_m;
@@ -164,11 +166,11 @@ Eigen::VectorXd surface_elevation_many(const WaveRealization& sea, double x_m, d
                                        const Eigen::VectorXd& times_s);
 
 struct WaveKinematics {
-  double elevation_m = 0.0;       ///< eta at (x, y, t)
-  bool wet = false;               ///< z <= eta (else velocity, acceleration, pressure are 0)
-  double stretched_z_m = 0.0;     ///< Wheeler z' used for the profiles (0 when dry)
-  Eigen::Vector3d velocity_m_per_s = Eigen::Vector3d::Zero();      ///< global frame
-  Eigen::Vector3d acceleration_m_per_s2 = Eigen::Vector3d::Zero(); ///< local du/dt, global
+  double elevation_m = 0.0;    ///< eta at (x, y, t)
+  bool wet = false;            ///< z <= eta (else velocity, acceleration, pressure are 0)
+  double stretched_z_m = 0.0;  ///< Wheeler z' used for the profiles (0 when dry)
+  Eigen::Vector3d velocity_m_per_s = Eigen::Vector3d::Zero();       ///< global frame
+  Eigen::Vector3d acceleration_m_per_s2 = Eigen::Vector3d::Zero();  ///< local du/dt, global
   double dynamic_pressure_Pa = 0.0;  ///< excludes the hydrostatic -rho g z
 };
 

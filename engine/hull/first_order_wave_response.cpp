@@ -60,7 +60,8 @@ Vector6d evaluate_first_order(const FirstOrderWaveSeries& series, double t_s) {
 Eigen::Matrix<double, 6, Eigen::Dynamic> evaluate_first_order_many(
     const FirstOrderWaveSeries& series, const Eigen::VectorXd& times_s) {
   Eigen::Matrix<double, 6, Eigen::Dynamic> out(6, times_s.size());
-  for (Eigen::Index i = 0; i < times_s.size(); ++i) out.col(i) = evaluate_first_order(series, times_s(i));
+  for (Eigen::Index i = 0; i < times_s.size(); ++i)
+    out.col(i) = evaluate_first_order(series, times_s(i));
   return out;
 }
 

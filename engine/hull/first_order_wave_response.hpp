@@ -40,7 +40,8 @@ struct FirstOrderWaveSeries {
   TransferQuantity quantity = TransferQuantity::excitation;
   std::vector<double> omega_rad_per_s;
   std::vector<Vector6cd> coefficient;  ///< C_k, global frame: value(t) = sum Re{C_k e^{i w_k t}}
-  double variance_share_outside_table = 0.0;  ///< of sum a_k^2/2, components with w outside the table
+  double variance_share_outside_table =
+      0.0;  ///< of sum a_k^2/2, components with w outside the table
 };
 
 FirstOrderWaveSeries prepare_first_order_series(const WaveRealization& sea,

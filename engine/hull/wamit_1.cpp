@@ -88,9 +88,9 @@ HydroCoefficients parse_wamit_1(std::istream& text, const std::string& file_name
                                         column_name, tokens.size(), line));
     }
     if (!numeric_first) {
-      throw FileFormatError(file_name, line_number,
-                            fmt::format("{} must be a finite real number, got \"{}\"", column_name,
-                                        tokens[0]));
+      throw FileFormatError(
+          file_name, line_number,
+          fmt::format("{} must be a finite real number, got \"{}\"", column_name, tokens[0]));
     }
     int i = 0;
     int j = 0;
@@ -106,15 +106,15 @@ HydroCoefficients parse_wamit_1(std::istream& text, const std::string& file_name
     }
     double a_bar = 0.0;
     if (!detail::parse_real(tokens[3], a_bar)) {
-      throw FileFormatError(file_name, line_number,
-                            fmt::format("Abar({},{}) must be a finite real number, got \"{}\"", i,
-                                        j, tokens[3]));
+      throw FileFormatError(
+          file_name, line_number,
+          fmt::format("Abar({},{}) must be a finite real number, got \"{}\"", i, j, tokens[3]));
     }
     double b_bar = 0.0;
     if (tokens.size() == 5 && !detail::parse_real(tokens[4], b_bar)) {
-      throw FileFormatError(file_name, line_number,
-                            fmt::format("Bbar({},{}) must be a finite real number, got \"{}\"", i,
-                                        j, tokens[4]));
+      throw FileFormatError(
+          file_name, line_number,
+          fmt::format("Bbar({},{}) must be a finite real number, got \"{}\"", i, j, tokens[4]));
     }
 
     RowKind kind = RowKind::regular;

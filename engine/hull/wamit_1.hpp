@@ -40,9 +40,9 @@
 namespace spiral::engine {
 
 struct HydroCoefficients {
-  std::vector<double> omega_rad_per_s;     ///< strictly ascending, > 0
-  std::vector<Matrix6d> added_mass;        ///< SI, one per frequency
-  std::vector<Matrix6d> damping;           ///< SI, one per frequency
+  std::vector<double> omega_rad_per_s;          ///< strictly ascending, > 0
+  std::vector<Matrix6d> added_mass;             ///< SI, one per frequency
+  std::vector<Matrix6d> damping;                ///< SI, one per frequency
   std::optional<Matrix6d> added_mass_infinite;  ///< infinite-frequency limit, if in the file
   std::optional<Matrix6d> added_mass_zero;      ///< zero-frequency limit, if in the file
   std::string file;                             ///< name used in messages

@@ -31,7 +31,8 @@ struct Row {
 
 WaveTransferTable parse_transfer(std::istream& text, const std::string& file_name,
                                  const WamitReadOptions& options, TransferQuantity quantity) {
-  const char* reader = quantity == TransferQuantity::excitation ? "wamit .3 reader" : "wamit .4 reader";
+  const char* reader =
+      quantity == TransferQuantity::excitation ? "wamit .3 reader" : "wamit .4 reader";
   detail::validate_wamit_options(options, reader);
   const bool period_column = options.frequency_column == FrequencyColumn::period_s;
   const char* column_name = period_column ? "PER" : "OMEGA";
@@ -52,25 +53,29 @@ WaveTransferTable parse_transfer(std::istream& text, const std::string& file_nam
     }
     first_content_line = false;
     if (tokens.size() != 7) {
-      throw FileFormatError(file_name, line_number,
-                            fmt::format("expected 7 fields `{} BETA I MOD PHA RE IM`, got {}: \"{}\"",
-                                        column_name, tokens.size(), line));
+      throw FileFormatError(
+          file_name, line_number,
+          fmt::format("expected 7 fields `{} BETA I MOD PHA RE IM`, got {}: \"{}\"", column_name,
+                      tokens.size(), line));
     }
-    static constexpr std::array<const char*, 7> kNames = {"", "BETA", "I", "MOD", "PHA", "RE", "IM"};
+    static constexpr std::array<const char*, 7> kNames = {"",    "BETA", "I", "MOD",
+                                                          "PHA", "RE",   "IM"};
     if (!numeric_first) {
-      throw FileFormatError(file_name, line_number,
-                            fmt::format("{} must be a finite real number, got \"{}\"", column_name,
-                                        tokens[0]));
+      throw FileFormatError(
+          file_name, line_number,
+          fmt::format("{} must be a finite real number, got \"{}\"", column_name, tokens[0]));
     }
     std::array<double, 7> v{};
     v[0] = column1;
     int dof = 0;
     for (std::size_t f = 1; f < 7; ++f) {
-      const bool ok = f == 2 ? detail::parse_int(tokens[f], dof) : detail::parse_real(tokens[f], v[f]);
+      const bool ok =
+          f == 2 ? detail::parse_int(tokens[f], dof) : detail::parse_real(tokens[f], v[f]);
       if (!ok) {
-        throw FileFormatError(file_name, line_number,
-                              fmt::format("{} must be {}, got \"{}\"", kNames[f],
-                                          f == 2 ? "an integer" : "a finite real number", tokens[f]));
+        throw FileFormatError(
+            file_name, line_number,
+            fmt::format("{} must be {}, got \"{}\"", kNames[f],
+                        f == 2 ? "an integer" : "a finite real number", tokens[f]));
       }
     }
     if (dof < 1 || dof > 6) {
@@ -88,7 +93,8 @@ WaveTransferTable parse_transfer(std::istream& text, const std::string& file_nam
     rows.push_back({omega, v[1], dof, {v[5], v[6]}, line_number});
   }
   if (text.bad()) throw FileFormatError(file_name, line_number, "read error");
-  if (rows.empty()) throw FileFormatError(file_name, 0, "no transfer-function rows found (empty file)");
+  if (rows.empty())
+    throw FileFormatError(file_name, 0, "no transfer-function rows found (empty file)");
 
   std::vector<double> omegas;
   std::vector<double> headings;
@@ -147,8 +153,7 @@ WaveTransferTable parse_transfer(std::istream& text, const std::string& file_nam
               file_name, 0,
               fmt::format("incomplete table: I = {} missing at {} = {:.6g} {}, BETA = {} deg "
                           "(every DOF present must be given at every frequency and heading)",
-                          d + 1, column_name,
-                          period_column ? 2.0 * kPi / omegas[iw] : omegas[iw],
+                          d + 1, column_name, period_column ? 2.0 * kPi / omegas[iw] : omegas[iw],
                           period_column ? "s" : "rad/s", headings[ih]));
         }
       }
@@ -183,7 +188,8 @@ void bracket(const std::vector<double>& grid, double x, Eigen::Index& lo, Eigen:
     s = 0.0;
     return;
   }
-  const auto j = static_cast<Eigen::Index>(std::upper_bound(grid.begin(), grid.end(), x) - grid.begin());
+  const auto j =
+      static_cast<Eigen::Index>(std::upper_bound(grid.begin(), grid.end(), x) - grid.begin());
   lo = j - 1;
   hi = j;
   s = (x - grid[lo]) / (grid[hi] - grid[lo]);
@@ -211,9 +217,9 @@ MotionRaoTable read_wamit_4(const std::filesystem::path& file, const WamitReadOp
 
 Vector6cd transfer_at(const WaveTransferTable& table, double omega_rad_per_s, double heading_rad) {
   if (!std::isfinite(omega_rad_per_s) || !std::isfinite(heading_rad)) {
-    throw std::invalid_argument(fmt::format(
-        "transfer_at: frequency and heading must be finite, got {} rad/s and {} rad",
-        omega_rad_per_s, heading_rad));
+    throw std::invalid_argument(
+        fmt::format("transfer_at: frequency and heading must be finite, got {} rad/s and {} rad",
+                    omega_rad_per_s, heading_rad));
   }
   if (table.omega_rad_per_s.empty() || table.headings_rad.empty()) {
     throw std::invalid_argument("transfer_at: the transfer table is empty");
@@ -233,9 +239,9 @@ Vector6cd transfer_at(const WaveTransferTable& table, double omega_rad_per_s, do
     }
     b = h_min;
   } else if (b > h_max) {
-    throw std::invalid_argument(fmt::format(
-        "heading {:.6g} deg outside the database range [{:.6g}, {:.6g}] deg (table {})",
-        heading_rad / kDeg, h_min / kDeg, h_max / kDeg, table.file));
+    throw std::invalid_argument(
+        fmt::format("heading {:.6g} deg outside the database range [{:.6g}, {:.6g}] deg (table {})",
+                    heading_rad / kDeg, h_min / kDeg, h_max / kDeg, table.file));
   }
   Eigen::Index w0, w1, b0, b1;
   double sw, sb;

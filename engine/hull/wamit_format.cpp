@@ -15,8 +15,8 @@ void validate_wamit_options(const WamitReadOptions& options, const char* reader)
   }
   if (bad(options.water.density_kg_per_m3) || bad(options.water.gravity_m_per_s2)) {
     throw std::invalid_argument(
-        fmt::format("{}: water density and gravity must be > 0, got {} kg/m^3 and {} m/s^2",
-                    reader, options.water.density_kg_per_m3, options.water.gravity_m_per_s2));
+        fmt::format("{}: water density and gravity must be > 0, got {} kg/m^3 and {} m/s^2", reader,
+                    options.water.density_kg_per_m3, options.water.gravity_m_per_s2));
   }
 }
 
@@ -67,7 +67,8 @@ std::vector<double> distinct_sorted(std::vector<double> values, double rel_tol, 
 }
 
 int index_in(const std::vector<double>& grid, double value, double rel_tol, double abs_tol) {
-  const auto it = std::lower_bound(grid.begin(), grid.end(), value - (rel_tol * std::abs(value) + abs_tol));
+  const auto it =
+      std::lower_bound(grid.begin(), grid.end(), value - (rel_tol * std::abs(value) + abs_tol));
   if (it != grid.end() && std::abs(*it - value) <= rel_tol * std::abs(value) + abs_tol) {
     return static_cast<int>(it - grid.begin());
   }

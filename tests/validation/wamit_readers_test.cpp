@@ -222,7 +222,8 @@ TEST(Wamit3, BilinearInHeadingAndFrequency) {
   const double rho_g = kRho * kG;
   const Vector6cd v = transfer_at(x, 0.25 * w0 + 0.75 * w1, 30.0 * kDeg);
   // Bilinear: heading weight 1/3, frequency weight 3/4.
-  const double re = (2.0 / 3.0) * (0.25 * 1.0 + 0.75 * 5.0) + (1.0 / 3.0) * (0.25 * 3.0 + 0.75 * 7.0);
+  const double re =
+      (2.0 / 3.0) * (0.25 * 1.0 + 0.75 * 5.0) + (1.0 / 3.0) * (0.25 * 3.0 + 0.75 * 7.0);
   const double im = (1.0 / 3.0) * (0.25 * 2.0 + 0.75 * 4.0);
   EXPECT_REL_NEAR(v(2).real(), rho_g * re, kRoundOffRelTol);
   EXPECT_REL_NEAR(v(2).imag(), rho_g * im, kRoundOffRelTol);
