@@ -307,7 +307,38 @@ NewtonOutcome newton(const Problem& p, const FeStaticsOptions& o, Eigen::VectorX
   }
 }
 
-Eigen::VectorXd initial_state(const Problem& p, const FeLineModel& m, const FeEnvironment& env,
+void update_lengths(Problem& p) {
+  const auto& s = p.mesh.s;
+  for (std::size_t e = 0; e < p.elements.size(); ++e) p.elements[e].length_m = s[e + 1] - s[e];
+  for (int i = 0; i < p.n_nodes; ++i) {
+    const auto ui = static_cast<std::size_t>(i);
+    double sum = 0.0;
+    int cnt = 0;
+    if (i > 0) sum += s[ui] - s[ui - 1], ++cnt;
+    if (i + 1 < p.n_nodes) sum += s[ui + 1] - s[ui], ++cnt;
+    p.node_length_m[ui] = sum / cnt;
+  }
+}
+
+/// Adopts node arc lengths from a previous solution of the same model: same
+/// node count and the same section joints (only interior nodes may differ).
+void set_node_arc_lengths(Problem& p, const std::vector<double>& s) {
+  const auto n = static_cast<std::size_t>(p.n_nodes);
+  bool ok = s.size() == n && s.front() == p.mesh.s.front() && s.back() == p.mesh.s.back();
+  for (std::size_t i = 1; ok && i < n; ++i) {
+    ok = s[i] > s[i - 1];
+    if (i + 1 < n && p.mesh.section[i - 1] != p.mesh.section[i]) ok = ok && s[i] == p.mesh.s[i];
+  }
+  if (!ok) {
+    invalid(fmt::format("warm_start_node_arc_length_m: must be the {} increasing node arc lengths of a "
+                        "solution of this model, got {} values",
+                        n, s.size()));
+  }
+  p.mesh.s = s;
+  update_lengths(p);
+}
+
+Eigen::VectorXd initial_state(Problem& p, const FeLineModel& m, const FeEnvironment& env,
                               const FeLineEnds& ends, const FeStaticsOptions& o) {
   Eigen::VectorXd q(p.n_dofs);
   if (o.warm_start_state) {
@@ -316,6 +347,7 @@ Eigen::VectorXd initial_state(const Problem& p, const FeLineModel& m, const FeEn
                           o.warm_start_state->size()));
     }
     q = *o.warm_start_state;
+    if (!o.warm_start_node_arc_length_m.empty()) set_node_arc_lengths(p, o.warm_start_node_arc_length_m);
   } else {
     const InitialShape catenary = default_initial_shape(m, env, ends.end_A_m, ends.end_B_m);
     std::function<Eigen::Vector3d(double)> shape = o.initial_shape ? o.initial_shape : catenary.position_m;
@@ -428,6 +460,10 @@ FeStaticsResult post_process(const Problem& p, const FeStaticsOptions& o, const 
   }
   r.end_A_force_N = r.node_force_residual_N.front();
   r.end_B_force_N = r.node_force_residual_N.back();
+  // End tensions: axial components of the end reactions (more accurate than
+  // the strain of the free end slope, which converges more slowly).
+  r.node_tension_N.front() = r.end_A_force_N.dot(q.segment<3>(3).normalized());
+  r.node_tension_N.back() = -r.end_B_force_N.dot(q.segment<3>(kDofPerNode * (nn - 1) + 3).normalized());
   r.touchdown = find_touchdown(p, q);
 
   if (o.compute_end_B_stiffness) {
@@ -568,16 +604,7 @@ bool move_node_to(Problem& p, Eigen::VectorXd& q, double s_new, double tolerance
   q.segment<3>(kDofPerNode * best) = r;
   q.segment<3>(kDofPerNode * best + 3) = t;
   s[ub] = s_new;
-  p.elements[ub - 1].length_m = s[ub] - s[ub - 1];
-  p.elements[ub].length_m = s[ub + 1] - s[ub];
-  for (int i = best - 1; i <= best + 1; ++i) {
-    const auto ui = static_cast<std::size_t>(i);
-    double sum = 0.0;
-    int cnt = 0;
-    if (i > 0) sum += s[ui] - s[ui - 1], ++cnt;
-    if (i + 1 < p.n_nodes) sum += s[ui + 1] - s[ui], ++cnt;
-    p.node_length_m[ui] = sum / cnt;
-  }
+  update_lengths(p);
   return true;
 }
 
@@ -644,7 +671,10 @@ FeStaticsResult solve_fe_line_statics(const FeLineModel& model, const FeEnvironm
     last = solve_with_current_steps(p, options, q, counters);
     if (last.converged) last = snap_touchdown(p, options, q, counters, kFinalSnapPasses);
     done = last.converged;
-    if (!done) q = initial_state(p, model, environment, ends, FeStaticsOptions{});
+    if (!done) {
+      p = make_problem(model, environment);
+      q = initial_state(p, model, environment, ends, FeStaticsOptions{});
+    }
   }
   if (!done) {
     // Continuation on the seabed stiffness: start soft (penetration ≈ 1 % of

@@ -125,6 +125,10 @@ struct FeStaticsOptions {
   /// Converged state of a previous solve on the same model (same mesh) to warm
   /// start from (FeStaticsResult::state); takes precedence over initial_shape.
   std::optional<Eigen::VectorXd> warm_start_state;
+  /// Node arc lengths of that solution (FeStaticsResult::node_arc_length_m),
+  /// which differ from the model's mesh where a node was moved onto the
+  /// touchdown point; optional, used with warm_start_state.
+  std::vector<double> warm_start_node_arc_length_m;
   bool compute_end_B_stiffness = true;
   /// Move the nearest node onto the touchdown point and re-solve (r-adaptivity;
   /// keeps the element's convergence order on lines that lie on the seabed).
