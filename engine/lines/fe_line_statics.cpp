@@ -716,13 +716,26 @@ FeStaticsResult solve_fe_line_statics(const FeLineModel& model, const FeEnvironm
   }
   if (!last.converged) {
     SolverDiagnostics d{counters.iterations, last.residual_N, "N"};
+    // A line on the seabed from A that is longer than span + height has no
+    // taut equilibrium on a frictionless seabed (it would have to fold).
+    const Eigen::Vector3d AB = ends.end_B_m - ends.end_A_m;
+    const double slack_length_m = std::hypot(AB.x(), AB.y()) + AB.z();
+    const bool a_on_seabed = environment.seabed_stiffness_N_per_m2 > 0.0 &&
+                             ends.end_A_m.z() <= environment.seabed_z_m + 1e-6 * p.line_length_m;
+    const std::string slack =
+        a_on_seabed && p.line_length_m >= slack_length_m
+            ? fmt::format(" The line is slack: its length {:.2f} m is at least its horizontal span plus "
+                          "height, {:.2f} m, so it has no taut equilibrium on a frictionless seabed; "
+                          "shorten it or move the ends apart.",
+                          p.line_length_m, slack_length_m)
+            : std::string();
     throw SolverError(
-        fmt::format("FE line statics did not converge: {} Newton iterations, {} load steps, force residual "
-                    "{:.4g} N against a tolerance of {:.4g} N. Try: check that the end positions are "
-                    "reachable (line length vs. span, no line in compression), refine the mesh, give a "
-                    "better initial shape (catenary) or more iterations.",
+        fmt::format("FE line statics did not converge: {} Newton iterations, {} Newton solves (continuation "
+                    "stages), force residual {:.4g} N against a tolerance of {:.4g} N.{} Try: check that the "
+                    "end positions are reachable (line length vs. span, no slack or compressed line), "
+                    "refine the mesh, give a better initial shape (catenary) or more iterations.",
                     counters.iterations, counters.load_steps, last.residual_N,
-                    options.relative_force_tolerance * last.scale_N),
+                    options.relative_force_tolerance * last.scale_N, slack),
         d);
   }
   FeStaticsResult r = post_process(p, options, q);
