@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include <Eigen/Geometry>
@@ -140,9 +141,13 @@ struct Problem {
   double line_length_m = 0.0;
   double load_scale_N = 0.0;  // total |weight| + |point loads| + drag estimate
   std::vector<double> node_length_m;  // mean adjacent element length (slope residual scale)
+  // Smallest force residual double precision can resolve: an element force
+  // EA (|r'| − 1) with r' from coordinates of size R over a length h carries
+  // an error ≈ ε EA R / h; ten times that is accepted as converged.
+  double round_off_floor_N = 0.0;
 };
 
-Problem make_problem(const FeLineModel& m, const FeEnvironment& env) {
+Problem make_problem(const FeLineModel& m, const FeEnvironment& env, const FeLineEnds& ends) {
   Problem p;
   p.mesh = build_mesh(m);
   p.n_nodes = static_cast<int>(p.mesh.s.size());
@@ -172,6 +177,10 @@ Problem make_problem(const FeLineModel& m, const FeEnvironment& env) {
     if (i + 1 < p.n_nodes) sum += p.elements[static_cast<std::size_t>(i)].length_m, ++cnt;
     p.node_length_m[static_cast<std::size_t>(i)] = sum / cnt;
   }
+  double coordinate_m = 0.0, ea_over_h = 0.0;
+  for (const auto& e : p.elements) ea_over_h = std::max(ea_over_h, e.EA_N / e.length_m);
+  coordinate_m = std::max({ends.end_A_m.cwiseAbs().maxCoeff(), ends.end_B_m.cwiseAbs().maxCoeff(), p.line_length_m});
+  p.round_off_floor_N = 10.0 * std::numeric_limits<double>::epsilon() * ea_over_h * coordinate_m;
   p.load.current = &env.current;
   p.load.seabed_z_m = env.seabed_z_m;
   p.load.seabed_stiffness_N_per_m2 = env.seabed_stiffness_N_per_m2;
@@ -259,7 +268,7 @@ NewtonOutcome newton(const Problem& p, const FeStaticsOptions& o, Eigen::VectorX
     out.scale_N = std::max(p.load_scale_N, max_axial_force(p, q));
     out.residual_N = residual_norm(p, g);
     out.iterations = it;
-    if (out.residual_N <= o.relative_force_tolerance * out.scale_N) {
+    if (out.residual_N <= std::max(o.relative_force_tolerance * out.scale_N, p.round_off_floor_N)) {
       out.converged = true;
       return out;
     }
@@ -348,6 +357,15 @@ Eigen::VectorXd initial_state(Problem& p, const FeLineModel& m, const FeEnvironm
     }
     q = *o.warm_start_state;
     if (!o.warm_start_node_arc_length_m.empty()) set_node_arc_lengths(p, o.warm_start_node_arc_length_m);
+    // Predictor: spread the end displacements along the line, linearly in arc
+    // length, instead of moving the end nodes alone (which would strain the
+    // end elements by the whole offset and cost Newton damped steps).
+    const Eigen::Vector3d dA = ends.end_A_m - q.segment<3>(0);
+    const Eigen::Vector3d dB = ends.end_B_m - q.segment<3>(kDofPerNode * (p.n_nodes - 1));
+    for (int i = 0; i < p.n_nodes; ++i) {
+      const double f = p.mesh.s[static_cast<std::size_t>(i)] / p.line_length_m;
+      q.segment<3>(kDofPerNode * i) += (1.0 - f) * dA + f * dB;
+    }
   } else {
     const InitialShape catenary = default_initial_shape(m, env, ends.end_A_m, ends.end_B_m);
     std::function<Eigen::Vector3d(double)> shape = o.initial_shape ? o.initial_shape : catenary.position_m;
@@ -391,6 +409,10 @@ Eigen::Vector3d position(const ancf::ShapeAt& sh, const Eigen::VectorXd& q, int 
   return r;
 }
 
+// Penetrations below this fraction of the line length are round-off (an
+// anchor placed exactly on the seabed), not contact.
+constexpr double kContactRoundOff = 1e-12;
+
 std::optional<FeTouchdown> find_touchdown(const Problem& p, const Eigen::VectorXd& q) {
   if (p.load.seabed_stiffness_N_per_m2 <= 0.0) return std::nullopt;
   const double zs = p.load.seabed_z_m;
@@ -400,12 +422,12 @@ std::optional<FeTouchdown> find_touchdown(const Problem& p, const Eigen::VectorX
     const int base = kDofPerNode * e;
     for (int j = kSamples; j >= 0; --j) {
       const double xi = static_cast<double>(j) / kSamples;
-      if (position(ancf::shape_at(xi, L), q, base).z() < zs) {
+      if (position(ancf::shape_at(xi, L), q, base).z() < zs - kContactRoundOff * p.line_length_m) {
         double lo = xi, hi = std::min(1.0, xi + 1.0 / kSamples);
         if (j == kSamples) hi = lo;
         for (int it = 0; it < 60 && hi - lo > 1e-12; ++it) {
           const double mid = 0.5 * (lo + hi);
-          (position(ancf::shape_at(mid, L), q, base).z() < zs ? lo : hi) = mid;
+          (position(ancf::shape_at(mid, L), q, base).z() < zs - kContactRoundOff * p.line_length_m ? lo : hi) = mid;
         }
         FeTouchdown td;
         td.arc_length_m = p.mesh.s[static_cast<std::size_t>(e)] + lo * L;
@@ -660,7 +682,7 @@ std::vector<double> fe_line_mesh(const FeLineModel& model) {
 FeStaticsResult solve_fe_line_statics(const FeLineModel& model, const FeEnvironment& environment,
                                       const FeLineEnds& ends, const FeStaticsOptions& options) {
   validate(model, environment, ends, options);
-  Problem p = make_problem(model, environment);
+  Problem p = make_problem(model, environment, ends);
   Eigen::VectorXd q = initial_state(p, model, environment, ends, options);
 
   Counters counters;
@@ -672,7 +694,7 @@ FeStaticsResult solve_fe_line_statics(const FeLineModel& model, const FeEnvironm
     if (last.converged) last = snap_touchdown(p, options, q, counters, kFinalSnapPasses);
     done = last.converged;
     if (!done) {
-      p = make_problem(model, environment);
+      p = make_problem(model, environment, ends);
       q = initial_state(p, model, environment, ends, FeStaticsOptions{});
     }
   }
