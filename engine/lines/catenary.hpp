@@ -67,6 +67,9 @@ struct CatenaryOptions {
   /// break long before). Default 30 % exceeds every mooring material's break strain.
   double max_strain = 0.3;
   /// Profile points per segment (0: no profile). Touchdown points are added.
+  /// Each segment gives profile_points_per_segment + 1 evenly spaced points
+  /// including both its ends (a joint appears once per adjacent segment, as the
+  /// tension jumps across a clump or buoy).
   int profile_points_per_segment = 0;
 };
 
@@ -76,6 +79,14 @@ struct CatenaryProfilePoint {
   double x_m = 0.0;           ///< horizontal, from the anchor towards the fairlead
   double z_m = 0.0;           ///< vertical, above the anchor
   double tension_N = 0.0;     ///< effective tension
+  // Added by the solver's implementation (catenary.cpp):
+  /// Components of the effective tension, N: the force the part of the line
+  /// towards the fairlead exerts on the part towards the anchor, along +x and +z
+  /// (horizontal_N = H on the suspended part; vertical_N = 0 on the seabed).
+  double horizontal_N = 0.0;
+  double vertical_N = 0.0;
+  int segment = 0;            ///< index of the segment the point belongs to
+  bool on_seabed = false;     ///< the point rests on the seabed
 };
 
 struct CatenarySolution {
@@ -99,6 +110,17 @@ struct CatenarySolution {
 /// Solves the line for the given geometry. Throws SolverError with a message
 /// stating the cause (line too short for its span, no convergence with the
 /// iteration count and residual, invalid data) — never returns NaN.
+///
+/// Model notes (catenary.cpp):
+/// - Anchor on the seabed: the laid part is the stretch from the anchor whose
+///   weight the suspended part does not carry (W_total - V_F); it must consist of
+///   non-buoyant segments and clumps, else SolverError ("... is buoyant ... seabed").
+///   The fairlead must then be above the seabed (ZF > 0).
+/// - H = 0 configurations: a slack line hanging vertically with the rest on the
+///   seabed (regime slack_vertical; laid points of the profile spread evenly over
+///   XF), or XF = 0 with a line taut along its whole length.
+/// - The closure tolerance is max(options.tolerance_m, 64 eps (L + XF + |ZF|)).
+/// - A warm start with horizontal_N <= 0 or non-finite values is ignored.
 CatenarySolution solve_catenary(const CatenaryLine& line, const CatenaryGeometry& geometry,
                                 const CatenaryOptions& options = {},
                                 const std::optional<CatenaryGuess>& warm_start = std::nullopt);
