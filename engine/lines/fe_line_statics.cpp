@@ -19,9 +19,7 @@
 namespace spiral::engine {
 namespace {
 
-constexpr int kDofPerNode = 6;     // [r (3), r' (3)]
-constexpr int kElementDofs = 12;
-constexpr int kBand = 11;          // an element couples DOFs 6a .. 6a + 11
+constexpr int kElementDofs = 12;  // [r_a, r'_a, r_b, r'_b]
 
 [[noreturn]] void invalid(const std::string& what) {
   throw SolverError("FE line statics: invalid input: " + what);
@@ -141,17 +139,54 @@ struct Problem {
   double line_length_m = 0.0;
   double load_scale_N = 0.0;  // total |weight| + |point loads| + drag estimate
   std::vector<double> node_length_m;  // mean adjacent element length (slope residual scale)
+  // DOF map. Each node has a position r and a slope r'; at a section joint
+  // that is a hinge (see make_problem) the two elements have their own
+  // slopes: t_in is the one of the element ending at the node, t_out of the
+  // element starting there (equal elsewhere). Indices of 3-blocks.
+  std::vector<int> r_dof, t_in, t_out;
+  std::vector<char> fixed;        // per DOF: prescribed (end positions)
+  std::vector<double> dof_scale;  // per DOF: 1 (forces) or 1/h (slope residuals, N·m → N)
+  int band = 11;                  // half bandwidth
   // Smallest force residual double precision can resolve: an element force
   // EA (|r'| − 1) with r' from coordinates of size R over a length h carries
   // an error ≈ ε EA R / h; ten times that is accepted as converged.
   double round_off_floor_N = 0.0;
 };
 
+void update_lengths(Problem& p) {
+  const auto& s = p.mesh.s;
+  for (std::size_t e = 0; e < p.elements.size(); ++e) p.elements[e].length_m = s[e + 1] - s[e];
+  for (int i = 0; i < p.n_nodes; ++i) {
+    const auto ui = static_cast<std::size_t>(i);
+    double sum = 0.0;
+    int cnt = 0;
+    if (i > 0) sum += s[ui] - s[ui - 1], ++cnt;
+    if (i + 1 < p.n_nodes) sum += s[ui + 1] - s[ui], ++cnt;
+    p.node_length_m[ui] = sum / cnt;
+    for (int k = 0; k < 3; ++k) {
+      p.dof_scale[static_cast<std::size_t>(p.t_in[ui] + k)] = 1.0 / p.node_length_m[ui];
+      p.dof_scale[static_cast<std::size_t>(p.t_out[ui] + k)] = 1.0 / p.node_length_m[ui];
+    }
+  }
+}
+
+/// First DOF of each 3-block of element e: r_a, r'_a, r_b, r'_b.
+std::array<int, 4> element_blocks(const Problem& p, std::size_t e) {
+  return {p.r_dof[e], p.t_out[e], p.r_dof[e + 1], p.t_in[e + 1]};
+}
+
+/// The element's 12 DOF values.
+Eigen::Matrix<double, kElementDofs, 1> gather(const Problem& p, const Eigen::VectorXd& q, std::size_t e) {
+  Eigen::Matrix<double, kElementDofs, 1> qe;
+  const auto b = element_blocks(p, e);
+  for (int k = 0; k < 4; ++k) qe.segment<3>(3 * k) = q.segment<3>(b[static_cast<std::size_t>(k)]);
+  return qe;
+}
+
 Problem make_problem(const FeLineModel& m, const FeEnvironment& env, const FeLineEnds& ends) {
   Problem p;
   p.mesh = build_mesh(m);
   p.n_nodes = static_cast<int>(p.mesh.s.size());
-  p.n_dofs = kDofPerNode * p.n_nodes;
   p.line_length_m = p.mesh.s.back();
   double u_max = 0.0;
   for (const auto& c : env.current) u_max = std::max(u_max, c.velocity_m_per_s.norm());
@@ -169,14 +204,41 @@ Problem make_problem(const FeLineModel& m, const FeEnvironment& env, const FeLin
     p.load_scale_N += ep.length_m * (std::abs(ep.weight_N_per_m) + ep.normal_drag_N_s2_per_m3 * u_max * u_max);
   }
   for (const auto& [node, f] : p.mesh.point_loads) p.load_scale_N += std::abs(f);
-  p.node_length_m.assign(static_cast<std::size_t>(p.n_nodes), 0.0);
-  for (int i = 0; i < p.n_nodes; ++i) {
-    double sum = 0.0;
-    int cnt = 0;
-    if (i > 0) sum += p.elements[static_cast<std::size_t>(i - 1)].length_m, ++cnt;
-    if (i + 1 < p.n_nodes) sum += p.elements[static_cast<std::size_t>(i)].length_m, ++cnt;
-    p.node_length_m[static_cast<std::size_t>(i)] = sum / cnt;
+  // Section joints are hinges with a slope on each side unless both sides
+  // bend (EI > 0): the stretch |r'| = 1 + T/EA jumps where EA does, and a
+  // clump or buoy kinks a cable; one shared slope would force a spurious
+  // strain on the elements next to the joint (0.15 % tension error on a
+  // chain–polyester line). Joints between two bending sections keep one
+  // slope, for moment continuity; their strain jump is then smeared over the
+  // adjacent elements, a local effect on risers whose EA varies little.
+  const auto n = static_cast<std::size_t>(p.n_nodes);
+  p.r_dof.resize(n);
+  p.t_in.resize(n);
+  p.t_out.resize(n);
+  int next = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    p.r_dof[i] = next;
+    p.t_in[i] = next + 3;
+    next += 6;
+    const bool joint = i > 0 && i + 1 < n && p.mesh.section[i - 1] != p.mesh.section[i];
+    const bool hinge = joint && !(p.elements[i - 1].EI_Nm2 > 0.0 && p.elements[i].EI_Nm2 > 0.0);
+    if (hinge) {
+      p.t_out[i] = next;
+      next += 3;
+      p.band = 14;  // r_a, r'_a in, r'_a out, r_b, r'_b: 15 DOFs
+    } else {
+      p.t_out[i] = p.t_in[i];
+    }
   }
+  p.n_dofs = next;
+  p.fixed.assign(static_cast<std::size_t>(next), 0);
+  for (int k = 0; k < 3; ++k) {
+    p.fixed[static_cast<std::size_t>(p.r_dof.front() + k)] = 1;
+    p.fixed[static_cast<std::size_t>(p.r_dof.back() + k)] = 1;
+  }
+  p.node_length_m.assign(n, 0.0);
+  p.dof_scale.assign(static_cast<std::size_t>(next), 1.0);
+  update_lengths(p);
   double coordinate_m = 0.0, ea_over_h = 0.0;
   for (const auto& e : p.elements) ea_over_h = std::max(ea_over_h, e.EA_N / e.length_m);
   coordinate_m = std::max({ends.end_A_m.cwiseAbs().maxCoeff(), ends.end_B_m.cwiseAbs().maxCoeff(), p.line_length_m});
@@ -187,34 +249,34 @@ Problem make_problem(const FeLineModel& m, const FeEnvironment& env, const FeLin
   return p;
 }
 
-bool is_fixed(const Problem& p, int dof) {
-  const int node = dof / kDofPerNode, local = dof % kDofPerNode;
-  return local < 3 && (node == 0 || node == p.n_nodes - 1);
-}
+bool is_fixed(const Problem& p, int dof) { return p.fixed[static_cast<std::size_t>(dof)] != 0; }
 
 /// Net generalised forces g(q) (6 per node) and, if jac != nullptr, the
 /// Jacobian ∂g/∂q in band storage. Returns false if a non-finite value appears.
 bool assemble(const Problem& p, const Eigen::VectorXd& q, Eigen::VectorXd& g, BandMatrix* jac) {
   g.setZero(p.n_dofs);
-  if (jac) *jac = BandMatrix(p.n_dofs, kBand, kBand);
+  if (jac) *jac = BandMatrix(p.n_dofs, p.band, p.band);
   for (std::size_t e = 0; e < p.elements.size(); ++e) {
-    const int base = kDofPerNode * static_cast<int>(e);
+    const auto blocks = element_blocks(p, e);
+    std::array<int, kElementDofs> dof;
+    for (int k = 0; k < kElementDofs; ++k) dof[k] = blocks[static_cast<std::size_t>(k / 3)] + k % 3;
     if (jac) {
       using D = Dual<kElementDofs>;
       std::array<D, kElementDofs> qd, gd;
-      for (int k = 0; k < kElementDofs; ++k) qd[k] = D::seed(q[base + k], k);
+      for (int k = 0; k < kElementDofs; ++k) qd[k] = D::seed(q[dof[k]], k);
       ancf::element_forces<D>(p.elements[e], p.load, qd.data(), gd.data());
       for (int i = 0; i < kElementDofs; ++i) {
-        g[base + i] += gd[i].v;
-        for (int j = 0; j < kElementDofs; ++j) jac->at(base + i, base + j) += gd[i].d[j];
+        g[dof[i]] += gd[i].v;
+        for (int j = 0; j < kElementDofs; ++j) jac->at(dof[i], dof[j]) += gd[i].d[j];
       }
     } else {
-      std::array<double, kElementDofs> ge;
-      ancf::element_forces<double>(p.elements[e], p.load, q.data() + base, ge.data());
-      for (int i = 0; i < kElementDofs; ++i) g[base + i] += ge[i];
+      std::array<double, kElementDofs> qe, ge;
+      for (int k = 0; k < kElementDofs; ++k) qe[k] = q[dof[k]];
+      ancf::element_forces<double>(p.elements[e], p.load, qe.data(), ge.data());
+      for (int i = 0; i < kElementDofs; ++i) g[dof[i]] += ge[i];
     }
   }
-  for (const auto& [node, f] : p.mesh.point_loads) g[kDofPerNode * node + 2] -= f;
+  for (const auto& [node, f] : p.mesh.point_loads) g[p.r_dof[static_cast<std::size_t>(node)] + 2] -= f;
   return g.allFinite();
 }
 
@@ -223,10 +285,7 @@ bool assemble(const Problem& p, const Eigen::VectorXd& q, Eigen::VectorXd& g, Ba
 double residual_norm(const Problem& p, const Eigen::VectorXd& g) {
   double r = 0.0;
   for (int i = 0; i < p.n_dofs; ++i) {
-    if (is_fixed(p, i)) continue;
-    const int node = i / kDofPerNode;
-    const double scale = (i % kDofPerNode) < 3 ? 1.0 : 1.0 / p.node_length_m[static_cast<std::size_t>(node)];
-    r = std::max(r, std::abs(g[i]) * scale);
+    if (!is_fixed(p, i)) r = std::max(r, std::abs(g[i]) * p.dof_scale[static_cast<std::size_t>(i)]);
   }
   return r;
 }
@@ -235,19 +294,18 @@ double merit(const Problem& p, const Eigen::VectorXd& g) {
   double m = 0.0;
   for (int i = 0; i < p.n_dofs; ++i) {
     if (is_fixed(p, i)) continue;
-    const int node = i / kDofPerNode;
-    const double scale = (i % kDofPerNode) < 3 ? 1.0 : 1.0 / p.node_length_m[static_cast<std::size_t>(node)];
-    m += (g[i] * scale) * (g[i] * scale);
+    const double f = g[i] * p.dof_scale[static_cast<std::size_t>(i)];
+    m += f * f;
   }
   return m;
 }
 
 double max_axial_force(const Problem& p, const Eigen::VectorXd& q) {
   double t = 0.0;
-  for (int i = 0; i < p.n_nodes; ++i) {
-    const double stretch = q.segment<3>(kDofPerNode * i + 3).norm();
-    const std::size_t e = static_cast<std::size_t>(std::min(i, p.n_nodes - 2));
-    t = std::max(t, std::abs(p.elements[e].EA_N * (stretch - 1.0)));
+  for (std::size_t e = 0; e < p.elements.size(); ++e) {
+    const double EA = p.elements[e].EA_N;
+    t = std::max(t, std::abs(EA * (q.segment<3>(p.t_out[e]).norm() - 1.0)));
+    t = std::max(t, std::abs(EA * (q.segment<3>(p.t_in[e + 1]).norm() - 1.0)));
   }
   return t;
 }
@@ -287,9 +345,9 @@ NewtonOutcome newton(const Problem& p, const FeStaticsOptions& o, Eigen::VectorX
     // by at most 0.5 per step (keeps |r'| away from 0, where the strain measure
     // and the tangent are undefined).
     double limit = 1.0;
-    for (int n = 0; n < p.n_nodes; ++n) {
-      const double dr = dq.segment<3>(kDofPerNode * n).norm();
-      const double dt = dq.segment<3>(kDofPerNode * n + 3).norm();
+    for (std::size_t n = 0; n < static_cast<std::size_t>(p.n_nodes); ++n) {
+      const double dr = dq.segment<3>(p.r_dof[n]).norm();
+      const double dt = std::max(dq.segment<3>(p.t_in[n]).norm(), dq.segment<3>(p.t_out[n]).norm());
       limit = std::min(limit, 0.1 * p.line_length_m / std::max(dr, 1e-300));
       limit = std::min(limit, 0.5 / std::max(dt, 1e-300));
     }
@@ -313,19 +371,6 @@ NewtonOutcome newton(const Problem& p, const FeStaticsOptions& o, Eigen::VectorX
     }
     q = q_trial;
     if (!assemble(p, q, g, &jac)) return out;
-  }
-}
-
-void update_lengths(Problem& p) {
-  const auto& s = p.mesh.s;
-  for (std::size_t e = 0; e < p.elements.size(); ++e) p.elements[e].length_m = s[e + 1] - s[e];
-  for (int i = 0; i < p.n_nodes; ++i) {
-    const auto ui = static_cast<std::size_t>(i);
-    double sum = 0.0;
-    int cnt = 0;
-    if (i > 0) sum += s[ui] - s[ui - 1], ++cnt;
-    if (i + 1 < p.n_nodes) sum += s[ui + 1] - s[ui], ++cnt;
-    p.node_length_m[ui] = sum / cnt;
   }
 }
 
@@ -360,53 +405,62 @@ Eigen::VectorXd initial_state(Problem& p, const FeLineModel& m, const FeEnvironm
     // Predictor: spread the end displacements along the line, linearly in arc
     // length, instead of moving the end nodes alone (which would strain the
     // end elements by the whole offset and cost Newton damped steps).
-    const Eigen::Vector3d dA = ends.end_A_m - q.segment<3>(0);
-    const Eigen::Vector3d dB = ends.end_B_m - q.segment<3>(kDofPerNode * (p.n_nodes - 1));
-    for (int i = 0; i < p.n_nodes; ++i) {
-      const double f = p.mesh.s[static_cast<std::size_t>(i)] / p.line_length_m;
-      q.segment<3>(kDofPerNode * i) += (1.0 - f) * dA + f * dB;
+    const Eigen::Vector3d dA = ends.end_A_m - q.segment<3>(p.r_dof.front());
+    const Eigen::Vector3d dB = ends.end_B_m - q.segment<3>(p.r_dof.back());
+    for (std::size_t i = 0; i < static_cast<std::size_t>(p.n_nodes); ++i) {
+      const double f = p.mesh.s[i] / p.line_length_m;
+      q.segment<3>(p.r_dof[i]) += (1.0 - f) * dA + f * dB;
     }
   } else {
     const InitialShape catenary = default_initial_shape(m, env, ends.end_A_m, ends.end_B_m);
     std::function<Eigen::Vector3d(double)> shape = o.initial_shape ? o.initial_shape : catenary.position_m;
-    for (int i = 0; i < p.n_nodes; ++i) {
-      const double s = p.mesh.s[static_cast<std::size_t>(i)];
-      q.segment<3>(kDofPerNode * i) = shape(s);
-    }
+    for (std::size_t i = 0; i < static_cast<std::size_t>(p.n_nodes); ++i) q.segment<3>(p.r_dof[i]) = shape(p.mesh.s[i]);
     // Slopes along the chords of the neighbouring nodes; stretch from the
     // chord/arc ratio (taut lines) or from the catenary tension H / cos θ
     // (capped at 10 H near vertical), whichever is larger.
     for (int i = 0; i < p.n_nodes; ++i) {
-      const int a = std::max(0, i - 1), b = std::min(p.n_nodes - 1, i + 1);
-      const Eigen::Vector3d chord = q.segment<3>(kDofPerNode * b) - q.segment<3>(kDofPerNode * a);
-      const double ds = p.mesh.s[static_cast<std::size_t>(b)] - p.mesh.s[static_cast<std::size_t>(a)];
+      const auto a = static_cast<std::size_t>(std::max(0, i - 1));
+      const auto b = static_cast<std::size_t>(std::min(p.n_nodes - 1, i + 1));
+      const auto ui = static_cast<std::size_t>(i);
+      const Eigen::Vector3d chord = q.segment<3>(p.r_dof[b]) - q.segment<3>(p.r_dof[a]);
+      const double ds = p.mesh.s[b] - p.mesh.s[a];
       const Eigen::Vector3d t = chord.normalized();
       const double cos_theta = std::max(std::hypot(t.x(), t.y()), 0.1);
-      const auto e = static_cast<std::size_t>(std::min(i, p.n_nodes - 2));
-      const double stretch = 1.0 + catenary.horizontal_tension_N / cos_theta / p.elements[e].EA_N;
-      q.segment<3>(kDofPerNode * i + 3) = t * std::max(stretch, chord.norm() / ds);
+      auto stretch = [&](std::size_t e) {
+        return std::max(1.0 + catenary.horizontal_tension_N / cos_theta / p.elements[e].EA_N, chord.norm() / ds);
+      };
+      q.segment<3>(p.t_in[ui]) = t * stretch(ui > 0 ? ui - 1 : 0);
+      q.segment<3>(p.t_out[ui]) = t * stretch(std::min(ui, p.elements.size() - 1));
     }
     if (!q.allFinite()) invalid("initial_shape: returned non-finite positions");
   }
   // The ends are where the caller holds them.
-  q.segment<3>(0) = ends.end_A_m;
-  q.segment<3>(kDofPerNode * (p.n_nodes - 1)) = ends.end_B_m;
+  q.segment<3>(p.r_dof.front()) = ends.end_A_m;
+  q.segment<3>(p.r_dof.back()) = ends.end_B_m;
   return q;
 }
 
-double curvature(const ancf::ShapeAt& sh, const Eigen::VectorXd& q, int base) {
+using ElementState = Eigen::Matrix<double, kElementDofs, 1>;
+
+double curvature(const ancf::ShapeAt& sh, const ElementState& qe) {
   Eigen::Vector3d a = Eigen::Vector3d::Zero(), b = Eigen::Vector3d::Zero();
   for (int k = 0; k < 4; ++k) {
-    a += sh.dS[k] * q.segment<3>(base + 3 * k);
-    b += sh.ddS[k] * q.segment<3>(base + 3 * k);
+    a += sh.dS[k] * qe.segment<3>(3 * k);
+    b += sh.ddS[k] * qe.segment<3>(3 * k);
   }
   return a.cross(b).norm() / std::pow(a.norm(), 3);
 }
 
-Eigen::Vector3d position(const ancf::ShapeAt& sh, const Eigen::VectorXd& q, int base) {
+Eigen::Vector3d position(const ancf::ShapeAt& sh, const ElementState& qe) {
   Eigen::Vector3d r = Eigen::Vector3d::Zero();
-  for (int k = 0; k < 4; ++k) r += sh.S[k] * q.segment<3>(base + 3 * k);
+  for (int k = 0; k < 4; ++k) r += sh.S[k] * qe.segment<3>(3 * k);
   return r;
+}
+
+Eigen::Vector3d slope(const ancf::ShapeAt& sh, const ElementState& qe) {
+  Eigen::Vector3d t = Eigen::Vector3d::Zero();
+  for (int k = 0; k < 4; ++k) t += sh.dS[k] * qe.segment<3>(3 * k);
+  return t;
 }
 
 // Penetrations below this fraction of the line length are round-off (an
@@ -419,19 +473,19 @@ std::optional<FeTouchdown> find_touchdown(const Problem& p, const Eigen::VectorX
   constexpr int kSamples = 64;  // per element, then bisection
   for (int e = static_cast<int>(p.elements.size()) - 1; e >= 0; --e) {
     const double L = p.elements[static_cast<std::size_t>(e)].length_m;
-    const int base = kDofPerNode * e;
+    const ElementState qe = gather(p, q, static_cast<std::size_t>(e));
     for (int j = kSamples; j >= 0; --j) {
       const double xi = static_cast<double>(j) / kSamples;
-      if (position(ancf::shape_at(xi, L), q, base).z() < zs - kContactRoundOff * p.line_length_m) {
+      if (position(ancf::shape_at(xi, L), qe).z() < zs - kContactRoundOff * p.line_length_m) {
         double lo = xi, hi = std::min(1.0, xi + 1.0 / kSamples);
         if (j == kSamples) hi = lo;
         for (int it = 0; it < 60 && hi - lo > 1e-12; ++it) {
           const double mid = 0.5 * (lo + hi);
-          (position(ancf::shape_at(mid, L), q, base).z() < zs - kContactRoundOff * p.line_length_m ? lo : hi) = mid;
+          (position(ancf::shape_at(mid, L), qe).z() < zs - kContactRoundOff * p.line_length_m ? lo : hi) = mid;
         }
         FeTouchdown td;
         td.arc_length_m = p.mesh.s[static_cast<std::size_t>(e)] + lo * L;
-        td.position_m = position(ancf::shape_at(lo, L), q, base);
+        td.position_m = position(ancf::shape_at(lo, L), qe);
         return td;
       }
     }
@@ -453,23 +507,24 @@ FeStaticsResult post_process(const Problem& p, const FeStaticsOptions& o, const 
   r.node_curvature_per_m.assign(static_cast<std::size_t>(nn), 0.0);
   r.node_bending_moment_Nm.assign(static_cast<std::size_t>(nn), 0.0);
   std::vector<int> count(static_cast<std::size_t>(nn), 0);
-  for (int i = 0; i < nn; ++i) {
-    const auto ui = static_cast<std::size_t>(i);
-    r.node_position_m[ui] = q.segment<3>(kDofPerNode * i);
-    r.node_force_residual_N[ui] = g.segment<3>(kDofPerNode * i);
-    const auto e = static_cast<std::size_t>(std::min(i, nn - 2));
-    r.node_tension_N[ui] = p.elements[e].EA_N * (q.segment<3>(kDofPerNode * i + 3).norm() - 1.0);
+  for (std::size_t i = 0; i < static_cast<std::size_t>(nn); ++i) {
+    r.node_position_m[i] = q.segment<3>(p.r_dof[i]);
+    r.node_force_residual_N[i] = g.segment<3>(p.r_dof[i]);
+    // Mean of the two sides' EA (|r'| − 1) (equal up to the discretisation;
+    // at a hinge joint each side has its own EA and slope).
+    double sum = 0.0;
+    int cnt = 0;
+    if (i > 0) sum += p.elements[i - 1].EA_N * (q.segment<3>(p.t_in[i]).norm() - 1.0), ++cnt;
+    if (i + 1 < static_cast<std::size_t>(nn)) sum += p.elements[i].EA_N * (q.segment<3>(p.t_out[i]).norm() - 1.0), ++cnt;
+    r.node_tension_N[i] = sum / cnt;
   }
   for (std::size_t e = 0; e < p.elements.size(); ++e) {
     const double L = p.elements[e].length_m;
-    const int base = kDofPerNode * static_cast<int>(e);
-    const auto mid = ancf::shape_at(0.5, L);
-    Eigen::Vector3d a = Eigen::Vector3d::Zero();
-    for (int k = 0; k < 4; ++k) a += mid.dS[k] * q.segment<3>(base + 3 * k);
-    r.element_tension_N.push_back(p.elements[e].EA_N * (a.norm() - 1.0));
+    const ElementState qe = gather(p, q, e);
+    r.element_tension_N.push_back(p.elements[e].EA_N * (slope(ancf::shape_at(0.5, L), qe).norm() - 1.0));
     for (int end = 0; end < 2; ++end) {
       const std::size_t node = e + static_cast<std::size_t>(end);
-      const double k = curvature(ancf::shape_at(end, L), q, base);
+      const double k = curvature(ancf::shape_at(end, L), qe);
       r.node_curvature_per_m[node] += k;
       r.node_bending_moment_Nm[node] += p.elements[e].EI_Nm2 * k;
       ++count[node];
@@ -484,13 +539,13 @@ FeStaticsResult post_process(const Problem& p, const FeStaticsOptions& o, const 
   r.end_B_force_N = r.node_force_residual_N.back();
   // End tensions: axial components of the end reactions (more accurate than
   // the strain of the free end slope, which converges more slowly).
-  r.node_tension_N.front() = r.end_A_force_N.dot(q.segment<3>(3).normalized());
-  r.node_tension_N.back() = -r.end_B_force_N.dot(q.segment<3>(kDofPerNode * (nn - 1) + 3).normalized());
+  r.node_tension_N.front() = r.end_A_force_N.dot(q.segment<3>(p.t_out.front()).normalized());
+  r.node_tension_N.back() = -r.end_B_force_N.dot(q.segment<3>(p.t_in.back()).normalized());
   r.touchdown = find_touchdown(p, q);
 
   if (o.compute_end_B_stiffness) {
     // Static condensation: K = J_bb − J_bf J_ff⁻¹ J_fb (b: end-B position DOFs).
-    const int b0 = kDofPerNode * (nn - 1);
+    const int b0 = p.r_dof.back();
     Eigen::Matrix<double, 3, Eigen::Dynamic> rows_b(3, p.n_dofs);
     rows_b.setZero();
     Eigen::MatrixXd cols_b = Eigen::MatrixXd::Zero(p.n_dofs, 3);
@@ -575,7 +630,7 @@ TouchdownTarget touchdown_node_target(const Problem& p, const Eigen::VectorXd& q
   std::size_t e = 0;
   while (e + 1 < p.elements.size() && p.mesh.s[e + 1] < s_lift) ++e;
   const auto& el = p.elements[e];
-  const double stretch = q.segment<3>(kDofPerNode * static_cast<int>(e) + 3).norm();
+  const double stretch = q.segment<3>(p.t_out[e]).norm();
   const double T = std::max(0.0, el.EA_N * (stretch - 1.0));
   const double cable_layer = std::sqrt(T / k);
   if (el.EI_Nm2 > 0.0) {
@@ -618,13 +673,9 @@ bool move_node_to(Problem& p, Eigen::VectorXd& q, double s_new, double tolerance
   const std::size_t e = s_new < s[ub] ? ub - 1 : ub;
   const double L = s[e + 1] - s[e];
   const auto sh = ancf::shape_at((s_new - s[e]) / L, L);
-  Eigen::Vector3d r = Eigen::Vector3d::Zero(), t = Eigen::Vector3d::Zero();
-  for (int k = 0; k < 4; ++k) {
-    r += sh.S[k] * q.segment<3>(kDofPerNode * static_cast<int>(e) + 3 * k);
-    t += sh.dS[k] * q.segment<3>(kDofPerNode * static_cast<int>(e) + 3 * k);
-  }
-  q.segment<3>(kDofPerNode * best) = r;
-  q.segment<3>(kDofPerNode * best + 3) = t;
+  const ElementState qe = gather(p, q, e);
+  q.segment<3>(p.r_dof[ub]) = position(sh, qe);
+  q.segment<3>(p.t_in[ub]) = slope(sh, qe);  // not a joint: t_in == t_out
   s[ub] = s_new;
   update_lengths(p);
   return true;
