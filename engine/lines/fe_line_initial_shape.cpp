@@ -1,9 +1,19 @@
 #include "engine/lines/fe_line_initial_shape.hpp"
 
+#include <optional>
+
+#include "engine/lines/catenary.hpp"
+
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace spiral::engine {
 namespace {
+
+// Dense enough that linear interpolation between profile points is far
+// inside Newton's convergence radius (chord error ≈ κ h²/8 ≈ mm).
+constexpr int kProfilePointsPerSegment = 200;
 
 /// Root of f on [lo, hi] by bisection, f(lo), f(hi) of opposite signs.
 template <typename F>
@@ -18,15 +28,10 @@ double bisect(F f, double lo, double hi) {
 
 }  // namespace
 
-InitialShape default_initial_shape(const FeLineModel& model,
-                                                            const FeEnvironment& environment,
-                                                            const Eigen::Vector3d& end_A_m,
-                                                            const Eigen::Vector3d& end_B_m) {
-  double L = 0.0, weight = 0.0;
-  for (const auto& s : model.sections) {
-    L += s.length_m;
-    weight += s.length_m * s.weight_N_per_m;
-  }
+/// Inextensible catenary of length L and mean weight w (sign: up/down) through
+/// A and B, as a function of the geometric arc length from A, and its H.
+static InitialShape inextensible_shape(double L, double weight, const FeEnvironment& environment,
+                                const Eigen::Vector3d& end_A_m, const Eigen::Vector3d& end_B_m) {
   const Eigen::Vector3d A = end_A_m, B = end_B_m;
   auto straight = [A, B, L](double s) -> Eigen::Vector3d { return A + (B - A) * (s / L); };
 
@@ -78,6 +83,98 @@ InitialShape default_initial_shape(const FeLineModel& model,
     const double u = std::asinh(s / a + s0);  // (x − x0)/a
     return to_global(x0 + a * u, a * (std::cosh(u) - c0));
   }, a * w};
+}
+
+/// The multi-segment elastic catenary (solve_catenary: per-section weight
+/// and EA, joint loads, seabed contact) as the start, when it has a solution:
+/// much closer than the one-weight shape for chain–polyester–chain lines,
+/// whose heavy ends hang differently. Empty if not applicable.
+std::optional<InitialShape> catenary_solver_shape(const FeLineModel& model, const FeEnvironment& environment,
+                                                  const Eigen::Vector3d& A, const Eigen::Vector3d& B) {
+  Eigen::Vector3d ex(B.x() - A.x(), B.y() - A.y(), 0.0);
+  const double X = ex.norm();
+  double L = 0.0;
+  CatenaryLine line;
+  for (const auto& s : model.sections) {
+    line.segments.push_back({s.length_m, s.weight_N_per_m, s.EA_N});
+    L += s.length_m;
+  }
+  if (X < 1e-3 * L) return std::nullopt;
+  ex /= X;
+  line.joint_load_N = model.joint_load_N;
+  CatenaryGeometry g;
+  g.horizontal_span_m = X;
+  g.vertical_span_m = B.z() - A.z();
+  // Without a seabed (or an anchor off it) the catenary must not see one.
+  const bool on_seabed = environment.seabed_stiffness_N_per_m2 > 0.0 &&
+                         A.z() <= environment.seabed_z_m + 1e-6 * L;
+  g.anchor_height_above_seabed_m = on_seabed ? 0.0 : std::max(1e6, 10.0 * L);
+  CatenaryOptions o;
+  o.profile_points_per_segment = kProfilePointsPerSegment;
+  CatenarySolution c;
+  try {
+    c = solve_catenary(line, g, o);
+  } catch (const SolverError&) {
+    return std::nullopt;  // e.g. slack or too short: the one-weight shape decides
+  }
+  if (c.profile.size() < 2 || c.regime == CatenaryRegime::slack_vertical) return std::nullopt;
+  std::vector<CatenaryProfilePoint> pts = c.profile;
+  std::stable_sort(pts.begin(), pts.end(),
+                   [](const auto& a, const auto& b) { return a.arc_length_m < b.arc_length_m; });
+  auto shape = [pts, A, ex](double s) -> Eigen::Vector3d {
+    auto it = std::lower_bound(pts.begin(), pts.end(), s,
+                               [](const CatenaryProfilePoint& p, double v) { return p.arc_length_m < v; });
+    if (it == pts.begin()) return A + pts.front().x_m * ex + Eigen::Vector3d(0, 0, pts.front().z_m);
+    if (it == pts.end()) it = pts.end() - 1;
+    const auto& p1 = *it;
+    const auto& p0 = *(it - 1);
+    const double ds = p1.arc_length_m - p0.arc_length_m;
+    const double f = ds > 0.0 ? (s - p0.arc_length_m) / ds : 1.0;
+    const double x = p0.x_m + f * (p1.x_m - p0.x_m), z = p0.z_m + f * (p1.z_m - p0.z_m);
+    return A + x * ex + Eigen::Vector3d(0.0, 0.0, z);
+  };
+  return InitialShape{shape, c.fairlead_horizontal_N};
+}
+
+InitialShape default_initial_shape(const FeLineModel& model, const FeEnvironment& environment,
+                                   const Eigen::Vector3d& end_A_m, const Eigen::Vector3d& end_B_m) {
+  if (auto c = catenary_solver_shape(model, environment, end_A_m, end_B_m)) return *c;
+  double L = 0.0, weight = 0.0;
+  for (const auto& s : model.sections) {
+    L += s.length_m;
+    weight += s.length_m * s.weight_N_per_m;
+  }
+  // First pass: inextensible, for the tension level H.
+  const InitialShape first = inextensible_shape(L, weight, environment, end_A_m, end_B_m);
+  if (first.horizontal_tension_N <= 0.0) return first;  // straight (taut) line: already consistent
+  // Second pass on the stretched length, each section stretched by H/EA, and
+  // node positions at the stretched arc length: positions and nodal slopes
+  // (taken from them) then agree, every element starts in tension. Slopes
+  // stretched on an unstretched shape instead would leave the element
+  // interiors in compression (the cubic between longer end tangents bulges)
+  // and Newton would crawl on an indefinite Jacobian.
+  std::vector<double> s_end, stretch;
+  double L_stretched = 0.0, s_acc = 0.0;
+  for (const auto& sec : model.sections) {
+    s_acc += sec.length_m;
+    s_end.push_back(s_acc);
+    stretch.push_back(1.0 + first.horizontal_tension_N / sec.EA_N);
+    L_stretched += sec.length_m * stretch.back();
+  }
+  const InitialShape second = inextensible_shape(L_stretched, weight, environment, end_A_m, end_B_m);
+  if (second.horizontal_tension_N <= 0.0) return first;
+  auto geometric_arc = [s_end, stretch](double s) {
+    double sigma = 0.0, s0 = 0.0;
+    for (std::size_t i = 0; i < s_end.size(); ++i) {
+      const double s1 = std::min(s, s_end[i]);
+      if (s1 > s0) sigma += (s1 - s0) * stretch[i];
+      s0 = s_end[i];
+      if (s <= s_end[i]) break;
+    }
+    return sigma;
+  };
+  auto pos = second.position_m;
+  return {[pos, geometric_arc](double s) { return pos(geometric_arc(s)); }, second.horizontal_tension_N};
 }
 
 }  // namespace spiral::engine

@@ -415,9 +415,11 @@ Eigen::VectorXd initial_state(Problem& p, const FeLineModel& m, const FeEnvironm
     const InitialShape catenary = default_initial_shape(m, env, ends.end_A_m, ends.end_B_m);
     std::function<Eigen::Vector3d(double)> shape = o.initial_shape ? o.initial_shape : catenary.position_m;
     for (std::size_t i = 0; i < static_cast<std::size_t>(p.n_nodes); ++i) q.segment<3>(p.r_dof[i]) = shape(p.mesh.s[i]);
-    // Slopes along the chords of the neighbouring nodes; stretch from the
-    // chord/arc ratio (taut lines) or from the catenary tension H / cos θ
-    // (capped at 10 H near vertical), whichever is larger.
+    // Slopes along the chords of the neighbouring nodes, with the chord/arc
+    // ratio as stretch: consistent with the positions (the default shape is
+    // laid out at its stretched arc length). A user shape may be
+    // inextensible, i.e. slack: then the stretch of the catenary tension
+    // H / cos θ (capped at 10 H near vertical) is imposed instead.
     for (int i = 0; i < p.n_nodes; ++i) {
       const auto a = static_cast<std::size_t>(std::max(0, i - 1));
       const auto b = static_cast<std::size_t>(std::min(p.n_nodes - 1, i + 1));
@@ -427,7 +429,8 @@ Eigen::VectorXd initial_state(Problem& p, const FeLineModel& m, const FeEnvironm
       const Eigen::Vector3d t = chord.normalized();
       const double cos_theta = std::max(std::hypot(t.x(), t.y()), 0.1);
       auto stretch = [&](std::size_t e) {
-        return std::max(1.0 + catenary.horizontal_tension_N / cos_theta / p.elements[e].EA_N, chord.norm() / ds);
+        const double from_tension = 1.0 + catenary.horizontal_tension_N / cos_theta / p.elements[e].EA_N;
+        return o.initial_shape ? std::max(from_tension, chord.norm() / ds) : chord.norm() / ds;
       };
       q.segment<3>(p.t_in[ui]) = t * stretch(ui > 0 ? ui - 1 : 0);
       q.segment<3>(p.t_out[ui]) = t * stretch(std::min(ui, p.elements.size() - 1));
@@ -682,6 +685,7 @@ bool move_node_to(Problem& p, Eigen::VectorXd& q, double s_new, double tolerance
 }
 
 constexpr int kFinalSnapPasses = 10;
+constexpr int kDirectAttemptIterations = 12;
 
 /// Touchdown node: move the nearest interior node onto the touchdown point
 /// and re-solve, until it stays put (touchdown_node_target). A cubic element
@@ -747,6 +751,25 @@ FeStaticsResult solve_fe_line_statics(const FeLineModel& model, const FeEnvironm
     if (!done) {
       p = make_problem(model, environment, ends);
       q = initial_state(p, model, environment, ends, FeStaticsOptions{});
+    }
+  }
+  if (!done && k_target > 0.0) {
+    // Direct attempt at the final seabed stiffness from the default shape
+    // (which already lies on the seabed where the catenary would): usually
+    // converges; a bounded number of iterations, then the continuation below.
+    const Eigen::VectorXd q0 = q;
+    FeStaticsOptions direct = options;
+    direct.max_iterations = std::min(options.max_iterations, kDirectAttemptIterations);
+    Counters trial;
+    last = solve_with_current_steps(p, direct, q, trial);
+    if (last.converged) last = snap_touchdown(p, options, q, trial, kFinalSnapPasses);
+    counters.iterations += trial.iterations;
+    counters.load_steps += trial.load_steps;
+    counters.remeshes += trial.remeshes;
+    done = last.converged;
+    if (!done) {
+      p = make_problem(model, environment, ends);
+      q = q0;
     }
   }
   if (!done) {
