@@ -12,6 +12,7 @@
 
 #include <array>
 #include <cmath>
+#include <type_traits>
 #include <vector>
 
 #include "engine/common/forward_dual.hpp"
@@ -35,6 +36,7 @@ struct LoadContext {
   double current_factor = 1.0;  ///< continuation factor on the current velocity
   double seabed_z_m = -1.0e30;
   double seabed_stiffness_N_per_m2 = 0.0;
+  bool drag_jacobian = true;  ///< include the drag's derivatives in Dual evaluations
 };
 
 template <typename T>
@@ -176,6 +178,27 @@ void add_seabed_contact(const ElementProperties& e, const LoadContext& ctx, cons
   }
 }
 
+/// Morison drag of the current on the line at rest, per unstretched length,
+/// on the stretched length |r'| ds (OrcaFlex / MoorDyn v2 convention, see
+/// fe_line_statics.hpp). With ctx.drag_jacobian false, a Dual evaluation
+/// returns the drag as a dead load (values only, zero derivatives).
+template <typename T>
+V3<T> drag_load(const ElementProperties& e, const LoadContext& ctx, const V3<T>& r, const V3<T>& a, const T& na) {
+  if (!ctx.drag_jacobian && !std::is_same_v<T, double>) {
+    const V3<double> rv{value_of(r.x), value_of(r.y), value_of(r.z)};
+    const V3<double> av{value_of(a.x), value_of(a.y), value_of(a.z)};
+    const V3<double> p = drag_load<double>(e, ctx, rv, av, value_of(na));
+    return {T(p.x), T(p.y), T(p.z)};
+  }
+  const V3<T> u = current_at<T>(ctx, r.z);
+  const V3<T> t = (1.0 / na) * a;
+  const T ut = dot(u, t);
+  const V3<T> un = u - ut * t;
+  const T abs_ut = value_of(ut) < 0.0 ? T(-ut) : ut;
+  return (e.normal_drag_N_s2_per_m3 * norm_c1(un) * na) * un +
+         (e.tangential_drag_N_s2_per_m3 * abs_ut * ut * na) * t;
+}
+
 /// Generalised forces on the 12 DOFs: external minus internal (the net force
 /// the element and its loads apply to its nodes). q, g: 12 entries each.
 template <typename T>
@@ -217,13 +240,7 @@ void element_forces(const ElementProperties& e, const LoadContext& ctx, const T*
         (e.normal_drag_N_s2_per_m3 > 0.0 || e.tangential_drag_N_s2_per_m3 > 0.0)) {
       // Morison drag of the current on the line at rest, on the stretched
       // length |r'| ds (OrcaFlex / MoorDyn v2 convention, see header).
-      const V3<T> u = current_at<T>(ctx, r.z);
-      const V3<T> t = (1.0 / na) * a;
-      const T ut = dot(u, t);
-      const V3<T> un = u - ut * t;
-      const T abs_ut = value_of(ut) < 0.0 ? T(-ut) : ut;
-      p = p + (e.normal_drag_N_s2_per_m3 * norm_c1(un) * na) * un +
-          (e.tangential_drag_N_s2_per_m3 * abs_ut * ut * na) * t;
+      p = p + drag_load<T>(e, ctx, r, a, na);
     }
     for (int k = 0; k < 4; ++k) {
       force[k] = force[k] + wds * (sh.S[k] * p - sh.dS[k] * fa - sh.ddS[k] * fb);

@@ -11,9 +11,8 @@
 namespace spiral::engine {
 namespace {
 
-// Dense enough that linear interpolation between profile points is far
-// inside Newton's convergence radius (chord error ≈ κ h²/8 ≈ mm).
-constexpr int kProfilePointsPerSegment = 200;
+constexpr int kMinProfilePoints = 200;
+constexpr int kMaxProfilePoints = 5000;
 
 /// Root of f on [lo, hi] by bisection, f(lo), f(hi) of opposite signs.
 template <typename F>
@@ -110,7 +109,12 @@ std::optional<InitialShape> catenary_solver_shape(const FeLineModel& model, cons
                          A.z() <= environment.seabed_z_m + 1e-6 * L;
   g.anchor_height_above_seabed_m = on_seabed ? 0.0 : std::max(1e6, 10.0 * L);
   CatenaryOptions o;
-  o.profile_points_per_segment = kProfilePointsPerSegment;
+  // Profile points ≈ every 0.1 m (200..5000 per segment): the nodal slopes
+  // are taken from the interpolated profile, and its chords must give the
+  // stretch to ≈ (Δ/a)² ≪ T/EA.
+  double longest = 0.0;
+  for (const auto& s : model.sections) longest = std::max(longest, s.length_m);
+  o.profile_points_per_segment = std::clamp(static_cast<int>(longest / 0.1), kMinProfilePoints, kMaxProfilePoints);
   CatenarySolution c;
   try {
     c = solve_catenary(line, g, o);

@@ -147,6 +147,7 @@ struct Problem {
   std::vector<char> fixed;        // per DOF: prescribed (end positions)
   std::vector<double> dof_scale;  // per DOF: 1 (forces) or 1/h (slope residuals, N·m → N)
   int band = 11;                  // half bandwidth
+  std::vector<double> EA_true_N;  // per element: the model's EA (elements[e].EA_N may be capped in a stage)
   // Smallest force residual double precision can resolve: an element force
   // EA (|r'| − 1) with r' from coordinates of size R over a length h carries
   // an error ≈ ε EA R / h; ten times that is accepted as converged.
@@ -201,6 +202,7 @@ Problem make_problem(const FeLineModel& m, const FeEnvironment& env, const FeLin
     ep.normal_drag_N_s2_per_m3 = 0.5 * rho * sec.drag_normal * sec.hydro_diameter_m;
     ep.tangential_drag_N_s2_per_m3 = 0.5 * rho * sec.drag_tangential * M_PI * sec.hydro_diameter_m;
     p.elements.push_back(ep);
+    p.EA_true_N.push_back(ep.EA_N);
     p.load_scale_N += ep.length_m * (std::abs(ep.weight_N_per_m) + ep.normal_drag_N_s2_per_m3 * u_max * u_max);
   }
   for (const auto& [node, f] : p.mesh.point_loads) p.load_scale_N += std::abs(f);
@@ -253,7 +255,10 @@ bool is_fixed(const Problem& p, int dof) { return p.fixed[static_cast<std::size_
 
 /// Net generalised forces g(q) (6 per node) and, if jac != nullptr, the
 /// Jacobian ∂g/∂q in band storage. Returns false if a non-finite value appears.
-bool assemble(const Problem& p, const Eigen::VectorXd& q, Eigen::VectorXd& g, BandMatrix* jac) {
+bool assemble(const Problem& p, const Eigen::VectorXd& q, Eigen::VectorXd& g, BandMatrix* jac,
+              bool drag_jacobian = true) {
+  ancf::LoadContext load = p.load;
+  load.drag_jacobian = drag_jacobian;
   g.setZero(p.n_dofs);
   if (jac) *jac = BandMatrix(p.n_dofs, p.band, p.band);
   for (std::size_t e = 0; e < p.elements.size(); ++e) {
@@ -264,7 +269,7 @@ bool assemble(const Problem& p, const Eigen::VectorXd& q, Eigen::VectorXd& g, Ba
       using D = Dual<kElementDofs>;
       std::array<D, kElementDofs> qd, gd;
       for (int k = 0; k < kElementDofs; ++k) qd[k] = D::seed(q[dof[k]], k);
-      ancf::element_forces<D>(p.elements[e], p.load, qd.data(), gd.data());
+      ancf::element_forces<D>(p.elements[e], load, qd.data(), gd.data());
       for (int i = 0; i < kElementDofs; ++i) {
         g[dof[i]] += gd[i].v;
         for (int j = 0; j < kElementDofs; ++j) jac->at(dof[i], dof[j]) += gd[i].d[j];
@@ -310,6 +315,12 @@ double max_axial_force(const Problem& p, const Eigen::VectorXd& q) {
   return t;
 }
 
+constexpr double kShortStep = 0.05;
+constexpr int kWatchdogSteps = 2;
+constexpr double kSevereStepLimit = 0.1;
+constexpr double kFirstAxialCap = 10.0;  // × the largest tension
+constexpr int kMaxShortSteps = 4;
+
 struct NewtonOutcome {
   bool converged = false;
   int iterations = 0;
@@ -317,8 +328,16 @@ struct NewtonOutcome {
   double scale_N = 0.0;
 };
 
-NewtonOutcome newton(const Problem& p, const FeStaticsOptions& o, Eigen::VectorXd& q) {
+/// Newton–Raphson with backtracking line search. With give_up_when_crawling,
+/// returns unconverged after kMaxShortSteps consecutive steps shorter than
+/// kShortStep of the Newton step: the linear step of a large rotation (a line
+/// swung by a cross current) stretches the line spuriously, the line search
+/// cuts it to a sliver, and Newton would crawl — the caller then continues the
+/// load in smaller increments instead.
+NewtonOutcome newton(const Problem& p, const FeStaticsOptions& o, Eigen::VectorXd& q,
+                     bool give_up_when_crawling = false) {
   NewtonOutcome out;
+  int short_steps = 0;
   Eigen::VectorXd g(p.n_dofs), g_trial(p.n_dofs), q_trial(p.n_dofs), dq(p.n_dofs);
   BandMatrix jac;
   if (!assemble(p, q, g, &jac)) return out;
@@ -344,18 +363,84 @@ NewtonOutcome newton(const Problem& p, const FeStaticsOptions& o, Eigen::VectorX
     // Step limits: nodes move at most a tenth of the line length, slopes change
     // by at most 0.5 per step (keeps |r'| away from 0, where the strain measure
     // and the tangent are undefined).
-    double limit = 1.0;
-    for (std::size_t n = 0; n < static_cast<std::size_t>(p.n_nodes); ++n) {
-      const double dr = dq.segment<3>(p.r_dof[n]).norm();
-      const double dt = std::max(dq.segment<3>(p.t_in[n]).norm(), dq.segment<3>(p.t_out[n]).norm());
-      limit = std::min(limit, 0.1 * p.line_length_m / std::max(dr, 1e-300));
-      limit = std::min(limit, 0.5 / std::max(dt, 1e-300));
+    auto step_limit = [&p](const Eigen::VectorXd& d) {
+      double limit = 1.0;
+      for (std::size_t n = 0; n < static_cast<std::size_t>(p.n_nodes); ++n) {
+        const double dr = d.segment<3>(p.r_dof[n]).norm();
+        const double dt = std::max(d.segment<3>(p.t_in[n]).norm(), d.segment<3>(p.t_out[n]).norm());
+        limit = std::min(limit, 0.1 * p.line_length_m / std::max(dr, 1e-300));
+        limit = std::min(limit, 0.5 / std::max(dt, 1e-300));
+      }
+      return limit;
+    };
+    double limit = step_limit(dq);
+    if (limit < kSevereStepLimit && p.load.current != nullptr && !p.load.current->empty() &&
+        p.load.current_factor > 0.0) {
+      // A near-singular tangent: the drag's dependence on the line's
+      // orientation (a follower-load stiffness, not symmetric) can cancel the
+      // small swing stiffness that gravity gives a hanging line, so the
+      // Newton step explodes. Far from equilibrium, step with the drag held
+      // as a dead load instead (structure + gravity + seabed tangent); the
+      // full tangent returns, with quadratic convergence, once steps are sane.
+      BandMatrix jac_dead;
+      Eigen::VectorXd g_dead(p.n_dofs), dq_dead(p.n_dofs);
+      if (assemble(p, q, g_dead, &jac_dead, false)) {
+        for (int i = 0; i < p.n_dofs; ++i) {
+          if (is_fixed(p, i)) jac_dead.set_identity_row(i);
+        }
+        dq_dead = -g;
+        for (int i = 0; i < p.n_dofs; ++i) {
+          if (is_fixed(p, i)) dq_dead[i] = 0.0;
+        }
+        if (jac_dead.factorize()) {
+          jac_dead.solve_in_place(dq_dead);
+          if (dq_dead.allFinite() && step_limit(dq_dead) > limit) {
+            dq = dq_dead;
+            limit = step_limit(dq);
+            jac = std::move(jac_dead);
+          }
+        }
+      }
     }
-    // Backtracking line search on the scaled residual (Armijo, halving).
+    // Step acceptance: the full step if it descends (Armijo on the scaled
+    // residual); else a watchdog (Chamberlain et al., Math. Prog. Study 16,
+    // 1982): up to kWatchdogSteps more full Newton steps, kept if the residual
+    // has come below the starting one by then — the full step of a large
+    // rotation leaves a spurious axial strain (≈ θ²/2 times EA) that makes
+    // the residual jump although the step is right, and the next Newton step
+    // removes it; else back to the starting point and backtracking (halving).
     const double m0 = merit(p, g);
     double alpha = limit;
     bool accepted = false;
-    for (int ls = 0; ls < 30; ++ls, alpha *= 0.5) {
+    q_trial = q + limit * dq;
+    const bool full_ok = assemble(p, q_trial, g_trial, nullptr);
+    if (full_ok && merit(p, g_trial) <= (1.0 - 1e-4 * limit) * m0) {
+      accepted = true;
+    } else if (full_ok && limit == 1.0) {
+      Eigen::VectorXd q_w = q_trial, g_w(p.n_dofs), dq_w(p.n_dofs);
+      BandMatrix jac_w;
+      for (int k = 0; k < kWatchdogSteps && !accepted; ++k) {
+        if (!assemble(p, q_w, g_w, &jac_w)) break;
+        for (int i = 0; i < p.n_dofs; ++i) {
+          if (is_fixed(p, i)) jac_w.set_identity_row(i);
+        }
+        dq_w = -g_w;
+        for (int i = 0; i < p.n_dofs; ++i) {
+          if (is_fixed(p, i)) dq_w[i] = 0.0;
+        }
+        if (!jac_w.factorize()) break;
+        jac_w.solve_in_place(dq_w);
+        if (!dq_w.allFinite()) break;
+        q_w += dq_w;
+        ++it;  // a Newton iteration spent
+        if (assemble(p, q_w, g_w, nullptr) && merit(p, g_w) <= (1.0 - 1e-4) * m0) {
+          q_trial = q_w;
+          g_trial = g_w;
+          accepted = true;
+        }
+      }
+    }
+    for (int ls = 0; !accepted && ls < 30; ++ls, alpha *= 0.5) {
       q_trial = q + alpha * dq;
       if (!assemble(p, q_trial, g_trial, nullptr)) continue;
       if (merit(p, g_trial) <= (1.0 - 1e-4 * alpha) * m0) {
@@ -370,6 +455,11 @@ NewtonOutcome newton(const Problem& p, const FeStaticsOptions& o, Eigen::VectorX
       return out;
     }
     q = q_trial;
+    short_steps = alpha < kShortStep ? short_steps + 1 : 0;
+    if (give_up_when_crawling && short_steps >= kMaxShortSteps) {
+      out.residual_N = residual_norm(p, g_trial);
+      return out;
+    }
     if (!assemble(p, q, g, &jac)) return out;
   }
 }
@@ -415,25 +505,36 @@ Eigen::VectorXd initial_state(Problem& p, const FeLineModel& m, const FeEnvironm
     const InitialShape catenary = default_initial_shape(m, env, ends.end_A_m, ends.end_B_m);
     std::function<Eigen::Vector3d(double)> shape = o.initial_shape ? o.initial_shape : catenary.position_m;
     for (std::size_t i = 0; i < static_cast<std::size_t>(p.n_nodes); ++i) q.segment<3>(p.r_dof[i]) = shape(p.mesh.s[i]);
-    // Slopes along the chords of the neighbouring nodes, with the chord/arc
-    // ratio as stretch: consistent with the positions (the default shape is
-    // laid out at its stretched arc length). A user shape may be
-    // inextensible, i.e. slack: then the stretch of the catenary tension
-    // H / cos θ (capped at 10 H near vertical) is imposed instead.
-    for (int i = 0; i < p.n_nodes; ++i) {
-      const auto a = static_cast<std::size_t>(std::max(0, i - 1));
-      const auto b = static_cast<std::size_t>(std::min(p.n_nodes - 1, i + 1));
-      const auto ui = static_cast<std::size_t>(i);
-      const Eigen::Vector3d chord = q.segment<3>(p.r_dof[b]) - q.segment<3>(p.r_dof[a]);
-      const double ds = p.mesh.s[b] - p.mesh.s[a];
-      const Eigen::Vector3d t = chord.normalized();
-      const double cos_theta = std::max(std::hypot(t.x(), t.y()), 0.1);
-      auto stretch = [&](std::size_t e) {
-        const double from_tension = 1.0 + catenary.horizontal_tension_N / cos_theta / p.elements[e].EA_N;
-        return o.initial_shape ? std::max(from_tension, chord.norm() / ds) : chord.norm() / ds;
-      };
-      q.segment<3>(p.t_in[ui]) = t * stretch(ui > 0 ? ui - 1 : 0);
-      q.segment<3>(p.t_out[ui]) = t * stretch(std::min(ui, p.elements.size() - 1));
+    // Slopes: the derivative of the shape with respect to unstretched arc
+    // length (central difference), which carries the stretch of a shape laid
+    // out at its stretched length (the default ones are). Stretch and
+    // positions must agree to ≪ T/EA, or the elements start in compression
+    // and Newton crawls on an indefinite Jacobian. A user shape may be
+    // inextensible (slack): then the stretch of the catenary tension H / cos θ
+    // (capped at 10 H near vertical) is imposed if larger.
+    const double delta = 1e-6 * p.line_length_m;
+    for (std::size_t i = 0; i < static_cast<std::size_t>(p.n_nodes); ++i) {
+      const double s0 = std::max(0.0, p.mesh.s[i] - delta), s1 = std::min(p.line_length_m, p.mesh.s[i] + delta);
+      // One-sided at section joints (the stretch jumps with EA there).
+      const bool joint = i > 0 && i + 1 < static_cast<std::size_t>(p.n_nodes) && p.t_in[i] != p.t_out[i];
+      const Eigen::Vector3d d_in = (shape(p.mesh.s[i]) - shape(s0)) / (p.mesh.s[i] - s0 > 0 ? p.mesh.s[i] - s0 : 1.0);
+      const Eigen::Vector3d d_out = (shape(s1) - shape(p.mesh.s[i])) / (s1 - p.mesh.s[i] > 0 ? s1 - p.mesh.s[i] : 1.0);
+      const Eigen::Vector3d central = (shape(s1) - shape(s0)) / (s1 - s0);
+      Eigen::Vector3d t_in = joint ? d_in : central, t_out = joint ? d_out : central;
+      if (i == 0) t_in = t_out = d_out;
+      if (i + 1 == static_cast<std::size_t>(p.n_nodes)) t_in = t_out = d_in;
+      if (o.initial_shape) {
+        auto seeded = [&](const Eigen::Vector3d& t, std::size_t e) {
+          const Eigen::Vector3d u = t.normalized();
+          const double cos_theta = std::max(std::hypot(u.x(), u.y()), 0.1);
+          const double stretch = 1.0 + catenary.horizontal_tension_N / cos_theta / p.elements[e].EA_N;
+          return Eigen::Vector3d(u * std::max(stretch, t.norm()));
+        };
+        t_in = seeded(t_in, i > 0 ? i - 1 : 0);
+        t_out = seeded(t_out, std::min(i, p.elements.size() - 1));
+      }
+      q.segment<3>(p.t_in[i]) = t_in;
+      q.segment<3>(p.t_out[i]) = t_out;
     }
     if (!q.allFinite()) invalid("initial_shape: returned non-finite positions");
   }
@@ -580,17 +681,18 @@ struct Counters {
 /// Newton at the full current; if that fails, continuation on the current
 /// factor from 0 with adaptive steps (the drag load is what moves the line far
 /// from its initial shape).
-NewtonOutcome solve_with_current_steps(Problem& p, const FeStaticsOptions& o, Eigen::VectorXd& q,
-                                       Counters& counters) {
-  const Eigen::VectorXd q_start = q;
-  p.load.current_factor = 1.0;
-  NewtonOutcome last = newton(p, o, q);
-  counters.iterations += last.iterations;
-  ++counters.load_steps;
-  if (last.converged || p.load.current == nullptr || p.load.current->empty()) return last;
-  q = q_start;
+/// Caps every element's EA at cap_N (infinity restores the model's EA).
+void cap_axial_stiffness(Problem& p, double cap_N) {
+  for (std::size_t e = 0; e < p.elements.size(); ++e) p.elements[e].EA_N = std::min(p.EA_true_N[e], cap_N);
+}
+
+/// Continuation on the current velocity factor λ (drag ∝ λ²) from the state
+/// converged at λ = 0: steps grow by half after a success, halve after a
+/// failure. Leaves current_factor at 1.
+NewtonOutcome current_continuation(Problem& p, const FeStaticsOptions& o, Eigen::VectorXd& q,
+                                   Counters& counters) {
   p.load.current_factor = 0.0;
-  last = newton(p, o, q);
+  NewtonOutcome last = newton(p, o, q);
   counters.iterations += last.iterations;
   ++counters.load_steps;
   double lambda = 0.0, step = 0.25;
@@ -598,11 +700,12 @@ NewtonOutcome solve_with_current_steps(Problem& p, const FeStaticsOptions& o, Ei
   while (last.converged && lambda < 1.0) {
     const Eigen::VectorXd q_prev = q;
     p.load.current_factor = std::min(1.0, lambda + step);
-    last = newton(p, o, q);
+    last = newton(p, o, q, true);
     counters.iterations += last.iterations;
     ++counters.load_steps;
     if (last.converged) {
       lambda = p.load.current_factor;
+      step *= 1.5;
     } else if (halvings < o.max_load_step_halvings) {
       q = q_prev;
       step *= 0.5;
@@ -612,6 +715,49 @@ NewtonOutcome solve_with_current_steps(Problem& p, const FeStaticsOptions& o, Ei
   }
   p.load.current_factor = 1.0;
   return last;
+}
+
+/// Newton at the full current; if it crawls or fails:
+/// (1) current continuation with EA capped at kFirstAxialCap × the largest
+///     tension, then the cap raised ×10 per stage to the model's EA at full
+///     current. Why: a current swings the line through a large angle θ, and
+///     Newton's linear step for a rotation stretches the elements by ≈ θ²/2;
+///     with EA ≫ T that spurious strain dominates the residual and the line
+///     search cuts the step to ≈ √(2T/EA)/θ of itself (0.01 rad per step for a
+///     flexible riser). With EA ≈ 10 T a step can turn the line by ≈ 0.5 rad;
+///     raising EA afterwards changes the shape only by the stretch.
+/// (2) if that fails, current continuation with the model's EA.
+NewtonOutcome solve_with_current_steps(Problem& p, const FeStaticsOptions& o, Eigen::VectorXd& q,
+                                       Counters& counters) {
+  const bool has_current = p.load.current != nullptr && !p.load.current->empty();
+  const Eigen::VectorXd q_start = q;
+  p.load.current_factor = 1.0;
+  NewtonOutcome last = newton(p, o, q, has_current);
+  counters.iterations += last.iterations;
+  ++counters.load_steps;
+  if (last.converged || !has_current) return last;
+
+  q = q_start;
+  const double T_start = max_axial_force(p, q_start);
+  const double T_ref = T_start > 0.0 ? T_start : p.load_scale_N;
+  const double EA_max = *std::max_element(p.EA_true_N.begin(), p.EA_true_N.end());
+  FeStaticsOptions loose = o;
+  loose.relative_force_tolerance = std::max(o.relative_force_tolerance, 1e-6);
+  cap_axial_stiffness(p, kFirstAxialCap * T_ref);
+  last = current_continuation(p, loose, q, counters);
+  for (double cap = 10.0 * kFirstAxialCap * T_ref; last.converged; cap *= 10.0) {
+    const bool final_stage = cap >= EA_max;
+    cap_axial_stiffness(p, final_stage ? INFINITY : cap);
+    last = newton(p, final_stage ? o : loose, q, true);
+    counters.iterations += last.iterations;
+    ++counters.load_steps;
+    if (final_stage) break;
+  }
+  cap_axial_stiffness(p, INFINITY);
+  if (last.converged) return last;
+
+  q = q_start;
+  return current_continuation(p, o, q, counters);
 }
 
 struct TouchdownTarget {
