@@ -12,7 +12,7 @@ namespace spiral::engine {
 namespace {
 
 constexpr int kMinProfilePoints = 200;
-constexpr int kMaxProfilePoints = 5000;
+constexpr int kMaxProfilePoints = 2000;
 
 /// Root of f on [lo, hi] by bisection, f(lo), f(hi) of opposite signs.
 template <typename F>
@@ -109,7 +109,7 @@ std::optional<InitialShape> catenary_solver_shape(const FeLineModel& model, cons
                          A.z() <= environment.seabed_z_m + 1e-6 * L;
   g.anchor_height_above_seabed_m = on_seabed ? 0.0 : std::max(1e6, 10.0 * L);
   CatenaryOptions o;
-  // Profile points ≈ every 0.1 m (200..5000 per segment): the nodal slopes
+  // Profile points ≈ every 0.1 m (200..2000 per segment): the nodal slopes
   // are taken from the interpolated profile, and its chords must give the
   // stretch to ≈ (Δ/a)² ≪ T/EA.
   double longest = 0.0;
