@@ -263,5 +263,77 @@ TEST(FeStatics, MeshHonoursSectionsAndRefinementZone) {
   }
 }
 
+// A strong cross current swings a flexible riser through a large angle: the
+// solver must get there (continuations) and every node must balance.
+TEST(FeStatics, StrongCrossCurrentOnAFlexibleRiserConverges) {
+  constexpr double kEquilibrium = 1e-8;  // nodal residual / largest tension (Newton stops at 1e-10)
+  FeLineSection s;
+  s.length_m = 170.0;
+  s.EA_N = 5e8;
+  s.EI_Nm2 = 120.8e3;
+  s.mass_kg_per_m = 165.0;
+  s.weight_N_per_m = (165.0 - 1000.0 * M_PI / 4.0 * 0.396 * 0.396) * 9.807;
+  s.hydro_diameter_m = 0.396;
+  s.drag_normal = 1.2;
+  s.element_length_m = 5.0;
+  FeLineModel m;
+  m.sections = {s};
+  FeEnvironment env;
+  env.water_density_kg_per_m3 = 1000.0;
+  env.current = {{-150.0, {0.0, 2.0, 0.0}}, {0.0, {0.0, 2.0, 0.0}}};  // 2 m/s across the riser's plane
+  const auto r = solve_fe_line_statics(m, env, FeLineEnds{{0, 0, -100}, {100, 0, -50}});
+  double t_max = 0.0, f_max = 0.0, y_max = 0.0;
+  for (double t : r.node_tension_N) t_max = std::max(t_max, std::abs(t));
+  for (std::size_t i = 1; i + 1 < r.node_position_m.size(); ++i) {
+    f_max = std::max(f_max, r.node_force_residual_N[i].norm());
+    y_max = std::max(y_max, r.node_position_m[i].y());
+  }
+  EXPECT_LT(f_max / t_max, kEquilibrium);
+  EXPECT_GT(y_max, 20.0);  // swung well out of its plane, m
+  EXPECT_GT(r.end_A_force_N.y(), 0.0);
+  EXPECT_GT(r.end_B_force_N.y(), 0.0);
+}
+
+// Lazy-wave riser: riser – 400 m buoyancy section (net uplift) – riser. The
+// buoyancy section arches up (hog bend) above the sag bend that follows it
+// towards the vessel; the joints are
+// bending joints (one shared slope).
+TEST(FeStatics, LazyWaveRiserFormsItsHogBend) {
+  constexpr double od = 0.2731, E = 207e9, id = od - 2 * 0.0254, g = 9.80665;
+  const double a_steel = M_PI / 4.0 * (od * od - id * id);
+  const double w = (7850.0 * a_steel + 800.0 * M_PI / 4.0 * id * id - 1025.0 * M_PI / 4.0 * od * od) * g;
+  const double EI = E * M_PI / 64.0 * (std::pow(od, 4) - std::pow(id, 4));
+  auto section = [&](double length_m, double weight_N_per_m, double d_m, double h_m) {
+    FeLineSection s;
+    s.length_m = length_m;
+    s.EA_N = E * a_steel;
+    s.EI_Nm2 = EI;
+    s.mass_kg_per_m = 200.0;
+    s.weight_N_per_m = weight_N_per_m;
+    s.hydro_diameter_m = d_m;
+    s.drag_normal = 1.0;
+    s.element_length_m = h_m;
+    return s;
+  };
+  FeLineModel m;
+  m.sections = {section(1500.0, w, od, 20.0), section(400.0, -1500.0, 0.8, 10.0), section(1400.0, w, od, 20.0)};
+  FeEnvironment env;
+  env.seabed_z_m = -1800.0;
+  env.seabed_stiffness_N_per_m2 = 1e7;
+  const auto r = solve_fe_line_statics(m, env, FeLineEnds{{-1900, 0, -1800}, {0, 0, -20}});
+  // Highest point of the buoyancy section and lowest point of the riser
+  // section above it (the sag bend) — the hump stands above the sag.
+  double z_hog = -INFINITY, z_sag = INFINITY;
+  for (std::size_t i = 0; i < r.node_position_m.size(); ++i) {
+    const double s = r.node_arc_length_m[i];
+    if (s > 1500.0 && s < 1900.0) z_hog = std::max(z_hog, r.node_position_m[i].z());
+    if (s > 1900.0 && s < 2300.0) z_sag = std::min(z_sag, r.node_position_m[i].z());
+  }
+  EXPECT_GT(z_hog, z_sag + 10.0);
+  ASSERT_TRUE(r.touchdown.has_value());
+  EXPECT_LT(r.touchdown->arc_length_m, 1500.0);
+  for (double t : r.node_tension_N) EXPECT_TRUE(std::isfinite(t));
+}
+
 }  // namespace
 }  // namespace spiral::engine
