@@ -1,0 +1,85 @@
+#include "engine/common/banded_lu.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+namespace spiral::engine {
+
+BandMatrix::BandMatrix(int n, int kl, int ku)
+    : n_(n), kl_(kl), ku_(ku), kv_(kl + ku), ld_(2 * kl + ku + 1),
+      ab_(static_cast<std::size_t>(ld_) * static_cast<std::size_t>(n), 0.0) {}
+
+void BandMatrix::set_identity_row(int i) {
+  for (int j = std::max(0, i - kl_); j <= std::min(n_ - 1, i + ku_); ++j) at(i, j) = 0.0;
+  at(i, i) = 1.0;
+}
+
+Eigen::VectorXd BandMatrix::multiply(const Eigen::VectorXd& x) const {
+  Eigen::VectorXd y = Eigen::VectorXd::Zero(n_);
+  for (int j = 0; j < n_; ++j) {
+    for (int i = std::max(0, j - ku_); i <= std::min(n_ - 1, j + kl_); ++i) y[i] += at(i, j) * x[j];
+  }
+  return y;
+}
+
+// dgbtf2, 0-based.
+bool BandMatrix::factorize() {
+  ipiv_.assign(static_cast<std::size_t>(n_), 0);
+  int ju = 0;
+  bool ok = true;
+  for (int j = 0; j < n_; ++j) {
+    const int km = std::min(kl_, n_ - 1 - j);
+    int jp = 0;
+    double best = std::abs(at(j, j));
+    for (int p = 1; p <= km; ++p) {
+      if (std::abs(at(j + p, j)) > best) {
+        best = std::abs(at(j + p, j));
+        jp = p;
+      }
+    }
+    ipiv_[static_cast<std::size_t>(j)] = j + jp;
+    if (best == 0.0) {
+      ok = false;
+      continue;
+    }
+    ju = std::max(ju, std::min(j + ku_ + jp, n_ - 1));
+    if (jp != 0) {
+      for (int c = j; c <= ju; ++c) std::swap(at(j, c), at(j + jp, c));
+    }
+    if (km > 0) {
+      const double inv = 1.0 / at(j, j);
+      for (int i = 1; i <= km; ++i) at(j + i, j) *= inv;
+      for (int c = j + 1; c <= ju; ++c) {
+        const double u = at(j, c);
+        if (u == 0.0) continue;
+        for (int i = 1; i <= km; ++i) at(j + i, c) -= at(j + i, j) * u;
+      }
+    }
+  }
+  return ok;
+}
+
+void BandMatrix::solve_in_place(Eigen::Ref<Eigen::VectorXd> b) const {
+  for (int j = 0; j < n_; ++j) {
+    const int l = ipiv_[static_cast<std::size_t>(j)];
+    if (l != j) std::swap(b[l], b[j]);
+    const int km = std::min(kl_, n_ - 1 - j);
+    for (int i = 1; i <= km; ++i) b[j + i] -= at(j + i, j) * b[j];
+  }
+  for (int j = n_ - 1; j >= 0; --j) {
+    b[j] /= at(j, j);
+    for (int i = std::max(0, j - kv_); i < j; ++i) b[i] -= at(i, j) * b[j];
+  }
+}
+
+double BandMatrix::pivot_ratio() const {
+  double lo = INFINITY, hi = 0.0;
+  for (int j = 0; j < n_; ++j) {
+    lo = std::min(lo, std::abs(at(j, j)));
+    hi = std::max(hi, std::abs(at(j, j)));
+  }
+  return hi > 0.0 ? lo / hi : 0.0;
+}
+
+}  // namespace spiral::engine

@@ -1,0 +1,257 @@
+#pragma once
+// Generalised nodal forces of one ANCF cable/beam element (internal to the FE
+// line statics; see fe_line_statics.hpp for the formulation and conventions).
+//
+// DOFs, 12: [r_a, r'_a, r_b, r'_b] (positions in m, slopes dimensionless, the
+// derivative with respect to unstretched arc length). The kernel is a template
+// on the scalar type: `double` for residuals, `Dual<12>` for exact Jacobians.
+//
+// Shape functions (cubic Hermite on ξ = s/L ∈ [0, 1]; Gerstmayr & Shabana 2006,
+// eq. 4 in arc-length form):
+//   S1 = 1 − 3ξ² + 2ξ³, S2 = L(ξ − 2ξ² + ξ³), S3 = 3ξ² − 2ξ³, S4 = L(ξ³ − ξ²).
+
+#include <array>
+#include <cmath>
+#include <type_traits>
+#include <vector>
+
+#include "engine/common/forward_dual.hpp"
+#include "engine/lines/fe_line_statics.hpp"
+
+namespace spiral::engine::ancf {
+
+/// Properties of one element (copied from its section).
+struct ElementProperties {
+  double length_m = 0.0;
+  double EA_N = 0.0;
+  double EI_Nm2 = 0.0;
+  double weight_N_per_m = 0.0;
+  double normal_drag_N_s2_per_m3 = 0.0;      ///< ½ ρ Cdn D, force per length per (m/s)²
+  double tangential_drag_N_s2_per_m3 = 0.0;  ///< ½ ρ Cdt π D
+};
+
+/// What the distributed loads depend on besides the element DOFs.
+struct LoadContext {
+  const std::vector<CurrentProfilePoint>* current = nullptr;  ///< may be empty
+  double current_factor = 1.0;  ///< continuation factor on the current velocity
+  double seabed_z_m = -1.0e30;
+  double seabed_stiffness_N_per_m2 = 0.0;
+  bool drag_jacobian = true;  ///< include the drag's derivatives in Dual evaluations
+};
+
+template <typename T>
+struct V3 {
+  T x, y, z;
+};
+template <typename T>
+inline V3<T> operator+(const V3<T>& a, const V3<T>& b) {
+  return {a.x + b.x, a.y + b.y, a.z + b.z};
+}
+template <typename T>
+inline V3<T> operator-(const V3<T>& a, const V3<T>& b) {
+  return {a.x - b.x, a.y - b.y, a.z - b.z};
+}
+template <typename T, typename S>
+inline V3<T> operator*(const S& s, const V3<T>& a) {
+  return {s * a.x, s * a.y, s * a.z};
+}
+template <typename T>
+inline T dot(const V3<T>& a, const V3<T>& b) {
+  return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+
+/// |v| with a zero derivative at v = 0 (where |v|·v, the only use here, has
+/// derivative 0): the quadratic drag law is C¹ there.
+template <typename T>
+inline T norm_c1(const V3<T>& v) {
+  const T s = dot(v, v);
+  if (value_of(s) <= 0.0) return T(0.0);
+  using std::sqrt;
+  return sqrt(s);
+}
+
+/// Current velocity at height z: linear in z, constant beyond the table.
+template <typename T>
+inline V3<T> current_at(const LoadContext& ctx, const T& z) {
+  const auto& c = *ctx.current;
+  const double f = ctx.current_factor;
+  auto constant = [f](const Eigen::Vector3d& u) {
+    return V3<T>{T(f * u.x()), T(f * u.y()), T(f * u.z())};
+  };
+  if (c.empty()) return constant(Eigen::Vector3d::Zero());
+  const double zv = value_of(z);
+  if (zv <= c.front().z_m) return constant(c.front().velocity_m_per_s);
+  if (zv >= c.back().z_m) return constant(c.back().velocity_m_per_s);
+  std::size_t i = 1;
+  while (c[i].z_m < zv) ++i;
+  const auto& p0 = c[i - 1];
+  const auto& p1 = c[i];
+  const Eigen::Vector3d slope = f * (p1.velocity_m_per_s - p0.velocity_m_per_s) / (p1.z_m - p0.z_m);
+  const Eigen::Vector3d u0 = f * p0.velocity_m_per_s;
+  const T dz = z - p0.z_m;
+  return {u0.x() + slope.x() * dz, u0.y() + slope.y() * dz, u0.z() + slope.z() * dz};
+}
+
+/// 5-point Gauss–Legendre rule on [0, 1] (exact to degree 9: the weight load,
+/// the bending terms of a straight element and the shape-function products).
+inline constexpr std::array<double, 5> kGaussXi = {
+    0.5 - 0.5 * 0.9061798459386640, 0.5 - 0.5 * 0.5384693101056831, 0.5,
+    0.5 + 0.5 * 0.5384693101056831, 0.5 + 0.5 * 0.9061798459386640};
+inline constexpr std::array<double, 5> kGaussW = {
+    0.5 * 0.2369268850561891, 0.5 * 0.4786286704993665, 0.5 * 0.5688888888888889,
+    0.5 * 0.4786286704993665, 0.5 * 0.2369268850561891};
+
+struct ShapeAt {
+  std::array<double, 4> S, dS, ddS;  ///< S_k, dS_k/ds, d²S_k/ds² (slope DOFs carry the L factor)
+};
+inline ShapeAt shape_at(double xi, double L) {
+  const double x2 = xi * xi, x3 = x2 * xi;
+  ShapeAt s;
+  s.S = {1.0 - 3.0 * x2 + 2.0 * x3, L * (xi - 2.0 * x2 + x3), 3.0 * x2 - 2.0 * x3, L * (x3 - x2)};
+  s.dS = {(-6.0 * xi + 6.0 * x2) / L, 1.0 - 4.0 * xi + 3.0 * x2, (6.0 * xi - 6.0 * x2) / L,
+          3.0 * x2 - 2.0 * xi};
+  s.ddS = {(-6.0 + 12.0 * xi) / (L * L), (-4.0 + 6.0 * xi) / L, (6.0 - 12.0 * xi) / (L * L),
+           (6.0 * xi - 2.0) / L};
+  return s;
+}
+
+/// Seabed penalty load k·max(0, z_seabed − z) integrated exactly: the element
+/// is split at the roots of z(ξ) = z_seabed and each penetrating piece gets a
+/// 4-point Gauss rule (exact for the degree-6 integrand). Integrating the kink
+/// of max(0, ·) with a fixed rule instead makes the contact force jump with
+/// the DOFs (Newton stalls) and pins the touchdown point to element ends
+/// (first-order error). The piece ends depend on the DOFs but the integrand
+/// vanishes there, so holding them fixed gives the exact derivative (Leibniz).
+template <typename T>
+void add_seabed_contact(const ElementProperties& e, const LoadContext& ctx, const V3<T>* node,
+                        V3<T>* force) {
+  const double L = e.length_m;
+  const double zs = ctx.seabed_z_m;
+  auto z_at = [&](double xi) {
+    const ShapeAt sh = shape_at(xi, L);
+    double z = 0.0;
+    for (int k = 0; k < 4; ++k) z += sh.S[k] * value_of(node[k].z);
+    return z;
+  };
+  // Penetration changes sign at most 3 times on a cubic; sample finely enough
+  // to separate them, then bisect.
+  constexpr int kSamples = 16;
+  std::array<double, kSamples + 1> zv;
+  bool any = false;
+  for (int j = 0; j <= kSamples; ++j) {
+    zv[j] = z_at(static_cast<double>(j) / kSamples) - zs;
+    any = any || zv[j] < 0.0;
+  }
+  if (!any) return;
+  std::array<double, 8> cuts{};
+  int nc = 0;
+  cuts[nc++] = 0.0;
+  for (int j = 0; j < kSamples; ++j) {
+    if ((zv[j] < 0.0) != (zv[j + 1] < 0.0)) {
+      double lo = static_cast<double>(j) / kSamples, hi = static_cast<double>(j + 1) / kSamples;
+      const bool lo_in = zv[j] < 0.0;
+      for (int it = 0; it < 60; ++it) {
+        const double mid = 0.5 * (lo + hi);
+        ((z_at(mid) - zs < 0.0) == lo_in ? lo : hi) = mid;
+      }
+      if (nc < 7) cuts[nc++] = 0.5 * (lo + hi);
+    }
+  }
+  cuts[nc++] = 1.0;
+  static constexpr std::array<double, 4> gx = {0.0694318442029737, 0.3300094782075719,
+                                               0.6699905217924281, 0.9305681557970263};
+  static constexpr std::array<double, 4> gw = {0.1739274225687269, 0.3260725774312731,
+                                               0.3260725774312731, 0.1739274225687269};
+  for (int c = 0; c + 1 < nc; ++c) {
+    const double a = cuts[c], b = cuts[c + 1];
+    if (b - a <= 0.0 || z_at(0.5 * (a + b)) - zs >= 0.0) continue;
+    for (int gp = 0; gp < 4; ++gp) {
+      const double xi = a + (b - a) * gx[gp];
+      const ShapeAt sh = shape_at(xi, L);
+      T z = T(0.0);
+      for (int k = 0; k < 4; ++k) z = z + sh.S[k] * node[k].z;
+      const T pen = zs - z;
+      if (value_of(pen) <= 0.0) continue;
+      const T fz = (ctx.seabed_stiffness_N_per_m2 * gw[gp] * (b - a) * L) * pen;
+      for (int k = 0; k < 4; ++k) force[k].z = force[k].z + sh.S[k] * fz;
+    }
+  }
+}
+
+/// Morison drag of the current on the line at rest, per unstretched length,
+/// on the stretched length |r'| ds (OrcaFlex / MoorDyn v2 convention, see
+/// fe_line_statics.hpp). With ctx.drag_jacobian false, a Dual evaluation
+/// returns the drag as a dead load (values only, zero derivatives).
+template <typename T>
+V3<T> drag_load(const ElementProperties& e, const LoadContext& ctx, const V3<T>& r, const V3<T>& a, const T& na) {
+  if (!ctx.drag_jacobian && !std::is_same_v<T, double>) {
+    const V3<double> rv{value_of(r.x), value_of(r.y), value_of(r.z)};
+    const V3<double> av{value_of(a.x), value_of(a.y), value_of(a.z)};
+    const V3<double> p = drag_load<double>(e, ctx, rv, av, value_of(na));
+    return {T(p.x), T(p.y), T(p.z)};
+  }
+  const V3<T> u = current_at<T>(ctx, r.z);
+  const V3<T> t = (1.0 / na) * a;
+  const T ut = dot(u, t);
+  const V3<T> un = u - ut * t;
+  const T abs_ut = value_of(ut) < 0.0 ? T(-ut) : ut;
+  return (e.normal_drag_N_s2_per_m3 * norm_c1(un) * na) * un +
+         (e.tangential_drag_N_s2_per_m3 * abs_ut * ut * na) * t;
+}
+
+/// Generalised forces on the 12 DOFs: external minus internal (the net force
+/// the element and its loads apply to its nodes). q, g: 12 entries each.
+template <typename T>
+void element_forces(const ElementProperties& e, const LoadContext& ctx, const T* q, T* g) {
+  using std::sqrt;
+  const double L = e.length_m;
+  V3<T> node[4];
+  for (int k = 0; k < 4; ++k) node[k] = {q[3 * k], q[3 * k + 1], q[3 * k + 2]};
+  V3<T> force[4];
+  for (int k = 0; k < 4; ++k) force[k] = {T(0.0), T(0.0), T(0.0)};
+
+  for (std::size_t gp = 0; gp < kGaussXi.size(); ++gp) {
+    const ShapeAt sh = shape_at(kGaussXi[gp], L);
+    const double wds = kGaussW[gp] * L;  // quadrature weight times ds/dξ
+    V3<T> r{T(0.0), T(0.0), T(0.0)}, a = r, b = r;
+    for (int k = 0; k < 4; ++k) {
+      r = r + sh.S[k] * node[k];
+      a = a + sh.dS[k] * node[k];
+      b = b + sh.ddS[k] * node[k];
+    }
+    const T aa = dot(a, a);
+    const T na = sqrt(aa);
+    // Axial: N δ|r'| with N = EA (|r'| − 1) (engineering strain, Irvine 1981).
+    const T axial = e.EA_N * (na - 1.0) / na;  // N / |r'|
+    V3<T> fa = axial * a;                      // ∂U/∂r' per length
+    V3<T> fb{T(0.0), T(0.0), T(0.0)};          // ∂U/∂r'' per length
+    if (e.EI_Nm2 > 0.0) {
+      // U_b = EI/2 κ², κ² = (|a|²|b|² − (a·b)²) / |a|⁶ (Gerstmayr & Shabana 2006, eq. 17).
+      const T bb = dot(b, b);
+      const T ab = dot(a, b);
+      const T a6 = aa * aa * aa;
+      const T gk = aa * bb - ab * ab;
+      fa = fa + (e.EI_Nm2 / a6) * ((bb * a - ab * b) - (3.0 * gk / aa) * a);
+      fb = (e.EI_Nm2 / a6) * (aa * b - ab * a);
+    }
+    // Distributed external load per unstretched length.
+    V3<T> p{T(0.0), T(0.0), T(-e.weight_N_per_m)};
+    if (ctx.current != nullptr && !ctx.current->empty() &&
+        (e.normal_drag_N_s2_per_m3 > 0.0 || e.tangential_drag_N_s2_per_m3 > 0.0)) {
+      // Morison drag of the current on the line at rest, on the stretched
+      // length |r'| ds (OrcaFlex / MoorDyn v2 convention, see header).
+      p = p + drag_load<T>(e, ctx, r, a, na);
+    }
+    for (int k = 0; k < 4; ++k) {
+      force[k] = force[k] + wds * (sh.S[k] * p - sh.dS[k] * fa - sh.ddS[k] * fb);
+    }
+  }
+  if (ctx.seabed_stiffness_N_per_m2 > 0.0) add_seabed_contact(e, ctx, node, force);
+  for (int k = 0; k < 4; ++k) {
+    g[3 * k] = force[k].x;
+    g[3 * k + 1] = force[k].y;
+    g[3 * k + 2] = force[k].z;
+  }
+}
+
+}  // namespace spiral::engine::ancf

@@ -1,0 +1,48 @@
+#pragma once
+// Internal to the FE line statics: the Newton–Raphson driver (exact
+// Jacobian, banded LU, Armijo backtracking with a watchdog) and the
+// continuations around it — current velocity, axial-stiffness cap, and the
+// touchdown node (r-adaptivity). Strategy and reasons: fe_line_statics.hpp.
+
+#include <Eigen/Core>
+
+#include "engine/lines/fe_line_problem.hpp"
+
+namespace spiral::engine::fe_detail {
+
+inline constexpr int kFinalSnapPasses = 10;        // touchdown node re-solves at the final stiffness
+inline constexpr int kDirectAttemptIterations = 12;  // before falling back to seabed continuation
+
+struct NewtonOutcome {
+  bool converged = false;
+  int iterations = 0;
+  double residual_N = 0.0;
+  double scale_N = 0.0;
+};
+
+/// Work counters of one solve (reported in FeStaticsResult).
+struct Counters {
+  int iterations = 0;
+  int load_steps = 0;
+  int remeshes = 0;
+};
+
+/// Newton–Raphson from q (updated in place). give_up_when_crawling: return
+/// unconverged after a few very short steps (a continuation is the fallback).
+NewtonOutcome newton(const Problem& p, const FeStaticsOptions& o, Eigen::VectorXd& q,
+                     bool give_up_when_crawling = false);
+/// Newton at the full current, else current / axial-stiffness continuations.
+NewtonOutcome solve_with_current_steps(Problem& p, const FeStaticsOptions& o, Eigen::VectorXd& q,
+                                       Counters& counters);
+/// Touchdown node: move the nearest node onto the touchdown point and
+/// re-solve until it stays (at most max_passes re-solves).
+NewtonOutcome snap_touchdown(Problem& p, const FeStaticsOptions& o, Eigen::VectorXd& q, Counters& counters,
+                             int max_passes);
+/// Where the touchdown node goes (and the tolerance), given the lift-off point.
+struct TouchdownTarget {
+  double arc_length_m = 0.0;
+  double tolerance_m = 0.0;
+};
+TouchdownTarget touchdown_node_target(const Problem& p, const Eigen::VectorXd& q, double s_lift);
+
+}  // namespace spiral::engine::fe_detail

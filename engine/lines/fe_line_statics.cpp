@@ -1,0 +1,213 @@
+// FE static equilibrium of one line: the entry point (stages of the solve)
+// and the post-processing of the converged state. Formulation and
+// conventions: fe_line_statics.hpp; element: ancf_cable_element.hpp; problem
+// and assembly: fe_line_problem; Newton and continuations: fe_line_newton.
+
+#include "engine/lines/fe_line_statics.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "engine/lines/fe_line_newton.hpp"
+#include "engine/lines/fe_line_problem.hpp"
+
+namespace spiral::engine {
+namespace {
+
+using namespace fe_detail;
+
+FeStaticsResult post_process(const Problem& p, const FeStaticsOptions& o, const Eigen::VectorXd& q) {
+  FeStaticsResult r;
+  const int nn = p.n_nodes;
+  r.state = q;
+  r.node_arc_length_m = p.mesh.s;
+  Eigen::VectorXd g(p.n_dofs);
+  BandMatrix jac;
+  assemble(p, q, g, o.compute_end_B_stiffness ? &jac : nullptr);
+  r.node_position_m.resize(static_cast<std::size_t>(nn));
+  r.node_tension_N.resize(static_cast<std::size_t>(nn));
+  r.node_force_residual_N.resize(static_cast<std::size_t>(nn));
+  r.node_curvature_per_m.assign(static_cast<std::size_t>(nn), 0.0);
+  r.node_bending_moment_Nm.assign(static_cast<std::size_t>(nn), 0.0);
+  std::vector<int> count(static_cast<std::size_t>(nn), 0);
+  for (std::size_t i = 0; i < static_cast<std::size_t>(nn); ++i) {
+    r.node_position_m[i] = q.segment<3>(p.r_dof[i]);
+    r.node_force_residual_N[i] = g.segment<3>(p.r_dof[i]);
+    // Mean of the two sides' EA (|r'| − 1) (equal up to the discretisation;
+    // at a hinge joint each side has its own EA and slope).
+    double sum = 0.0;
+    int cnt = 0;
+    if (i > 0) sum += p.elements[i - 1].EA_N * (q.segment<3>(p.t_in[i]).norm() - 1.0), ++cnt;
+    if (i + 1 < static_cast<std::size_t>(nn)) sum += p.elements[i].EA_N * (q.segment<3>(p.t_out[i]).norm() - 1.0), ++cnt;
+    r.node_tension_N[i] = sum / cnt;
+  }
+  for (std::size_t e = 0; e < p.elements.size(); ++e) {
+    const double L = p.elements[e].length_m;
+    const ElementState qe = gather(p, q, e);
+    r.element_tension_N.push_back(p.elements[e].EA_N * (slope(ancf::shape_at(0.5, L), qe).norm() - 1.0));
+    for (int end = 0; end < 2; ++end) {
+      const std::size_t node = e + static_cast<std::size_t>(end);
+      const double k = curvature(ancf::shape_at(end, L), qe);
+      r.node_curvature_per_m[node] += k;
+      r.node_bending_moment_Nm[node] += p.elements[e].EI_Nm2 * k;
+      ++count[node];
+    }
+  }
+  for (int i = 0; i < nn; ++i) {
+    const auto ui = static_cast<std::size_t>(i);
+    r.node_curvature_per_m[ui] /= count[ui];
+    r.node_bending_moment_Nm[ui] /= count[ui];
+  }
+  r.end_A_force_N = r.node_force_residual_N.front();
+  r.end_B_force_N = r.node_force_residual_N.back();
+  // End tensions: axial components of the end reactions (more accurate than
+  // the strain of the free end slope, which converges more slowly).
+  r.node_tension_N.front() = r.end_A_force_N.dot(q.segment<3>(p.t_out.front()).normalized());
+  r.node_tension_N.back() = -r.end_B_force_N.dot(q.segment<3>(p.t_in.back()).normalized());
+  r.touchdown = find_touchdown(p, q);
+
+  if (o.compute_end_B_stiffness) {
+    // Static condensation: K = J_bb − J_bf J_ff⁻¹ J_fb (b: end-B position DOFs).
+    const int b0 = p.r_dof.back();
+    Eigen::Matrix<double, 3, Eigen::Dynamic> rows_b(3, p.n_dofs);
+    rows_b.setZero();
+    Eigen::MatrixXd cols_b = Eigen::MatrixXd::Zero(p.n_dofs, 3);
+    for (int k = 0; k < 3; ++k) {
+      for (int j = 0; j < p.n_dofs; ++j) {
+        if (jac.in_band(b0 + k, j)) rows_b(k, j) = jac.at(b0 + k, j);
+        if (jac.in_band(j, b0 + k) && !is_fixed(p, j)) cols_b(j, k) = jac.at(j, b0 + k);
+      }
+    }
+    for (int i = 0; i < p.n_dofs; ++i) {
+      if (is_fixed(p, i)) jac.set_identity_row(i);
+    }
+    Eigen::Matrix3d k_bb = rows_b.middleCols<3>(b0);
+    if (jac.factorize()) {
+      for (int k = 0; k < 3; ++k) jac.solve_in_place(cols_b.col(k));
+      r.end_B_stiffness_N_per_m = k_bb - rows_b * cols_b;
+    }
+  }
+  return r;
+}
+
+
+}  // namespace
+
+std::vector<double> fe_line_mesh(const FeLineModel& model) {
+  validate(model, FeEnvironment{}, FeLineEnds{Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX()}, {});
+  return build_mesh(model).s;
+}
+
+FeStaticsResult solve_fe_line_statics(const FeLineModel& model, const FeEnvironment& environment,
+                                      const FeLineEnds& ends, const FeStaticsOptions& options) {
+  validate(model, environment, ends, options);
+  Problem p = make_problem(model, environment, ends);
+  Eigen::VectorXd q = initial_state(p, model, environment, ends, options);
+
+  Counters counters;
+  NewtonOutcome last;
+  const double k_target = environment.seabed_stiffness_N_per_m2;
+  bool done = false;
+  if (options.warm_start_state) {
+    last = solve_with_current_steps(p, options, q, counters);
+    if (last.converged) last = snap_touchdown(p, options, q, counters, kFinalSnapPasses);
+    done = last.converged;
+    if (!done) {
+      p = make_problem(model, environment, ends);
+      q = initial_state(p, model, environment, ends, FeStaticsOptions{});
+    }
+  }
+  if (!done && k_target > 0.0) {
+    // Direct attempt at the final seabed stiffness from the default shape
+    // (which already lies on the seabed where the catenary would): usually
+    // converges; a bounded number of iterations, then the continuation below.
+    const Eigen::VectorXd q0 = q;
+    FeStaticsOptions direct = options;
+    direct.max_iterations = std::min(options.max_iterations, kDirectAttemptIterations);
+    Counters trial;
+    last = solve_with_current_steps(p, direct, q, trial);
+    if (last.converged) last = snap_touchdown(p, options, q, trial, kFinalSnapPasses);
+    counters.iterations += trial.iterations;
+    counters.load_steps += trial.load_steps;
+    counters.remeshes += trial.remeshes;
+    done = last.converged;
+    if (!done) {
+      p = make_problem(model, environment, ends);
+      q = q0;
+    }
+  }
+  if (!done) {
+    // Continuation on the seabed stiffness: start soft (penetration ≈ 1 % of
+    // an element under the heaviest section's weight), then ×10 per stage,
+    // intermediate stages to a loose tolerance. A stiff penalty against a
+    // coarse cable mesh is a stiff, non-smooth system; each stage starts
+    // inside the next one's convergence basin.
+    double k = k_target;
+    double h_min = INFINITY;
+    if (k_target > 0.0) {
+      double w_max = 0.0, h_max = 0.0;
+      for (const auto& e : p.elements) {
+        w_max = std::max(w_max, std::abs(e.weight_N_per_m));
+        h_max = std::max(h_max, e.length_m);
+        h_min = std::min(h_min, e.length_m);
+      }
+      k = std::min(k_target, 100.0 * w_max / h_max);
+    }
+    FeStaticsOptions stage_options = options;
+    stage_options.relative_force_tolerance = std::max(options.relative_force_tolerance, 1e-6);
+    for (;;) {
+      p.load.seabed_stiffness_N_per_m2 = k;
+      const bool final_stage = k >= k_target;
+      last = solve_with_current_steps(p, final_stage ? options : stage_options, q, counters);
+      if (!last.converged) break;
+      if (final_stage) {
+        last = snap_touchdown(p, options, q, counters, kFinalSnapPasses);
+        break;
+      }
+      // One early move once the penalty layer fits inside an element, so the
+      // final stage starts with the node near the touchdown point.
+      const auto td = find_touchdown(p, q);
+      if (td && touchdown_node_target(p, q, td->arc_length_m).tolerance_m < 0.01 * h_min) {
+        last = snap_touchdown(p, stage_options, q, counters, 1);
+        if (!last.converged) break;
+      }
+      k = std::min(k_target, 10.0 * k);
+    }
+  }
+  if (!last.converged) {
+    SolverDiagnostics d{counters.iterations, last.residual_N, "N"};
+    // A line on the seabed from A that is longer than span + height has no
+    // taut equilibrium on a frictionless seabed (it would have to fold).
+    const Eigen::Vector3d AB = ends.end_B_m - ends.end_A_m;
+    const double slack_length_m = std::hypot(AB.x(), AB.y()) + AB.z();
+    const bool a_on_seabed = environment.seabed_stiffness_N_per_m2 > 0.0 &&
+                             ends.end_A_m.z() <= environment.seabed_z_m + 1e-6 * p.line_length_m;
+    const std::string slack =
+        a_on_seabed && p.line_length_m >= slack_length_m
+            ? fmt::format(" The line is slack: its length {:.2f} m is at least its horizontal span plus "
+                          "height, {:.2f} m, so it has no taut equilibrium on a frictionless seabed; "
+                          "shorten it or move the ends apart.",
+                          p.line_length_m, slack_length_m)
+            : std::string();
+    throw SolverError(
+        fmt::format("FE line statics did not converge: {} Newton iterations, {} Newton solves (continuation "
+                    "stages), force residual {:.4g} N against a tolerance of {:.4g} N.{} Try: check that the "
+                    "end positions are reachable (line length vs. span, no slack or compressed line), "
+                    "refine the mesh, give a better initial shape (catenary) or more iterations.",
+                    counters.iterations, counters.load_steps, last.residual_N,
+                    options.relative_force_tolerance * last.scale_N, slack),
+        d);
+  }
+  FeStaticsResult r = post_process(p, options, q);
+  r.iterations = counters.iterations;
+  r.load_steps = counters.load_steps;
+  r.touchdown_remeshes = counters.remeshes;
+  r.residual_N = last.residual_N;
+  r.force_scale_N = last.scale_N;
+  return r;
+}
+
+}  // namespace spiral::engine

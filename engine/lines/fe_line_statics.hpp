@@ -1,0 +1,216 @@
+#pragma once
+// Finite-element static equilibrium of one mooring line or riser in 3D, with
+// weight/buoyancy, Morison drag from a depth-varying current, penalty seabed
+// contact, point loads at section joints and (for risers) bending stiffness.
+//
+// Element: geometrically exact ANCF cable element — nodal position r and
+// slope r' = dr/ds (s: unstretched arc length), cubic Hermite interpolation
+// (J. Gerstmayr and A. A. Shabana, "Analysis of thin beams and cables using
+// the absolute nodal co-ordinate formulation", Nonlinear Dyn. 45 (2006);
+// the same element as Project Chrono's ChElementCableANCF). Internal virtual
+// work per unstretched length: N δ|r'| + EI/2 δ(κ²) with the engineering
+// axial strain ε = |r'| − 1, N = EA ε (Hooke's law of the elastic catenary,
+// Irvine 1981 eq. 1.4) and κ = |r' × r''| / |r'|³; 5-point Gauss quadrature;
+// distributed loads applied consistently (work-equivalent) through the
+// Hermite shape functions. Ends are pinned: positions fixed, slopes free
+// (the natural boundary condition is zero end moment).
+//
+// Section joints are hinges with a slope per side where EA or EI changes
+// (unless both sides bend): the stretch |r'| = 1 + T/EA jumps there, and a
+// clump or buoy kinks a cable. Joints between two bending sections share the
+// slope (moment continuity).
+//
+// Why this element — measured (tests/validation/fe_statics_catenary_test):
+//  - fully suspended OC4 line, fairlead tension vs the exact elastic
+//    catenary: 10 el 1.8e-7 · 20 el 4.7e-9 · 40 el 9e-11 · 80 el 1.4e-12
+//    (order ≈ 5.5);
+//  - OC4 line with 242 m on the seabed (k = 1e7 N/m²): 10 el 1.6e-5 ·
+//    20 el 1.2e-5 · 40 el 5.6e-7 · 80 el 8.7e-7 — the curvature jump at the
+//    touchdown point and the penalty (error O(w/k)) limit it; target was
+//    5e-4 at 20 elements (the brief quotes ≈ 2e-3 for a plain lumped-mass
+//    model, not re-measured here);
+//  - chain–polyester–chain (83 el) vs solve_catenary: 1e-9 suspended, 1e-5
+//    with 368 m laid;
+//  - Low & Langley flexible riser (EI, 34 el) vs OrcaFlex: all six end
+//    reactions within 0.1 %; SCR touchdown: peak curvature 0.94 % below w/H
+//    with 1 m elements near the TDP (λ = √(EI/H) = 7.4 m).
+// Exact elastic-catenary elements (Peyrot & Goulois 1979) are exact only
+// under a uniform load per element and would need a separate beam element
+// for risers; this element handles drag, contact and bending in one.
+//
+// Touchdown: a cubic element cannot follow "flat, then curved" inside itself,
+// so the node nearest the touchdown point is moved onto it (r-adaptivity) and
+// the line re-solved until it stays (secant iteration, ≈ 3–8 re-solves). The
+// result's node_arc_length_m then differs from the model's mesh there.
+//
+// Loads (per unit unstretched length unless stated):
+//  - weight: (0, 0, −w), w the submerged weight (effective weight for risers:
+//    steel + contents − displaced water), so the computed axial force is the
+//    effective tension (Sparks, "Fundamentals of Marine Riser Mechanics").
+//  - drag (OrcaFlex / MoorDyn v2 convention), on the stretched length |r'| ds:
+//    normal ½ ρ Cdn D |u_n| u_n, tangential ½ ρ Cdt π D |u_t| u_t, with u the
+//    current at the point (line at rest), u_t = (u·t) t, u_n = u − u_t.
+//  - seabed: z = z_seabed, penalty force k · max(0, z_seabed − z) upward, z of
+//    the centreline (as the catenary and MoorDyn measure it), integrated
+//    exactly over the penetrating part of each element. An end pinned on the
+//    seabed also carries the weight that the unresolved penalty layer
+//    √(T/k) leaves to it (a downward pull ≤ half an element's weight, never a
+//    false uplift). Axial seabed friction is NOT applied in statics: friction
+//    is path dependent, and a static solve has no path (it would need an
+//    as-laid reference to measure sliding from); the result is the
+//    frictionless equilibrium, which is what the catenary solver returns
+//    with zero friction. The coefficient is kept for the dynamic model.
+//
+// Solver: Newton–Raphson on all free DOFs with an exact Jacobian (forward-mode
+// automatic differentiation of the element forces), a banded LU with partial
+// pivoting, Armijo backtracking on the force residual with a watchdog (a full
+// step may raise the residual for up to two steps), and continuations when a
+// direct solve crawls or fails: seabed stiffness (×10 per stage from a soft
+// bed), current velocity (adaptive steps, with EA capped at 10 × the tension
+// during the swing, then restored ×10 per stage). Start: the multi-segment
+// elastic catenary (solve_catenary) when it has a solution, else a stretched
+// one-weight catenary or a straight line; or a given shape or warm state.
+// Timings (Release, one core; tests/bench/fe_statics_bench): OC4 20/40/80
+// el 4.6/8.4/7.9 ms; 2740 m chain–polyester–chain, 83 el: 2.4 ms (no
+// current), 5.4 ms (1.5 m/s at 30°), 2.2 ms warm-started after a 1 m offset;
+// SCR 225/325 el 15/21 ms. A strong current on a line with a touchdown
+// (continuations) takes 0.1–0.5 s.
+//
+// Frames and units: global frame, z up, SI. End A is the anchor / riser
+// bottom, end B the fairlead / hang-off.
+
+#include <functional>
+#include <optional>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "engine/common/solver_error.hpp"
+
+namespace spiral::engine {
+
+/// One homogeneous section of the line.
+struct FeLineSection {
+  double length_m = 0.0;               ///< unstretched length, > 0
+  double EA_N = 0.0;                   ///< axial stiffness, > 0
+  double EI_Nm2 = 0.0;                 ///< bending stiffness, >= 0 (0: chain, rope)
+  double mass_kg_per_m = 0.0;          ///< mass per unstretched length (incl. contents), >= 0; unused by statics
+  double weight_N_per_m = 0.0;         ///< submerged (effective) weight per length; < 0 is buoyant
+  double hydro_diameter_m = 0.0;       ///< outer hydrodynamic diameter for drag, >= 0
+  double drag_normal = 0.0;            ///< Cdn on hydro_diameter_m, >= 0
+  double drag_tangential = 0.0;        ///< Cdt on π·hydro_diameter_m, >= 0
+  double element_length_m = 0.0;       ///< target element length, > 0 (elements are equal within a section)
+};
+
+/// A stretch of finer mesh, e.g. around the expected touchdown point.
+struct FeRefinementZone {
+  double start_arc_length_m = 0.0;  ///< unstretched arc length from end A where the zone starts
+  double length_m = 0.0;            ///< > 0
+  double element_length_m = 0.0;    ///< > 0; used where smaller than the section's own target
+};
+
+/// The line (immutable): sections ordered from end A to end B.
+struct FeLineModel {
+  std::vector<FeLineSection> sections;
+  /// Net downward point load at the joint between sections i and i+1 (size
+  /// sections.size() − 1, or empty): clump weight (> 0) or buoy (< 0), N.
+  std::vector<double> joint_load_N;
+  std::optional<FeRefinementZone> refinement;
+};
+
+/// Where the two ends are held (pinned), global frame.
+struct FeLineEnds {
+  Eigen::Vector3d end_A_m = Eigen::Vector3d::Zero();
+  Eigen::Vector3d end_B_m = Eigen::Vector3d::Zero();
+};
+
+/// Current velocity at one depth.
+struct CurrentProfilePoint {
+  double z_m = 0.0;                                             ///< global z (negative below MWL)
+  Eigen::Vector3d velocity_m_per_s = Eigen::Vector3d::Zero();  ///< global frame
+};
+
+/// The environment the line statics needs (engine-only).
+struct FeEnvironment {
+  double water_density_kg_per_m3 = 1025.0;
+  /// Current, sorted by increasing z; linear in z between points, constant
+  /// beyond the ends; empty means no current.
+  std::vector<CurrentProfilePoint> current;
+  double seabed_z_m = -1.0e30;                      ///< seabed level (global z)
+  double seabed_stiffness_N_per_m2 = 0.0;           ///< per m of line per m penetration, >= 0
+  double seabed_axial_friction = 0.0;               ///< kept for dynamics; not applied in statics (see top)
+};
+
+struct FeStaticsOptions {
+  /// Converged when every nodal force residual (slope residuals divided by
+  /// the element length) is below this fraction of the force scale (largest
+  /// of: total |weight| + |point loads| + drag estimate, and the largest axial
+  /// force), or below the round-off floor 10 ε max(EA/h) × coordinate size.
+  double relative_force_tolerance = 1e-10;
+  int max_iterations = 100;              ///< Newton iterations per continuation stage
+  int max_load_step_halvings = 10;       ///< current continuation: step halvings allowed
+  /// Initial shape as a function of unstretched arc length from end A
+  /// (e.g. a catenary profile). Default: inextensible catenary in the
+  /// vertical plane through A and B, lying on the seabed from A if A is on it;
+  /// a straight line if the line is shorter than the chord.
+  std::function<Eigen::Vector3d(double arc_length_m)> initial_shape;
+  /// Converged state of a previous solve on the same model (same mesh) to warm
+  /// start from (FeStaticsResult::state); takes precedence over initial_shape.
+  std::optional<Eigen::VectorXd> warm_start_state;
+  /// Node arc lengths of that solution (FeStaticsResult::node_arc_length_m),
+  /// which differ from the model's mesh where a node was moved onto the
+  /// touchdown point; optional, used with warm_start_state.
+  std::vector<double> warm_start_node_arc_length_m;
+  bool compute_end_B_stiffness = true;
+  /// Move the nearest node onto the touchdown point and re-solve (r-adaptivity;
+  /// keeps the element's convergence order on lines that lie on the seabed).
+  bool snap_node_to_touchdown = true;   ///< condensed 3×3 dF_B/dx_B (cheap: 3 back-substitutions)
+};
+
+struct FeTouchdown {
+  double arc_length_m = 0.0;                          ///< unstretched, from end A
+  Eigen::Vector3d position_m = Eigen::Vector3d::Zero();
+};
+
+struct FeStaticsResult {
+  // Per node (node 0 at end A).
+  std::vector<double> node_arc_length_m;              ///< unstretched arc length from A
+  std::vector<Eigen::Vector3d> node_position_m;
+  std::vector<double> node_tension_N;                 ///< effective tension EA(|r'| − 1) at the node
+  std::vector<double> node_curvature_per_m;           ///< κ, mean of the two adjacent elements
+  std::vector<double> node_bending_moment_Nm;         ///< EI κ
+  /// Net force on each node's position DOFs (internal + external), N: zero up
+  /// to the tolerance at free nodes; at the ends it is the end force below.
+  std::vector<Eigen::Vector3d> node_force_residual_N;
+  // Per element.
+  std::vector<double> element_tension_N;              ///< effective tension at the element midpoint
+  // Ends: the force the line exerts on each end, N (global frame).
+  Eigen::Vector3d end_A_force_N = Eigen::Vector3d::Zero();
+  Eigen::Vector3d end_B_force_N = Eigen::Vector3d::Zero();
+  /// d(end_B_force_N)/d(end_B_m), N/m, with all free DOFs re-equilibrated
+  /// (static condensation of the Jacobian). The hull stiffness contribution
+  /// is its negative.
+  Eigen::Matrix3d end_B_stiffness_N_per_m = Eigen::Matrix3d::Zero();
+  /// Last contact point along the line from A (lift-off point, z = z_seabed);
+  /// empty when nothing touches. With a penalty seabed it lies ≈ √(H/k)
+  /// beyond the rigid-seabed touchdown point (H: horizontal tension).
+  std::optional<FeTouchdown> touchdown;
+  int iterations = 0;                                 ///< total Newton iterations
+  int load_steps = 0;                                 ///< Newton solves (continuation stages)
+  int touchdown_remeshes = 0;                         ///< node moves onto the touchdown point
+  double residual_N = 0.0;                            ///< final max nodal force residual
+  double force_scale_N = 0.0;                         ///< scale the tolerance refers to
+  /// [r, r'] per node (a second r' at hinge joints), for warm starts.
+  Eigen::VectorXd state;
+};
+
+/// Node arc lengths (unstretched, from A) of the mesh the model produces.
+/// Throws SolverError on invalid model data.
+std::vector<double> fe_line_mesh(const FeLineModel& model);
+
+/// Static equilibrium. Throws SolverError on invalid input (message names the
+/// field and value) and on non-convergence (iterations, residual in N, hint).
+FeStaticsResult solve_fe_line_statics(const FeLineModel& model, const FeEnvironment& environment,
+                                      const FeLineEnds& ends, const FeStaticsOptions& options = {});
+
+}  // namespace spiral::engine
