@@ -1,0 +1,71 @@
+#include "engine/analysis/fe_static_line.hpp"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+namespace spiral::engine {
+
+namespace {
+// A node counts as resting on the seabed within this distance above it (m):
+// the penalty contact lets the laid part sink by w/k (millimetres).
+constexpr double kOnSeabedTolerance_m = 0.05;
+}  // namespace
+
+FeStaticLine::FeStaticLine(std::string name, Eigen::Vector3d end_A_g, Eigen::Vector3d attachment_b,
+                           FeLineModel model, FeEnvironment environment, FeStaticsOptions options)
+    : name_(std::move(name)),
+      end_A_g_(std::move(end_A_g)),
+      attachment_b_(std::move(attachment_b)),
+      model_(std::move(model)),
+      environment_(std::move(environment)),
+      options_(std::move(options)) {}
+
+LineEndResponse FeStaticLine::solve(const Eigen::Vector3d& attachment_g) {
+  FeStaticsOptions options = options_;
+  options.compute_end_B_stiffness = true;
+  if (last_) {
+    options.warm_start_state = last_->state;
+    options.warm_start_node_arc_length_m = last_->node_arc_length_m;
+  }
+  try {
+    last_ = solve_fe_line_statics(model_, environment_, {end_A_g_, attachment_g}, options);
+  } catch (const SolverError& error) {
+    last_.reset();
+    throw SolverError(fmt::format("line '{}': {}", name_, error.what()), error.diagnostics());
+  }
+  LineEndResponse response;
+  response.force_g = last_->end_B_force_N;
+  // The FE solver gives dF_B/dx_B; the line array uses K = −dF/dx.
+  response.stiffness_g = -last_->end_B_stiffness_N_per_m;
+  response.top_tension_N = last_->end_B_force_N.norm();
+  response.iterations = last_->iterations;
+  return response;
+}
+
+LineState FeStaticLine::state(const Eigen::Vector3d& attachment_g, int /*points_per_segment*/) {
+  LineState state;
+  state.top = solve(attachment_g);
+  const FeStaticsResult& r = *last_;
+  state.bottom_force_g = r.end_A_force_N;
+  if (r.touchdown) {
+    state.laid_length_m = r.touchdown->arc_length_m;
+    state.touchdown_distance_m = (r.touchdown->position_m - end_A_g_).head<2>().norm();
+    state.regime = "touchdown";
+  } else {
+    state.regime = "suspended";
+  }
+  std::vector<double> section_end_m;
+  double s = 0.0;
+  for (const FeLineSection& section : model_.sections) section_end_m.push_back(s += section.length_m);
+  std::size_t section = 0;
+  for (std::size_t i = 0; i < r.node_position_m.size(); ++i) {
+    const double arc = r.node_arc_length_m[i];
+    while (section + 1 < section_end_m.size() && arc > section_end_m[section] + 1e-9) ++section;
+    const bool on_seabed = r.node_position_m[i].z() <= environment_.seabed_z_m + kOnSeabedTolerance_m;
+    state.profile.push_back({r.node_position_m[i], arc, r.node_tension_N[i], static_cast<int>(section), on_seabed});
+  }
+  return state;
+}
+
+}  // namespace spiral::engine

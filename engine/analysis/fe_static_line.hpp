@@ -1,0 +1,39 @@
+#pragma once
+// A finite-element line (mooring line or riser) as a StaticLine of the
+// coupled static analysis: end A fixed (anchor, riser foot), end B at the hull
+// attachment. Unlike the catenary it carries current drag and bending.
+
+#include <optional>
+#include <string>
+
+#include "engine/analysis/static_line.hpp"
+#include "engine/lines/fe_line_statics.hpp"
+
+namespace spiral::engine {
+
+class FeStaticLine final : public StaticLine {
+ public:
+  FeStaticLine(std::string name, Eigen::Vector3d end_A_g, Eigen::Vector3d attachment_b, FeLineModel model,
+               FeEnvironment environment, FeStaticsOptions options = {});
+  const std::string& name() const override { return name_; }
+  const Eigen::Vector3d& attachment_b() const override { return attachment_b_; }
+  LineEndResponse solve(const Eigen::Vector3d& attachment_g) override;
+  /// The FE nodes are the profile (`points_per_segment` is not used: the mesh sets the resolution).
+  LineState state(const Eigen::Vector3d& attachment_g, int points_per_segment) override;
+  void reset() override { last_.reset(); }
+  /// The full FE solution of the last solve (curvature, bending moment per node).
+  const std::optional<FeStaticsResult>& last_result() const { return last_; }
+  const FeLineModel& model() const { return model_; }
+  const Eigen::Vector3d& end_A_g() const { return end_A_g_; }
+
+ private:
+  std::string name_;
+  Eigen::Vector3d end_A_g_;
+  Eigen::Vector3d attachment_b_;
+  FeLineModel model_;
+  FeEnvironment environment_;
+  FeStaticsOptions options_;
+  std::optional<FeStaticsResult> last_;
+};
+
+}  // namespace spiral::engine
