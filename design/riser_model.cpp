@@ -1,0 +1,237 @@
+#include "design/riser_model.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include <fmt/format.h>
+
+#include "engine/lines/catenary.hpp"
+
+namespace spiral::design {
+
+namespace {
+
+constexpr double kRadToDeg = 180.0 / std::numbers::pi;
+// Bisection on the foot distance: 80 halvings of a kilometre-scale bracket
+// reach round-off; the top angle is then exact to ~1e-12 rad.
+constexpr int kFootSearchIterations = 80;
+
+engine::PipeSection pipe_section_of(const RiserSection& s) {
+  engine::PipeSection p;
+  p.outer_diameter_m = s.outer_diameter_m;
+  p.contents_density_kg_per_m3 = s.contents_density_kg_per_m3;
+  if (s.wall_thickness_m) p.wall_thickness_m = *s.wall_thickness_m;
+  if (s.youngs_modulus_Pa) p.youngs_modulus_Pa = *s.youngs_modulus_Pa;
+  if (s.steel_density_kg_per_m3) p.steel_density_kg_per_m3 = *s.steel_density_kg_per_m3;
+  if (s.yield_stress_Pa) p.yield_stress_Pa = *s.yield_stress_Pa;
+  if (s.coating_thickness_m && s.coating_density_kg_per_m3) {
+    p.coating = engine::PipeCoating{*s.coating_thickness_m, *s.coating_density_kg_per_m3};
+  }
+  if (s.buoyancy_outer_diameter_m && s.buoyancy_density_kg_per_m3) {
+    p.buoyancy = engine::SmearedBuoyancy{*s.buoyancy_outer_diameter_m, *s.buoyancy_density_kg_per_m3};
+  }
+  if (s.axial_stiffness_N && s.bending_stiffness_N_m2 && s.mass_per_length_kg_per_m) {
+    p.explicit_properties =
+        engine::ExplicitSectionProperties{*s.axial_stiffness_N, *s.bending_stiffness_N_m2, *s.mass_per_length_kg_per_m};
+  }
+  return p;
+}
+
+/// Top angle from vertical (rad) of the riser as a catenary with its foot at
+/// horizontal distance `x_m` from the hang-off.
+double catenary_top_angle(const engine::CatenaryLine& line, double x_m, double z_m) {
+  const auto s = engine::solve_catenary(line, {x_m, z_m, 0.0});
+  return std::atan2(s.fairlead_horizontal_N, s.fairlead_vertical_N);
+}
+
+}  // namespace
+
+engine::FeEnvironment fe_environment(const Project& project, const std::optional<engine::CurrentProfile>& current,
+                                     double contact_diameter_m) {
+  engine::FeEnvironment environment;
+  environment.water_density_kg_per_m3 = project.site.water_density_kg_per_m3;
+  environment.seabed_z_m = -project.site.depth_m;
+  // The project gives the seabed's contact pressure per metre of penetration;
+  // a line presses on a strip as wide as its diameter.
+  environment.seabed_stiffness_N_per_m2 = project.site.seabed.normal_stiffness_Pa_per_m * contact_diameter_m;
+  environment.seabed_axial_friction = project.site.seabed.friction_axial;
+  if (current) {
+    for (std::size_t i = 0; i < current->z_m.size(); ++i) {
+      environment.current.push_back({current->z_m[i], engine::current_velocity_g(*current, current->z_m[i])});
+    }
+  }
+  return environment;
+}
+
+RiserDesign riser_design(const Project& project, const Riser& riser) {
+  const engine::Seawater water{project.site.water_density_kg_per_m3, project.site.gravity_m_per_s2};
+  RiserDesign design;
+  design.name = riser.name;
+  design.kind = riser.kind;
+  design.hang_off_b = riser.hang_off_b;
+  design.azimuth_rad = riser.azimuth_rad;
+  design.design_top_angle_rad = riser.top_angle_rad;
+  design.criteria = riser_criteria(project.criteria, riser);
+  design.internal_pressure_top_Pa = riser.internal_pressure_Pa;
+  design.contents_density_top_kg_per_m3 = riser.sections.front().contents_density_kg_per_m3;
+  for (auto it = riser.sections.rbegin(); it != riser.sections.rend(); ++it) {
+    RiserSectionDesign section;
+    section.length_m = it->length_m;
+    section.properties = engine::pipe_section_properties(pipe_section_of(*it), water);
+    section.steel = riser.kind != RiserKind::flexible && it->wall_thickness_m.has_value();
+    design.sections.push_back(section);
+  }
+
+  // Foot position: the distance along the azimuth at which the riser, as a
+  // catenary of its effective weight, leaves the hang-off at the design angle.
+  engine::CatenaryLine catenary;
+  double length_m = 0.0;
+  for (const RiserSectionDesign& s : design.sections) {
+    catenary.segments.push_back({s.length_m, s.properties.effective_weight_N_per_m, s.properties.EA_N});
+    length_m += s.length_m;
+  }
+  const Eigen::Vector3d hang_off_g = project.hull.reference_point_g + riser.hang_off_b;
+  const double z_span_m = hang_off_g.z() + project.site.depth_m;
+  if (length_m <= z_span_m) {
+    throw engine::SolverError(fmt::format("riser '{}': length {:.1f} m does not reach the seabed {:.1f} m below "
+                                          "the hang-off",
+                                          riser.name, length_m, z_span_m));
+  }
+  double x_low = 1e-3 * length_m;
+  double x_high = 0.999 * std::sqrt(length_m * length_m - z_span_m * z_span_m);
+  const double angle_low = catenary_top_angle(catenary, x_low, z_span_m);
+  const double angle_high = catenary_top_angle(catenary, x_high, z_span_m);
+  if (riser.top_angle_rad < angle_low || riser.top_angle_rad > angle_high) {
+    throw engine::SolverError(fmt::format(
+        "riser '{}': no foot position gives the top angle {:.2f}° (a {:.1f} m riser spans {:.2f}°–{:.2f}°); "
+        "change top_angle_deg or the section lengths",
+        riser.name, riser.top_angle_rad * kRadToDeg, length_m, angle_low * kRadToDeg, angle_high * kRadToDeg));
+  }
+  for (int i = 0; i < kFootSearchIterations; ++i) {
+    const double x_mid = 0.5 * (x_low + x_high);
+    (catenary_top_angle(catenary, x_mid, z_span_m) < riser.top_angle_rad ? x_low : x_high) = x_mid;
+  }
+  const double foot_distance_m = 0.5 * (x_low + x_high);
+  const Eigen::Vector3d direction(std::cos(riser.azimuth_rad), std::sin(riser.azimuth_rad), 0.0);
+  design.foot_g = hang_off_g + foot_distance_m * direction;
+  design.foot_g.z() = -project.site.depth_m;
+  const double laid_m = engine::solve_catenary(catenary, {foot_distance_m, z_span_m, 0.0}).laid_length_m;
+
+  for (const RiserSectionDesign& s : design.sections) {
+    engine::FeLineSection fe;
+    fe.length_m = s.length_m;
+    fe.EA_N = s.properties.EA_N;
+    fe.EI_Nm2 = s.properties.EI_N_m2;
+    fe.mass_kg_per_m = s.properties.mass_per_length_kg_per_m + s.properties.contents_mass_kg_per_m;
+    fe.weight_N_per_m = s.properties.effective_weight_N_per_m;
+    fe.hydro_diameter_m = s.properties.hydrodynamic_diameter_m;
+    fe.element_length_m = riser.fe.element_length_m;
+    design.fe_model.sections.push_back(fe);
+  }
+  // Morison coefficients per section, in FE order.
+  for (std::size_t i = 0; i < riser.sections.size(); ++i) {
+    const RiserSection& s = riser.sections[riser.sections.size() - 1 - i];
+    design.fe_model.sections[i].drag_normal = s.drag_normal;
+    design.fe_model.sections[i].drag_tangential = s.drag_axial;
+  }
+  if (riser.fe.touchdown_refinement && laid_m > 0.0) {
+    const auto& zone = *riser.fe.touchdown_refinement;
+    design.fe_model.refinement = engine::FeRefinementZone{
+        std::max(0.0, laid_m - 0.5 * zone.length_m), zone.length_m, zone.element_length_m};
+  }
+  return design;
+}
+
+std::unique_ptr<engine::FeStaticLine> riser_static_line(const Project& project, const RiserDesign& design,
+                                                        const std::optional<engine::CurrentProfile>& current) {
+  const double contact_diameter_m = design.sections.front().properties.hydrodynamic_diameter_m;
+  return std::make_unique<engine::FeStaticLine>(design.name, design.foot_g, design.hang_off_b, design.fe_model,
+                                                fe_environment(project, current, contact_diameter_m));
+}
+
+RiserStaticsRow riser_statics_row(const Project& project, const RiserDesign& design,
+                                  const engine::FeStaticsResult& solution, DesignCondition condition) {
+  const engine::Seawater water{project.site.water_density_kg_per_m3, project.site.gravity_m_per_s2};
+  RiserStaticsRow row;
+  row.name = design.name;
+  row.kind = to_string(design.kind);
+  const Eigen::Vector3d& top = solution.end_B_force_N;  // on the hull: outwards and down
+  row.top_tension_N = top.norm();
+  row.top_angle_deg = std::atan2(top.head<2>().norm(), -top.z()) * kRadToDeg;
+  const Eigen::Vector3d hang_off_g = solution.node_position_m.back();
+  if (solution.touchdown) row.touchdown_distance_m = (solution.touchdown->position_m - hang_off_g).head<2>().norm();
+
+  const engine::InternalPressureProfile internal{design.internal_pressure_top_Pa, hang_off_g.z(),
+                                                 design.contents_density_top_kg_per_m3};
+  const double factor = design_factor(design.criteria.design_factor, condition);
+  row.min_effective_tension_N = std::numeric_limits<double>::infinity();
+  bool any_steel = false;
+  std::vector<double> section_end_m;
+  double s_end = 0.0;
+  for (const RiserSectionDesign& s : design.sections) section_end_m.push_back(s_end += s.length_m);
+  std::size_t section = 0;
+  for (std::size_t i = 0; i < solution.node_position_m.size(); ++i) {
+    const double arc = solution.node_arc_length_m[i];
+    while (section + 1 < section_end_m.size() && arc > section_end_m[section] + 1e-9) ++section;
+    const double tension = solution.node_tension_N[i];
+    if (tension < row.min_effective_tension_N) {
+      row.min_effective_tension_N = tension;
+      row.min_effective_tension_arc_m = arc;
+    }
+    row.max_curvature_per_m = std::max(row.max_curvature_per_m, std::abs(solution.node_curvature_per_m[i]));
+    const RiserSectionDesign& sd = design.sections[section];
+    if (sd.steel) {
+      any_steel = true;
+      const double z = solution.node_position_m[i].z();
+      const engine::PipePressures pressures{engine::internal_pressure_Pa(internal, z, water.gravity_m_per_s2),
+                                            engine::external_pressure_Pa(z, water)};
+      engine::StressCheckInput input;
+      input.loads = {engine::wall_tension_N(tension, pressures, sd.properties),
+                     std::abs(solution.node_bending_moment_Nm[i]), pressures};
+      input.design_factor = factor;
+      const double u = engine::check_pipe_stress(sd.properties, input).utilization;
+      if (u > row.max_von_mises_utilization) {
+        row.max_von_mises_utilization = u;
+        row.max_von_mises_arc_m = arc;
+      }
+    }
+    row.profile.push_back({solution.node_position_m[i], arc, tension, static_cast<int>(section),
+                           solution.touchdown && arc <= solution.touchdown->arc_length_m});
+  }
+  row.min_bending_radius_m = row.max_curvature_per_m > 0.0 ? 1.0 / row.max_curvature_per_m
+                                                           : std::numeric_limits<double>::infinity();
+
+  const RiserCriteria& c = design.criteria;
+  const auto add = [&](std::string name, double value, double limit, std::string unit, double utilization) {
+    row.checks.push_back({std::move(name), value, limit, std::move(unit), utilization, utilization <= 1.0});
+  };
+  if (any_steel) add("von_mises", row.max_von_mises_utilization, 1.0, "-", row.max_von_mises_utilization);
+  add("min_effective_tension", row.min_effective_tension_N, c.min_effective_tension_N, "N",
+      1.0 - (row.min_effective_tension_N - c.min_effective_tension_N) / row.top_tension_N);
+  if (c.max_top_tension_N) add("max_top_tension", row.top_tension_N, *c.max_top_tension_N, "N", row.top_tension_N / *c.max_top_tension_N);
+  if (c.max_top_angle_rad) {
+    add("max_top_angle", row.top_angle_deg, *c.max_top_angle_rad * kRadToDeg, "deg",
+        row.top_angle_deg / (*c.max_top_angle_rad * kRadToDeg));
+  }
+  if (c.max_flex_joint_rotation_rad) {
+    const double rotation_deg = std::abs(row.top_angle_deg - design.design_top_angle_rad * kRadToDeg);
+    add("flex_joint_rotation", rotation_deg, *c.max_flex_joint_rotation_rad * kRadToDeg, "deg",
+        rotation_deg / (*c.max_flex_joint_rotation_rad * kRadToDeg));
+  }
+  if (c.min_bending_radius_m) {
+    add("min_bending_radius", row.min_bending_radius_m, *c.min_bending_radius_m, "m",
+        row.max_curvature_per_m * *c.min_bending_radius_m);
+  }
+  for (const RiserCriterionCheck& check : row.checks) {
+    if (check.utilization >= row.utilization || row.governing_criterion.empty()) {
+      row.utilization = check.utilization;
+      row.governing_criterion = check.criterion;
+    }
+    row.passes = row.passes && check.passes;
+  }
+  return row;
+}
+
+}  // namespace spiral::design

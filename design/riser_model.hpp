@@ -1,0 +1,94 @@
+#pragma once
+// Risers of a project as FE static lines, and their static results checked
+// against the riser criteria (API RP 2RD / DNV-OS-F201 style, DESIGN.md §6):
+// von Mises utilization with the design factor of the load case's condition,
+// minimum effective tension (no compression), top tension, top angle,
+// flex-joint rotation and minimum bending radius.
+//
+// The riser's foot (its seabed end) is placed so that at the hull's rest
+// position the riser leaves the hang-off at its design top angle: a 1-D
+// search on the foot distance with the riser as a multi-segment elastic
+// catenary (weight = effective weight, bending neglected — it changes the
+// top angle by hundredths of a degree for an SCR).
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "design/project.hpp"
+#include "engine/analysis/fe_static_line.hpp"
+#include "engine/environment/current_profile.hpp"
+#include "engine/lines/riser_section.hpp"
+
+namespace spiral::design {
+
+struct RiserSectionDesign {
+  double length_m = 0.0;
+  engine::PipeSectionProperties properties;
+  bool steel = true;  ///< wall stresses are checked (scr, lazy-wave; not flexible pipe)
+};
+
+struct RiserDesign {
+  std::string name;
+  RiserKind kind = RiserKind::scr;
+  Eigen::Vector3d hang_off_b = Eigen::Vector3d::Zero();
+  Eigen::Vector3d foot_g = Eigen::Vector3d::Zero();  ///< seabed end, global
+  double azimuth_rad = 0.0;
+  double design_top_angle_rad = 0.0;
+  /// Sections from the foot to the hang-off (FE order; the project lists them downwards).
+  std::vector<RiserSectionDesign> sections;
+  double internal_pressure_top_Pa = 0.0;
+  double contents_density_top_kg_per_m3 = 0.0;
+  RiserCriteria criteria;
+  engine::FeLineModel fe_model;
+};
+
+/// Section properties, foot position and FE model of a riser. Throws
+/// engine::SolverError when no foot position gives the design top angle
+/// (riser too short to reach the seabed at that angle, or too long).
+RiserDesign riser_design(const Project& project, const Riser& riser);
+
+/// The FE environment of a line of contact diameter `diameter_m` (seabed
+/// penalty stiffness = normal_stiffness × diameter, N/m per m) and current.
+engine::FeEnvironment fe_environment(const Project& project, const std::optional<engine::CurrentProfile>& current,
+                                     double contact_diameter_m);
+
+std::unique_ptr<engine::FeStaticLine> riser_static_line(const Project& project, const RiserDesign& design,
+                                                        const std::optional<engine::CurrentProfile>& current);
+
+/// One criterion of one riser. `utilization` ≤ 1 passes; for the minimum
+/// effective tension it is 1 − (T_min − T_limit)/T_top (1 at the limit).
+struct RiserCriterionCheck {
+  std::string criterion;  ///< von_mises | min_effective_tension | max_top_tension | max_top_angle | flex_joint_rotation | min_bending_radius
+  double value = 0.0;     ///< in `unit`
+  double limit = 0.0;     ///< in `unit`
+  std::string unit;
+  double utilization = 0.0;
+  bool passes = true;
+};
+
+struct RiserStaticsRow {
+  std::string name;
+  std::string kind;
+  double top_tension_N = 0.0;
+  double top_angle_deg = 0.0;            ///< from vertical
+  double touchdown_distance_m = 0.0;     ///< horizontal, hang-off to touchdown point (0: none)
+  double min_effective_tension_N = 0.0;
+  double min_effective_tension_arc_m = 0.0;  ///< from the foot
+  double max_curvature_per_m = 0.0;
+  double min_bending_radius_m = 0.0;     ///< 1 / max curvature
+  double max_von_mises_utilization = 0.0;
+  double max_von_mises_arc_m = 0.0;      ///< from the foot
+  std::vector<RiserCriterionCheck> checks;
+  std::string governing_criterion;       ///< the check with the largest utilization
+  double utilization = 0.0;              ///< of the governing check
+  bool passes = true;
+  std::vector<engine::LineProfilePoint> profile;
+};
+
+/// Post-processes an FE solution of the riser at hang-off position `hang_off_g`.
+RiserStaticsRow riser_statics_row(const Project& project, const RiserDesign& design,
+                                  const engine::FeStaticsResult& solution, DesignCondition condition);
+
+}  // namespace spiral::design
