@@ -155,9 +155,12 @@ void hull_state_derivative(const HullEquations& eq, const VelocityHistory* histo
 CvodeOptions default_hull_integrator_options() {
   CvodeOptions o;
   o.method = CvodeMethod::adams_newton_dense;
-  o.relative_tolerance = 1e-8;
+  // See the header: measured on the OC4 model, rtol 1e-8 leaves an energy
+  // drift of 9e-5 over 20 surge periods, 1e-10 leaves 7e-7 at about the same
+  // step count (Adams raises its order).
+  o.relative_tolerance = 1e-10;
   Eigen::VectorXd atol(12);
-  atol << 1e-8, 1e-8, 1e-8, 1e-10, 1e-10, 1e-10, 1e-8, 1e-8, 1e-8, 1e-10, 1e-10, 1e-10;
+  atol << 1e-10, 1e-10, 1e-10, 1e-12, 1e-12, 1e-12, 1e-10, 1e-10, 1e-10, 1e-12, 1e-12, 1e-12;
   o.absolute_tolerances = atol;
   return o;
 }

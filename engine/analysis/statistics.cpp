@@ -173,7 +173,11 @@ GumbelFit fit_gumbel_moments(std::span<const double> maxima) {
   return g;
 }
 
-WeibullFit fit_weibull_least_squares(std::span<const double> excess) {
+WeibullFit fit_weibull_least_squares(std::span<const double> excess, double upper_fraction) {
+  if (!(upper_fraction > 0.0 && upper_fraction <= 1.0)) {
+    throw std::invalid_argument(fmt::format(
+        "fit_weibull_least_squares: upper_fraction must be in (0, 1], got {}", upper_fraction));
+  }
   std::vector<double> x;
   x.reserve(excess.size());
   for (double v : excess) {
@@ -184,16 +188,23 @@ WeibullFit fit_weibull_least_squares(std::span<const double> excess) {
         "fit_weibull_least_squares: need >= 3 positive excesses, got {}", x.size()));
   }
   std::sort(x.begin(), x.end());
-  const double n = static_cast<double>(x.size());
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  const double n_all = static_cast<double>(x.size());
+  double sx = 0, sy = 0, sxx = 0, sxy = 0, n = 0;
   for (std::size_t i = 0; i < x.size(); ++i) {
-    const double F = static_cast<double>(i + 1) / (n + 1.0);
+    const double F = static_cast<double>(i + 1) / (n_all + 1.0);
+    if (F < 1.0 - upper_fraction) continue;
+    n += 1.0;
     const double X = std::log(x[i]);
     const double Y = std::log(-std::log(1.0 - F));
     sx += X;
     sy += Y;
     sxx += X * X;
     sxy += X * Y;
+  }
+  if (n < 3.0) {
+    throw std::invalid_argument(fmt::format(
+        "fit_weibull_least_squares: need >= 3 samples in the fitted upper fraction {}, got {}",
+        upper_fraction, n));
   }
   const double denom = n * sxx - sx * sx;
   if (!(denom > 0.0)) throw std::invalid_argument("fit_weibull_least_squares: all excesses equal");
@@ -236,7 +247,7 @@ ExtremeEstimate most_probable_maximum(std::span<const double> x, double dt_s,
   e.peaks = peaks.size();
   std::vector<double> excess(peaks.size());
   for (std::size_t i = 0; i < peaks.size(); ++i) excess[i] = peaks[i] - mom.mean;
-  e.weibull = fit_weibull_least_squares(excess);
+  e.weibull = fit_weibull_least_squares(excess, options.weibull_upper_fraction);
   e.expected_peaks_in_target =
       static_cast<double>(peaks.size()) * options.target_duration_s / e.record_duration_s;
   if (!(e.expected_peaks_in_target > 1.0)) {

@@ -10,6 +10,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <exception>
+#include <limits>
+#include <algorithm>
 #include <fmt/format.h>
 #include <stdexcept>
 #include <utility>
@@ -234,14 +236,24 @@ const Eigen::VectorXd& CvodeIntegrator::advance_to(double t_out_s) {
   }
   if (flag < 0) {
     const CvodeStatistics s = statistics();
+    // A step that has shrunk to round-off of t means the solution cannot be
+    // continued past this time whatever the step budget (a force that fails
+    // or jumps there): say so instead of blaming the step budget.
+    constexpr double kCollapsedStepUlps = 1e3;
+    const bool collapsed =
+        std::abs(s.last_step_s) <
+        kCollapsedStepUlps * std::numeric_limits<double>::epsilon() *
+            std::max(1.0, std::abs(s.current_time_s));
     std::string message = fmt::format(
-        "CVODE failed at t = {:.6g} s on the way to t = {:.6g} s: {} after {} steps, last step "
+        "CVODE failed at t = {:.6g} s on the way to t = {:.6g} s: {}{} after {} steps, last step "
         "h = {:.3g} s (order {}). {}{}. Hint: {}",
-        s.current_time_s, t_out_s, flag_name(flag), s.steps, s.last_step_s, s.last_order,
-        m.last_cvode_message,
+        s.current_time_s, t_out_s, flag_name(flag), collapsed ? " (step size collapsed)" : "",
+        s.steps, s.last_step_s, s.last_order, m.last_cvode_message,
         m.last_rhs_message.empty() ? "" : fmt::format(" Last right-hand side error: {}",
                                                       m.last_rhs_message),
-        hint_for(flag));
+        collapsed ? "the right-hand side fails or is discontinuous at this time: check the "
+                    "forces (line solver, tabulated input) at the state reached"
+                  : hint_for(flag));
     throw IntegrationError(message, s.current_time_s, s.last_step_s, flag,
                            SolverDiagnostics{static_cast<int>(s.steps), s.last_step_s, "s"});
   }
