@@ -1,9 +1,10 @@
 #include "engine/analysis/hull_dynamics.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <fmt/format.h>
 #include <numbers>
 #include <stdexcept>
 
@@ -28,10 +29,10 @@ RetardationKernel make_retardation_kernel(std::span<const double> w, std::span<c
   }
   for (std::size_t i = 0; i < w.size(); ++i) {
     if (!(w[i] >= 0.0) || (i > 0 && !(w[i] > w[i - 1]))) {
-      throw std::invalid_argument(fmt::format(
-          "retardation kernel: frequencies must be >= 0 rad/s and strictly increasing; "
-          "frequency[{}] = {} rad/s",
-          i, w[i]));
+      throw std::invalid_argument(
+          fmt::format("retardation kernel: frequencies must be >= 0 rad/s and strictly increasing; "
+                      "frequency[{}] = {} rad/s",
+                      i, w[i]));
     }
     require_finite(B[i], "radiation damping B(w)");
   }

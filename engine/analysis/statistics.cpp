@@ -1,9 +1,10 @@
 #include "engine/analysis/statistics.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <complex>
-#include <fmt/format.h>
 #include <numbers>
 #include <stdexcept>
 #include <unsupported/Eigen/FFT>
@@ -77,8 +78,9 @@ Spectrum welch_spectrum(std::span<const double> x, double dt_s, std::size_t L) {
   std::vector<double> w(L);
   double sum_w2 = 0.0;
   for (std::size_t i = 0; i < L; ++i) {
-    w[i] = 0.5 * (1.0 - std::cos(2.0 * std::numbers::pi * static_cast<double>(i) /
-                                 static_cast<double>(L)));
+    w[i] =
+        0.5 *
+        (1.0 - std::cos(2.0 * std::numbers::pi * static_cast<double>(i) / static_cast<double>(L)));
     sum_w2 += w[i] * w[i];
   }
   const std::size_t hop = L / 2;
@@ -93,7 +95,8 @@ Spectrum welch_spectrum(std::span<const double> x, double dt_s, std::size_t L) {
     const double mu = mean_of(part);
     for (std::size_t i = 0; i < L; ++i) segment[i] = (part[i] - mu) * w[i];
     fft.fwd(spectrum, segment);
-    for (std::size_t k = 0; k < n_bins; ++k) power(static_cast<Eigen::Index>(k)) += std::norm(spectrum[k]);
+    for (std::size_t k = 0; k < n_bins; ++k)
+      power(static_cast<Eigen::Index>(k)) += std::norm(spectrum[k]);
   }
   // Two-sided P(f_k) = |X_k|² / (fs sum w²); one-sided doubles every bin but
   // DC and (even L) Nyquist; S(w) = P(f)/(2 pi).
@@ -104,15 +107,17 @@ Spectrum welch_spectrum(std::span<const double> x, double dt_s, std::size_t L) {
   }
   Spectrum out;
   out.frequency_step_rad_s = 2.0 * std::numbers::pi / (static_cast<double>(L) * dt_s);
-  out.frequency_rad_s = Eigen::VectorXd::LinSpaced(static_cast<Eigen::Index>(n_bins), 0.0,
-                                                   out.frequency_step_rad_s *
-                                                       static_cast<double>(n_bins - 1));
+  out.frequency_rad_s =
+      Eigen::VectorXd::LinSpaced(static_cast<Eigen::Index>(n_bins), 0.0,
+                                 out.frequency_step_rad_s * static_cast<double>(n_bins - 1));
   out.density = power;
   out.segments = n_seg;
   return out;
 }
 
-double spectrum_variance(const Spectrum& s) { return s.density.sum() * s.frequency_step_rad_s; }
+double spectrum_variance(const Spectrum& s) {
+  return s.density.sum() * s.frequency_step_rad_s;
+}
 
 double spectral_peak_period_s(const Spectrum& s) {
   if (s.density.size() < 2) throw std::invalid_argument("spectral_peak_period_s: empty spectrum");
@@ -137,9 +142,9 @@ double zero_upcrossing_period_s(std::span<const double> x, double dt_s) {
   require_samples(x, 3, "zero_upcrossing_period_s");
   const auto t = upcrossing_times_s(x, dt_s, mean_of(x));
   if (t.size() < 2) {
-    throw std::invalid_argument(fmt::format(
-        "zero_upcrossing_period_s: need >= 2 mean up-crossings, found {} in {} s", t.size(),
-        static_cast<double>(x.size()) * dt_s));
+    throw std::invalid_argument(
+        fmt::format("zero_upcrossing_period_s: need >= 2 mean up-crossings, found {} in {} s",
+                    t.size(), static_cast<double>(x.size()) * dt_s));
   }
   return (t.back() - t.front()) / static_cast<double>(t.size() - 1);
 }
@@ -184,8 +189,8 @@ WeibullFit fit_weibull_least_squares(std::span<const double> excess, double uppe
     if (v > 0.0 && std::isfinite(v)) x.push_back(v);
   }
   if (x.size() < 3) {
-    throw std::invalid_argument(fmt::format(
-        "fit_weibull_least_squares: need >= 3 positive excesses, got {}", x.size()));
+    throw std::invalid_argument(
+        fmt::format("fit_weibull_least_squares: need >= 3 positive excesses, got {}", x.size()));
   }
   std::sort(x.begin(), x.end());
   const double n_all = static_cast<double>(x.size());
@@ -221,9 +226,9 @@ ExtremeEstimate most_probable_maximum(std::span<const double> x, double dt_s,
         "most_probable_maximum: gumbel_segments must be >= 2, got {}", options.gumbel_segments));
   }
   if (!(options.target_duration_s > 0.0)) {
-    throw std::invalid_argument(fmt::format(
-        "most_probable_maximum: target_duration_s must be > 0 s, got {} s",
-        options.target_duration_s));
+    throw std::invalid_argument(
+        fmt::format("most_probable_maximum: target_duration_s must be > 0 s, got {} s",
+                    options.target_duration_s));
   }
   require_samples(x, 8 * options.gumbel_segments, "most_probable_maximum");
   const ChannelMoments mom = channel_moments(x);
@@ -260,7 +265,8 @@ ExtremeEstimate most_probable_maximum(std::span<const double> x, double dt_s,
   const double Tz = zero_upcrossing_period_s(x, dt_s);
   e.expected_cycles_in_target = options.target_duration_s / Tz;
   e.mpm_rayleigh =
-      mom.mean + mom.std_dev * std::sqrt(2.0 * std::log(std::max(e.expected_cycles_in_target, 1.0)));
+      mom.mean +
+      mom.std_dev * std::sqrt(2.0 * std::log(std::max(e.expected_cycles_in_target, 1.0)));
   return e;
 }
 

@@ -52,7 +52,7 @@ namespace spiral::engine {
 
 struct ChannelMoments {
   double mean = 0.0;
-  double std_dev = 0.0;   ///< population (1/n) standard deviation
+  double std_dev = 0.0;  ///< population (1/n) standard deviation
   double minimum = 0.0;
   double maximum = 0.0;
   double skewness = 0.0;  ///< m3 / m2^1.5 (0 for a Gaussian process)
@@ -68,7 +68,7 @@ struct Spectrum {
   Eigen::VectorXd frequency_rad_s;  ///< 0, dw, 2dw, … up to the Nyquist frequency
   Eigen::VectorXd density;          ///< one-sided S(w), unit²·s/rad
   double frequency_step_rad_s = 0.0;
-  std::size_t segments = 0;          ///< Welch segments averaged
+  std::size_t segments = 0;  ///< Welch segments averaged
 };
 
 /// Welch estimate: Hann-windowed segments of segment_length samples with 50 %
@@ -117,21 +117,21 @@ struct WeibullFit {
 WeibullFit fit_weibull_least_squares(std::span<const double> excess, double upper_fraction = 1.0);
 
 struct ExtremeOptions {
-  double target_duration_s = 10800.0;  ///< 3 h sea state
-  std::size_t gumbel_segments = 10;    ///< equal segments for the Gumbel fit (>= 2)
+  double target_duration_s = 10800.0;   ///< 3 h sea state
+  std::size_t gumbel_segments = 10;     ///< equal segments for the Gumbel fit (>= 2)
   double weibull_upper_fraction = 0.5;  ///< part of the ranked peaks in the Weibull fit
 };
 
 struct ExtremeEstimate {
   double record_duration_s = 0.0;
-  std::size_t peaks = 0;               ///< global peaks in the record
-  double expected_peaks_in_target = 0.0;  ///< N for Weibull
+  std::size_t peaks = 0;                   ///< global peaks in the record
+  double expected_peaks_in_target = 0.0;   ///< N for Weibull
   double expected_cycles_in_target = 0.0;  ///< T/T_z for Rayleigh
-  GumbelFit gumbel;                    ///< fit to the segment maxima
-  WeibullFit weibull;                  ///< fit to the peak excesses over the mean
-  double mpm_gumbel = 0.0;             ///< unit
-  double mpm_weibull = 0.0;            ///< unit
-  double mpm_rayleigh = 0.0;           ///< unit
+  GumbelFit gumbel;                        ///< fit to the segment maxima
+  WeibullFit weibull;                      ///< fit to the peak excesses over the mean
+  double mpm_gumbel = 0.0;                 ///< unit
+  double mpm_weibull = 0.0;                ///< unit
+  double mpm_rayleigh = 0.0;               ///< unit
 };
 
 /// The three MPM estimates of the channel maximum over the target duration.

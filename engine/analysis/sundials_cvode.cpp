@@ -1,18 +1,18 @@
 #include "engine/analysis/sundials_cvode.hpp"
 
 #include <cvode/cvode.h>
+#include <fmt/format.h>
 #include <nvector/nvector_serial.h>
 #include <sundials/sundials_context.h>
 #include <sunlinsol/sunlinsol_dense.h>
 #include <sunmatrix/sunmatrix_dense.h>
 #include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <exception>
 #include <limits>
-#include <algorithm>
-#include <fmt/format.h>
 #include <stdexcept>
 #include <utility>
 
@@ -141,13 +141,12 @@ CvodeIntegrator::CvodeIntegrator(OdeRightHandSide rhs, double t0_s, const Eigen:
     throw std::invalid_argument("CVODE: the initial time and state must be finite");
   }
   if (!(options.relative_tolerance > 0.0) || !(options.absolute_tolerance > 0.0)) {
-    throw std::invalid_argument(fmt::format(
-        "CVODE: relative_tolerance and absolute_tolerance must be > 0, got {} and {}",
-        options.relative_tolerance, options.absolute_tolerance));
+    throw std::invalid_argument(
+        fmt::format("CVODE: relative_tolerance and absolute_tolerance must be > 0, got {} and {}",
+                    options.relative_tolerance, options.absolute_tolerance));
   }
-  if (options.absolute_tolerances &&
-      (options.absolute_tolerances->size() != y0.size() ||
-       !(options.absolute_tolerances->array() > 0.0).all())) {
+  if (options.absolute_tolerances && (options.absolute_tolerances->size() != y0.size() ||
+                                      !(options.absolute_tolerances->array() > 0.0).all())) {
     throw std::invalid_argument(
         fmt::format("CVODE: absolute_tolerances must have {} entries, all > 0", y0.size()));
   }
@@ -158,6 +157,13 @@ CvodeIntegrator::CvodeIntegrator(OdeRightHandSide rhs, double t0_s, const Eigen:
   if (options.initial_step_s && !(*options.initial_step_s > 0.0)) {
     throw std::invalid_argument(
         fmt::format("CVODE: initial_step_s must be > 0 s, got {} s", *options.initial_step_s));
+  }
+  if (options.max_order) {
+    const int limit = options.method == CvodeMethod::bdf_newton_dense ? 5 : 12;
+    if (*options.max_order < 1 || *options.max_order > limit) {
+      throw std::invalid_argument(fmt::format(
+          "CVODE: max_order must be 1..{} for this method, got {}", limit, *options.max_order));
+    }
   }
   if (options.max_steps_between_outputs <= 0) {
     throw std::invalid_argument("CVODE: max_steps_between_outputs must be > 0");
@@ -208,6 +214,7 @@ CvodeIntegrator::CvodeIntegrator(OdeRightHandSide rhs, double t0_s, const Eigen:
     m.check(CVodeSetLinearSolver(m.cvode, m.linear_solver, m.matrix), "CVodeSetLinearSolver");
   }
   m.check(CVodeSetMaxNumSteps(m.cvode, options.max_steps_between_outputs), "CVodeSetMaxNumSteps");
+  if (options.max_order) m.check(CVodeSetMaxOrd(m.cvode, *options.max_order), "CVodeSetMaxOrd");
   if (options.max_step_s) m.check(CVodeSetMaxStep(m.cvode, *options.max_step_s), "CVodeSetMaxStep");
   if (options.initial_step_s) {
     m.check(CVodeSetInitStep(m.cvode, *options.initial_step_s), "CVodeSetInitStep");
@@ -240,17 +247,17 @@ const Eigen::VectorXd& CvodeIntegrator::advance_to(double t_out_s) {
     // continued past this time whatever the step budget (a force that fails
     // or jumps there): say so instead of blaming the step budget.
     constexpr double kCollapsedStepUlps = 1e3;
-    const bool collapsed =
-        std::abs(s.last_step_s) <
-        kCollapsedStepUlps * std::numeric_limits<double>::epsilon() *
-            std::max(1.0, std::abs(s.current_time_s));
+    const bool collapsed = std::abs(s.last_step_s) < kCollapsedStepUlps *
+                                                         std::numeric_limits<double>::epsilon() *
+                                                         std::max(1.0, std::abs(s.current_time_s));
     std::string message = fmt::format(
         "CVODE failed at t = {:.6g} s on the way to t = {:.6g} s: {}{} after {} steps, last step "
         "h = {:.3g} s (order {}). {}{}. Hint: {}",
         s.current_time_s, t_out_s, flag_name(flag), collapsed ? " (step size collapsed)" : "",
         s.steps, s.last_step_s, s.last_order, m.last_cvode_message,
-        m.last_rhs_message.empty() ? "" : fmt::format(" Last right-hand side error: {}",
-                                                      m.last_rhs_message),
+        m.last_rhs_message.empty()
+            ? ""
+            : fmt::format(" Last right-hand side error: {}", m.last_rhs_message),
         collapsed ? "the right-hand side fails or is discontinuous at this time: check the "
                     "forces (line solver, tabulated input) at the state reached"
                   : hint_for(flag));
@@ -262,8 +269,12 @@ const Eigen::VectorXd& CvodeIntegrator::advance_to(double t_out_s) {
   return m.y_out;
 }
 
-double CvodeIntegrator::time_s() const { return impl_->t_out; }
-const Eigen::VectorXd& CvodeIntegrator::state() const { return impl_->y_out; }
+double CvodeIntegrator::time_s() const {
+  return impl_->t_out;
+}
+const Eigen::VectorXd& CvodeIntegrator::state() const {
+  return impl_->y_out;
+}
 
 CvodeStatistics CvodeIntegrator::statistics() const {
   const Impl& m = *impl_;

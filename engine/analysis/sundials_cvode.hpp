@@ -46,12 +46,13 @@ enum class CvodeMethod { bdf_newton_dense, adams_newton_dense, adams_fixed_point
 /// the local error of y_i is kept below rtol·|y_i| + atol_i.
 struct CvodeOptions {
   CvodeMethod method = CvodeMethod::adams_newton_dense;
-  double relative_tolerance = 1e-8;     ///< > 0 (CVODE warns below ~1e-15)
-  double absolute_tolerance = 1e-10;    ///< > 0, in the unit of every state; used if no vector
+  double relative_tolerance = 1e-8;   ///< > 0 (CVODE warns below ~1e-15)
+  double absolute_tolerance = 1e-10;  ///< > 0, in the unit of every state; used if no vector
   std::optional<Eigen::VectorXd> absolute_tolerances;  ///< per state, > 0, size of y
-  std::optional<double> max_step_s;      ///< > 0; none = unbounded
-  std::optional<double> initial_step_s;  ///< > 0; none = CVODE's estimate
-  long max_steps_between_outputs = 500000;  ///< CVodeSetMaxNumSteps (> 0)
+  std::optional<double> max_step_s;                    ///< > 0; none = unbounded
+  std::optional<double> initial_step_s;                ///< > 0; none = CVODE's estimate
+  long max_steps_between_outputs = 500000;             ///< CVodeSetMaxNumSteps (> 0)
+  std::optional<int> max_order;  ///< CVodeSetMaxOrd: 1..5 (BDF), 1..12 (Adams); none = maximum
 };
 
 /// Counters of a CVODE run (cumulative since construction).

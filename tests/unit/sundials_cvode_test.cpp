@@ -28,9 +28,9 @@ TEST_P(CvodeMethods, ExponentialDecayMatchesClosedForm) {
   o.relative_tolerance = 1e-10;
   o.absolute_tolerance = 1e-14;
   const std::vector<double> times{0.0, 1.0, 2.5, 5.0};
-  const auto sol = integrate_ode(
-      [](double, const Eigen::VectorXd& y, Eigen::VectorXd& ydot) { ydot = -y; }, 0.0,
-      Eigen::VectorXd::Constant(1, 1.0), times, o);
+  const auto sol =
+      integrate_ode([](double, const Eigen::VectorXd& y, Eigen::VectorXd& ydot) { ydot = -y; }, 0.0,
+                    Eigen::VectorXd::Constant(1, 1.0), times, o);
   ASSERT_EQ(sol.states.cols(), 4);
   for (int k = 0; k < 4; ++k) EXPECT_REL_NEAR(sol.states(0, k), std::exp(-times[k]), kExpRelTol);
   EXPECT_GT(sol.statistics.steps, 0);

@@ -9,8 +9,6 @@
 // linearly between samples; at a zero crossing of a sinusoid the curvature is
 // zero, so the interpolation error is O((w dt)^3) ~ 1e-6 of a period.
 
-#include "engine/analysis/hull_dynamics.hpp"
-
 #include <gtest/gtest.h>
 
 #include <Eigen/Eigenvalues>
@@ -20,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/analysis/hull_dynamics.hpp"
 #include "engine/analysis/statistics.hpp"
 #include "support/expect_near.hpp"
 #include "support/oc4_hull_dynamics.hpp"
@@ -64,8 +63,7 @@ struct Oscillation {
 
 // Period from the mean spacing of up-crossings of `level`, decrement from the
 // mean ln-ratio of successive cycle maxima measured from `level`.
-Oscillation measure(const Eigen::Matrix<double, 6, Eigen::Dynamic>& series, int dof,
-                    double level) {
+Oscillation measure(const Eigen::Matrix<double, 6, Eigen::Dynamic>& series, int dof, double level) {
   std::vector<double> x(static_cast<std::size_t>(series.cols()));
   for (Eigen::Index k = 0; k < series.cols(); ++k) x[static_cast<std::size_t>(k)] = series(dof, k);
   const auto t = upcrossing_times_s(x, kOutputStep_s, level);
@@ -129,17 +127,17 @@ TEST(HullFreeDecay, CoupledModesOfOc4OscillateAtTheirEigenperiods) {
     Vector6d shape = modes.eigenvectors().col(mode);
     // Scale: 1 m (translation-dominated) or 0.02 rad (rotation-dominated) peak.
     Eigen::Index dominant = 0;
-    const Vector6d scaled = shape.cwiseAbs().cwiseProduct(
-        (Vector6d() << 1, 1, 1, 50, 50, 50).finished());
+    const Vector6d scaled =
+        shape.cwiseAbs().cwiseProduct((Vector6d() << 1, 1, 1, 50, 50, 50).finished());
     scaled.maxCoeff(&dominant);
     shape *= (dominant < 3 ? 1.0 : 0.02) / shape(dominant);
     HullSimulationOptions options;
     const int n = static_cast<int>(std::ceil(6.0 * period / kOutputStep_s));
     for (int k = 0; k <= n; ++k) options.output_times_s.push_back(k * kOutputStep_s);
-    const auto run = simulate_hull(oc4.model, HullLoads{oc4.lines, {}}, shape, Vector6d::Zero(),
-                                   options);
-    SCOPED_TRACE(testing::Message() << "mode " << mode << ", T = " << period << " s, dominant DOF "
-                                    << dominant);
+    const auto run =
+        simulate_hull(oc4.model, HullLoads{oc4.lines, {}}, shape, Vector6d::Zero(), options);
+    SCOPED_TRACE(testing::Message()
+                 << "mode " << mode << ", T = " << period << " s, dominant DOF " << dominant);
     const auto o = measure(run.position, static_cast<int>(dominant), 0.0);
     EXPECT_REL_NEAR(o.period_s, period, kPeriodRelTol);
     EXPECT_REL_NEAR(o.period_s, period, kPeriodTightRelTol);
@@ -229,8 +227,7 @@ TEST(HullFreeDecay, HarmonicForceAtResonance) {
     const auto run = simulate_hull(oc4.model, HullLoads{oc4.lines, force}, Vector6d::Zero(),
                                    Vector6d::Zero(), options);
     const Eigen::Index tail = static_cast<Eigen::Index>(2.0 * kHeavePeriod_s / kOutputStep_s);
-    const double amplitude =
-        run.position.row(2).tail(tail).cwiseAbs().maxCoeff();
+    const double amplitude = run.position.row(2).tail(tail).cwiseAbs().maxCoeff();
     // Sampled maximum: error <= (w dt/2)^2/2 = 4e-5 of the amplitude.
     EXPECT_REL_NEAR(amplitude, F0_N / (B * w), 1e-4);
   }
@@ -249,11 +246,9 @@ TEST(HullFreeDecay, SemiCoupledEquilibriumHoldsFor3Hours) {
   lines.added_mass = Matrix6d(Vector6d::Constant(1e5).asDiagonal());
   HullSimulationOptions options;
   for (double t = 0.0; t <= 10800.0; t += 10.0) options.output_times_s.push_back(t);
-  const auto run =
-      simulate_hull(oc4.model, HullLoads{lines, {}}, lines.equilibrium_offset, Vector6d::Zero(),
-                    options);
-  const double drift =
-      (run.position.colwise() - lines.equilibrium_offset).cwiseAbs().maxCoeff();
+  const auto run = simulate_hull(oc4.model, HullLoads{lines, {}}, lines.equilibrium_offset,
+                                 Vector6d::Zero(), options);
+  const double drift = (run.position.colwise() - lines.equilibrium_offset).cwiseAbs().maxCoeff();
   EXPECT_LT(drift, kEquilibriumDrift_m);
 }
 

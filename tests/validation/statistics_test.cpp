@@ -12,8 +12,8 @@
 #include <complex>
 #include <numbers>
 #include <random>
-#include <vector>
 #include <unsupported/Eigen/FFT>
+#include <vector>
 
 #include "support/expect_near.hpp"
 
