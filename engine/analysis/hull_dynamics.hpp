@@ -1,0 +1,205 @@
+#pragma once
+// Low-frequency 6-DOF hull equations of motion in the time domain — step 3 of
+// the semi-coupled (S-C) method and the hull part of the uncoupled level
+// (DESIGN.md §1):
+//
+//   (M + A + A_lines) q'' + (B_lin + B_lines) q' + diag(b_quad) |q'| q'
+//       + mu(t) + C_hydro q = F_hs0 + F_lines(q, q') + F_ext(t, q, q')
+//
+//   q      offset of the hull reference point from its position at rest
+//          (surge, sway, heave in m; roll, pitch, yaw in rad; DESIGN.md §4)
+//   mu(t)  radiation memory (Cummins 1962), int_0^t_max K(tau) q'(t - tau) dtau,
+//          only with a RetardationKernel; A must then be A(inf)
+//   F_hs0  net hydrostatic force at q = 0 (buoyancy − weight, e.g. the
+//          vertical line pretension the hull carries at rest)
+//
+// Kinematic assumption. The equations are written in the earth-fixed frame
+// with q' = dq/dt. Roll and pitch are small: their rates are taken as the
+// angular-velocity components and the moments as their generalized forces
+// (linearized rotational kinematics, the usual low-frequency model). Yaw may
+// be large only through the force callbacks: the nonlinear line force and
+// F_ext receive the full q and may evaluate the exact pose
+// (pose_from_offset, R = Rz·Ry·Rx). The hull's own matrices M, A, B, b_quad,
+// C are constant (not rotated with yaw), and the Coriolis–centripetal terms of
+// a yawing hull (~ m·yaw'·u, second order in low-frequency velocity) are
+// neglected: exact for a hull whose matrices are invariant under rotation
+// about z (a symmetric semi-submersible or a spar), approximate for a
+// weathervaning ship-shaped hull at large mean yaw, where the caller should
+// rotate the matrices into the mean heading.
+//
+// State layout: y = [q (6); q' (6)] (a flat Eigen::VectorXd, STYLE rule 2).
+// The derivative is a pure function of (model, loads, memory history, t, y).
+//
+// Errors: std::invalid_argument for invalid model data (non-finite entries,
+// a total mass matrix that is not positive definite, negative quadratic
+// damping, a DOF index out of range); IntegrationError (a SolverError) when
+// the integrator fails; the line/external callbacks' exceptions pass through
+// (SolverError from a callback is retried with a smaller step first).
+
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
+#include <Eigen/LU>
+#include <functional>
+#include <optional>
+#include <span>
+#include <variant>
+#include <vector>
+
+#include "engine/analysis/sundials_cvode.hpp"
+#include "engine/common/eigen_types.hpp"
+
+namespace spiral::engine {
+
+/// Radiation-memory kernel of Cummins' equation (Cummins 1962; Ogilvie 1964):
+///   K(t) = (2/pi) int_0^inf B(w) cos(w t) dw,
+/// tabulated at t_j = j·dt, j = 0..n−1, t_max = (n−1)·dt.
+struct RetardationKernel {
+  double time_step_s = 0.0;  ///< dt of the table and of the stored velocity history
+  Eigen::MatrixXd values;    ///< 36 × n: column j is K(t_j) flattened column-major, N/(m/s)/s …
+
+  Eigen::Index size() const { return values.cols(); }
+  double duration_s() const { return time_step_s * static_cast<double>(size() - 1); }
+  Matrix6d at_index(Eigen::Index j) const {
+    return Eigen::Map<const Matrix6d>(values.col(j).data());
+  }
+};
+
+/// Builds K(t) from the frequency-domain radiation damping B(w_i) (6×6 each,
+/// w strictly increasing, rad/s) by the trapezoidal rule over the given
+/// frequencies; B is taken as zero beyond the last frequency (truncation: the
+/// table should reach the frequency where B has decayed). Cost: n_t × n_w × 36.
+/// Throws std::invalid_argument for fewer than 2 frequencies, unsorted or
+/// negative frequencies, non-positive time step or duration.
+RetardationKernel make_retardation_kernel(std::span<const double> frequencies_rad_s,
+                                          std::span<const Matrix6d> damping, double time_step_s,
+                                          double duration_s);
+
+/// The hull: mass, hydrodynamics and hydrostatics about the reference point.
+struct HullDynamicsModel {
+  Matrix6d mass = Matrix6d::Zero();               ///< rigid-body M (rigid_body_mass_matrix)
+  Matrix6d added_mass = Matrix6d::Zero();         ///< A(0) low-frequency, or A(inf) with memory
+  Matrix6d linear_damping = Matrix6d::Zero();     ///< B_lin, N/(m/s), N·m/(rad/s) …
+  Vector6d quadratic_damping = Vector6d::Zero();  ///< b_quad per DOF, N/(m/s)², N·m/(rad/s)², >= 0
+  Matrix6d hydrostatic_stiffness = Matrix6d::Zero();  ///< C_hydro incl. gravity terms, N/m, N·m/rad
+  Vector6d hydrostatic_force_at_rest = Vector6d::Zero();  ///< F_hs0, N, N·m
+  std::optional<RetardationKernel> radiation_memory;      ///< Cummins memory; A must be A(inf)
+};
+
+/// Semi-coupled line model (DESIGN.md §1, step 2): the line array linearized
+/// at the static equilibrium q0,  F = F0 − K (q − q0) − B_lines q'.
+/// The enhanced S-C adds B_lines (line damping) and A_lines (line added mass at
+/// the fairleads, added to M).
+struct LinearizedLines {
+  Vector6d force_at_equilibrium = Vector6d::Zero();  ///< F0, N, N·m
+  Matrix6d stiffness = Matrix6d::Zero();             ///< K = −dF/dq at q0
+  Vector6d equilibrium_offset = Vector6d::Zero();    ///< q0, m, rad
+  std::optional<Matrix6d> damping;                   ///< B_lines (enhanced S-C)
+  std::optional<Matrix6d> added_mass;                ///< A_lines (enhanced S-C)
+};
+
+/// Uncoupled level: the lines as nonlinear quasi-static restoring forces,
+/// F_lines(q) (N, N·m about the displaced reference point, global axes), e.g.
+/// evaluate_line_array at pose_from_offset(q). May throw SolverError
+/// (treated as a recoverable integrator failure).
+using NonlinearLineForce = std::function<Vector6d(const Vector6d& q)>;
+
+using LineForceModel = std::variant<LinearizedLines, NonlinearLineForce>;
+
+/// External low-frequency force F_ext(t, q, q') (N, N·m): wave slow drift,
+/// wind and current with relative velocity — built by the caller.
+using ExternalForce = std::function<Vector6d(double t_s, const Vector6d& q, const Vector6d& q_dot)>;
+
+/// What acts on the hull besides its own hydrodynamics.
+struct HullLoads {
+  LineForceModel lines = LinearizedLines{};
+  ExternalForce external;  ///< empty = no external force
+};
+
+/// Velocity history for the radiation memory, sampled at the kernel's time
+/// step: velocities.col(k) = q'(t_start + k·dt) (k = 0 .. count−1). Before
+/// t_start the hull is at rest. An input of the derivative, written only by
+/// the driver between steps.
+struct VelocityHistory {
+  double start_time_s = 0.0;
+  double time_step_s = 0.0;
+  Eigen::Matrix<double, 6, Eigen::Dynamic> velocities;
+  Eigen::Index count = 0;
+};
+
+/// The radiation memory force mu(t) = int_0^t_max K(tau) q'(t − tau) dtau by
+/// the trapezoidal rule on the history grid, with q'(t) = the current
+/// velocity and K between table points linearly interpolated. Cost per call:
+/// about n_kernel × 36 multiply-adds (a 60 s kernel at 0.1 s: ~2e4).
+Vector6d radiation_memory_force(const RetardationKernel& kernel, const VelocityHistory& history,
+                                double t_s, const Vector6d& velocity);
+
+/// Time-independent data derived once from a model and its line model.
+struct HullEquations {
+  HullDynamicsModel model;
+  HullLoads loads;
+  Matrix6d total_mass;  ///< M + A + A_lines
+  Eigen::PartialPivLU<Matrix6d> total_mass_lu;
+  Matrix6d total_linear_damping;  ///< B_lin + B_lines
+};
+
+/// Validates the model and factorizes the total mass matrix.
+HullEquations make_hull_equations(const HullDynamicsModel& model, const HullLoads& loads);
+
+/// The force on the hull at (t, q, q') other than inertia (everything on the
+/// right-hand side minus the left-hand damping/stiffness terms), N, N·m.
+Vector6d hull_generalized_force(const HullEquations& eq, double t_s, const Vector6d& q,
+                                const Vector6d& q_dot, const VelocityHistory* history);
+
+/// y' = f(model, loads, history, t, y) with y = [q; q']. Writes ydot only.
+void hull_state_derivative(const HullEquations& eq, const VelocityHistory* history, double t_s,
+                           const Eigen::VectorXd& y, Eigen::VectorXd& ydot);
+
+/// Integrator settings for the hull. Default: Adams–Moulton (variable order
+/// up to 12) with Newton and a dense difference-quotient Jacobian — the
+/// low-frequency system is non-stiff (periods 17–120 s) and smooth, where high
+/// order pays; rtol 1e-10, atol 1e-10 m and m/s, 1e-12 rad and rad/s. The
+/// integration error is then far below any engineering resolution (measured
+/// in tests/validation/hull_free_decay_test.cpp: period error ~1e-6, energy
+/// drift 7e-7 over 20 surge periods of OC4) and a 3-hour S-C run takes
+/// milliseconds. With a NonlinearLineForce from catenary solves, the force
+/// carries the line solvers' closure noise (~1e-9 relative): raise rtol to
+/// 1e-7..1e-8, above that noise, or the error test fails repeatedly.
+CvodeOptions default_hull_integrator_options();
+
+struct HullSimulationOptions {
+  double start_time_s = 0.0;
+  std::vector<double> output_times_s;  ///< strictly increasing, >= start_time_s
+  CvodeOptions integrator = default_hull_integrator_options();
+};
+
+/// Time series of a hull simulation.
+struct HullTimeSeries {
+  Eigen::VectorXd times_s;
+  Eigen::Matrix<double, 6, Eigen::Dynamic> position;  ///< q at times_s, m, rad
+  Eigen::Matrix<double, 6, Eigen::Dynamic> velocity;  ///< q' at times_s, m/s, rad/s
+  CvodeStatistics statistics;
+  double wall_clock_s = 0.0;  ///< cost of the run (DESIGN.md §1: every level reports it)
+};
+
+/// Integrates the hull equations from (q0, q'0). With radiation memory the
+/// integration advances in history steps (CVODE stops exactly at each, no
+/// restart) and appends q' to the history after each. Cost with memory: at
+/// least one step per history step, each RHS ~n_kernel × 72 flops; the
+/// memory force is only piecewise smooth in t, so use rtol ~1e-7 (not the
+/// 1e-10 default): measured on a 3-h OC4 run with a 60 s / 0.1 s kernel,
+/// 2.7–3.9 s at rtol 1e-7 against 22 s at 1e-10 and 0.12 s without memory
+/// (tests/bench/hull_dynamics_bench.cpp).
+HullTimeSeries simulate_hull(const HullDynamicsModel& model, const HullLoads& loads,
+                             const Vector6d& initial_position, const Vector6d& initial_velocity,
+                             const HullSimulationOptions& options);
+
+/// Free decay in one DOF (0..5): starts at rest at the equilibrium (q0 of
+/// LinearizedLines; q = 0 for a nonlinear line force) displaced by
+/// `initial_displacement` (m or rad) in `dof`, no external force, outputs
+/// every output_step_s over duration_s.
+HullTimeSeries free_decay(const HullDynamicsModel& model, const LineForceModel& lines, int dof,
+                          double initial_displacement, double duration_s,
+                          double output_step_s = 0.05,
+                          const CvodeOptions& integrator = default_hull_integrator_options());
+
+}  // namespace spiral::engine
