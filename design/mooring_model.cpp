@@ -49,12 +49,40 @@ engine::CatenaryLine catenary_of(const Project& project, const MooringLine& line
   return catenary;
 }
 
-LineArrayModel build_mooring_model(const Project& project, const std::string& excluded_line) {
+namespace {
+
+engine::FeLineModel fe_model_of(const Project& project, const MooringLine& line,
+                                const std::vector<LineTypeProperties>& types) {
+  engine::FeLineModel model;
+  for (const LineSegment& segment : line.segments) {
+    const LineTypeProperties& type = find_type(types, segment.type);
+    engine::FeLineSection section;
+    section.length_m = segment.length_m;
+    section.EA_N = type.axial_stiffness_N;
+    section.mass_kg_per_m = type.mass_per_length_kg_per_m;
+    section.weight_N_per_m = type.submerged_weight_N_per_m;
+    section.hydro_diameter_m = type.hydrodynamic_diameter_m;
+    section.drag_normal = type.drag_normal;
+    section.drag_tangential = type.drag_axial;
+    section.element_length_m = std::min(line.fe.element_length_m, segment.length_m);
+    model.sections.push_back(section);
+  }
+  model.joint_load_N = catenary_of(project, line, types).joint_load_N;
+  return model;
+}
+
+void check_excluded_line(const Project& project, const std::string& excluded_line) {
   if (!excluded_line.empty() &&
       std::none_of(project.mooring.lines.begin(), project.mooring.lines.end(),
                    [&](const MooringLine& l) { return l.name == excluded_line; })) {
     throw std::invalid_argument(fmt::format("no mooring line named '{}'", excluded_line));
   }
+}
+
+}  // namespace
+
+LineArrayModel build_mooring_model(const Project& project, const std::string& excluded_line) {
+  check_excluded_line(project, excluded_line);
   const std::vector<LineTypeProperties> types = resolve_line_types(project);
   LineArrayModel model;
   model.reference_point_g = project.hull.reference_point_g;
@@ -67,6 +95,36 @@ LineArrayModel build_mooring_model(const Project& project, const std::string& ex
     MooringLineDesign design{line.name, {}};
     for (const LineSegment& segment : line.segments) design.segment_types.push_back(find_type(types, segment.type));
     model.designs.push_back(std::move(design));
+  }
+  return model;
+}
+
+LineArrayModel build_line_array(const Project& project, const LineArrayOptions& options) {
+  check_excluded_line(project, options.excluded_line);
+  const std::vector<LineTypeProperties> types = resolve_line_types(project);
+  LineArrayModel model;
+  model.reference_point_g = project.hull.reference_point_g;
+  for (const MooringLine& line : project.mooring.lines) {
+    if (line.name == options.excluded_line) continue;
+    const double anchor_height_m = std::max(0.0, line.anchor_g.z() + project.site.depth_m);
+    if (line.model == LineModel::fe) {
+      const engine::FeLineModel fe = fe_model_of(project, line, types);
+      model.lines.push_back(std::make_unique<engine::FeStaticLine>(
+          line.name, line.anchor_g, line.fairlead_b, fe,
+          fe_environment(project, options.current, fe.sections.front().hydro_diameter_m)));
+    } else {
+      model.lines.push_back(std::make_unique<engine::CatenaryStaticLine>(
+          line.name, line.anchor_g, line.fairlead_b, anchor_height_m, catenary_of(project, line, types)));
+    }
+    MooringLineDesign design{line.name, {}};
+    for (const LineSegment& segment : line.segments) design.segment_types.push_back(find_type(types, segment.type));
+    model.designs.push_back(std::move(design));
+  }
+  if (options.include_risers) {
+    for (const Riser& riser : project.risers) {
+      model.risers.push_back(riser_design(project, riser));
+      model.lines.push_back(riser_static_line(project, model.risers.back(), options.current));
+    }
   }
   return model;
 }

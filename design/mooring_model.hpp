@@ -9,7 +9,9 @@
 
 #include "design/line_properties.hpp"
 #include "design/project.hpp"
+#include "design/riser_model.hpp"
 #include "engine/analysis/static_line.hpp"
+#include "engine/environment/current_profile.hpp"
 
 namespace spiral::design {
 
@@ -20,12 +22,20 @@ struct MooringLineDesign {
   std::vector<LineTypeProperties> segment_types;  ///< one per segment, anchor -> fairlead
 };
 
-/// The lines attached to the hull, ready for the engine's static analyses.
+/// The lines attached to the hull, ready for the engine's static analyses:
+/// the mooring lines first (in project order), then the risers.
 /// Each engine line holds its warm start: one model per analysis thread.
 struct LineArrayModel {
   Eigen::Vector3d reference_point_g = Eigen::Vector3d::Zero();  ///< hull reference point at rest
   std::vector<std::unique_ptr<engine::StaticLine>> lines;
-  std::vector<MooringLineDesign> designs;  ///< same order as `lines`
+  std::vector<MooringLineDesign> designs;  ///< the mooring lines, lines[0 .. designs.size())
+  std::vector<RiserDesign> risers;         ///< the risers, lines[designs.size() ..)
+};
+
+struct LineArrayOptions {
+  std::string excluded_line;                      ///< damaged condition: this mooring line is removed
+  std::optional<engine::CurrentProfile> current;  ///< acts on FE lines (mooring `model: fe`, risers)
+  bool include_risers = true;
 };
 
 /// Resolves every line type of the project (by name).
@@ -35,9 +45,14 @@ std::vector<LineTypeProperties> resolve_line_types(const Project& project);
 engine::CatenaryLine catenary_of(const Project& project, const MooringLine& line,
                                  const std::vector<LineTypeProperties>& types);
 
-/// The mooring lines of the project as quasi-static catenaries. `excluded_line`,
-/// when not empty, names a line to leave out (damaged condition). Throws
-/// std::invalid_argument for an unknown line name.
+/// The mooring lines of the project as quasi-static catenaries (every line,
+/// whatever its `model`: the quick look of `spiral statics`). `excluded_line`,
+/// when not empty, names a line to leave out. Throws std::invalid_argument
+/// for an unknown line name.
 LineArrayModel build_mooring_model(const Project& project, const std::string& excluded_line = {});
+
+/// Every line attached to the hull for the coupled static analysis: mooring
+/// lines as catenaries or FE lines (`model`), risers as FE lines with bending.
+LineArrayModel build_line_array(const Project& project, const LineArrayOptions& options);
 
 }  // namespace spiral::design

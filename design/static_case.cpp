@@ -91,18 +91,6 @@ StaticCaseResult run_static_case(const ValidatedProject& validated, const Static
     result.environment = it->environment;
     if (!damaged) damaged = it->damaged_line;
   }
-  engine::ExternalLoad environment_load;
-  if (request.load_case) {
-    const auto environment = std::find_if(project.environments.begin(), project.environments.end(),
-                                          [&](const Environment& e) { return e.name == result.environment; });
-    MeanEnvironmentLoad mean = mean_environment_load(project, *environment);
-    environment_load = std::move(mean.load);
-    result.notes = std::move(mean.notes);
-    if (environment->current && !environment->current->profile.empty()) {
-      result.notes.push_back(
-          "current on the lines: the quasi-static catenary carries no current drag (use an FE line model)");
-    }
-  }
   if (damaged && std::none_of(project.mooring.lines.begin(), project.mooring.lines.end(),
                               [&](const MooringLine& l) { return l.name == *damaged; })) {
     std::string names;
@@ -113,8 +101,32 @@ StaticCaseResult run_static_case(const ValidatedProject& validated, const Static
   result.damaged_line = damaged;
   result.condition = damaged ? "damaged" : "intact";
 
+  engine::ExternalLoad environment_load;
+  LineArrayOptions line_options;
+  line_options.excluded_line = damaged.value_or("");
+  if (request.load_case) {
+    const auto environment = std::find_if(project.environments.begin(), project.environments.end(),
+                                          [&](const Environment& e) { return e.name == result.environment; });
+    MeanEnvironmentLoad mean = mean_environment_load(project, *environment);
+    environment_load = std::move(mean.load);
+    result.notes = std::move(mean.notes);
+    if (environment->current && !environment->current->profile.empty()) {
+      line_options.current = current_profile_of(*environment->current);
+      if (std::any_of(project.mooring.lines.begin(), project.mooring.lines.end(),
+                      [](const MooringLine& l) { return l.model == LineModel::catenary; })) {
+        result.notes.push_back(
+            "current on the mooring lines: lines with model: catenary carry no current drag (risers and "
+            "model: fe lines do)");
+      }
+    }
+  }
   const HullModel hull = build_hull_model(project);
-  LineArrayModel lines = build_mooring_model(project, damaged.value_or(""));
+  LineArrayModel lines = build_line_array(project, line_options);
+  if (request.load_case) {
+    result.design_condition = std::find_if(project.load_cases.begin(), project.load_cases.end(), [&](const LoadCase& c) {
+                                return c.name == *request.load_case;
+                              })->condition;
+  }
 
   auto start = std::chrono::steady_clock::now();
   const engine::EquilibriumResult equilibrium =
@@ -142,12 +154,18 @@ StaticCaseResult run_static_case(const ValidatedProject& validated, const Static
   }
 
   std::vector<engine::LineState> states;
-  for (const auto& line : lines.lines) {
+  for (std::size_t i = 0; i < lines.designs.size(); ++i) {
+    const auto& line = lines.lines[i];
     states.push_back(line->state(equilibrium.pose.reference_point_g +
                                      equilibrium.pose.rotation * line->attachment_b(),
                                  kResultProfilePointsPerSegment));
   }
   result.lines = line_statics_rows(lines, states);
+  for (std::size_t r = 0; r < lines.risers.size(); ++r) {
+    // The equilibrium left every riser solved at the final pose.
+    const auto& riser = static_cast<const engine::FeStaticLine&>(*lines.lines[lines.designs.size() + r]);
+    result.risers.push_back(riser_statics_row(project, lines.risers[r], *riser.last_result(), result.design_condition));
+  }
 
   result.natural_modes = natural_modes(hull.statics.hydrostatic_stiffness + result.stiffness, hull.mass_matrix);
   result.added_mass_included = false;

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "design/riser_model.hpp"
 #include "design/statics_study.hpp"
 #include "design/validated_project.hpp"
 #include "engine/analysis/rigid_body.hpp"
@@ -47,13 +48,15 @@ struct StaticCaseResult {
 
   engine::Vector6d offset = engine::Vector6d::Zero();  ///< m, rad
   OffsetSummary offset_summary;
-  std::vector<LineStaticsRow> lines;
+  std::vector<LineStaticsRow> lines;       ///< mooring lines
+  std::vector<RiserStaticsRow> risers;
+  DesignCondition design_condition = DesignCondition::normal;  ///< selects the riser design factor
 
   engine::Vector6d line_force = engine::Vector6d::Zero();         ///< F of the line array, N, N·m
   engine::Matrix6d stiffness = engine::Matrix6d::Zero();          ///< analytic K of the line array
   std::optional<engine::Matrix6d> stiffness_finite_difference;    ///< central differences
   std::optional<double> stiffness_check_relative_difference;      ///< ‖K − K_fd‖ / ‖K_fd‖
-  std::vector<engine::Matrix6d> line_stiffness;                   ///< per line, same order as `lines`
+  std::vector<engine::Matrix6d> line_stiffness;                   ///< per line: mooring lines, then risers
   engine::Vector6d hydrostatic_force = engine::Vector6d::Zero();
   engine::Vector6d environment_force = engine::Vector6d::Zero();
   engine::Vector6d residual = engine::Vector6d::Zero();
