@@ -1,10 +1,10 @@
 #include "design/model_hash.hpp"
 
+#include <fmt/format.h>
+
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
-
-#include <fmt/format.h>
 
 namespace spiral::design {
 

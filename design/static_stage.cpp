@@ -23,7 +23,8 @@ CaseCheck check_case(const Project& project, const StaticCaseResult& result) {
   CaseCheck check;
   check.case_name = result.case_name;
   check.condition = result.condition;
-  check.safety_factor = mooring_safety_factor(project.criteria.mooring, result.condition == "damaged");
+  check.safety_factor =
+      mooring_safety_factor(project.criteria.mooring, result.condition == "damaged");
   double worst = -1.0;
   for (std::size_t i = 0; i < result.lines.size(); ++i) {
     const LineStaticsRow& row = result.lines[i];
@@ -60,8 +61,8 @@ RestoringCurve restoring_curve(LineArrayModel& model, double direction_deg, doub
     engine::Vector6d offset = engine::Vector6d::Zero();
     offset.head<2>() = s * d;
     try {
-      const engine::LineArrayResponse response =
-          engine::evaluate_line_array(model.lines, engine::pose_from_offset(model.reference_point_g, offset));
+      const engine::LineArrayResponse response = engine::evaluate_line_array(
+          model.lines, engine::pose_from_offset(model.reference_point_g, offset));
       curve.offset_m.push_back(s);
       curve.force_N.push_back(-response.force.head<2>().dot(d));
     } catch (const engine::SolverError& error) {
@@ -100,7 +101,8 @@ RiserShape riser_shape(const Project& project, const Riser& riser) {
     const double z = -depth + a * (std::cosh(x / a) - 1.0);
     shape.points_g.push_back(top + d * (x_top - x) + Eigen::Vector3d(0, 0, z - top.z()));
   }
-  if (length > suspended) shape.points_g.push_back(shape.points_g.back() + d * (length - suspended));
+  if (length > suspended)
+    shape.points_g.push_back(shape.points_g.back() + d * (length - suspended));
   return shape;
 }
 
@@ -144,7 +146,8 @@ StaticStageResults run_static_stage(const ValidatedProject& validated) {
     out.checks.push_back(check_case(project, out.cases[i]));
     const CaseCheck& check = out.checks.back();
     out.pass = out.pass && check.pass;
-    if (check.governing_line >= 0 && check.lines[static_cast<std::size_t>(check.governing_line)].utilization > worst) {
+    if (check.governing_line >= 0 &&
+        check.lines[static_cast<std::size_t>(check.governing_line)].utilization > worst) {
       worst = check.lines[static_cast<std::size_t>(check.governing_line)].utilization;
       out.worst_case = static_cast<int>(i);
     }

@@ -14,11 +14,10 @@
 // characteristic strength S_C = 0.95 MBL, i.e. SF = γ_mean / 0.95 with γ_mean
 // the ULS (intact) or ALS (damaged) mean factor.
 
+#include <Eigen/Core>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "design/static_case.hpp"
 #include "design/statics_study.hpp"
@@ -29,9 +28,9 @@ namespace spiral::design {
 /// The line array's restoring force against a horizontal offset of the hull
 /// along one direction (no rotation, no heave).
 struct RestoringCurve {
-  double direction_deg = 0.0;       ///< CCW from +x
-  std::vector<double> offset_m;     ///< along the direction, >= 0, ascending
-  std::vector<double> force_N;      ///< restoring force, −F·d (> 0 pushes the hull back)
+  double direction_deg = 0.0;          ///< CCW from +x
+  std::vector<double> offset_m;        ///< along the direction, >= 0, ascending
+  std::vector<double> force_N;         ///< restoring force, −F·d (> 0 pushes the hull back)
   std::optional<std::string> stopped;  ///< why the sweep ended early (a line could not be solved)
 };
 
@@ -49,8 +48,8 @@ struct CaseCheck {
   std::string case_name;
   std::string condition;  ///< "intact" or "damaged"
   double safety_factor = 0.0;
-  std::vector<LineCodeCheck> lines;  ///< same order as StaticCaseResult::lines
-  double offset_m = 0.0;             ///< horizontal offset of the equilibrium
+  std::vector<LineCodeCheck> lines;      ///< same order as StaticCaseResult::lines
+  double offset_m = 0.0;                 ///< horizontal offset of the equilibrium
   std::optional<double> offset_limit_m;  ///< criteria.max_offset_pct_depth · depth
   bool offset_pass = true;
   bool lines_pass = true;
@@ -79,12 +78,12 @@ struct RiserShape {
 
 struct StaticStageResults {
   std::string stage = "preliminary";
-  std::string code;  ///< mooring code name (to_string(MooringCode))
-  StaticsResult pretension;                ///< zero offset
-  std::vector<StaticCaseResult> cases;     ///< still water first, then the load cases in project order
-  std::vector<CaseCheck> checks;           ///< same order as `cases`
-  std::vector<RestoringCurve> restoring;   ///< 0° and 90°
-  std::vector<LineStrength> strengths;     ///< project line order
+  std::string code;                     ///< mooring code name (to_string(MooringCode))
+  StaticsResult pretension;             ///< zero offset
+  std::vector<StaticCaseResult> cases;  ///< still water first, then the load cases in project order
+  std::vector<CaseCheck> checks;        ///< same order as `cases`
+  std::vector<RestoringCurve> restoring;  ///< 0° and 90°
+  std::vector<LineStrength> strengths;    ///< project line order
   std::vector<RiserShape> risers;
   int worst_case = 0;  ///< index into `cases` of the largest code utilization
   bool pass = true;    ///< every case passes

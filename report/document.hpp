@@ -29,7 +29,7 @@ struct TableCell {
 };
 
 struct Table {
-  std::string id;       ///< file stem of the CSV (tables/<id>.csv); [a-z0-9-]
+  std::string id;  ///< file stem of the CSV (tables/<id>.csv); [a-z0-9-]
   std::string caption;
   std::vector<std::string> headers;  ///< with units, e.g. "T max (kN)"
   std::vector<std::vector<TableCell>> rows;
@@ -41,9 +41,9 @@ using DrawFunction = std::function<void(cairo_t*, double width, double height)>;
 struct Figure {
   std::string id;  ///< file stem (figures/<id>.png or .svg); [a-z0-9-]
   std::string caption;
-  double aspect = 1.6;           ///< width / height
-  std::optional<Image> image;    ///< a raster figure (3D views), or
-  DrawFunction draw;             ///< a vector figure (plots)
+  double aspect = 1.6;         ///< width / height
+  std::optional<Image> image;  ///< a raster figure (3D views), or
+  DrawFunction draw;           ///< a vector figure (plots)
 };
 
 struct Paragraph {
@@ -63,12 +63,13 @@ struct Section {
 };
 
 struct TitlePage {
-  std::string title;      ///< e.g. "Preliminary stage report"
-  std::string subtitle;   ///< e.g. "Static analyses"
-  std::string project;    ///< project name
+  std::string title;     ///< e.g. "Preliminary stage report"
+  std::string subtitle;  ///< e.g. "Static analyses"
+  std::string project;   ///< project name
   std::string description;
-  std::vector<std::pair<std::string, std::string>> facts;  ///< project file, date, version, model hash, ...
-  std::string verdict;    ///< one line, e.g. "PASS: every case meets API RP 2SK"
+  std::vector<std::pair<std::string, std::string>>
+      facts;            ///< project file, date, version, model hash, ...
+  std::string verdict;  ///< one line, e.g. "PASS: every case meets API RP 2SK"
   bool pass = true;
 };
 

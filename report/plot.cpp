@@ -1,10 +1,10 @@
 #include "report/plot.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
-
-#include <fmt/format.h>
 
 #include "report/text.hpp"
 
@@ -13,7 +13,7 @@ namespace spiral::report {
 namespace {
 
 struct Frame {
-  double x0, y0, w, h;          // plot area on the surface
+  double x0, y0, w, h;            // plot area on the surface
   double xmin, xmax, ymin, ymax;  // data range
   double px(double x) const { return x0 + (x - xmin) / (xmax - xmin) * w; }
   double py(double y) const { return y0 + h - (y - ymin) / (ymax - ymin) * h; }
@@ -25,7 +25,9 @@ std::string tick_label(double v, double step) {
   return fmt::format("{:.{}f}", v, decimals);
 }
 
-void set_color(cairo_t* cr, const Rgb& c) { cairo_set_source_rgb(cr, c.r, c.g, c.b); }
+void set_color(cairo_t* cr, const Rgb& c) {
+  cairo_set_source_rgb(cr, c.r, c.g, c.b);
+}
 
 void dash(cairo_t* cr, bool on, double unit) {
   if (on) {
@@ -36,7 +38,8 @@ void dash(cairo_t* cr, bool on, double unit) {
   }
 }
 
-void title_and_frame(cairo_t* cr, const std::string& title, double width, double font, double& top) {
+void title_and_frame(cairo_t* cr, const std::string& title, double width, double font,
+                     double& top) {
   top = 4;
   if (!title.empty()) {
     set_font(cr, font * 1.15, true);
@@ -66,7 +69,8 @@ void axes(cairo_t* cr, const Frame& f, const std::vector<double>& xt, const std:
   cairo_rectangle(cr, f.x0, f.y0, f.w, f.h);
   cairo_stroke(cr);
   set_font(cr, font, false);
-  const double xstep = xt.size() > 1 ? xt[1] - xt[0] : 1.0, ystep = yt.size() > 1 ? yt[1] - yt[0] : 1.0;
+  const double xstep = xt.size() > 1 ? xt[1] - xt[0] : 1.0,
+               ystep = yt.size() > 1 ? yt[1] - yt[0] : 1.0;
   for (const double x : xt) {
     cairo_move_to(cr, f.px(x), f.y0 + f.h);
     cairo_line_to(cr, f.px(x), f.y0 + f.h + 3);
@@ -90,16 +94,19 @@ void axes(cairo_t* cr, const Frame& f, const std::vector<double>& xt, const std:
 void path_series(cairo_t* cr, const Frame& f, const Series& s) {
   for (std::size_t i = 0; i < s.x.size(); ++i) {
     const double X = f.px(s.x[i]), Y = f.py(s.y[i]);
-    if (i == 0) cairo_move_to(cr, X, Y);
+    if (i == 0)
+      cairo_move_to(cr, X, Y);
     else if (s.step) {
       cairo_line_to(cr, X, f.py(s.y[i - 1]));
       cairo_line_to(cr, X, Y);
-    } else cairo_line_to(cr, X, Y);
+    } else
+      cairo_line_to(cr, X, Y);
   }
 }
 
-void legend(cairo_t* cr, const Frame& f, const std::vector<std::pair<std::string, const Series*>>& entries,
-            const std::vector<const PlotCircle*>& circles, double font, int columns) {
+void legend(cairo_t* cr, const Frame& f,
+            const std::vector<std::pair<std::string, const Series*>>& entries,
+            const std::vector<const PlotCircle*>& circles, double font, int columns, bool left) {
   const std::size_t n = entries.size() + circles.size();
   if (n == 0) return;
   set_font(cr, font * 0.92, false);
@@ -111,7 +118,7 @@ void legend(cairo_t* cr, const Frame& f, const std::vector<std::pair<std::string
   const int rows = static_cast<int>((n + cols - 1) / cols);
   const double row_h = font * 1.3;
   const double W = cols * item_w + 6, H = rows * row_h + 6;
-  const double x = f.x0 + f.w - W - 6, y = f.y0 + 6;
+  const double x = left ? f.x0 + 6 : f.x0 + f.w - W - 6, y = f.y0 + 6;
   cairo_rectangle(cr, x, y, W, H);
   cairo_set_source_rgba(cr, 1, 1, 1, 0.9);
   cairo_fill_preserve(cr);
@@ -120,7 +127,8 @@ void legend(cairo_t* cr, const Frame& f, const std::vector<std::pair<std::string
   cairo_stroke(cr);
   for (std::size_t i = 0; i < n; ++i) {
     const double ix = x + 4 + static_cast<double>(i / static_cast<std::size_t>(rows)) * item_w;
-    const double iy = y + 3 + static_cast<double>(i % static_cast<std::size_t>(rows)) * row_h + row_h / 2;
+    const double iy =
+        y + 3 + static_cast<double>(i % static_cast<std::size_t>(rows)) * row_h + row_h / 2;
     if (i < entries.size()) {
       const Series& s = *entries[i].second;
       set_color(cr, s.color);
@@ -167,14 +175,21 @@ std::vector<double> nice_ticks(double lo, double hi, int target) {
     }
   }
   std::vector<double> ticks;
-  for (double t = std::ceil(lo / step - 1e-9) * step; t <= hi + 1e-9 * step; t += step) ticks.push_back(t);
+  for (double t = std::ceil(lo / step - 1e-9) * step; t <= hi + 1e-9 * step; t += step)
+    ticks.push_back(t);
   return ticks;
 }
 
 Rgb palette(std::size_t index) {
-  static constexpr std::array<Rgb, 10> kTableau = {{{0.12, 0.47, 0.71}, {1.00, 0.50, 0.05}, {0.17, 0.63, 0.17},
-                                                    {0.84, 0.15, 0.16}, {0.58, 0.40, 0.74}, {0.55, 0.34, 0.29},
-                                                    {0.89, 0.47, 0.76}, {0.50, 0.50, 0.50}, {0.74, 0.74, 0.13},
+  static constexpr std::array<Rgb, 10> kTableau = {{{0.12, 0.47, 0.71},
+                                                    {1.00, 0.50, 0.05},
+                                                    {0.17, 0.63, 0.17},
+                                                    {0.84, 0.15, 0.16},
+                                                    {0.58, 0.40, 0.74},
+                                                    {0.55, 0.34, 0.29},
+                                                    {0.89, 0.47, 0.76},
+                                                    {0.50, 0.50, 0.50},
+                                                    {0.74, 0.74, 0.13},
                                                     {0.09, 0.75, 0.81}}};
   return kTableau[index % kTableau.size()];
 }
@@ -209,8 +224,14 @@ void draw_plot(cairo_t* cr, const Plot& plot, double width, double height, const
   if (xmax - xmin < 1e-12) xmin -= 1, xmax += 1;
   if (ymax - ymin < 1e-12) ymin -= 1, ymax += 1;
   const double padx = 0.03 * (xmax - xmin), pady = 0.06 * (ymax - ymin);
-  if (plot.x_range) std::tie(xmin, xmax) = *plot.x_range; else xmin -= padx, xmax += padx;
-  if (plot.y_range) std::tie(ymin, ymax) = *plot.y_range; else ymin -= pady, ymax += pady;
+  if (plot.x_range)
+    std::tie(xmin, xmax) = *plot.x_range;
+  else
+    xmin -= padx, xmax += padx;
+  if (plot.y_range)
+    std::tie(ymin, ymax) = *plot.y_range;
+  else
+    ymin -= pady, ymax += pady;
 
   const double left = 3.4 * font + 28, bottom = 3.4 * font + 6, right = 8;
   Frame f{left, top + 4, width - left - right, height - top - 4 - bottom, xmin, xmax, ymin, ymax};
@@ -284,12 +305,13 @@ void draw_plot(cairo_t* cr, const Plot& plot, double width, double height, const
     std::vector<const PlotCircle*> circles;
     for (const PlotCircle& c : plot.circles)
       if (!c.label.empty()) circles.push_back(&c);
-    legend(cr, f, entries, circles, font, plot.legend_columns);
+    legend(cr, f, entries, circles, font, plot.legend_columns, plot.legend_left);
   }
   cairo_restore(cr);
 }
 
-void draw_bar_chart(cairo_t* cr, const BarChart& chart, double width, double height, const PlotStyle& style) {
+void draw_bar_chart(cairo_t* cr, const BarChart& chart, double width, double height,
+                    const PlotStyle& style) {
   const double font = style.font_size;
   cairo_save(cr);
   double top = 0;
@@ -299,7 +321,8 @@ void draw_bar_chart(cairo_t* cr, const BarChart& chart, double width, double hei
   ymax = chart.y_max.value_or(ymax * 1.12);
   if (!(ymax > 0)) ymax = 1;
   const double left = 3.4 * font + 28, bottom = 3.4 * font + 6, right = 8;
-  const Frame f{left, top + 4, width - left - right, height - top - 4 - bottom, 0.0, 1.0, 0.0, ymax};
+  const Frame f{left, top + 4, width - left - right, height - top - 4 - bottom, 0.0, 1.0,
+                0.0,  ymax};
   const auto yt = nice_ticks(0, ymax, std::max(3, static_cast<int>(f.h / (font * 4))));
   axes(cr, f, {}, yt, "", chart.y_label, font);
   const std::size_t n = chart.bars.size();

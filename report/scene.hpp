@@ -4,12 +4,11 @@
 // from results by the stage reports (report/stage_scene.hpp); the renderer
 // (report/render3d.hpp) only draws it.
 
+#include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
-#include <Eigen/Geometry>
 
 #include "design/project.hpp"
 #include "report/image.hpp"
@@ -20,16 +19,16 @@ namespace spiral::report {
 struct SceneLine {
   std::string name;
   std::vector<Eigen::Vector3d> points_g;  ///< m, anchor (or riser end) to the hull
-  std::vector<double> values;  ///< per point, mapped by utilization_color(); empty: `color`
+  std::vector<double> values;   ///< per point, mapped by utilization_color(); empty: `color`
   Rgb color{0.55, 0.55, 0.58};  ///< used when `values` is empty
-  bool riser = false;          ///< drawn thinner and shaded, not colour-mapped
+  bool riser = false;           ///< drawn thinner and shaded, not colour-mapped
 };
 
 /// The hull: member geometry in the body frame and the body pose.
 struct SceneHull {
   std::optional<design::HullGeometry> geometry;  ///< absent: a box (below)
-  Eigen::Vector3d box_size_m{60.0, 60.0, 40.0};   ///< box when no geometry: x, y, z extent
-  double box_bottom_b_m = -25.0;                  ///< body z of the box bottom
+  Eigen::Vector3d box_size_m{60.0, 60.0, 40.0};  ///< box when no geometry: x, y, z extent
+  double box_bottom_b_m = -25.0;                 ///< body z of the box bottom
   Eigen::Vector3d reference_point_g = Eigen::Vector3d::Zero();
   Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();  ///< body -> global
 };
@@ -64,12 +63,12 @@ struct Camera {
 Camera frame_view(const Scene& scene, ViewKind kind, double aspect);
 
 struct ViewOptions {
-  int width = 1600;   ///< final image size, px
+  int width = 1600;  ///< final image size, px
   int height = 1200;
-  int supersample = 2;  ///< rendered at this factor, then box-filtered down (anti-aliasing)
-  std::string title;    ///< drawn top-left; empty: none
-  bool overlay = true;  ///< title, colour bar, scale bar / axes
-  double line_width_px = 3.5;   ///< mooring line thickness in the final image
+  int supersample = 2;         ///< rendered at this factor, then box-filtered down (anti-aliasing)
+  std::string title;           ///< drawn top-left; empty: none
+  bool overlay = true;         ///< title, colour bar, scale bar / axes
+  double line_width_px = 3.5;  ///< mooring line thickness in the final image
   double riser_width_px = 2.0;
 };
 

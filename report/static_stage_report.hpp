@@ -27,7 +27,9 @@ struct StaticStageReportOptions {
 
 /// Builds the document (renders the 3D views). Throws std::runtime_error
 /// when a view cannot be rendered.
-ReportDocument static_stage_report(const design::ValidatedProject& project, const design::StaticStageResults& results,
-                                   const ReportInfo& info, const StaticStageReportOptions& options = {});
+ReportDocument static_stage_report(const design::ValidatedProject& project,
+                                   const design::StaticStageResults& results,
+                                   const ReportInfo& info,
+                                   const StaticStageReportOptions& options = {});
 
 }  // namespace spiral::report

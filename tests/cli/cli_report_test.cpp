@@ -1,16 +1,14 @@
 // End-to-end `spiral report`: the PDF opens and holds the results, the HTML
 // index links only files that exist, bad output folders fail cleanly.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
-
 #include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <regex>
-
-#include <fmt/format.h>
 #include <nlohmann/json.hpp>
+#include <regex>
 
 #include "app/exit_codes.hpp"
 #include "support/run_command.hpp"
@@ -55,26 +53,36 @@ TEST_F(CliReport, PdfRendersWithTheReportedPageCount) {
   EXPECT_GE(pages, 6);  // title + five sections
   const fs::path png_dir = *dir_ / "png";
   fs::create_directories(png_dir);
-  ASSERT_EQ(std::system(fmt::format("pdftoppm -r 20 -png '{}' '{}/p' 2>/dev/null", pdf.string(), png_dir.string()).c_str()), 0);
+  ASSERT_EQ(std::system(fmt::format("pdftoppm -r 20 -png '{}' '{}/p' 2>/dev/null", pdf.string(),
+                                    png_dir.string())
+                            .c_str()),
+            0);
   int count = 0;
-  for (const auto& e : fs::directory_iterator(png_dir)) count += e.path().extension() == ".png" ? 1 : 0;
+  for (const auto& e : fs::directory_iterator(png_dir))
+    count += e.path().extension() == ".png" ? 1 : 0;
   EXPECT_EQ(count, pages);
 }
 
 TEST_F(CliReport, PdfTextHoldsTheResultsTableValues) {
   ASSERT_EQ(result_->exit_code, app::kExitOk) << result_->err;
   const fs::path txt = *dir_ / "report.txt";
-  ASSERT_EQ(std::system(fmt::format("pdftotext -layout '{}' '{}'", (*dir_ / "report" / "report.pdf").string(),
-                                    txt.string()).c_str()), 0);
+  ASSERT_EQ(std::system(fmt::format("pdftotext -layout '{}' '{}'",
+                                    (*dir_ / "report" / "report.pdf").string(), txt.string())
+                            .c_str()),
+            0);
   const std::string text = read_text(txt);
   // Pretensions from `spiral statics`, the damaged case from `spiral equilibrium`.
-  const auto statics = nlohmann::json::parse(run_spiral("statics --json " + scenario("deepwater-fps.yaml")).out);
+  const auto statics =
+      nlohmann::json::parse(run_spiral("statics --json " + scenario("deepwater-fps.yaml")).out);
   for (const auto& line : statics["lines"]) {
-    const std::string value = fmt::format("{:.1f}", line["fairlead_tension_N"].get<double>() / 1000.0);
+    const std::string value =
+        fmt::format("{:.1f}", line["fairlead_tension_N"].get<double>() / 1000.0);
     EXPECT_NE(text.find(value), std::string::npos) << line["name"] << " pretension " << value;
   }
-  const auto damaged = nlohmann::json::parse(
-      run_spiral("equilibrium --json --case lc3-survival-45deg-damaged-L10 " + scenario("deepwater-fps.yaml")).out);
+  const auto damaged =
+      nlohmann::json::parse(run_spiral("equilibrium --json --case lc3-survival-45deg-damaged-L10 " +
+                                       scenario("deepwater-fps.yaml"))
+                                .out);
   int found = 0;
   for (const auto& line : damaged["lines"]) {
     const std::string value = fmt::format("{:.1f}", line["max_tension_N"].get<double>() / 1000.0);
@@ -90,7 +98,8 @@ TEST_F(CliReport, HtmlReferencesOnlyFilesThatExist) {
   const std::string html = read_text(folder / "index.html");
   const std::regex ref(R"re((?:src|href)="([^"#][^"]*)")re");
   int refs = 0;
-  for (auto it = std::sregex_iterator(html.begin(), html.end(), ref); it != std::sregex_iterator(); ++it) {
+  for (auto it = std::sregex_iterator(html.begin(), html.end(), ref); it != std::sregex_iterator();
+       ++it) {
     const std::string target = (*it)[1];
     EXPECT_EQ(target.find("://"), std::string::npos) << target;
     EXPECT_TRUE(fs::exists(folder / target)) << target;
@@ -104,7 +113,8 @@ TEST(CliReportErrors, UnwritableOutputFolderExitsFourNamingItAndLeavesNothing) {
   const fs::path dir = fresh_dir("spiral-cli-report-bad");
   std::ofstream(dir / "a-file") << "not a folder";
   const fs::path out = dir / "a-file" / "report";
-  const auto result = run_spiral("report " + scenario("oc4-semisubmersible.yaml") + " --out '" + out.string() + "'");
+  const auto result = run_spiral("report " + scenario("oc4-semisubmersible.yaml") + " --out '" +
+                                 out.string() + "'");
   EXPECT_EQ(result.exit_code, app::kExitOutputError) << result.err;
   EXPECT_NE(result.err.find(out.string()), std::string::npos) << result.err;
   int entries = 0;
@@ -114,7 +124,8 @@ TEST(CliReportErrors, UnwritableOutputFolderExitsFourNamingItAndLeavesNothing) {
 }
 
 TEST(CliReportErrors, UnknownStageIsBadInput) {
-  const auto result = run_spiral("report " + scenario("oc4-semisubmersible.yaml") + " --stage nosuch --out /tmp/x");
+  const auto result =
+      run_spiral("report " + scenario("oc4-semisubmersible.yaml") + " --stage nosuch --out /tmp/x");
   EXPECT_EQ(result.exit_code, app::kExitBadInput);
   EXPECT_NE(result.err.find("nosuch"), std::string::npos) << result.err;
 }

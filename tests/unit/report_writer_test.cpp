@@ -1,13 +1,12 @@
 // The report folder is written whole or not at all.
-#include <gtest/gtest.h>
+#include "report/report_writer.hpp"
 
+#include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
-
-#include "report/report_writer.hpp"
 
 namespace spiral::report {
 namespace {
@@ -21,7 +20,10 @@ ReportDocument small_document() {
   doc.title.verdict = "PASS";
   Section s{"Results", {}, true};
   s.blocks.emplace_back(Paragraph{"Some text."});
-  s.blocks.emplace_back(Table{"values", "Values.", {"Name", "Value (kN)"}, {{{"a", 1.5, CellStatus::none}, {"12.5", 12.5, CellStatus::pass}}}});
+  s.blocks.emplace_back(Table{"values",
+                              "Values.",
+                              {"Name", "Value (kN)"},
+                              {{{"a", 1.5, CellStatus::none}, {"12.5", 12.5, CellStatus::pass}}}});
   Figure f;
   f.id = "plot";
   f.caption = "A plot.";
@@ -93,7 +95,10 @@ TEST(ReportWriter, FailureHalfwayLeavesTheOldReportAndNoTemporaryFolder) {
 }
 
 TEST(ReportWriter, CsvQuotesTextAndKeepsFullPrecision) {
-  Table t{"t", "", {"Name", "Value"}, {{{"a, b", std::nullopt, CellStatus::none}, {"1.2", 1.23456789, CellStatus::none}}}};
+  Table t{"t",
+          "",
+          {"Name", "Value"},
+          {{{"a, b", std::nullopt, CellStatus::none}, {"1.2", 1.23456789, CellStatus::none}}}};
   EXPECT_EQ(table_csv(t), "Name,Value\n\"a, b\",1.23456789\n");
 }
 

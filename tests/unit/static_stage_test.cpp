@@ -1,9 +1,10 @@
 // The static stage composes the design analyses: a case per load case plus
 // still water, the code check with the right safety factor, restoring curves.
+#include "design/static_stage.hpp"
+
 #include <gtest/gtest.h>
 
 #include "design/model_hash.hpp"
-#include "design/static_stage.hpp"
 
 namespace spiral::design {
 namespace {
@@ -22,7 +23,8 @@ TEST(StaticStage, DefaultScenarioCasesChecksAndCurves) {
     // API RP 2SK quasi-static factors of the scenario.
     EXPECT_DOUBLE_EQ(check.safety_factor, r.cases[i].condition == "damaged" ? 1.43 : 2.0);
     for (std::size_t l = 0; l < check.lines.size(); ++l) {
-      EXPECT_DOUBLE_EQ(check.lines[l].utilization, r.cases[i].lines[l].utilization * check.safety_factor);
+      EXPECT_DOUBLE_EQ(check.lines[l].utilization,
+                       r.cases[i].lines[l].utilization * check.safety_factor);
       EXPECT_EQ(check.lines[l].pass, check.lines[l].utilization <= 1.0);
     }
     ASSERT_TRUE(check.offset_limit_m.has_value());
@@ -30,7 +32,8 @@ TEST(StaticStage, DefaultScenarioCasesChecksAndCurves) {
   }
   ASSERT_EQ(r.restoring.size(), 2u);
   for (const RestoringCurve& c : r.restoring) {
-    ASSERT_EQ(c.offset_m.size(), static_cast<std::size_t>(kRestoringSteps + 1)) << c.stopped.value_or("");
+    ASSERT_EQ(c.offset_m.size(), static_cast<std::size_t>(kRestoringSteps + 1))
+        << c.stopped.value_or("");
     EXPECT_DOUBLE_EQ(c.offset_m.back(), kRestoringMaxOffsetFractionOfDepth * 1800.0);
     for (std::size_t i = 1; i < c.force_N.size(); ++i) EXPECT_GT(c.force_N[i], c.force_N[i - 1]);
   }
