@@ -1,6 +1,10 @@
 // spiral — integrated mooring–riser design-spiral application. CLI wiring only:
 // parse arguments, call the design layer, print, map errors to exit codes.
+#include <chrono>
 #include <cstdio>
+#include <cstdlib>
+#include <ctime>
+#include <filesystem>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -10,14 +14,18 @@
 
 #include "app/exit_codes.hpp"
 #include "design/input_error.hpp"
+#include "design/model_hash.hpp"
 #include "design/mooring_model.hpp"
 #include "design/project_summary.hpp"
 #include "design/static_case.hpp"
 #include "design/static_case_output.hpp"
 #include "design/statics_output.hpp"
+#include "design/static_stage.hpp"
 #include "design/statics_study.hpp"
 #include "design/validated_project.hpp"
 #include "engine/common/solver_error.hpp"
+#include "report/report_writer.hpp"
+#include "report/static_stage_report.hpp"
 
 namespace {
 
@@ -67,6 +75,52 @@ int run_static_case_command(const std::string& project_file, const design::Stati
   return app::kExitOk;
 }
 
+constexpr const char* kVersion = "0.1.0";
+
+/// UTC date of the report; SOURCE_DATE_EPOCH (reproducible-builds.org) fixes it.
+std::string report_date() {
+  std::time_t now = std::time(nullptr);
+  if (const char* epoch = std::getenv("SOURCE_DATE_EPOCH")) now = static_cast<std::time_t>(std::atoll(epoch));
+  std::tm utc{};
+  gmtime_r(&now, &utc);
+  char buffer[32];
+  std::strftime(buffer, sizeof buffer, "%Y-%m-%d %H:%M UTC", &utc);
+  return buffer;
+}
+
+int run_report(const std::string& project_file, const std::string& stage, const std::string& out) {
+  const design::ValidatedProject loaded = design::load_validated_project(project_file);
+  bool listed = loaded.project.stages.empty();
+  for (const auto& s : loaded.project.stages) listed = listed || s.name == stage;
+  if (!listed || stage != "preliminary") {
+    design::InputIssue issue;
+    issue.file = project_file;
+    issue.path = "--stage";
+    issue.message = listed ? fmt::format("no report for stage '{}' yet; available: preliminary", stage)
+                           : fmt::format("stage '{}' is not among the project's stages", stage);
+    issue.condition = "command_line_reference";
+    throw design::InputError({issue});
+  }
+  const auto start = std::chrono::steady_clock::now();
+  const design::StaticStageResults results = design::run_static_stage(loaded);
+  report::ReportInfo info;
+  info.project_file = project_file;
+  info.model_hash = design::model_hash(project_file);
+  info.date = report_date();
+  info.version = kVersion;
+  const report::ReportDocument document = report::static_stage_report(loaded, results, info);
+  const std::filesystem::path folder =
+      out.empty() ? std::filesystem::path("out") / std::filesystem::path(project_file).stem() / stage
+                  : std::filesystem::path(out);
+  const report::WrittenReport written = report::write_report(document, folder);
+  fmt::print("{} stage report of '{}' ({}): {}\n", stage, loaded.project.name, results.pass ? "PASS" : "FAIL",
+             written.folder.string());
+  fmt::print("  {} ({} pages)\n  {}\n  written in {:.2f} s\n", written.pdf.string(), written.pages,
+             written.html.string(),
+             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  return app::kExitOk;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -108,6 +162,14 @@ int main(int argc, char** argv) {
     sub->footer(kExitCodeHelp);
   }
 
+  CLI::App* report_cmd = cli.add_subcommand(
+      "report", "Run a stage's analyses and write its report (PDF, HTML index, figures, CSV tables)");
+  report_cmd->add_option("PROJECT", project_file, "Project YAML file")->required();
+  std::string stage_name = "preliminary", out_dir;
+  report_cmd->add_option("--stage", stage_name, "Stage name (default: preliminary)");
+  report_cmd->add_option("--out", out_dir, "Output folder (default: out/<project-stem>/<stage>)");
+  report_cmd->footer(kExitCodeHelp);
+
   try {
     cli.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
@@ -118,6 +180,7 @@ int main(int argc, char** argv) {
   try {
     if (validate->parsed()) return run_validate(project_file);
     if (statics->parsed()) return run_statics(project_file, offset_input, json);
+    if (report_cmd->parsed()) return run_report(project_file, stage_name, out_dir);
     if (equilibrium->parsed() || stiffness->parsed()) {
       if (!case_name.empty()) case_request.load_case = case_name;
       if (!damaged_line.empty()) case_request.damaged_line = damaged_line;
@@ -128,6 +191,9 @@ int main(int argc, char** argv) {
   } catch (const design::InputError& error) {
     fmt::print(stderr, "{}\n", error.what());
     return app::kExitBadInput;
+  } catch (const report::OutputError& error) {
+    fmt::print(stderr, "output error: {}\n", error.what());
+    return app::kExitOutputError;
   } catch (const engine::SolverError& error) {
     const auto& d = error.diagnostics();
     fmt::print(stderr, "solver failure: {}\n", error.what());

@@ -6,3 +6,4 @@ bash scripts/setup.sh
 scenario=scenarios/deepwater-fps.yaml
 ./build/app/spiral validate "$scenario"
 ./build/app/spiral statics "$scenario"
+./build/app/spiral report "$scenario" --out out/deepwater-fps

@@ -1,0 +1,164 @@
+#include "design/static_stage.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <numbers>
+
+#include "design/mooring_model.hpp"
+#include "engine/analysis/line_array.hpp"
+#include "engine/common/solver_error.hpp"
+
+namespace spiral::design {
+
+namespace {
+
+constexpr double kDegToRad = std::numbers::pi / 180.0;
+/// Characteristic strength of a mooring line in DNV-OS-E301 Ch. 2 Sec. 2 [4.1]: 0.95 MBL.
+constexpr double kDnvCharacteristicStrengthFraction = 0.95;
+/// Points along the suspended part of a nominal riser shape.
+constexpr int kRiserShapePoints = 60;
+
+CaseCheck check_case(const Project& project, const StaticCaseResult& result) {
+  CaseCheck check;
+  check.case_name = result.case_name;
+  check.condition = result.condition;
+  check.safety_factor =
+      mooring_safety_factor(project.criteria.mooring, result.condition == "damaged");
+  double worst = -1.0;
+  for (std::size_t i = 0; i < result.lines.size(); ++i) {
+    const LineStaticsRow& row = result.lines[i];
+    LineCodeCheck line;
+    line.line = row.name;
+    line.max_tension_N = row.max_tension_N;
+    line.utilization_mbl = row.utilization;
+    line.safety_factor = check.safety_factor;
+    line.utilization = row.utilization * check.safety_factor;
+    line.pass = line.utilization <= 1.0;
+    check.lines_pass = check.lines_pass && line.pass;
+    if (line.utilization > worst) {
+      worst = line.utilization;
+      check.governing_line = static_cast<int>(i);
+    }
+    check.lines.push_back(line);
+  }
+  check.offset_m = result.offset_summary.horizontal_m;
+  if (project.criteria.max_offset_pct_depth) {
+    check.offset_limit_m = *project.criteria.max_offset_pct_depth / 100.0 * project.site.depth_m;
+    check.offset_pass = check.offset_m <= *check.offset_limit_m;
+  }
+  check.pass = check.lines_pass && check.offset_pass;
+  return check;
+}
+
+RestoringCurve restoring_curve(LineArrayModel& model, double direction_deg, double depth_m) {
+  RestoringCurve curve;
+  curve.direction_deg = direction_deg;
+  const Eigen::Vector2d d(std::cos(direction_deg * kDegToRad), std::sin(direction_deg * kDegToRad));
+  const double max_offset_m = kRestoringMaxOffsetFractionOfDepth * depth_m;
+  for (int i = 0; i <= kRestoringSteps; ++i) {
+    const double s = max_offset_m * i / kRestoringSteps;
+    engine::Vector6d offset = engine::Vector6d::Zero();
+    offset.head<2>() = s * d;
+    try {
+      const engine::LineArrayResponse response = engine::evaluate_line_array(
+          model.lines, engine::pose_from_offset(model.reference_point_g, offset));
+      curve.offset_m.push_back(s);
+      curve.force_N.push_back(-response.force.head<2>().dot(d));
+    } catch (const engine::SolverError& error) {
+      // A line that cannot reach at this offset ends the sweep; the curve up
+      // to here is still valid and the report says where and why it stopped.
+      curve.stopped = error.what();
+      break;
+    }
+  }
+  return curve;
+}
+
+RiserShape riser_shape(const Project& project, const Riser& riser) {
+  RiserShape shape;
+  shape.name = riser.name;
+  shape.kind = to_string(riser.kind);
+  const Eigen::Vector3d top = project.hull.reference_point_g + riser.hang_off_b;
+  const Eigen::Vector3d d(std::cos(riser.azimuth_rad), std::sin(riser.azimuth_rad), 0.0);
+  const double depth = project.site.depth_m;
+  const double span_z = top.z() + depth;
+  double length = 0.0;
+  for (const RiserSection& s : riser.sections) length += s.length_m;
+  if (riser.top_angle_rad < 1e-3 || span_z <= 0.0) {  // vertical: no catenary to draw
+    shape.points_g = {top, top - Eigen::Vector3d(0, 0, std::min(span_z, length))};
+    return shape;
+  }
+  // Inextensible catenary with its vertex at the touchdown point (Irvine 1981, ch. 1):
+  // z = a (cosh(x/a) − 1); top slope 1/tan(θ) gives a = Z / (1/sin θ − 1),
+  // horizontal span a·asinh(1/tan θ), suspended length a / tan θ.
+  const double theta = riser.top_angle_rad;
+  const double a = span_z / (1.0 / std::sin(theta) - 1.0);
+  const double x_top = a * std::asinh(1.0 / std::tan(theta));
+  const double suspended = a / std::tan(theta);
+  for (int i = 0; i <= kRiserShapePoints; ++i) {
+    const double x = x_top * (1.0 - static_cast<double>(i) / kRiserShapePoints);  // from the TDP
+    const double z = -depth + a * (std::cosh(x / a) - 1.0);
+    shape.points_g.push_back(top + d * (x_top - x) + Eigen::Vector3d(0, 0, z - top.z()));
+  }
+  if (length > suspended)
+    shape.points_g.push_back(shape.points_g.back() + d * (length - suspended));
+  return shape;
+}
+
+}  // namespace
+
+double mooring_safety_factor(const MooringCriteria& criteria, bool damaged) {
+  if (criteria.code == MooringCode::dnv_os_e301) {
+    const DnvOsE301Factors f = criteria.dnv_os_e301.value_or(dnv_os_e301_defaults(1));
+    return (damaged ? f.als_mean : f.uls_mean) / kDnvCharacteristicStrengthFraction;
+  }
+  const ApiRp2skFactors f = criteria.api_rp_2sk.value_or(ApiRp2skFactors{});
+  return damaged ? f.damaged_quasi_static : f.intact_quasi_static;
+}
+
+StaticStageResults run_static_stage(const ValidatedProject& validated) {
+  const auto start = std::chrono::steady_clock::now();
+  const Project& project = validated.project;
+  StaticStageResults out;
+  out.code = to_string(project.criteria.mooring.code);
+
+  LineArrayModel model = build_mooring_model(project);
+  out.pretension = run_statics(model, engine::Vector6d::Zero());
+  for (const MooringLineDesign& design : model.designs) {
+    LineStrength strength;
+    strength.name = design.name;
+    for (const LineTypeProperties& type : design.segment_types) {
+      strength.segment_mbl_N.push_back(type.breaking_load_N);
+      strength.segment_types.push_back(type.name);
+    }
+    out.strengths.push_back(std::move(strength));
+  }
+
+  out.cases.push_back(run_static_case(validated, StaticCaseRequest{}));
+  for (const LoadCase& load_case : project.load_cases) {
+    StaticCaseRequest request;
+    request.load_case = load_case.name;
+    out.cases.push_back(run_static_case(validated, request));
+  }
+  double worst = -1.0;
+  for (std::size_t i = 0; i < out.cases.size(); ++i) {
+    out.checks.push_back(check_case(project, out.cases[i]));
+    const CaseCheck& check = out.checks.back();
+    out.pass = out.pass && check.pass;
+    if (check.governing_line >= 0 &&
+        check.lines[static_cast<std::size_t>(check.governing_line)].utilization > worst) {
+      worst = check.lines[static_cast<std::size_t>(check.governing_line)].utilization;
+      out.worst_case = static_cast<int>(i);
+    }
+  }
+
+  for (const double direction_deg : {0.0, 90.0}) {
+    out.restoring.push_back(restoring_curve(model, direction_deg, project.site.depth_m));
+  }
+  for (const Riser& riser : project.risers) out.risers.push_back(riser_shape(project, riser));
+  out.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return out;
+}
+
+}  // namespace spiral::design

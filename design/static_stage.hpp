@@ -1,0 +1,104 @@
+#pragma once
+// The static part of the preliminary stage (DESIGN.md §2): a thin composition
+// of the existing design analyses whose results a stage report shows —
+//  - pretensions: every line at zero offset (run_statics);
+//  - the coupled static case of still water and of every load case (intact,
+//    or with its damaged line removed: run_static_case);
+//  - restoring-force curves of the line array along 0° and 90°;
+//  - the mooring code check per line and case, and the offset limit check.
+//
+// Code check (DESIGN.md §6). API RP 2SK, quasi-static: a line passes when
+// T_max · SF ≤ MBL, SF = intact_quasi_static (intact) or damaged_quasi_static
+// (one line removed), i.e. code utilization T_max · SF / MBL ≤ 1. DNV-OS-E301
+// with a static (mean) tension only: T_d = γ_mean · T_max against the
+// characteristic strength S_C = 0.95 MBL, i.e. SF = γ_mean / 0.95 with γ_mean
+// the ULS (intact) or ALS (damaged) mean factor.
+
+#include <Eigen/Core>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "design/static_case.hpp"
+#include "design/statics_study.hpp"
+#include "design/validated_project.hpp"
+
+namespace spiral::design {
+
+/// The line array's restoring force against a horizontal offset of the hull
+/// along one direction (no rotation, no heave).
+struct RestoringCurve {
+  double direction_deg = 0.0;          ///< CCW from +x
+  std::vector<double> offset_m;        ///< along the direction, >= 0, ascending
+  std::vector<double> force_N;         ///< restoring force, −F·d (> 0 pushes the hull back)
+  std::optional<std::string> stopped;  ///< why the sweep ended early (a line could not be solved)
+};
+
+/// One line's code check in one case.
+struct LineCodeCheck {
+  std::string line;
+  double max_tension_N = 0.0;
+  double utilization_mbl = 0.0;  ///< T_max / MBL of the governing segment (no factor)
+  double safety_factor = 0.0;    ///< SF applied (see the file comment)
+  double utilization = 0.0;      ///< code utilization T_max · SF / MBL; pass when <= 1
+  bool pass = true;
+};
+
+struct CaseCheck {
+  std::string case_name;
+  std::string condition;  ///< "intact" or "damaged"
+  double safety_factor = 0.0;
+  std::vector<LineCodeCheck> lines;      ///< same order as StaticCaseResult::lines
+  double offset_m = 0.0;                 ///< horizontal offset of the equilibrium
+  std::optional<double> offset_limit_m;  ///< criteria.max_offset_pct_depth · depth
+  bool offset_pass = true;
+  bool lines_pass = true;
+  bool pass = true;
+  /// Index into `lines` of the most utilized line (-1 when there is none).
+  int governing_line = -1;
+};
+
+/// Per line: the breaking load of each segment, anchor to fairlead, for
+/// utilization along the profile.
+struct LineStrength {
+  std::string name;
+  std::vector<double> segment_mbl_N;
+  std::vector<std::string> segment_types;
+};
+
+/// Nominal at-rest shape of a riser: the inextensible catenary from the
+/// hang-off at its top angle down to the seabed, then laid along the seabed
+/// (DESIGN.md §5 riser statics are not yet in the static case; this is the
+/// shape the scenario's riser lengths are designed on). Hull at rest.
+struct RiserShape {
+  std::string name;
+  std::string kind;
+  std::vector<Eigen::Vector3d> points_g;  ///< hang-off to the riser end, m
+};
+
+struct StaticStageResults {
+  std::string stage = "preliminary";
+  std::string code;                     ///< mooring code name (to_string(MooringCode))
+  StaticsResult pretension;             ///< zero offset
+  std::vector<StaticCaseResult> cases;  ///< still water first, then the load cases in project order
+  std::vector<CaseCheck> checks;        ///< same order as `cases`
+  std::vector<RestoringCurve> restoring;  ///< 0° and 90°
+  std::vector<LineStrength> strengths;    ///< project line order
+  std::vector<RiserShape> risers;
+  int worst_case = 0;  ///< index into `cases` of the largest code utilization
+  bool pass = true;    ///< every case passes
+  double wall_time_s = 0.0;
+};
+
+/// Offsets of a restoring curve: 0 … 10 % of depth in 20 steps.
+inline constexpr double kRestoringMaxOffsetFractionOfDepth = 0.10;
+inline constexpr int kRestoringSteps = 20;
+
+/// Safety factor of the project's mooring code for an intact or damaged case.
+double mooring_safety_factor(const MooringCriteria& criteria, bool damaged);
+
+/// Runs the static stage. Throws InputError / engine::SolverError as
+/// run_static_case does (the message names the case and line).
+StaticStageResults run_static_stage(const ValidatedProject& project);
+
+}  // namespace spiral::design

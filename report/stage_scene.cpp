@@ -1,0 +1,58 @@
+#include "report/stage_scene.hpp"
+
+#include <cmath>
+
+#include "engine/analysis/line_array.hpp"
+
+namespace spiral::report {
+
+Scene stage_scene(const design::Project& project, const design::StaticCaseResult& result,
+                  const std::vector<design::LineStrength>& strengths, double safety_factor,
+                  const std::vector<design::RiserShape>& risers) {
+  Scene scene;
+  scene.depth_m = project.site.depth_m;
+  scene.value_label = "Utilization";
+  const engine::HullPose pose =
+      engine::pose_from_offset(project.hull.reference_point_g, result.offset);
+  scene.hull.reference_point_g = pose.reference_point_g;
+  scene.hull.rotation = pose.rotation;
+  scene.hull.geometry = project.hull.geometry;
+  if (!project.hull.geometry) {
+    // A box of the waterplane area and the draft V / A_wp, with a freeboard of half the draft.
+    const double area = project.hull.waterplane_area_m2.value_or(2500.0);
+    const double draft = project.hull.displaced_volume_m3.value_or(area * 20.0) / area;
+    const double side = std::sqrt(area);
+    scene.hull.box_size_m = {side, side, 1.5 * draft};
+    scene.hull.box_bottom_b_m = -draft;
+  }
+  for (const design::LineStaticsRow& row : result.lines) {
+    SceneLine line;
+    line.name = row.name;
+    const design::LineStrength* strength = nullptr;
+    for (const auto& s : strengths)
+      if (s.name == row.name) strength = &s;
+    for (const engine::LineProfilePoint& p : row.profile) {
+      line.points_g.push_back(p.position_g);
+      const auto seg = static_cast<std::size_t>(p.segment);
+      const double mbl =
+          strength && seg < strength->segment_mbl_N.size() ? strength->segment_mbl_N[seg] : 0.0;
+      line.values.push_back(mbl > 0.0 ? p.tension_N * safety_factor / mbl : 0.0);
+    }
+    if (!line.points_g.empty()) {
+      scene.anchors_g.push_back(line.points_g.front());
+      scene.fairleads_g.push_back(line.points_g.back());
+    }
+    scene.lines.push_back(std::move(line));
+  }
+  for (const design::RiserShape& riser : risers) {
+    SceneLine line;
+    line.name = riser.name;
+    line.points_g = riser.points_g;
+    line.riser = true;
+    line.color = {0.38, 0.38, 0.42};
+    scene.lines.push_back(std::move(line));
+  }
+  return scene;
+}
+
+}  // namespace spiral::report
