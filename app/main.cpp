@@ -184,6 +184,7 @@ int main(int argc, char** argv) {
     if (equilibrium->parsed() || stiffness->parsed()) {
       if (!case_name.empty()) case_request.load_case = case_name;
       if (!damaged_line.empty()) case_request.damaged_line = damaged_line;
+      case_request.finite_difference_check = stiffness->parsed();
       return run_static_case_command(project_file, case_request, json,
                                      equilibrium->parsed() ? StaticCaseView::equilibrium
                                                            : StaticCaseView::stiffness);

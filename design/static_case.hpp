@@ -20,7 +20,7 @@ namespace spiral::design {
 struct StaticCaseRequest {
   std::optional<std::string> load_case;     ///< none: still water, intact
   std::optional<std::string> damaged_line;  ///< overrides the load case's damaged line
-  bool finite_difference_check = true;      ///< also compute K by central differences
+  bool finite_difference_check = false;     ///< also compute K by central differences (12 array solves)
 };
 
 /// Horizontal and rotational offset of the hull reference point.

@@ -135,7 +135,10 @@ StaticStageResults run_static_stage(const ValidatedProject& validated) {
     out.strengths.push_back(std::move(strength));
   }
 
-  out.cases.push_back(run_static_case(validated, StaticCaseRequest{}));
+  // The analytic stiffness is cross-checked by finite differences once, in still water.
+  StaticCaseRequest still_water;
+  still_water.finite_difference_check = true;
+  out.cases.push_back(run_static_case(validated, still_water));
   for (const LoadCase& load_case : project.load_cases) {
     StaticCaseRequest request;
     request.load_case = load_case.name;

@@ -21,6 +21,7 @@ class FeStaticLine final : public StaticLine {
   /// The FE nodes are the profile (`points_per_segment` is not used: the mesh sets the resolution).
   LineState state(const Eigen::Vector3d& attachment_g, int points_per_segment) override;
   void reset() override { last_.reset(); }
+  bool expensive() const override { return true; }
   /// The full FE solution of the last solve (curvature, bending moment per node).
   const std::optional<FeStaticsResult>& last_result() const { return last_; }
   const FeLineModel& model() const { return model_; }

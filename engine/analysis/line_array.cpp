@@ -1,5 +1,9 @@
 #include "engine/analysis/line_array.hpp"
 
+#include <algorithm>
+#include <exception>
+#include <thread>
+
 #include <Eigen/Geometry>
 
 namespace spiral::engine {
@@ -23,13 +27,47 @@ HullPose perturbed(const HullPose& pose, int dof, double step) {
   return p;
 }
 
+/// Solves every line at `pose`. Lines are independent (each holds its own
+/// warm start), so when the array has expensive (FE) lines they are shared
+/// out over the hardware threads; the order of the results is the order of
+/// the lines either way, so the sums below are deterministic.
+std::vector<LineEndResponse> solve_all(std::span<const std::unique_ptr<StaticLine>> lines, const HullPose& pose) {
+  std::vector<LineEndResponse> ends(lines.size());
+  const auto solve_one = [&](std::size_t i) {
+    ends[i] = lines[i]->solve(pose.reference_point_g + pose.rotation * lines[i]->attachment_b());
+  };
+  const bool any_expensive = std::any_of(lines.begin(), lines.end(), [](const auto& l) { return l->expensive(); });
+  const std::size_t workers =
+      any_expensive ? std::min<std::size_t>(std::max(1u, std::thread::hardware_concurrency()), lines.size()) : 1;
+  if (workers <= 1) {
+    for (std::size_t i = 0; i < lines.size(); ++i) solve_one(i);
+    return ends;
+  }
+  std::vector<std::exception_ptr> errors(workers);
+  std::vector<std::thread> threads;
+  for (std::size_t w = 0; w < workers; ++w) {
+    threads.emplace_back([&, w] {
+      try {
+        for (std::size_t i = w; i < lines.size(); i += workers) solve_one(i);
+      } catch (...) {
+        errors[w] = std::current_exception();
+      }
+    });
+  }
+  for (std::thread& t : threads) t.join();
+  for (const std::exception_ptr& error : errors) {
+    if (error) std::rethrow_exception(error);
+  }
+  return ends;
+}
+
 Vector6d array_force(std::span<const std::unique_ptr<StaticLine>> lines, const HullPose& pose) {
   Vector6d force = Vector6d::Zero();
-  for (const auto& line : lines) {
-    const Eigen::Vector3d arm = pose.rotation * line->attachment_b();
-    const LineEndResponse end = line->solve(pose.reference_point_g + arm);
-    force.head<3>() += end.force_g;
-    force.tail<3>() += arm.cross(end.force_g);
+  const std::vector<LineEndResponse> ends = solve_all(lines, pose);
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    const Eigen::Vector3d arm = pose.rotation * lines[i]->attachment_b();
+    force.head<3>() += ends[i].force_g;
+    force.tail<3>() += arm.cross(ends[i].force_g);
   }
   return force;
 }
@@ -57,11 +95,12 @@ LineArrayResponse evaluate_line_array(std::span<const std::unique_ptr<StaticLine
                                       const HullPose& pose) {
   LineArrayResponse response;
   response.lines.reserve(lines.size());
-  for (const auto& line : lines) {
+  std::vector<LineEndResponse> ends = solve_all(lines, pose);
+  for (std::size_t i = 0; i < lines.size(); ++i) {
     LineContribution c;
-    const Eigen::Vector3d arm = pose.rotation * line->attachment_b();
+    const Eigen::Vector3d arm = pose.rotation * lines[i]->attachment_b();
     c.attachment_g = pose.reference_point_g + arm;
-    c.end = line->solve(c.attachment_g);
+    c.end = std::move(ends[i]);
     c.force.head<3>() = c.end.force_g;
     c.force.tail<3>() = arm.cross(c.end.force_g);
     c.stiffness = attachment_stiffness_6x6(c.end.stiffness_g, c.end.force_g, arm);

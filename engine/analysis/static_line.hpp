@@ -59,6 +59,9 @@ class StaticLine {
   virtual LineState state(const Eigen::Vector3d& attachment_g, int points_per_segment) = 0;
   /// Forgets the warm start (the next solve starts cold).
   virtual void reset() = 0;
+  /// Whether one solve costs milliseconds (FE) rather than microseconds
+  /// (catenary): the line array solves such lines on several threads.
+  virtual bool expensive() const { return false; }
 };
 
 /// A quasi-static elastic catenary between a fixed anchor and the hull.
