@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include "design/project_validation.hpp"
+
 namespace spiral::design {
 
 namespace {
@@ -121,8 +123,15 @@ LineArrayModel build_line_array(const Project& project, const LineArrayOptions& 
     model.designs.push_back(std::move(design));
   }
   if (options.include_risers) {
-    for (const Riser& riser : project.risers) {
-      model.risers.push_back(riser_design(project, riser));
+    for (std::size_t i = 0; i < project.risers.size(); ++i) {
+      const Riser& riser = project.risers[i];
+      try {
+        model.risers.push_back(riser_design(project, riser));
+      } catch (const engine::SolverError& error) {
+        // A riser that cannot take its design top angle is an input problem.
+        throw InputError({make_issue(project, fmt::format("risers[{}].sections", i), "riser_geometry_feasible",
+                                     error.what())});
+      }
       model.lines.push_back(riser_static_line(project, model.risers.back(), options.current));
     }
   }

@@ -208,8 +208,12 @@ RiserStaticsRow riser_statics_row(const Project& project, const RiserDesign& des
     row.checks.push_back({std::move(name), value, limit, std::move(unit), utilization, utilization <= 1.0});
   };
   if (any_steel) add("von_mises", row.max_von_mises_utilization, 1.0, "-", row.max_von_mises_utilization);
+  // A floor, not a capacity: no ratio of T_min to its limit measures closeness
+  // (the limit is usually 0), so the check is pass/fail — 0 while it holds,
+  // 1 + deficit/T_top once T_min drops below the limit.
+  const double deficit_N = c.min_effective_tension_N - row.min_effective_tension_N;
   add("min_effective_tension", row.min_effective_tension_N, c.min_effective_tension_N, "N",
-      1.0 - (row.min_effective_tension_N - c.min_effective_tension_N) / row.top_tension_N);
+      deficit_N >= 0.0 ? 1.0 + deficit_N / row.top_tension_N : 0.0);
   if (c.max_top_tension_N) add("max_top_tension", row.top_tension_N, *c.max_top_tension_N, "N", row.top_tension_N / *c.max_top_tension_N);
   if (c.max_top_angle_rad) {
     add("max_top_angle", row.top_angle_deg, *c.max_top_angle_rad * kRadToDeg, "deg",

@@ -57,8 +57,9 @@ engine::FeEnvironment fe_environment(const Project& project, const std::optional
 std::unique_ptr<engine::FeStaticLine> riser_static_line(const Project& project, const RiserDesign& design,
                                                         const std::optional<engine::CurrentProfile>& current);
 
-/// One criterion of one riser. `utilization` ≤ 1 passes; for the minimum
-/// effective tension it is 1 − (T_min − T_limit)/T_top (1 at the limit).
+/// One criterion of one riser. `utilization` ≤ 1 passes. The minimum
+/// effective tension is a floor, checked pass/fail: its utilization is 0 while
+/// T_min > limit and 1 + (limit − T_min)/T_top at or below it.
 struct RiserCriterionCheck {
   std::string criterion;  ///< von_mises | min_effective_tension | max_top_tension | max_top_angle | flex_joint_rotation | min_bending_radius
   double value = 0.0;     ///< in `unit`

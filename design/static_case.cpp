@@ -38,7 +38,8 @@ OffsetSummary summarize_offset(const engine::Vector6d& offset, double depth_m) {
   OffsetSummary s;
   s.horizontal_m = std::hypot(offset(0), offset(1));
   s.horizontal_pct_depth = 100.0 * s.horizontal_m / depth_m;
-  s.direction_deg = s.horizontal_m > 0.0 ? std::atan2(offset(1), offset(0)) * kRadToDeg : 0.0;
+  // Below a millimetre the direction is round-off: report 0.
+  s.direction_deg = s.horizontal_m > 1e-3 ? std::atan2(offset(1), offset(0)) * kRadToDeg : 0.0;
   if (s.direction_deg < 0.0) s.direction_deg += 360.0;
   s.heave_m = offset(2);
   s.roll_deg = offset(3) * kRadToDeg;

@@ -35,6 +35,29 @@ nlohmann::json static_case_to_json(const StaticCaseResult& r, const std::string&
     line["stiffness_6x6"] = six_by_six(r.line_stiffness[i]);
     lines.push_back(std::move(line));
   }
+  nlohmann::json risers = nlohmann::json::array();
+  for (const RiserStaticsRow& row : r.risers) {
+    nlohmann::json checks = nlohmann::json::array();
+    for (const RiserCriterionCheck& c : row.checks) {
+      checks.push_back({{"criterion", c.criterion}, {"value", c.value}, {"limit", c.limit}, {"unit", c.unit},
+                        {"utilization", c.utilization}, {"passes", c.passes}});
+    }
+    risers.push_back({{"name", row.name},
+                      {"kind", row.kind},
+                      {"top_tension_N", row.top_tension_N},
+                      {"top_angle_deg", row.top_angle_deg},
+                      {"touchdown_distance_m", row.touchdown_distance_m},
+                      {"min_effective_tension_N", row.min_effective_tension_N},
+                      {"min_effective_tension_arc_m", row.min_effective_tension_arc_m},
+                      {"max_curvature_per_m", row.max_curvature_per_m},
+                      {"min_bending_radius_m", row.min_bending_radius_m},
+                      {"max_von_mises_utilization", row.max_von_mises_utilization},
+                      {"max_von_mises_arc_m", row.max_von_mises_arc_m},
+                      {"checks", checks},
+                      {"governing_criterion", row.governing_criterion},
+                      {"utilization", row.utilization},
+                      {"passes", row.passes}});
+  }
   nlohmann::json modes = nlohmann::json::array();
   for (const NaturalMode& m : r.natural_modes) modes.push_back({{"period_s", m.period_s}, {"dominant_dof", m.dominant_dof}});
   const OffsetSummary& o = r.offset_summary;
@@ -65,6 +88,8 @@ nlohmann::json static_case_to_json(const StaticCaseResult& r, const std::string&
       {"notes", r.notes},
       {"added_mass_included", r.added_mass_included},
       {"lines", lines},
+      {"risers", risers},
+      {"design_condition", to_string(r.design_condition)},
       {"equilibrium_iterations", r.equilibrium_iterations},
       {"equilibrium_wall_s", r.equilibrium_wall_s},
       {"stiffness_wall_s", r.stiffness_wall_s},
@@ -91,6 +116,17 @@ std::string equilibrium_table(const StaticCaseResult& r, const std::string& proj
   out += statics.substr(statics.find("line "));
   out += fmt::format("Hydrostatic + gravity force: Fz {:.1f} kN, Mx {:.1f} kN·m, My {:.1f} kN·m\n",
                      r.hydrostatic_force(2) / 1e3, r.hydrostatic_force(3) / 1e3, r.hydrostatic_force(4) / 1e3);
+  if (!r.risers.empty()) {
+    out += fmt::format("\nRisers (design factor of the '{}' condition):\n", to_string(r.design_condition));
+    out += fmt::format("{:<8} {:>10} {:>8} {:>9} {:>11} {:>9} {:>8} {:>7}  {}\n", "riser", "T_top kN", "angle°",
+                       "TDP m", "Te_min kN", "R_min m", "vM util", "util", "governing");
+    for (const RiserStaticsRow& row : r.risers) {
+      out += fmt::format("{:<8} {:>10.1f} {:>8.2f} {:>9.1f} {:>11.1f} {:>9.1f} {:>8.3f} {:>7.3f}  {}{}\n", row.name,
+                         row.top_tension_N / 1e3, row.top_angle_deg, row.touchdown_distance_m,
+                         row.min_effective_tension_N / 1e3, row.min_bending_radius_m, row.max_von_mises_utilization,
+                         row.utilization, row.governing_criterion, row.passes ? "" : "  FAIL");
+    }
+  }
   const engine::Vector6d& e = r.environment_force;
   out += fmt::format("Mean environmental load on the hull: Fx {:.1f} kN, Fy {:.1f} kN, Mz {:.1f} kN·m\n",
                      e(0) / 1e3, e(1) / 1e3, e(5) / 1e3);
