@@ -43,7 +43,7 @@ class CliReport : public ::testing::Test {
 fs::path* CliReport::dir_ = nullptr;
 CommandResult* CliReport::result_ = nullptr;
 
-TEST_F(CliReport, PdfRendersWithTheReportedPageCount) {
+void PdfRendersWithTheReportedPageCount(const CommandResult* result_, const fs::path* dir_) {
   ASSERT_EQ(result_->exit_code, app::kExitOk) << result_->err;
   const fs::path pdf = *dir_ / "report" / "report.pdf";
   ASSERT_TRUE(fs::exists(pdf));
@@ -63,7 +63,7 @@ TEST_F(CliReport, PdfRendersWithTheReportedPageCount) {
   EXPECT_EQ(count, pages);
 }
 
-TEST_F(CliReport, PdfTextHoldsTheResultsTableValues) {
+void PdfTextHoldsTheResultsTableValues(const CommandResult* result_, const fs::path* dir_) {
   ASSERT_EQ(result_->exit_code, app::kExitOk) << result_->err;
   const fs::path txt = *dir_ / "report.txt";
   ASSERT_EQ(std::system(fmt::format("pdftotext -layout '{}' '{}'",
@@ -92,7 +92,7 @@ TEST_F(CliReport, PdfTextHoldsTheResultsTableValues) {
   EXPECT_NE(text.find("PASS"), std::string::npos);
 }
 
-TEST_F(CliReport, HtmlReferencesOnlyFilesThatExist) {
+void HtmlReferencesOnlyFilesThatExist(const CommandResult* result_, const fs::path* dir_) {
   ASSERT_EQ(result_->exit_code, app::kExitOk) << result_->err;
   const fs::path folder = *dir_ / "report";
   const std::string html = read_text(folder / "index.html");
@@ -107,6 +107,23 @@ TEST_F(CliReport, HtmlReferencesOnlyFilesThatExist) {
   }
   EXPECT_GT(refs, 10);
   EXPECT_TRUE(fs::exists(folder / "tables" / "pretensions.csv"));
+}
+
+// One process generates the default scenario's report once (it runs every
+// static case with FE risers) and all checks read it.
+TEST_F(CliReport, DefaultScenarioReport) {
+  {
+    SCOPED_TRACE("PdfRendersWithTheReportedPageCount");
+    PdfRendersWithTheReportedPageCount(result_, dir_);
+  }
+  {
+    SCOPED_TRACE("PdfTextHoldsTheResultsTableValues");
+    PdfTextHoldsTheResultsTableValues(result_, dir_);
+  }
+  {
+    SCOPED_TRACE("HtmlReferencesOnlyFilesThatExist");
+    HtmlReferencesOnlyFilesThatExist(result_, dir_);
+  }
 }
 
 TEST(CliReportErrors, UnwritableOutputFolderExitsFourNamingItAndLeavesNothing) {
