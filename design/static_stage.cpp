@@ -16,8 +16,6 @@ namespace {
 constexpr double kDegToRad = std::numbers::pi / 180.0;
 /// Characteristic strength of a mooring line in DNV-OS-E301 Ch. 2 Sec. 2 [4.1]: 0.95 MBL.
 constexpr double kDnvCharacteristicStrengthFraction = 0.95;
-/// Points along the suspended part of a nominal riser shape.
-constexpr int kRiserShapePoints = 60;
 
 CaseCheck check_case(const Project& project, const StaticCaseResult& result) {
   CaseCheck check;
@@ -75,37 +73,6 @@ RestoringCurve restoring_curve(LineArrayModel& model, double direction_deg, doub
   return curve;
 }
 
-RiserShape riser_shape(const Project& project, const Riser& riser) {
-  RiserShape shape;
-  shape.name = riser.name;
-  shape.kind = to_string(riser.kind);
-  const Eigen::Vector3d top = project.hull.reference_point_g + riser.hang_off_b;
-  const Eigen::Vector3d d(std::cos(riser.azimuth_rad), std::sin(riser.azimuth_rad), 0.0);
-  const double depth = project.site.depth_m;
-  const double span_z = top.z() + depth;
-  double length = 0.0;
-  for (const RiserSection& s : riser.sections) length += s.length_m;
-  if (riser.top_angle_rad < 1e-3 || span_z <= 0.0) {  // vertical: no catenary to draw
-    shape.points_g = {top, top - Eigen::Vector3d(0, 0, std::min(span_z, length))};
-    return shape;
-  }
-  // Inextensible catenary with its vertex at the touchdown point (Irvine 1981, ch. 1):
-  // z = a (cosh(x/a) − 1); top slope 1/tan(θ) gives a = Z / (1/sin θ − 1),
-  // horizontal span a·asinh(1/tan θ), suspended length a / tan θ.
-  const double theta = riser.top_angle_rad;
-  const double a = span_z / (1.0 / std::sin(theta) - 1.0);
-  const double x_top = a * std::asinh(1.0 / std::tan(theta));
-  const double suspended = a / std::tan(theta);
-  for (int i = 0; i <= kRiserShapePoints; ++i) {
-    const double x = x_top * (1.0 - static_cast<double>(i) / kRiserShapePoints);  // from the TDP
-    const double z = -depth + a * (std::cosh(x / a) - 1.0);
-    shape.points_g.push_back(top + d * (x_top - x) + Eigen::Vector3d(0, 0, z - top.z()));
-  }
-  if (length > suspended)
-    shape.points_g.push_back(shape.points_g.back() + d * (length - suspended));
-  return shape;
-}
-
 }  // namespace
 
 double mooring_safety_factor(const MooringCriteria& criteria, bool damaged) {
@@ -159,7 +126,6 @@ StaticStageResults run_static_stage(const ValidatedProject& validated) {
   for (const double direction_deg : {0.0, 90.0}) {
     out.restoring.push_back(restoring_curve(model, direction_deg, project.site.depth_m));
   }
-  for (const Riser& riser : project.risers) out.risers.push_back(riser_shape(project, riser));
   out.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
 }

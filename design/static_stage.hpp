@@ -66,16 +66,6 @@ struct LineStrength {
   std::vector<std::string> segment_types;
 };
 
-/// Nominal at-rest shape of a riser: the inextensible catenary from the
-/// hang-off at its top angle down to the seabed, then laid along the seabed
-/// (DESIGN.md §5 riser statics are not yet in the static case; this is the
-/// shape the scenario's riser lengths are designed on). Hull at rest.
-struct RiserShape {
-  std::string name;
-  std::string kind;
-  std::vector<Eigen::Vector3d> points_g;  ///< hang-off to the riser end, m
-};
-
 struct StaticStageResults {
   std::string stage = "preliminary";
   std::string code;                     ///< mooring code name (to_string(MooringCode))
@@ -84,7 +74,6 @@ struct StaticStageResults {
   std::vector<CaseCheck> checks;        ///< same order as `cases`
   std::vector<RestoringCurve> restoring;  ///< 0° and 90°
   std::vector<LineStrength> strengths;    ///< project line order
-  std::vector<RiserShape> risers;
   int worst_case = 0;  ///< index into `cases` of the largest code utilization
   bool pass = true;    ///< every case passes
   double wall_time_s = 0.0;

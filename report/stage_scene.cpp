@@ -7,8 +7,7 @@
 namespace spiral::report {
 
 Scene stage_scene(const design::Project& project, const design::StaticCaseResult& result,
-                  const std::vector<design::LineStrength>& strengths, double safety_factor,
-                  const std::vector<design::RiserShape>& risers) {
+                  const std::vector<design::LineStrength>& strengths, double safety_factor) {
   Scene scene;
   scene.depth_m = project.site.depth_m;
   scene.value_label = "Utilization";
@@ -44,10 +43,10 @@ Scene stage_scene(const design::Project& project, const design::StaticCaseResult
     }
     scene.lines.push_back(std::move(line));
   }
-  for (const design::RiserShape& riser : risers) {
+  for (const design::RiserStaticsRow& riser : result.risers) {
     SceneLine line;
     line.name = riser.name;
-    line.points_g = riser.points_g;
+    for (const engine::LineProfilePoint& p : riser.profile) line.points_g.push_back(p.position_g);
     line.riser = true;
     line.color = {0.38, 0.38, 0.42};
     scene.lines.push_back(std::move(line));

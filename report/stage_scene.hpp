@@ -15,7 +15,6 @@ namespace spiral::report {
 
 /// `safety_factor` is the case's mooring safety factor (design::CaseCheck).
 Scene stage_scene(const design::Project& project, const design::StaticCaseResult& result,
-                  const std::vector<design::LineStrength>& strengths, double safety_factor,
-                  const std::vector<design::RiserShape>& risers);
+                  const std::vector<design::LineStrength>& strengths, double safety_factor);
 
 }  // namespace spiral::report

@@ -43,7 +43,7 @@ Figure view_figure(const design::Project& project, const design::StaticStageResu
                    std::size_t case_index, ViewKind kind, const StaticStageReportOptions& options) {
   const design::StaticCaseResult& result = r.cases[case_index];
   const Scene scene =
-      stage_scene(project, result, r.strengths, r.checks[case_index].safety_factor, r.risers);
+      stage_scene(project, result, r.strengths, r.checks[case_index].safety_factor);
   ViewOptions view;
   view.width = options.view_width;
   view.height = options.view_height;
@@ -63,8 +63,8 @@ Figure view_figure(const design::Project& project, const design::StaticStageResu
   f.caption = fmt::format(
       "{}, case {}: hull at its static equilibrium (offset {:.2f} m towards {:.1f}°), mooring "
       "lines coloured by "
-      "code utilization T·SF/MBL along the line (SF {:.2f}), risers in their nominal at-rest "
-      "shape. Line "
+      "code utilization T·SF/MBL along the line (SF {:.2f}), risers (grey) as solved by FE "
+      "statics in the same case. Line "
       "thickness is exaggerated for visibility.",
       kind_title, case_label(result), result.offset_summary.horizontal_m,
       result.offset_summary.direction_deg, r.checks[case_index].safety_factor);
@@ -197,15 +197,16 @@ Figure profile_figure(const design::StaticsResult& pre, const design::StaticStag
   plot.title = "Line profiles at zero offset";
   plot.x_label = "Horizontal distance from the hull reference point (m)";
   plot.y_label = "Elevation z (m)";
-  for (const auto& riser : r.risers) {
+  const auto& still_water_risers = r.cases.front().risers;
+  for (const auto& riser : still_water_risers) {
     Series s;
-    for (const auto& q : riser.points_g) {
-      s.x.push_back((q - p.hull.reference_point_g).head<2>().norm());
-      s.y.push_back(q.z());
+    for (const auto& q : riser.profile) {
+      s.x.push_back((q.position_g - p.hull.reference_point_g).head<2>().norm());
+      s.y.push_back(q.position_g.z());
     }
     s.color = {0.62, 0.62, 0.66};
     s.line_width = 0.7;
-    s.label = &riser == &r.risers.front() ? "risers (nominal)" : "";
+    s.label = &riser == &still_water_risers.front() ? "risers (FE statics)" : "";
     plot.series.push_back(std::move(s));
   }
   for (std::size_t i = 0; i < pre.lines.size(); ++i) {
@@ -233,8 +234,7 @@ Figure profile_figure(const design::StaticsResult& pre, const design::StaticStag
   Figure f{"profiles-zero-offset",
            "Elevation of every mooring line at zero offset (pretension), each in its own "
            "vertical plane, against the horizontal distance from the hull reference point; risers "
-           "in their nominal "
-           "at-rest shape.",
+           "as solved by FE statics in still water.",
            1.45, std::nullopt, nullptr};
   f.draw = [plot](cairo_t* cr, double w, double h) { draw_plot(cr, plot, w, h); };
   return f;

@@ -24,7 +24,7 @@ void BM_RenderView_1600x1200_DefaultScenario(benchmark::State& state) {
   const auto results = design::run_static_stage(project);
   const report::Scene scene =
       report::stage_scene(project.project, results.cases[0], results.strengths,
-                          results.checks[0].safety_factor, results.risers);
+                          results.checks[0].safety_factor);
   report::ViewOptions options;  // 1600×1200, 2× supersampling
   options.title = "Overview";
   const report::Camera camera = report::frame_view(scene, report::ViewKind::iso, 4.0 / 3.0);

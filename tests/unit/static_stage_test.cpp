@@ -37,7 +37,7 @@ TEST(StaticStage, DefaultScenarioCasesChecksAndCurves) {
     EXPECT_DOUBLE_EQ(c.offset_m.back(), kRestoringMaxOffsetFractionOfDepth * 1800.0);
     for (std::size_t i = 1; i < c.force_N.size(); ++i) EXPECT_GT(c.force_N[i], c.force_N[i - 1]);
   }
-  EXPECT_EQ(r.risers.size(), project.project.risers.size());
+  EXPECT_EQ(r.cases.front().risers.size(), project.project.risers.size());
 }
 
 TEST(ModelHash, Fnv1aKnownValues) {
