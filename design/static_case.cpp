@@ -141,8 +141,10 @@ StaticCaseResult run_static_case(const ValidatedProject& validated, const Static
   result.residual = equilibrium.residual;
   result.hydrostatic_stiffness = hull.statics.hydrostatic_stiffness;
 
+  // The equilibrium's last evaluation is at the converged pose: its analytic
+  // tangent is the line-array K there, no extra solve needed.
   start = std::chrono::steady_clock::now();
-  const engine::LineArrayResponse array = engine::evaluate_line_array(lines.lines, equilibrium.pose);
+  const engine::LineArrayResponse& array = equilibrium.lines;
   result.line_force = array.force;
   result.stiffness = array.stiffness;
   for (const auto& contribution : array.lines) result.line_stiffness.push_back(contribution.stiffness);

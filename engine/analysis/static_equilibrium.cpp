@@ -115,8 +115,15 @@ EquilibriumResult solve_static_equilibrium(const HullStaticModel& hull,
           current = std::move(trial);
           accepted = true;
         }
-      } catch (const SolverError&) {
-        if (halving == kMaxLineSearchHalvings) throw;
+      } catch (const SolverError& error) {
+        if (halving == kMaxLineSearchHalvings) {
+          throw SolverError(
+              fmt::format("static equilibrium: no acceptable step at Newton iteration {} (scaled residual "
+                          "{:.3g}); {} — the load may exceed what the lines can hold: check the load case "
+                          "and the pretensions",
+                          iteration, current_merit, error.what()),
+              {iteration, current_merit, "relative"});
+        }
       }
       step *= 0.5;
     }

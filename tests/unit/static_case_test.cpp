@@ -61,3 +61,28 @@ TEST(StaticCase, LoadsWithoutDataAreNoted) {
 
 }  // namespace
 }  // namespace spiral::design
+
+namespace spiral::design {
+namespace {
+
+TEST(StaticCase, LoadTheMooringCannotHoldFailsNamingWhatAndHowFar) {
+  // 30 m/s on 1000 m² of hull is 460 MN: holding it would stretch a line
+  // beyond 30 % strain, where the catenary refuses — no equilibrium exists.
+  // 8 m/s of current on 1000 m² is 33 MN against a mooring that holds ~3 MN
+  // before its lines are stretched taut: no equilibrium exists.
+  try {
+    run_static_case(oc4_with_current(30.0), {"current-case", std::nullopt, false});
+    FAIL() << "expected SolverError";
+  } catch (const engine::SolverError& error) {
+    // Which analysis, how far it got, which line stopped it, what to check.
+    const std::string text = error.what();
+    EXPECT_NE(text.find("static equilibrium"), std::string::npos) << text;
+    EXPECT_NE(text.find("line 'L"), std::string::npos) << text;
+    EXPECT_NE(text.find("pretensions"), std::string::npos) << text;
+    EXPECT_GT(error.diagnostics().iterations, 0) << text;
+    EXPECT_GT(error.diagnostics().residual, 0.0) << text;
+  }
+}
+
+}  // namespace
+}  // namespace spiral::design
