@@ -45,7 +45,8 @@ CaseCheck check_case(const Project& project, const StaticCaseResult& result) {
     check.offset_limit_m = *project.criteria.max_offset_pct_depth / 100.0 * project.site.depth_m;
     check.offset_pass = check.offset_m <= *check.offset_limit_m;
   }
-  check.pass = check.lines_pass && check.offset_pass;
+  for (const RiserStaticsRow& riser : result.risers) check.risers_pass = check.risers_pass && riser.passes;
+  check.pass = check.lines_pass && check.offset_pass && check.risers_pass;
   return check;
 }
 

@@ -53,6 +53,7 @@ struct CaseCheck {
   std::optional<double> offset_limit_m;  ///< criteria.max_offset_pct_depth · depth
   bool offset_pass = true;
   bool lines_pass = true;
+  bool risers_pass = true;  ///< every riser meets its criteria (StaticCaseResult::risers)
   bool pass = true;
   /// Index into `lines` of the most utilized line (-1 when there is none).
   int governing_line = -1;

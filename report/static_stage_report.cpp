@@ -493,6 +493,48 @@ Section results_section(const design::ValidatedProject& vp, const design::Static
   return s;
 }
 
+Section riser_section(const design::StaticStageResults& r) {
+  Section s{"Riser static results", {}, true};
+  s.blocks.emplace_back(Paragraph{
+      "Every riser solved by FE statics (bending, current, seabed contact) in each case, at the "
+      "hull's equilibrium, and checked against the riser criteria of the project: von Mises "
+      "utilization with the design factor of the case's condition (API RP 2RD style), minimum "
+      "effective tension (a floor: pass/fail), top tension, top angle, flex-joint rotation and "
+      "minimum bending radius where given. Utilization ≤ 1 passes; the governing criterion is "
+      "the one closest to its limit."});
+  Table summary{"riser-summary",
+                "Riser checks per case: the governing riser and whether every riser passes.",
+                {"Case", "Condition", "Design condition", "Governing riser", "Criterion", "Utilization",
+                 "Risers"},
+                {}};
+  for (const auto& c : r.cases) {
+    if (c.risers.empty()) continue;
+    const auto worst = std::max_element(c.risers.begin(), c.risers.end(),
+                                        [](const auto& a, const auto& b) { return a.utilization < b.utilization; });
+    const bool all_pass = std::all_of(c.risers.begin(), c.risers.end(), [](const auto& x) { return x.passes; });
+    summary.rows.push_back({text(c.case_name), text(c.condition), text(design::to_string(c.design_condition)),
+                            text(worst->name), text(worst->governing_criterion), num(worst->utilization, 3),
+                            verdict(all_pass)});
+  }
+  s.blocks.emplace_back(summary);
+  for (const auto& c : r.cases) {
+    if (c.risers.empty()) continue;
+    Table t{fmt::format("risers-{}", slug(c.case_name)),
+            fmt::format("Risers, case {} ({} condition).", case_label(c), design::to_string(c.design_condition)),
+            {"Riser", "T top (kN)", "Top angle (°)", "TDP (m)", "Te min (kN)", "R min (m)", "von Mises", "Governing",
+             "Utilization", "Check"},
+            {}};
+    for (const auto& x : c.risers) {
+      t.rows.push_back({text(x.name), num(x.top_tension_N, 1, kN), num(x.top_angle_deg, 2),
+                        num(x.touchdown_distance_m, 1), num(x.min_effective_tension_N, 1, kN),
+                        num(x.min_bending_radius_m, 1), num(x.max_von_mises_utilization, 3),
+                        text(x.governing_criterion), num(x.utilization, 3), verdict(x.passes)});
+    }
+    s.blocks.emplace_back(t);
+  }
+  return s;
+}
+
 Section stiffness_section(const design::StaticStageResults& r, const design::Project& p) {
   Section s{"Stiffness and natural periods", {}, true};
   const auto& c = r.cases.front();
@@ -573,20 +615,27 @@ ReportDocument static_stage_report(const design::ValidatedProject& vp,
   const double worst_util = wc.governing_line >= 0
                                 ? wc.lines[static_cast<std::size_t>(wc.governing_line)].utilization
                                 : 0.0;
-  int failed = 0;
-  for (const auto& c : r.checks) failed += c.pass ? 0 : 1;
+  int failed = 0, failed_lines = 0, failed_offset = 0, failed_risers = 0;
+  for (const auto& c : r.checks) {
+    failed += c.pass ? 0 : 1;
+    failed_lines += c.lines_pass ? 0 : 1;
+    failed_offset += c.offset_pass ? 0 : 1;
+    failed_risers += c.risers_pass ? 0 : 1;
+  }
   doc.title.pass = r.pass;
   doc.title.verdict =
       r.pass
           ? fmt::format(
-                "PASS — all {} cases meet {} and the offset limit; largest utilization {:.3f} "
-                "({}, {})",
+                "PASS — all {} cases meet {}, the offset limit and the riser criteria; largest "
+                "mooring utilization {:.3f} ({}, {})",
                 r.checks.size(), r.code, worst_util,
                 wc.governing_line >= 0 ? wc.lines[static_cast<std::size_t>(wc.governing_line)].line
                                        : "–",
                 wc.case_name)
-          : fmt::format("FAIL — {} of {} cases fail; largest utilization {:.3f} ({})", failed,
-                        r.checks.size(), worst_util, wc.case_name);
+          : fmt::format("FAIL — {} of {} cases fail (mooring code: {}, offset limit: {}, riser "
+                        "criteria: {}); largest mooring utilization {:.3f} ({})",
+                        failed, r.checks.size(), failed_lines, failed_offset, failed_risers, worst_util,
+                        wc.case_name);
   doc.running_header = fmt::format("spiral — {}", p.name);
   doc.running_footer = fmt::format("{} · model {} · spiral {} · {}", info.project_file,
                                    info.model_hash, info.version, info.date);
@@ -594,6 +643,7 @@ ReportDocument static_stage_report(const design::ValidatedProject& vp,
   doc.sections.push_back(load_cases(p));
   doc.sections.push_back(pretension_section(vp, r, options));
   doc.sections.push_back(results_section(vp, r, options));
+  if (!p.risers.empty()) doc.sections.push_back(riser_section(r));
   doc.sections.push_back(stiffness_section(r, p));
   return doc;
 }
