@@ -1,3 +1,4 @@
+#include "engine/hull/wamit_format.hpp"
 #include "engine/hull/wamit_12d.hpp"
 
 #include <fmt/format.h>
@@ -18,39 +19,6 @@ namespace {
 constexpr double kPeriodRelTolerance = 1e-6;  // equal periods as printed with 5-6 digits
 constexpr double kHeadingTolerance_deg = 1e-6;
 
-std::vector<std::string_view> split_whitespace(std::string_view line) {
-  std::vector<std::string_view> tokens;
-  std::size_t pos = 0;
-  while (pos < line.size()) {
-    const std::size_t start = line.find_first_not_of(" \t\r\f\v,", pos);
-    if (start == std::string_view::npos) break;
-    const std::size_t end = line.find_first_of(" \t\r\f\v,", start);
-    tokens.push_back(
-        line.substr(start, end == std::string_view::npos ? line.size() - start : end - start));
-    pos = end == std::string_view::npos ? line.size() : end;
-  }
-  return tokens;
-}
-
-bool parse_int(std::string_view token, int& value) {
-  const char* first = token.data();
-  const char* last = token.data() + token.size();
-  if (first != last && *first == '+') ++first;
-  const auto [ptr, ec] = std::from_chars(first, last, value);
-  return ec == std::errc() && ptr == last;
-}
-
-bool parse_real(std::string_view token, double& value) {
-  std::string text(token);
-  for (char& c : text) {
-    if (c == 'D' || c == 'd') c = 'E';  // Fortran D exponent
-  }
-  const char* first = text.data();
-  const char* last = text.data() + text.size();
-  if (first != last && *first == '+') ++first;
-  const auto [ptr, ec] = std::from_chars(first, last, value);
-  return ec == std::errc() && ptr == last && std::isfinite(value);
-}
 
 struct DiagonalEntry {
   double period_s;
@@ -92,10 +60,10 @@ MeanDriftTable parse_wamit_12d_mean_drift(std::istream& text, const std::string&
   bool seen_content = false;
   while (std::getline(text, line)) {
     ++line_number;
-    const auto tokens = split_whitespace(line);
+    const auto tokens = detail::split_whitespace(line, true);
     if (tokens.empty()) continue;
     double first = 0.0;
-    if (!seen_content && !parse_real(tokens[0], first)) {
+    if (!seen_content && !detail::parse_real(tokens[0], first)) {
       seen_content = true;  // a title line
       continue;
     }
@@ -110,7 +78,7 @@ MeanDriftTable parse_wamit_12d_mean_drift(std::istream& text, const std::string&
     int dof = 0;
     for (std::size_t k = 0; k < 9; ++k) {
       if (k == 4) {
-        if (!parse_int(tokens[k], dof)) {
+        if (!detail::parse_int(tokens[k], dof)) {
           throw FileFormatError(file_name, line_number,
                                 fmt::format("field 5 (I, load component) must be an integer "
                                             "1..6, got \"{}\"",
@@ -118,7 +86,7 @@ MeanDriftTable parse_wamit_12d_mean_drift(std::istream& text, const std::string&
         }
         continue;
       }
-      if (!parse_real(tokens[k], v[k])) {
+      if (!detail::parse_real(tokens[k], v[k])) {
         static constexpr std::array<const char*, 9> kNames = {"PER1", "PER2", "BETA1", "BETA2", "I",
                                                               "MOD",  "PHS",  "RE",    "IM"};
         throw FileFormatError(file_name, line_number,

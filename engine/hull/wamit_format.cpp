@@ -20,13 +20,14 @@ void validate_wamit_options(const WamitReadOptions& options, const char* reader)
   }
 }
 
-std::vector<std::string_view> split_whitespace(std::string_view line) {
+std::vector<std::string_view> split_whitespace(std::string_view line, bool comma_separates) {
+  const char* separators = comma_separates ? " \t\r\f\v," : " \t\r\f\v";
   std::vector<std::string_view> tokens;
   std::size_t pos = 0;
   while (pos < line.size()) {
-    const std::size_t start = line.find_first_not_of(" \t\r\f\v", pos);
+    const std::size_t start = line.find_first_not_of(separators, pos);
     if (start == std::string_view::npos) break;
-    const std::size_t end = line.find_first_of(" \t\r\f\v", start);
+    const std::size_t end = line.find_first_of(separators, start);
     tokens.push_back(
         line.substr(start, end == std::string_view::npos ? line.size() - start : end - start));
     pos = end == std::string_view::npos ? line.size() : end;

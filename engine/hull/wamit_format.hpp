@@ -47,7 +47,7 @@ namespace detail {
 void validate_wamit_options(const WamitReadOptions& options, const char* reader);
 
 /// Whitespace-separated tokens of one line (views into `line`).
-std::vector<std::string_view> split_whitespace(std::string_view line);
+std::vector<std::string_view> split_whitespace(std::string_view line, bool comma_separates = false);
 
 /// Strict integer parse of the whole token (leading '+' allowed).
 bool parse_int(std::string_view token, int& value);

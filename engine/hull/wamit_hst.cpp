@@ -1,3 +1,4 @@
+#include "engine/hull/wamit_format.hpp"
 #include "engine/hull/wamit_hst.hpp"
 
 #include <fmt/format.h>
@@ -14,40 +15,6 @@
 namespace spiral::engine {
 namespace {
 
-std::vector<std::string_view> split_whitespace(std::string_view line) {
-  std::vector<std::string_view> tokens;
-  std::size_t pos = 0;
-  while (pos < line.size()) {
-    const std::size_t start = line.find_first_not_of(" \t\r\f\v", pos);
-    if (start == std::string_view::npos) break;
-    const std::size_t end = line.find_first_of(" \t\r\f\v", start);
-    tokens.push_back(
-        line.substr(start, end == std::string_view::npos ? line.size() - start : end - start));
-    pos = end == std::string_view::npos ? line.size() : end;
-  }
-  return tokens;
-}
-
-bool parse_int(std::string_view token, int& value) {
-  const auto* first = token.data();
-  const auto* last = token.data() + token.size();
-  if (first != last && *first == '+') ++first;
-  const auto [ptr, ec] = std::from_chars(first, last, value);
-  return ec == std::errc() && ptr == last;
-}
-
-bool parse_real(std::string_view token, double& value) {
-  // Fortran writers may use a D exponent (1.0D+03); accept it as E.
-  std::string text(token);
-  for (char& c : text) {
-    if (c == 'D' || c == 'd') c = 'E';
-  }
-  const char* first = text.data();
-  const char* last = text.data() + text.size();
-  if (first != last && *first == '+') ++first;
-  const auto [ptr, ec] = std::from_chars(first, last, value);
-  return ec == std::errc() && ptr == last && std::isfinite(value);
-}
 
 }  // namespace
 
@@ -79,7 +46,7 @@ WamitHstData parse_wamit_hst(std::istream& text, const std::string& file_name,
   std::size_t line_number = 0;
   while (std::getline(text, line)) {
     ++line_number;
-    const auto tokens = split_whitespace(line);
+    const auto tokens = detail::split_whitespace(line);
     if (tokens.empty()) continue;
     if (tokens.size() != 3) {
       throw FileFormatError(
@@ -89,7 +56,7 @@ WamitHstData parse_wamit_hst(std::istream& text, const std::string& file_name,
     int i = 0;
     int j = 0;
     double value = 0.0;
-    if (!parse_int(tokens[0], i) || !parse_int(tokens[1], j)) {
+    if (!detail::parse_int(tokens[0], i) || !detail::parse_int(tokens[1], j)) {
       throw FileFormatError(
           file_name, line_number,
           fmt::format("DOF indices must be integers, got \"{}\" \"{}\"", tokens[0], tokens[1]));
@@ -105,7 +72,7 @@ WamitHstData parse_wamit_hst(std::istream& text, const std::string& file_name,
                       "are not supported",
                       i, j));
     }
-    if (!parse_real(tokens[2], value)) {
+    if (!detail::parse_real(tokens[2], value)) {
       throw FileFormatError(
           file_name, line_number,
           fmt::format("C({},{}) must be a finite real number, got \"{}\"", i, j, tokens[2]));
