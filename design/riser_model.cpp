@@ -168,13 +168,10 @@ RiserStaticsRow riser_statics_row(const Project& project, const RiserDesign& des
   const double factor = design_factor(design.criteria.design_factor, condition);
   row.min_effective_tension_N = std::numeric_limits<double>::infinity();
   bool any_steel = false;
-  std::vector<double> section_end_m;
-  double s_end = 0.0;
-  for (const RiserSectionDesign& s : design.sections) section_end_m.push_back(s_end += s.length_m);
-  std::size_t section = 0;
+  const std::vector<int> sections = engine::node_sections(design.fe_model, solution);
   for (std::size_t i = 0; i < solution.node_position_m.size(); ++i) {
     const double arc = solution.node_arc_length_m[i];
-    while (section + 1 < section_end_m.size() && arc > section_end_m[section] + 1e-9) ++section;
+    const auto section = static_cast<std::size_t>(sections[i]);
     const double tension = solution.node_tension_N[i];
     if (tension < row.min_effective_tension_N) {
       row.min_effective_tension_N = tension;

@@ -10,7 +10,23 @@ namespace {
 // A node counts as resting on the seabed within this distance above it (m):
 // the penalty contact lets the laid part sink by w/k (millimetres).
 constexpr double kOnSeabedTolerance_m = 0.05;
+// Arc-length slack (m) when assigning a node on a joint to a section.
+constexpr double kJointSlack_m = 1e-9;
 }  // namespace
+
+std::vector<int> node_sections(const FeLineModel& model, const FeStaticsResult& result) {
+  std::vector<int> sections;
+  sections.reserve(result.node_arc_length_m.size());
+  double section_end_m = model.sections.empty() ? 0.0 : model.sections.front().length_m;
+  std::size_t section = 0;
+  for (const double arc : result.node_arc_length_m) {
+    while (section + 1 < model.sections.size() && arc > section_end_m + kJointSlack_m) {
+      section_end_m += model.sections[++section].length_m;
+    }
+    sections.push_back(static_cast<int>(section));
+  }
+  return sections;
+}
 
 FeStaticLine::FeStaticLine(std::string name, Eigen::Vector3d end_A_g, Eigen::Vector3d attachment_b,
                            FeLineModel model, FeEnvironment environment, FeStaticsOptions options)
@@ -55,15 +71,10 @@ LineState FeStaticLine::state(const Eigen::Vector3d& attachment_g, int /*points_
   } else {
     state.regime = "suspended";
   }
-  std::vector<double> section_end_m;
-  double s = 0.0;
-  for (const FeLineSection& section : model_.sections) section_end_m.push_back(s += section.length_m);
-  std::size_t section = 0;
+  const std::vector<int> sections = node_sections(model_, r);
   for (std::size_t i = 0; i < r.node_position_m.size(); ++i) {
-    const double arc = r.node_arc_length_m[i];
-    while (section + 1 < section_end_m.size() && arc > section_end_m[section] + 1e-9) ++section;
     const bool on_seabed = r.node_position_m[i].z() <= environment_.seabed_z_m + kOnSeabedTolerance_m;
-    state.profile.push_back({r.node_position_m[i], arc, r.node_tension_N[i], static_cast<int>(section), on_seabed});
+    state.profile.push_back({r.node_position_m[i], r.node_arc_length_m[i], r.node_tension_N[i], sections[i], on_seabed});
   }
   return state;
 }

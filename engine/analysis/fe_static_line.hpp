@@ -5,11 +5,16 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "engine/analysis/static_line.hpp"
 #include "engine/lines/fe_line_statics.hpp"
 
 namespace spiral::engine {
+
+/// The section (index into model.sections, end A first) each node of an FE
+/// solution lies in; a node on a joint belongs to the section below it.
+std::vector<int> node_sections(const FeLineModel& model, const FeStaticsResult& result);
 
 class FeStaticLine final : public StaticLine {
  public:
