@@ -80,6 +80,7 @@
 // bottom, end B the fairlead / hang-off.
 
 #include <functional>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -88,6 +89,8 @@
 #include "engine/common/solver_error.hpp"
 
 namespace spiral::engine {
+
+struct FeLineTangent;  // opaque: the factorised Jacobian of a converged state
 
 /// One homogeneous section of the line.
 struct FeLineSection {
@@ -161,6 +164,11 @@ struct FeStaticsOptions {
   /// which differ from the model's mesh where a node was moved onto the
   /// touchdown point; optional, used with warm_start_state.
   std::vector<double> warm_start_node_arc_length_m;
+  /// Factorised Jacobian of that solution (FeStaticsResult::tangent); the
+  /// warm solve steps with it while it contracts the residual (modified
+  /// Newton) instead of re-assembling. Optional, used with warm_start_state;
+  /// ignored if it belongs to another mesh size.
+  std::shared_ptr<const FeLineTangent> warm_start_tangent;
   bool compute_end_B_stiffness = true;
   /// Move the nearest node onto the touchdown point and re-solve (r-adaptivity;
   /// keeps the element's convergence order on lines that lie on the seabed).
@@ -198,10 +206,14 @@ struct FeStaticsResult {
   int iterations = 0;                                 ///< total Newton iterations
   int load_steps = 0;                                 ///< Newton solves (continuation stages)
   int touchdown_remeshes = 0;                         ///< node moves onto the touchdown point
+  int jacobian_evaluations = 0;                       ///< Jacobian assemblies + factorisations (incl. the end-B stiffness)
   double residual_N = 0.0;                            ///< final max nodal force residual
   double force_scale_N = 0.0;                         ///< scale the tolerance refers to
   /// [r, r'] per node (a second r' at hinge joints), for warm starts.
   Eigen::VectorXd state;
+  /// Factorised Jacobian (at the converged state when compute_end_B_stiffness),
+  /// for warm starts (FeStaticsOptions::warm_start_tangent).
+  std::shared_ptr<const FeLineTangent> tangent;
 };
 
 /// Node arc lengths (unstretched, from A) of the mesh the model produces.
