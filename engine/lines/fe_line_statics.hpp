@@ -61,21 +61,25 @@
 //    frictionless equilibrium, which is what the catenary solver returns
 //    with zero friction. The coefficient is kept for the dynamic model.
 //
-// Solver: Newton–Raphson on all free DOFs with an exact Jacobian (forward-mode
-// automatic differentiation of the element forces), a banded LU with partial
-// pivoting, Armijo backtracking on the force residual with a watchdog (a full
+// Solver: Newton–Raphson on all free DOFs with an exact Jacobian (the analytic
+// element tangent; forward-mode AD for the drag's derivatives only, checked
+// against full AD in tests/unit/ancf_tangent_test), a banded LU with partial
+// pivoting; in warm-started solves modified Newton (the factorised Jacobian
+// of the previous solution is kept while chord steps at least halve the
+// residual — typically one or two fresh Jacobians per warm solve, incl. the
+// one the end-B stiffness needs at the converged state); Armijo backtracking on the force residual with a watchdog (a full
 // step may raise the residual for up to two steps), and continuations when a
 // direct solve crawls or fails: seabed stiffness (×10 per stage from a soft
 // bed), current velocity (adaptive steps, with EA capped at 10 × the tension
 // during the swing, then restored ×10 per stage). Start: the multi-segment
 // elastic catenary (solve_catenary) when it has a solution, else a stretched
 // one-weight catenary or a straight line; or a given shape or warm state.
-// Timings (Release, one core; tests/bench/fe_statics_bench): OC4 20/40/80
-// el 4.6/8.4/7.9 ms; 2740 m chain–polyester–chain, 83 el: 2.4 ms (no
-// current), 5.4 ms (1.5 m/s at 30°), 2.2 ms warm-started after a 1 m offset;
-// SCR 225/325 el 15/21 ms. A strong current on a line with a touchdown
-// (continuations) takes 0.1–0.5 s.
-//
+// Timings (Release, one core, shared machine; tests/bench/fe_statics_bench):
+// OC4 20/80 el ≈ 5 ms; 2740 m chain–polyester–chain, 83 el: 2 ms (no
+// current), 3.5 ms (1.5 m/s at 30°), 0.8 ms warm-started after a 1 m offset;
+// SCR 225 el 8–12 ms cold, 3.5–5 ms warm after a 0.5 m hang-off move (with
+// or without a 1.5 m/s current); with that current cold 0.2–0.3 s
+// (continuations).
 // Frames and units: global frame, z up, SI. End A is the anchor / riser
 // bottom, end B the fairlead / hang-off.
 
