@@ -43,6 +43,7 @@ LineEndResponse FeStaticLine::solve(const Eigen::Vector3d& attachment_g) {
   if (last_) {
     options.warm_start_state = last_->state;
     options.warm_start_node_arc_length_m = last_->node_arc_length_m;
+    options.warm_start_tangent = last_->tangent;
   }
   try {
     last_ = solve_fe_line_statics(model_, environment_, {end_A_g_, attachment_g}, options);

@@ -10,6 +10,15 @@ BandMatrix::BandMatrix(int n, int kl, int ku)
     : n_(n), kl_(kl), ku_(ku), kv_(kl + ku), ld_(2 * kl + ku + 1),
       ab_(static_cast<std::size_t>(ld_) * static_cast<std::size_t>(n), 0.0) {}
 
+void BandMatrix::reset(int n, int kl, int ku) {
+  n_ = n;
+  kl_ = kl;
+  ku_ = ku;
+  kv_ = kl + ku;
+  ld_ = 2 * kl + ku + 1;
+  ab_.assign(static_cast<std::size_t>(ld_) * static_cast<std::size_t>(n), 0.0);
+}
+
 void BandMatrix::set_identity_row(int i) {
   for (int j = std::max(0, i - kl_); j <= std::min(n_ - 1, i + ku_); ++j) at(i, j) = 0.0;
   at(i, i) = 1.0;

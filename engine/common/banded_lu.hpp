@@ -15,6 +15,9 @@ class BandMatrix {
   BandMatrix() = default;
   /// n×n, kl sub- and ku super-diagonals, zero-filled.
   BandMatrix(int n, int kl, int ku);
+  /// Becomes the zero n×n matrix with kl sub- and ku super-diagonals, reusing
+  /// the storage (no allocation when the size does not grow).
+  void reset(int n, int kl, int ku);
 
   int size() const { return n_; }
   /// Entry (i, j); requires −ku ≤ j − i ≤ kl in the sense i − j ∈ [−ku, kl].

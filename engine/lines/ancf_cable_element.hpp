@@ -122,9 +122,12 @@ inline ShapeAt shape_at(double xi, double L) {
 /// the DOFs (Newton stalls) and pins the touchdown point to element ends
 /// (first-order error). The piece ends depend on the DOFs but the integrand
 /// vanishes there, so holding them fixed gives the exact derivative (Leibniz).
+/// Element tangent, 12×12 row-major: K[12 i + j] = ∂g_i/∂q_j.
+using ElementTangent = std::array<double, 144>;
+
 template <typename T>
 void add_seabed_contact(const ElementProperties& e, const LoadContext& ctx, const V3<T>* node,
-                        V3<T>* force) {
+                        V3<T>* force, ElementTangent* K = nullptr) {
   const double L = e.length_m;
   const double zs = ctx.seabed_z_m;
   auto z_at = [&](double xi) {
@@ -172,8 +175,14 @@ void add_seabed_contact(const ElementProperties& e, const LoadContext& ctx, cons
       for (int k = 0; k < 4; ++k) z = z + sh.S[k] * node[k].z;
       const T pen = zs - z;
       if (value_of(pen) <= 0.0) continue;
-      const T fz = (ctx.seabed_stiffness_N_per_m2 * gw[gp] * (b - a) * L) * pen;
+      const double c = ctx.seabed_stiffness_N_per_m2 * gw[gp] * (b - a) * L;
+      const T fz = c * pen;
       for (int k = 0; k < 4; ++k) force[k].z = force[k].z + sh.S[k] * fz;
+      if (K != nullptr) {
+        for (int k = 0; k < 4; ++k) {
+          for (int j = 0; j < 4; ++j) (*K)[12 * (3 * k + 2) + 3 * j + 2] -= c * sh.S[k] * sh.S[j];
+        }
+      }
     }
   }
 }
@@ -247,6 +256,131 @@ void element_forces(const ElementProperties& e, const LoadContext& ctx, const T*
     }
   }
   if (ctx.seabed_stiffness_N_per_m2 > 0.0) add_seabed_contact(e, ctx, node, force);
+  for (int k = 0; k < 4; ++k) {
+    g[3 * k] = force[k].x;
+    g[3 * k + 1] = force[k].y;
+    g[3 * k + 2] = force[k].z;
+  }
+}
+
+/// Generalised forces g (as element_forces<double>) and their exact tangent
+/// K = ∂g/∂q, analytic: per Gauss point the 6×6 Hessian of the strain-energy
+/// density in (a, b) = (r', r''), mapped through the shape functions; the
+/// drag's derivatives in (z, r') by forward differentiation of drag_load
+/// (4 seeds instead of 12); the contact's from its linear integrand. Same
+/// result as element_forces<Dual<12>> to round-off (tests/unit), ≈ 10×
+/// cheaper. With ctx.drag_jacobian false the drag is a dead load in K.
+///
+/// Hessian of W = EA/2 (|a| − 1)² + EI/2 (|a|²|b|² − (a·b)²)/|a|⁶ (the
+/// energy whose gradient element_forces uses), with A = a·a, B = b·b,
+/// C = a·b, G = AB − C², f_a = ∂W/∂a, f_b = ∂W/∂b:
+///   ∂f_a/∂a = EA[(1 − 1/|a|) I + a aᵀ/|a|³]
+///           + EI[A⁻³(B I − b bᵀ) − 6A⁻⁴(B a − C b) aᵀ
+///                − 3A⁻⁴(G I + a (2B a − 2C b)ᵀ) + 24 G A⁻⁵ a aᵀ],
+///   ∂f_a/∂b = EI[A⁻³(2 a bᵀ − b aᵀ − C I) − 6A⁻⁴ a (A b − C a)ᵀ],
+///   ∂f_b/∂b = EI A⁻³ (A I − a aᵀ),  ∂f_b/∂a = (∂f_a/∂b)ᵀ.
+inline void element_forces_and_tangent(const ElementProperties& e, const LoadContext& ctx, const double* q,
+                                       double* g, ElementTangent& K) {
+  using M3 = std::array<std::array<double, 3>, 3>;
+  const double L = e.length_m;
+  V3<double> node[4];
+  for (int k = 0; k < 4; ++k) node[k] = {q[3 * k], q[3 * k + 1], q[3 * k + 2]};
+  V3<double> force[4];
+  for (int k = 0; k < 4; ++k) force[k] = {0.0, 0.0, 0.0};
+  K.fill(0.0);
+  const bool drag = ctx.current != nullptr && !ctx.current->empty() &&
+                    (e.normal_drag_N_s2_per_m3 > 0.0 || e.tangential_drag_N_s2_per_m3 > 0.0);
+  const bool bending = e.EI_Nm2 > 0.0;
+
+  for (std::size_t gp = 0; gp < kGaussXi.size(); ++gp) {
+    const ShapeAt sh = shape_at(kGaussXi[gp], L);
+    const double wds = kGaussW[gp] * L;
+    V3<double> r{0.0, 0.0, 0.0}, a = r, b = r;
+    for (int k = 0; k < 4; ++k) {
+      r = r + sh.S[k] * node[k];
+      a = a + sh.dS[k] * node[k];
+      b = b + sh.ddS[k] * node[k];
+    }
+    const double av[3] = {a.x, a.y, a.z}, bv[3] = {b.x, b.y, b.z};
+    const double A = dot(a, a);
+    const double na = std::sqrt(A);
+    const double axial = e.EA_N * (na - 1.0) / na;
+    V3<double> fa = axial * a;
+    V3<double> fb{0.0, 0.0, 0.0};
+    M3 Haa{}, Hab{}, Hbb{};  // ∂f_a/∂a, ∂f_a/∂b, ∂f_b/∂b
+    const double c_aa = e.EA_N / (A * na);
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) Haa[i][j] = c_aa * av[i] * av[j];
+      Haa[i][i] += axial;
+    }
+    if (bending) {
+      const double B = dot(b, b), C = dot(a, b);
+      const double G = A * B - C * C;
+      const double EI = e.EI_Nm2;
+      const double iA3 = EI / (A * A * A), iA4 = iA3 / A, iA5 = iA4 / A;
+      fa = fa + iA3 * ((B * a - C * b) - (3.0 * G / A) * a);
+      fb = iA3 * (A * b - C * a);
+      double u[3], v[3];  // u = B a − C b, v = A b − C a
+      for (int i = 0; i < 3; ++i) {
+        u[i] = B * av[i] - C * bv[i];
+        v[i] = A * bv[i] - C * av[i];
+      }
+      for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) {
+          Haa[i][j] += -iA3 * bv[i] * bv[j] - 6.0 * iA4 * u[i] * av[j] - 6.0 * iA4 * av[i] * u[j] +
+                       24.0 * G * iA5 * av[i] * av[j];
+          Hab[i][j] = iA3 * (2.0 * av[i] * bv[j] - bv[i] * av[j]) - 6.0 * iA4 * av[i] * v[j];
+          Hbb[i][j] = -iA3 * av[i] * av[j];
+        }
+        Haa[i][i] += iA3 * B - 3.0 * iA4 * G;
+        Hab[i][i] -= iA3 * C;
+        Hbb[i][i] += iA3 * A;
+      }
+    }
+    V3<double> p{0.0, 0.0, -e.weight_N_per_m};
+    M3 Pa{};                            // ∂p/∂a
+    double Pz[3] = {0.0, 0.0, 0.0};     // ∂p/∂z
+    if (drag) {
+      if (ctx.drag_jacobian) {
+        using D = Dual<4>;
+        const V3<D> rd{D(r.x), D(r.y), D::seed(r.z, 0)};
+        const V3<D> ad{D::seed(a.x, 1), D::seed(a.y, 2), D::seed(a.z, 3)};
+        const V3<D> pd = drag_load<D>(e, ctx, rd, ad, sqrt(dot(ad, ad)));
+        const D* pc[3] = {&pd.x, &pd.y, &pd.z};
+        for (int i = 0; i < 3; ++i) {
+          Pz[i] = pc[i]->d[0];
+          for (int j = 0; j < 3; ++j) Pa[i][j] = pc[i]->d[static_cast<std::size_t>(j + 1)];
+        }
+        p = p + V3<double>{pd.x.v, pd.y.v, pd.z.v};
+      } else {
+        p = p + drag_load<double>(e, ctx, r, a, na);
+      }
+    }
+    for (int k = 0; k < 4; ++k) {
+      force[k] = force[k] + wds * (sh.S[k] * p - sh.dS[k] * fa - sh.ddS[k] * fb);
+    }
+    // K_kj = wds [S_k (∂p/∂z e_zᵀ S_j + ∂p/∂a dS_j) − dS_k (Haa dS_j + Hab ddS_j)
+    //             − ddS_k (Habᵀ dS_j + Hbb ddS_j)]
+    for (int j = 0; j < 4; ++j) {
+      M3 Ma, Mb, Mp;
+      for (int x = 0; x < 3; ++x) {
+        for (int y = 0; y < 3; ++y) {
+          Ma[x][y] = Haa[x][y] * sh.dS[j] + Hab[x][y] * sh.ddS[j];
+          Mb[x][y] = Hab[y][x] * sh.dS[j] + Hbb[x][y] * sh.ddS[j];
+          Mp[x][y] = Pa[x][y] * sh.dS[j];
+        }
+        Mp[x][2] += Pz[x] * sh.S[j];
+      }
+      for (int k = 0; k < 4; ++k) {
+        const double cs = wds * sh.S[k], ca = wds * sh.dS[k], cb = wds * sh.ddS[k];
+        for (int x = 0; x < 3; ++x) {
+          double* row = &K[static_cast<std::size_t>(12 * (3 * k + x) + 3 * j)];
+          for (int y = 0; y < 3; ++y) row[y] += cs * Mp[x][y] - ca * Ma[x][y] - cb * Mb[x][y];
+        }
+      }
+    }
+  }
+  if (ctx.seabed_stiffness_N_per_m2 > 0.0) add_seabed_contact<double>(e, ctx, node, force, &K);
   for (int k = 0; k < 4; ++k) {
     g[3 * k] = force[k].x;
     g[3 * k + 1] = force[k].y;

@@ -15,6 +15,14 @@ constexpr int kWatchdogSteps = 2;
 constexpr double kSevereStepLimit = 0.1;
 constexpr double kFirstAxialCap = 10.0;  // × the largest tension
 constexpr int kMaxShortSteps = 4;
+// A kept Jacobian is refreshed when a chord step reduces the residual norm
+// by less than this factor (linear convergence slower than halving costs
+// more residual evaluations than a fresh factorisation saves).
+constexpr double kChordContraction = 0.5;
+// After convergence by chord steps, polish to this fraction of the tolerance
+// while chord steps still contract (they stop at round-off): about where a
+// Newton step would have landed.
+constexpr double kChordPolish = 1e-3;
 
 }  // namespace
 
@@ -24,45 +32,95 @@ constexpr int kMaxShortSteps = 4;
 /// swung by a cross current) stretches the line spuriously, the line search
 /// cuts it to a sliver, and Newton would crawl — the caller then continues the
 /// load in smaller increments instead.
-NewtonOutcome newton(const Problem& p, const FeStaticsOptions& o, Eigen::VectorXd& q,
+///
+/// Modified Newton (chord steps; Kelley, "Iterative Methods for Linear and
+/// Nonlinear Equations", SIAM 1995, §5.4 and the Shamanskii method §5.4.3):
+/// while t holds a factorised Jacobian — of an earlier iterate or of the
+/// solve warm-started from — and chord steps are allowed (t.chord_steps), a
+/// full step with it is taken if it reduces the residual norm by
+/// kChordContraction or better; otherwise (or if the step would exceed the
+/// step limits) a fresh Jacobian is assembled and factorised at the current
+/// iterate for a full Newton step with line search. Assembly and factorisation are most of the
+/// cost of an iteration, a chord step costs one residual and one
+/// back-substitution; the converged state is held to the same tolerance.
+NewtonOutcome newton(const Problem& p, const FeStaticsOptions& o, Eigen::VectorXd& q, Tangent& t,
                      bool give_up_when_crawling) {
   NewtonOutcome out;
   int short_steps = 0;
   Eigen::VectorXd g(p.n_dofs), g_trial(p.n_dofs), q_trial(p.n_dofs), dq(p.n_dofs);
-  BandMatrix jac;
-  if (!assemble(p, q, g, &jac)) return out;
-  for (int it = 0;; ++it) {
+  if (t.lu.size() != p.n_dofs) t.valid = false;
+  BandMatrix& jac = t.lu;
+  // Step limits: nodes move at most a tenth of the line length, slopes change
+  // by at most 0.5 per step (keeps |r'| away from 0, where the strain measure
+  // and the tangent are undefined).
+  auto step_limit = [&p](const Eigen::VectorXd& d) {
+    double limit = 1.0;
+    for (std::size_t n = 0; n < static_cast<std::size_t>(p.n_nodes); ++n) {
+      const double dr = d.segment<3>(p.r_dof[n]).norm();
+      const double dt = std::max(d.segment<3>(p.t_in[n]).norm(), d.segment<3>(p.t_out[n]).norm());
+      limit = std::min(limit, 0.1 * p.line_length_m / std::max(dr, 1e-300));
+      limit = std::min(limit, 0.5 / std::max(dt, 1e-300));
+    }
+    return limit;
+  };
+  auto newton_rhs = [&p](const Eigen::VectorXd& residual, Eigen::VectorXd& d) {
+    d = -residual;
+    for (int i = 0; i < p.n_dofs; ++i) {
+      if (is_fixed(p, i)) d[i] = 0.0;
+    }
+  };
+  if (!assemble(p, q, g, nullptr)) return out;
+  // Iteration limits count Newton steps (fresh Jacobians) and chord steps
+  // apart: o.max_iterations each (chord steps are cheap, and each one taken
+  // halves the residual norm at least, so they cannot cycle).
+  int it = 0, chord_steps = 0;
+  bool try_chord = t.chord_steps && t.valid;  // not after a damped Newton step: its chord step would be too long too
+  bool polishing = false;    // the last step was a chord step
+  for (;; ++it) {
     out.scale_N = std::max(p.load_scale_N, max_axial_force(p, q));
     out.residual_N = residual_norm(p, g);
-    out.iterations = it;
-    if (out.residual_N <= std::max(o.relative_force_tolerance * out.scale_N, p.round_off_floor_N)) {
+    out.iterations = it + chord_steps;
+    const double tolerance_N = std::max(o.relative_force_tolerance * out.scale_N, p.round_off_floor_N);
+    if (out.residual_N <= tolerance_N) {
       out.converged = true;
-      return out;
+      // A Newton step lands far below the tolerance (quadratic convergence),
+      // a chord step just below it: polish with more chord steps while they
+      // contract, so that the state is as exact as a full Newton iteration
+      // leaves it (stages and touchdown-node moves that follow depend on it).
+      if (!polishing || out.residual_N <= kChordPolish * tolerance_N) return out;
     }
-    if (it >= o.max_iterations) return out;
+    if (it + chord_steps >= o.max_iterations) return out;
+    const double m0 = merit(p, g);
+    if (t.valid && try_chord && chord_steps < o.max_iterations) {
+      polishing = true;
+      // Chord step with the kept factorisation.
+      newton_rhs(g, dq);
+      jac.solve_in_place(dq);
+      if (dq.allFinite() && step_limit(dq) >= 1.0) {
+        q_trial = q + dq;
+        if (assemble(p, q_trial, g_trial, nullptr) &&
+            merit(p, g_trial) <= kChordContraction * kChordContraction * m0) {
+          q.swap(q_trial);
+          g.swap(g_trial);
+          short_steps = 0;
+          ++chord_steps;
+          --it;  // not a Newton iteration
+          continue;
+        }
+      }
+      polishing = false;
+    }
+    if (out.converged) return out;  // polished as far as chord steps go
+    if (!assemble(p, q, g, &jac)) return out;
+    ++t.evaluations;
     for (int i = 0; i < p.n_dofs; ++i) {
       if (is_fixed(p, i)) jac.set_identity_row(i);
     }
-    dq = -g;
-    for (int i = 0; i < p.n_dofs; ++i) {
-      if (is_fixed(p, i)) dq[i] = 0.0;
-    }
+    newton_rhs(g, dq);
     if (!jac.factorize()) return out;
+    t.valid = true;
     jac.solve_in_place(dq);
     if (!dq.allFinite()) return out;
-    // Step limits: nodes move at most a tenth of the line length, slopes change
-    // by at most 0.5 per step (keeps |r'| away from 0, where the strain measure
-    // and the tangent are undefined).
-    auto step_limit = [&p](const Eigen::VectorXd& d) {
-      double limit = 1.0;
-      for (std::size_t n = 0; n < static_cast<std::size_t>(p.n_nodes); ++n) {
-        const double dr = d.segment<3>(p.r_dof[n]).norm();
-        const double dt = std::max(d.segment<3>(p.t_in[n]).norm(), d.segment<3>(p.t_out[n]).norm());
-        limit = std::min(limit, 0.1 * p.line_length_m / std::max(dr, 1e-300));
-        limit = std::min(limit, 0.5 / std::max(dt, 1e-300));
-      }
-      return limit;
-    };
     double limit = step_limit(dq);
     if (limit < kSevereStepLimit && p.load.current != nullptr && !p.load.current->empty() &&
         p.load.current_factor > 0.0) {
@@ -75,13 +133,11 @@ NewtonOutcome newton(const Problem& p, const FeStaticsOptions& o, Eigen::VectorX
       BandMatrix jac_dead;
       Eigen::VectorXd g_dead(p.n_dofs), dq_dead(p.n_dofs);
       if (assemble(p, q, g_dead, &jac_dead, false)) {
+        ++t.evaluations;
         for (int i = 0; i < p.n_dofs; ++i) {
           if (is_fixed(p, i)) jac_dead.set_identity_row(i);
         }
-        dq_dead = -g;
-        for (int i = 0; i < p.n_dofs; ++i) {
-          if (is_fixed(p, i)) dq_dead[i] = 0.0;
-        }
+        newton_rhs(g, dq_dead);
         if (jac_dead.factorize()) {
           jac_dead.solve_in_place(dq_dead);
           if (dq_dead.allFinite() && step_limit(dq_dead) > limit) {
@@ -99,7 +155,6 @@ NewtonOutcome newton(const Problem& p, const FeStaticsOptions& o, Eigen::VectorX
     // rotation leaves a spurious axial strain (≈ θ²/2 times EA) that makes
     // the residual jump although the step is right, and the next Newton step
     // removes it; else back to the starting point and backtracking (halving).
-    const double m0 = merit(p, g);
     double alpha = limit;
     bool accepted = false;
     q_trial = q + limit * dq;
@@ -111,13 +166,11 @@ NewtonOutcome newton(const Problem& p, const FeStaticsOptions& o, Eigen::VectorX
       BandMatrix jac_w;
       for (int k = 0; k < kWatchdogSteps && !accepted; ++k) {
         if (!assemble(p, q_w, g_w, &jac_w)) break;
+        ++t.evaluations;
         for (int i = 0; i < p.n_dofs; ++i) {
           if (is_fixed(p, i)) jac_w.set_identity_row(i);
         }
-        dq_w = -g_w;
-        for (int i = 0; i < p.n_dofs; ++i) {
-          if (is_fixed(p, i)) dq_w[i] = 0.0;
-        }
+        newton_rhs(g_w, dq_w);
         if (!jac_w.factorize()) break;
         jac_w.solve_in_place(dq_w);
         if (!dq_w.allFinite()) break;
@@ -144,13 +197,14 @@ NewtonOutcome newton(const Problem& p, const FeStaticsOptions& o, Eigen::VectorX
       out.converged = out.residual_N <= 1e3 * o.relative_force_tolerance * out.scale_N;
       return out;
     }
-    q = q_trial;
+    q.swap(q_trial);
+    g.swap(g_trial);
     short_steps = alpha < kShortStep ? short_steps + 1 : 0;
+    try_chord = t.chord_steps && alpha == 1.0;
     if (give_up_when_crawling && short_steps >= kMaxShortSteps) {
-      out.residual_N = residual_norm(p, g_trial);
+      out.residual_N = residual_norm(p, g);
       return out;
     }
-    if (!assemble(p, q, g, &jac)) return out;
   }
 }
 
@@ -158,9 +212,9 @@ NewtonOutcome newton(const Problem& p, const FeStaticsOptions& o, Eigen::VectorX
 /// converged at λ = 0: steps grow by half after a success, halve after a
 /// failure. Leaves current_factor at 1.
 static NewtonOutcome current_continuation(Problem& p, const FeStaticsOptions& o, Eigen::VectorXd& q,
-                                   Counters& counters) {
+                                          Tangent& t, Counters& counters) {
   p.load.current_factor = 0.0;
-  NewtonOutcome last = newton(p, o, q);
+  NewtonOutcome last = newton(p, o, q, t);
   counters.iterations += last.iterations;
   ++counters.load_steps;
   double lambda = 0.0, step = 0.25;
@@ -168,7 +222,7 @@ static NewtonOutcome current_continuation(Problem& p, const FeStaticsOptions& o,
   while (last.converged && lambda < 1.0) {
     const Eigen::VectorXd q_prev = q;
     p.load.current_factor = std::min(1.0, lambda + step);
-    last = newton(p, o, q, true);
+    last = newton(p, o, q, t, true);
     counters.iterations += last.iterations;
     ++counters.load_steps;
     if (last.converged) {
@@ -195,12 +249,12 @@ static NewtonOutcome current_continuation(Problem& p, const FeStaticsOptions& o,
 ///     flexible riser). With EA ≈ 10 T a step can turn the line by ≈ 0.5 rad;
 ///     raising EA afterwards changes the shape only by the stretch.
 /// (2) if that fails, current continuation with the model's EA.
-NewtonOutcome solve_with_current_steps(Problem& p, const FeStaticsOptions& o, Eigen::VectorXd& q,
+NewtonOutcome solve_with_current_steps(Problem& p, const FeStaticsOptions& o, Eigen::VectorXd& q, Tangent& t,
                                        Counters& counters) {
   const bool has_current = p.load.current != nullptr && !p.load.current->empty();
   const Eigen::VectorXd q_start = q;
   p.load.current_factor = 1.0;
-  NewtonOutcome last = newton(p, o, q, has_current);
+  NewtonOutcome last = newton(p, o, q, t, has_current);
   counters.iterations += last.iterations;
   ++counters.load_steps;
   if (last.converged || !has_current) return last;
@@ -212,11 +266,11 @@ NewtonOutcome solve_with_current_steps(Problem& p, const FeStaticsOptions& o, Ei
   FeStaticsOptions loose = o;
   loose.relative_force_tolerance = std::max(o.relative_force_tolerance, 1e-6);
   cap_axial_stiffness(p, kFirstAxialCap * T_ref);
-  last = current_continuation(p, loose, q, counters);
+  last = current_continuation(p, loose, q, t, counters);
   for (double cap = 10.0 * kFirstAxialCap * T_ref; last.converged; cap *= 10.0) {
     const bool final_stage = cap >= EA_max;
     cap_axial_stiffness(p, final_stage ? INFINITY : cap);
-    last = newton(p, final_stage ? o : loose, q, true);
+    last = newton(p, final_stage ? o : loose, q, t, true);
     counters.iterations += last.iterations;
     ++counters.load_steps;
     if (final_stage) break;
@@ -225,7 +279,7 @@ NewtonOutcome solve_with_current_steps(Problem& p, const FeStaticsOptions& o, Ei
   if (last.converged) return last;
 
   q = q_start;
-  return current_continuation(p, o, q, counters);
+  return current_continuation(p, o, q, t, counters);
 }
 
 /// Where the touchdown node should sit, given the lift-off point s_lift of
@@ -299,7 +353,7 @@ static bool move_node_to(Problem& p, Eigen::VectorXd& q, double s_new, double to
 /// cannot follow "flat, then curved" inside itself; with a node there the
 /// laid elements are straight and the suspended ones smooth, which restores
 /// most of the element's accuracy (header numbers).
-NewtonOutcome snap_touchdown(Problem& p, const FeStaticsOptions& o, Eigen::VectorXd& q, Counters& counters,
+NewtonOutcome snap_touchdown(Problem& p, const FeStaticsOptions& o, Eigen::VectorXd& q, Tangent& t, Counters& counters,
                              int max_passes) {
   NewtonOutcome last;
   last.converged = true;
@@ -327,10 +381,10 @@ NewtonOutcome snap_touchdown(Problem& p, const FeStaticsOptions& o, Eigen::Vecto
     if (!move_node_to(p, q, s_new, 0.0)) break;
     moved = true;
     ++counters.remeshes;
-    last = solve_with_current_steps(p, o, q, counters);
+    last = solve_with_current_steps(p, o, q, t, counters);
     if (!last.converged) break;
   }
-  if (!moved) last = newton(p, o, q);  // already converged: returns at once with its diagnostics
+  if (!moved) last = newton(p, o, q, t);  // already converged: returns at once with its diagnostics
   return last;
 }
 

@@ -1,6 +1,6 @@
 #pragma once
 // Internal to the FE line statics: the Newton–Raphson driver (exact
-// Jacobian, banded LU, Armijo backtracking with a watchdog) and the
+// Jacobian kept while it contracts — modified Newton —, banded LU, Armijo backtracking with a watchdog) and the
 // continuations around it — current velocity, axial-stiffness cap, and the
 // touchdown node (r-adaptivity). Strategy and reasons: fe_line_statics.hpp.
 
@@ -29,14 +29,16 @@ struct Counters {
 
 /// Newton–Raphson from q (updated in place). give_up_when_crawling: return
 /// unconverged after a few very short steps (a continuation is the fallback).
-NewtonOutcome newton(const Problem& p, const FeStaticsOptions& o, Eigen::VectorXd& q,
+/// t: the kept factorised Jacobian (modified Newton; see fe_line_newton.cpp),
+/// updated in place.
+NewtonOutcome newton(const Problem& p, const FeStaticsOptions& o, Eigen::VectorXd& q, Tangent& t,
                      bool give_up_when_crawling = false);
 /// Newton at the full current, else current / axial-stiffness continuations.
-NewtonOutcome solve_with_current_steps(Problem& p, const FeStaticsOptions& o, Eigen::VectorXd& q,
+NewtonOutcome solve_with_current_steps(Problem& p, const FeStaticsOptions& o, Eigen::VectorXd& q, Tangent& t,
                                        Counters& counters);
 /// Touchdown node: move the nearest node onto the touchdown point and
 /// re-solve until it stays (at most max_passes re-solves).
-NewtonOutcome snap_touchdown(Problem& p, const FeStaticsOptions& o, Eigen::VectorXd& q, Counters& counters,
+NewtonOutcome snap_touchdown(Problem& p, const FeStaticsOptions& o, Eigen::VectorXd& q, Tangent& t, Counters& counters,
                              int max_passes);
 /// Where the touchdown node goes (and the tolerance), given the lift-off point.
 struct TouchdownTarget {

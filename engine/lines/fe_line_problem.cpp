@@ -227,23 +227,23 @@ bool assemble(const Problem& p, const Eigen::VectorXd& q, Eigen::VectorXd& g, Ba
   ancf::LoadContext load = p.load;
   load.drag_jacobian = drag_jacobian;
   g.setZero(p.n_dofs);
-  if (jac) *jac = BandMatrix(p.n_dofs, p.band, p.band);
+  if (jac) jac->reset(p.n_dofs, p.band, p.band);
+  ancf::ElementTangent ke;
   for (std::size_t e = 0; e < p.elements.size(); ++e) {
     const auto blocks = element_blocks(p, e);
     std::array<int, kElementDofs> dof;
-    for (int k = 0; k < kElementDofs; ++k) dof[k] = blocks[static_cast<std::size_t>(k / 3)] + k % 3;
+    std::array<double, kElementDofs> qe, ge;
+    for (int k = 0; k < kElementDofs; ++k) {
+      dof[k] = blocks[static_cast<std::size_t>(k / 3)] + k % 3;
+      qe[k] = q[dof[k]];
+    }
     if (jac) {
-      using D = Dual<kElementDofs>;
-      std::array<D, kElementDofs> qd, gd;
-      for (int k = 0; k < kElementDofs; ++k) qd[k] = D::seed(q[dof[k]], k);
-      ancf::element_forces<D>(p.elements[e], load, qd.data(), gd.data());
+      ancf::element_forces_and_tangent(p.elements[e], load, qe.data(), ge.data(), ke);
       for (int i = 0; i < kElementDofs; ++i) {
-        g[dof[i]] += gd[i].v;
-        for (int j = 0; j < kElementDofs; ++j) jac->at(dof[i], dof[j]) += gd[i].d[j];
+        g[dof[i]] += ge[i];
+        for (int j = 0; j < kElementDofs; ++j) jac->at(dof[i], dof[j]) += ke[static_cast<std::size_t>(kElementDofs * i + j)];
       }
     } else {
-      std::array<double, kElementDofs> qe, ge;
-      for (int k = 0; k < kElementDofs; ++k) qe[k] = q[dof[k]];
       ancf::element_forces<double>(p.elements[e], p.load, qe.data(), ge.data());
       for (int i = 0; i < kElementDofs; ++i) g[dof[i]] += ge[i];
     }

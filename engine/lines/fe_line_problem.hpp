@@ -16,6 +16,18 @@
 #include "engine/lines/ancf_cable_element.hpp"
 #include "engine/lines/fe_line_statics.hpp"
 
+namespace spiral::engine {
+
+/// Factorised Jacobian of a converged FE line state (with the prescribed
+/// DOFs' rows replaced by identity rows), handed from one solve to the next
+/// warm-started one (FeStaticsResult::tangent → FeStaticsOptions::
+/// warm_start_tangent).
+struct FeLineTangent {
+  BandMatrix lu;
+};
+
+}  // namespace spiral::engine
+
 namespace spiral::engine::fe_detail {
 
 inline constexpr int kElementDofs = 12;  // [r_a, r'_a, r_b, r'_b]
@@ -54,6 +66,23 @@ struct Problem {
   // EA (|r'| − 1) with r' from coordinates of size R over a length h carries
   // an error ≈ ε EA R / h; ten times that is accepted as converged.
   double round_off_floor_N = 0.0;
+};
+
+/// The factorised Jacobian the Newton iterations step with (workspace of one
+/// solve): kept across iterations, continuation stages and touchdown
+/// re-solves, and seeded from a warm start (modified Newton, see
+/// fe_line_newton.cpp). valid: lu holds a factorisation usable for a step.
+struct Tangent {
+  BandMatrix lu;
+  bool valid = false;
+  /// Chord steps allowed: in warm-started solves only. A cold solve goes
+  /// through continuations (seabed stiffness, current, axial stiffness)
+  /// whose stage decisions depend on how far below the tolerance each stage
+  /// lands and on the per-stage iteration budgets; chord steps change both
+  /// and made some cold solves take more stages (measured: SCR with
+  /// 1.5 m/s current, 33 → 67 stages), so cold solves keep full Newton.
+  bool chord_steps = false;
+  int evaluations = 0;  // Jacobian assemblies + factorisations
 };
 
 /// Throws SolverError("FE line statics: invalid input: " + what).

@@ -19,13 +19,14 @@ namespace {
 
 using namespace fe_detail;
 
-FeStaticsResult post_process(const Problem& p, const FeStaticsOptions& o, const Eigen::VectorXd& q) {
+FeStaticsResult post_process(const Problem& p, const FeStaticsOptions& o, const Eigen::VectorXd& q, Tangent& t) {
   FeStaticsResult r;
   const int nn = p.n_nodes;
   r.state = q;
   r.node_arc_length_m = p.mesh.s;
   Eigen::VectorXd g(p.n_dofs);
-  BandMatrix jac;
+  auto tangent = std::make_shared<FeLineTangent>();
+  BandMatrix& jac = tangent->lu;
   assemble(p, q, g, o.compute_end_B_stiffness ? &jac : nullptr);
   r.node_position_m.resize(static_cast<std::size_t>(nn));
   r.node_tension_N.resize(static_cast<std::size_t>(nn));
@@ -85,10 +86,15 @@ FeStaticsResult post_process(const Problem& p, const FeStaticsOptions& o, const 
       if (is_fixed(p, i)) jac.set_identity_row(i);
     }
     Eigen::Matrix3d k_bb = rows_b.middleCols<3>(b0);
+    ++t.evaluations;
     if (jac.factorize()) {
       for (int k = 0; k < 3; ++k) jac.solve_in_place(cols_b.col(k));
       r.end_B_stiffness_N_per_m = k_bb - rows_b * cols_b;
+      r.tangent = std::move(tangent);  // at the converged state
     }
+  } else if (t.valid) {
+    tangent->lu = std::move(t.lu);  // of an iterate near the converged state
+    r.tangent = std::move(tangent);
   }
   return r;
 }
@@ -108,14 +114,21 @@ FeStaticsResult solve_fe_line_statics(const FeLineModel& model, const FeEnvironm
   Eigen::VectorXd q = initial_state(p, model, environment, ends, options);
 
   Counters counters;
+  Tangent t;
+  t.chord_steps = options.warm_start_state.has_value();
+  if (options.warm_start_state && options.warm_start_tangent && options.warm_start_tangent->lu.size() == p.n_dofs) {
+    t.lu = options.warm_start_tangent->lu;
+    t.valid = true;
+  }
   NewtonOutcome last;
   const double k_target = environment.seabed_stiffness_N_per_m2;
   bool done = false;
   if (options.warm_start_state) {
-    last = solve_with_current_steps(p, options, q, counters);
-    if (last.converged) last = snap_touchdown(p, options, q, counters, kFinalSnapPasses);
+    last = solve_with_current_steps(p, options, q, t, counters);
+    if (last.converged) last = snap_touchdown(p, options, q, t, counters, kFinalSnapPasses);
     done = last.converged;
     if (!done) {
+      t.valid = t.chord_steps = false;  // cold start
       p = make_problem(model, environment, ends);
       q = initial_state(p, model, environment, ends, FeStaticsOptions{});
     }
@@ -128,13 +141,14 @@ FeStaticsResult solve_fe_line_statics(const FeLineModel& model, const FeEnvironm
     FeStaticsOptions direct = options;
     direct.max_iterations = std::min(options.max_iterations, kDirectAttemptIterations);
     Counters trial;
-    last = solve_with_current_steps(p, direct, q, trial);
-    if (last.converged) last = snap_touchdown(p, options, q, trial, kFinalSnapPasses);
+    last = solve_with_current_steps(p, direct, q, t, trial);
+    if (last.converged) last = snap_touchdown(p, options, q, t, trial, kFinalSnapPasses);
     counters.iterations += trial.iterations;
     counters.load_steps += trial.load_steps;
     counters.remeshes += trial.remeshes;
     done = last.converged;
     if (!done) {
+      t.valid = false;
       p = make_problem(model, environment, ends);
       q = q0;
     }
@@ -161,17 +175,17 @@ FeStaticsResult solve_fe_line_statics(const FeLineModel& model, const FeEnvironm
     for (;;) {
       p.load.seabed_stiffness_N_per_m2 = k;
       const bool final_stage = k >= k_target;
-      last = solve_with_current_steps(p, final_stage ? options : stage_options, q, counters);
+      last = solve_with_current_steps(p, final_stage ? options : stage_options, q, t, counters);
       if (!last.converged) break;
       if (final_stage) {
-        last = snap_touchdown(p, options, q, counters, kFinalSnapPasses);
+        last = snap_touchdown(p, options, q, t, counters, kFinalSnapPasses);
         break;
       }
       // One early move once the penalty layer fits inside an element, so the
       // final stage starts with the node near the touchdown point.
       const auto td = find_touchdown(p, q);
       if (td && touchdown_node_target(p, q, td->arc_length_m).tolerance_m < 0.01 * h_min) {
-        last = snap_touchdown(p, stage_options, q, counters, 1);
+        last = snap_touchdown(p, stage_options, q, t, counters, 1);
         if (!last.converged) break;
       }
       k = std::min(k_target, 10.0 * k);
@@ -201,10 +215,11 @@ FeStaticsResult solve_fe_line_statics(const FeLineModel& model, const FeEnvironm
                     options.relative_force_tolerance * last.scale_N, slack),
         d);
   }
-  FeStaticsResult r = post_process(p, options, q);
+  FeStaticsResult r = post_process(p, options, q, t);
   r.iterations = counters.iterations;
   r.load_steps = counters.load_steps;
   r.touchdown_remeshes = counters.remeshes;
+  r.jacobian_evaluations = t.evaluations;
   r.residual_N = last.residual_N;
   r.force_scale_N = last.scale_N;
   return r;

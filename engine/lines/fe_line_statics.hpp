@@ -61,25 +61,30 @@
 //    frictionless equilibrium, which is what the catenary solver returns
 //    with zero friction. The coefficient is kept for the dynamic model.
 //
-// Solver: Newton–Raphson on all free DOFs with an exact Jacobian (forward-mode
-// automatic differentiation of the element forces), a banded LU with partial
-// pivoting, Armijo backtracking on the force residual with a watchdog (a full
+// Solver: Newton–Raphson on all free DOFs with an exact Jacobian (the analytic
+// element tangent; forward-mode AD for the drag's derivatives only, checked
+// against full AD in tests/unit/ancf_tangent_test), a banded LU with partial
+// pivoting; in warm-started solves modified Newton (the factorised Jacobian
+// of the previous solution is kept while chord steps at least halve the
+// residual — typically one or two fresh Jacobians per warm solve, incl. the
+// one the end-B stiffness needs at the converged state); Armijo backtracking on the force residual with a watchdog (a full
 // step may raise the residual for up to two steps), and continuations when a
 // direct solve crawls or fails: seabed stiffness (×10 per stage from a soft
 // bed), current velocity (adaptive steps, with EA capped at 10 × the tension
 // during the swing, then restored ×10 per stage). Start: the multi-segment
 // elastic catenary (solve_catenary) when it has a solution, else a stretched
 // one-weight catenary or a straight line; or a given shape or warm state.
-// Timings (Release, one core; tests/bench/fe_statics_bench): OC4 20/40/80
-// el 4.6/8.4/7.9 ms; 2740 m chain–polyester–chain, 83 el: 2.4 ms (no
-// current), 5.4 ms (1.5 m/s at 30°), 2.2 ms warm-started after a 1 m offset;
-// SCR 225/325 el 15/21 ms. A strong current on a line with a touchdown
-// (continuations) takes 0.1–0.5 s.
-//
+// Timings (Release, one core, shared machine; tests/bench/fe_statics_bench):
+// OC4 20/80 el ≈ 5 ms; 2740 m chain–polyester–chain, 83 el: 2 ms (no
+// current), 3.5 ms (1.5 m/s at 30°), 0.8 ms warm-started after a 1 m offset;
+// SCR 225 el 8–12 ms cold, 3.5–5 ms warm after a 0.5 m hang-off move (with
+// or without a 1.5 m/s current); with that current cold 0.2–0.3 s
+// (continuations).
 // Frames and units: global frame, z up, SI. End A is the anchor / riser
 // bottom, end B the fairlead / hang-off.
 
 #include <functional>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -88,6 +93,8 @@
 #include "engine/common/solver_error.hpp"
 
 namespace spiral::engine {
+
+struct FeLineTangent;  // opaque: the factorised Jacobian of a converged state
 
 /// One homogeneous section of the line.
 struct FeLineSection {
@@ -161,6 +168,11 @@ struct FeStaticsOptions {
   /// which differ from the model's mesh where a node was moved onto the
   /// touchdown point; optional, used with warm_start_state.
   std::vector<double> warm_start_node_arc_length_m;
+  /// Factorised Jacobian of that solution (FeStaticsResult::tangent); the
+  /// warm solve steps with it while it contracts the residual (modified
+  /// Newton) instead of re-assembling. Optional, used with warm_start_state;
+  /// ignored if it belongs to another mesh size.
+  std::shared_ptr<const FeLineTangent> warm_start_tangent;
   bool compute_end_B_stiffness = true;
   /// Move the nearest node onto the touchdown point and re-solve (r-adaptivity;
   /// keeps the element's convergence order on lines that lie on the seabed).
@@ -198,10 +210,14 @@ struct FeStaticsResult {
   int iterations = 0;                                 ///< total Newton iterations
   int load_steps = 0;                                 ///< Newton solves (continuation stages)
   int touchdown_remeshes = 0;                         ///< node moves onto the touchdown point
+  int jacobian_evaluations = 0;                       ///< Jacobian assemblies + factorisations (incl. the end-B stiffness)
   double residual_N = 0.0;                            ///< final max nodal force residual
   double force_scale_N = 0.0;                         ///< scale the tolerance refers to
   /// [r, r'] per node (a second r' at hinge joints), for warm starts.
   Eigen::VectorXd state;
+  /// Factorised Jacobian (at the converged state when compute_end_B_stiffness),
+  /// for warm starts (FeStaticsOptions::warm_start_tangent).
+  std::shared_ptr<const FeLineTangent> tangent;
 };
 
 /// Node arc lengths (unstretched, from A) of the mesh the model produces.
