@@ -36,10 +36,15 @@ TEST(CliSoz, JsonHasTheDocumentedKeys) {
     EXPECT_LE(j["platform"]["allowable_offset_m"][k].get<double>(),
               j["risers"][0]["allowable_offset_m"][k].get<double>());
   }
-  // Offset check of the project's one load case (still water: zero offset).
+  // Offset check of the project's one load case (its one mooring line pulls
+  // the hull off: a non-zero static offset).
   ASSERT_EQ(j["offset_checks"].size(), 1u);
-  EXPECT_EQ(j["offset_checks"][0]["case"], "lc1");
-  EXPECT_TRUE(j["offset_checks"][0]["passes"].get<bool>());
+  const nlohmann::json& check = j["offset_checks"][0];
+  EXPECT_EQ(check["case"], "lc1");
+  EXPECT_EQ(check["condition"], "intact");
+  EXPECT_NEAR(check["margin_m"].get<double>(),
+              check["allowable_m"].get<double>() - check["offset_m"].get<double>(), 1e-9);
+  EXPECT_EQ(check["passes"].get<bool>(), check["ratio"].get<double>() <= 1.0);
   EXPECT_GT(j["solves"].get<int>(), 0);
 }
 

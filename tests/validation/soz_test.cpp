@@ -137,23 +137,29 @@ TEST(Soz, PlatformZoneIsTheIntersectionAndShrinksWithEveryRiser) {
   EXPECT_TRUE(larger_somewhere);
 }
 
-TEST(Soz, CurrentAlongTheRiserShiftsTheZoneDownstream) {
-  // A current towards +x bellies the riser (azimuth 0°, foot at +x) towards
-  // its foot: the top angle grows as in a far offset, so the far allowable
-  // offset (180°) shrinks and the near one (0°) grows — the zone moves
-  // downstream.
+TEST(Soz, CurrentInTheRiserPlaneMovesTheFarLimitAsTheTopAngleSays) {
+  // The far limit of this riser is its top angle. A current towards its foot
+  // (+x; azimuth 0°) pushes the riser away from the hull and raises the top
+  // angle — the far allowable offset (180°) shrinks; a current towards the
+  // hull lowers it and the far offset grows. (The near limit, TDP curvature,
+  // tightens with a current towards the foot as well: the sag bend is pushed
+  // onto the touchdown zone.)
   const Project p = project(test::soz_riser_yaml("R", 0.0));
   const std::vector<RiserDesign> d = designs(p);
-  const SozResult still = compute_soz(p, d, {}, options(90.0));
-  SozConditions with_current;
-  with_current.name = "current-east";
-  with_current.current = current_profile_of(*p.environments[1].current);
-  const SozResult current = compute_soz(p, d, with_current, options(90.0));
-  EXPECT_LT(at(current, 0, 180.0), at(still, 0, 180.0) - kTolerance_m);
-  EXPECT_GT(at(current, 0, 0.0), at(still, 0, 0.0) + kTolerance_m);
+  const SozResult still = compute_soz(p, d, {}, options(180.0));
+  ASSERT_EQ(still.risers[0].directions[1].governing_criterion, "max_top_angle");
+  SozConditions downstream;
+  downstream.current = current_profile_of(*p.environments[1].current);
+  SozConditions upstream = downstream;
+  upstream.current->heading_rad = M_PI;
+  const SozResult towards_foot = compute_soz(p, d, downstream, options(180.0));
+  const SozResult towards_hull = compute_soz(p, d, upstream, options(180.0));
+  EXPECT_LT(at(towards_foot, 0, 180.0), at(still, 0, 180.0) - kTolerance_m);
+  EXPECT_GT(at(towards_hull, 0, 180.0), at(still, 0, 180.0) + kTolerance_m);
+  EXPECT_LT(at(towards_foot, 0, 0.0), at(still, 0, 0.0) - kTolerance_m);
 }
 
-TEST(Soz, CatenaryScreeningAgreesWithFe) {
+TEST(Soz, CatenaryScreeningAgreesWithFeWhereTensionGovernsAndIsConservativeAtTheTdp) {
   const Project p = project(test::soz_riser_yaml("R", 0.0));
   const std::vector<RiserDesign> d = designs(p);
   SozOptions o = options(90.0);
@@ -164,11 +170,20 @@ TEST(Soz, CatenaryScreeningAgreesWithFe) {
   EXPECT_NEAR(cat_zero.zero_offset().row.top_tension_N / fe_zero.zero_offset().row.top_tension_N, 1.0,
               kScreeningTopTension);
   for (std::size_t k = 0; k < fe.directions_deg.size(); ++k) {
-    const double a = fe.risers[0].directions[k].allowable_offset_m;
-    EXPECT_NEAR(catenary.risers[0].directions[k].allowable_offset_m / a, 1.0, kScreeningOffset)
-        << fe.directions_deg[k] << "°: fe " << a << " m (" << fe.risers[0].directions[k].governing_criterion
-        << "), catenary " << catenary.risers[0].directions[k].allowable_offset_m << " m ("
-        << catenary.risers[0].directions[k].governing_criterion << ")";
+    const SozDirection& f = fe.risers[0].directions[k];
+    const SozDirection& c = catenary.risers[0].directions[k];
+    const std::string where = std::to_string(fe.directions_deg[k]) + "°: fe " + std::to_string(f.allowable_offset_m) +
+                              " m (" + f.governing_criterion + "), catenary " + std::to_string(c.allowable_offset_m) +
+                              " m (" + c.governing_criterion + ")";
+    if (f.governing_criterion == "von_mises") {
+      // Near: the TDP curvature. The catenary's w/H is the rigid-seabed
+      // boundary-layer peak (Pesce et al. 1998); the FE riser rests on the
+      // project's elastic seabed, which spreads the bend: lower peak.
+      EXPECT_LE(c.allowable_offset_m, f.allowable_offset_m + kTolerance_m) << where;
+    } else {
+      EXPECT_EQ(c.governing_criterion, f.governing_criterion) << where;
+      EXPECT_NEAR(c.allowable_offset_m / f.allowable_offset_m, 1.0, kScreeningOffset) << where;
+    }
   }
 }
 
