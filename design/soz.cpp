@@ -1,15 +1,15 @@
 #include "design/soz.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <atomic>
 #include <chrono>
-#include <deque>
 #include <cmath>
+#include <deque>
 #include <limits>
 #include <numbers>
 #include <thread>
-
-#include <fmt/format.h>
 
 #include "design/environment_loads.hpp"
 #include "design/input_error.hpp"
@@ -41,8 +41,8 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-InputError option_error(const Project& project, const std::string& option, const std::string& condition,
-                        const std::string& message) {
+InputError option_error(const Project& project, const std::string& option,
+                        const std::string& condition, const std::string& message) {
   InputIssue issue;
   issue.file = project.source_file;
   issue.path = option;
@@ -72,7 +72,9 @@ double normalize_deg(double deg) {
 
 }  // namespace
 
-const char* to_string(SozModel model) { return model == SozModel::fe ? "fe" : "catenary"; }
+const char* to_string(SozModel model) {
+  return model == SozModel::fe ? "fe" : "catenary";
+}
 
 // ---------------------------------------------------------------------------
 // Riser statics at an offset.
@@ -85,7 +87,8 @@ RiserOffsetEvaluator::RiserOffsetEvaluator(const Project& project, const RiserDe
       model_(model),
       environment_(fe_environment(project, conditions.current,
                                   design.sections.front().properties.hydrodynamic_diameter_m)) {
-  zero_ = model_ == SozModel::fe ? solve_fe(hang_off_g({0.0, 0.0}), nullptr) : solve_catenary(hang_off_g({0.0, 0.0}));
+  zero_ = model_ == SozModel::fe ? solve_fe(hang_off_g({0.0, 0.0}), nullptr)
+                                 : solve_catenary(hang_off_g({0.0, 0.0}));
   if (!zero_.error.empty()) throw engine::SolverError(zero_.error);
   if (zero_.solution && zero_.solution->touchdown) {
     reference_touchdown_g_ = zero_.solution->touchdown->position_m;
@@ -95,7 +98,8 @@ RiserOffsetEvaluator::RiserOffsetEvaluator(const Project& project, const RiserDe
     has_reference_touchdown_ = true;
   }
   // The zero-offset point itself has no excursion.
-  add_touchdown_check(zero_, has_reference_touchdown_ ? std::optional(reference_touchdown_g_) : std::nullopt);
+  add_touchdown_check(
+      zero_, has_reference_touchdown_ ? std::optional(reference_touchdown_g_) : std::nullopt);
 }
 
 Eigen::Vector3d RiserOffsetEvaluator::hang_off_g(const Eigen::Vector2d& offset_xy_m) const {
@@ -104,8 +108,8 @@ Eigen::Vector3d RiserOffsetEvaluator::hang_off_g(const Eigen::Vector2d& offset_x
   return engine::body_point_to_global(project_.hull.reference_point_g, offset, design_.hang_off_b);
 }
 
-RiserOffsetEvaluator::Evaluation RiserOffsetEvaluator::evaluate(const Eigen::Vector2d& offset_xy_m,
-                                                                const engine::FeStaticsResult* warm) const {
+RiserOffsetEvaluator::Evaluation RiserOffsetEvaluator::evaluate(
+    const Eigen::Vector2d& offset_xy_m, const engine::FeStaticsResult* warm) const {
   const Eigen::Vector3d top = hang_off_g(offset_xy_m);
   Evaluation e;
   if (model_ == SozModel::catenary) {
@@ -121,7 +125,8 @@ RiserOffsetEvaluator::Evaluation RiserOffsetEvaluator::evaluate(const Eigen::Vec
   return e;
 }
 
-void RiserOffsetEvaluator::add_touchdown_check(Evaluation& e, const std::optional<Eigen::Vector3d>& touchdown_g) const {
+void RiserOffsetEvaluator::add_touchdown_check(
+    Evaluation& e, const std::optional<Eigen::Vector3d>& touchdown_g) const {
   const auto& limit = design_.criteria.max_touchdown_excursion_m;
   if (!limit || !e.error.empty()) return;
   // A riser that lifts off the seabed entirely has moved its TDP to the foot
@@ -134,8 +139,8 @@ void RiserOffsetEvaluator::add_touchdown_check(Evaluation& e, const std::optiona
   regovern(e.row);
 }
 
-RiserOffsetEvaluator::Evaluation RiserOffsetEvaluator::solve_fe(const Eigen::Vector3d& top,
-                                                                const engine::FeStaticsResult* warm) const {
+RiserOffsetEvaluator::Evaluation RiserOffsetEvaluator::solve_fe(
+    const Eigen::Vector3d& top, const engine::FeStaticsResult* warm) const {
   engine::FeStaticsOptions options;
   options.compute_end_B_stiffness = false;  // the zone needs forces and stresses only
   if (warm) {
@@ -144,13 +149,13 @@ RiserOffsetEvaluator::Evaluation RiserOffsetEvaluator::solve_fe(const Eigen::Vec
   }
   Evaluation e;
   try {
-    auto solution = std::make_shared<engine::FeStaticsResult>(
-        engine::solve_fe_line_statics(design_.fe_model, environment_, {design_.foot_g, top}, options));
+    auto solution = std::make_shared<engine::FeStaticsResult>(engine::solve_fe_line_statics(
+        design_.fe_model, environment_, {design_.foot_g, top}, options));
     e.row = riser_statics_row(project_, design_, *solution, conditions_.condition);
     e.solution = std::move(solution);
   } catch (const engine::SolverError& error) {
-    e.error = fmt::format("riser '{}' at hang-off ({:.2f}, {:.2f}, {:.2f}) m: {}", design_.name, top.x(), top.y(),
-                          top.z(), error.what());
+    e.error = fmt::format("riser '{}' at hang-off ({:.2f}, {:.2f}, {:.2f}) m: {}", design_.name,
+                          top.x(), top.y(), top.z(), error.what());
     e.row.name = design_.name;
     e.row.kind = to_string(design_.kind);
     e.row.governing_criterion = "no_static_solution";
@@ -167,7 +172,8 @@ RiserOffsetEvaluator::Evaluation RiserOffsetEvaluator::solve_fe(const Eigen::Vec
 // boundary-layer peak w/H of Pesce et al. (1998) — the FE solution is within
 // ≈ 1 % of it for these SCRs (fe_line_statics.hpp); the bending moment is
 // EI κ. The result is packed as an FE result so the same criteria apply.
-RiserOffsetEvaluator::Evaluation RiserOffsetEvaluator::solve_catenary(const Eigen::Vector3d& top) const {
+RiserOffsetEvaluator::Evaluation RiserOffsetEvaluator::solve_catenary(
+    const Eigen::Vector3d& top) const {
   Evaluation e;
   engine::CatenaryLine line;
   for (const RiserSectionDesign& s : design_.sections) {
@@ -175,7 +181,8 @@ RiserOffsetEvaluator::Evaluation RiserOffsetEvaluator::solve_catenary(const Eige
   }
   const Eigen::Vector2d span_xy = top.head<2>() - design_.foot_g.head<2>();
   const double span_m = span_xy.norm();
-  const Eigen::Vector2d along = span_m > 0.0 ? Eigen::Vector2d(span_xy / span_m) : Eigen::Vector2d(1.0, 0.0);
+  const Eigen::Vector2d along =
+      span_m > 0.0 ? Eigen::Vector2d(span_xy / span_m) : Eigen::Vector2d(1.0, 0.0);
   engine::CatenaryOptions options;
   options.profile_points_per_segment = 400;
   try {
@@ -186,7 +193,8 @@ RiserOffsetEvaluator::Evaluation RiserOffsetEvaluator::solve_catenary(const Eige
     for (const engine::CatenaryProfilePoint& p : c.profile) {
       const RiserSectionDesign& s = design_.sections[static_cast<std::size_t>(p.segment)];
       const double w = s.properties.effective_weight_N_per_m;
-      const double kappa = p.on_seabed || !(p.tension_N > 0.0) ? 0.0 : std::abs(w) * H / (p.tension_N * p.tension_N);
+      const double kappa =
+          p.on_seabed || !(p.tension_N > 0.0) ? 0.0 : std::abs(w) * H / (p.tension_N * p.tension_N);
       r.node_arc_length_m.push_back(p.arc_length_m);
       Eigen::Vector3d position = design_.foot_g;
       position.head<2>() += p.x_m * along;
@@ -208,8 +216,9 @@ RiserOffsetEvaluator::Evaluation RiserOffsetEvaluator::solve_catenary(const Eige
     // profile's first point for the excursion check.
     if (r.touchdown) e.row.profile.front().position_g = r.touchdown->position_m;
   } catch (const engine::SolverError& error) {
-    e.error = fmt::format("riser '{}' (catenary screening) at hang-off ({:.2f}, {:.2f}, {:.2f}) m: {}", design_.name,
-                          top.x(), top.y(), top.z(), error.what());
+    e.error =
+        fmt::format("riser '{}' (catenary screening) at hang-off ({:.2f}, {:.2f}, {:.2f}) m: {}",
+                    design_.name, top.x(), top.y(), top.z(), error.what());
     e.row.name = design_.name;
     e.row.kind = to_string(design_.kind);
     e.row.governing_criterion = "no_static_solution";
@@ -236,9 +245,13 @@ struct Sample {
 
 class DirectionSearch {
  public:
-  DirectionSearch(const RiserOffsetEvaluator& evaluator, double direction_rad, const SozOptions& options,
-                  double depth_m)
+  /// `previous`: the search of the neighbouring direction in the same task
+  /// (or null); its solutions are warm starts too — at offset d the two
+  /// hang-offs are only d·step apart, closer than the march step.
+  DirectionSearch(const RiserOffsetEvaluator& evaluator, double direction_rad,
+                  const SozOptions& options, double depth_m, const DirectionSearch* previous)
       : evaluator_(evaluator),
+        previous_(previous),
         unit_(std::cos(direction_rad), std::sin(direction_rad)),
         tolerance_m_(options.tolerance_m),
         step_m_(options.march_step_pct_depth * depth_m / 100.0),
@@ -299,24 +312,39 @@ class DirectionSearch {
   }
 
  private:
-  /// Solves at offset d along the direction, warm-started from the nearest sample.
+  /// Solves at offset d along the direction, warm-started from the sample
+  /// (of this direction or the previous one) whose hull offset is nearest.
   const Sample& evaluate(double d) {
-    const Sample* nearest = nullptr;
-    for (const Sample& s : samples_) {
-      if (s.evaluation.solution && (!nearest || std::abs(s.d_m - d) < std::abs(nearest->d_m - d))) nearest = &s;
-    }
+    const Eigen::Vector2d x = d * unit_;
+    const engine::FeStaticsResult* warm = nullptr;
+    double nearest_m = std::numeric_limits<double>::infinity();
+    const auto consider = [&](const DirectionSearch& search) {
+      for (const Sample& s : search.samples_) {
+        const double distance_m = (s.d_m * search.unit_ - x).norm();
+        if (s.evaluation.solution && distance_m < nearest_m) {
+          nearest_m = distance_m;
+          warm = s.evaluation.solution.get();
+        }
+      }
+    };
+    consider(*this);
+    if (previous_) consider(*previous_);
     ++solves_;
-    samples_.push_back(
-        {d, evaluator_.evaluate(d * unit_, nearest ? nearest->evaluation.solution.get() : nullptr)});
+    samples_.push_back({d, evaluator_.evaluate(x, warm)});
     return samples_.back();
   }
 
+ public:
+  /// Forgets the previous direction (before it is destroyed).
+  void detach() { previous_ = nullptr; }
+
+ private:
   /// Shrinks [pass, fail] (either order along d) to the tolerance by
   /// safeguarded regula falsi (Illinois): returns the final passing and
   /// failing samples.
   std::pair<Sample, Sample> refine(Sample pass, Sample fail) {
     double g_pass = pass.g(), g_fail = fail.g();  // Illinois-scaled copies
-    int retained = 0;                             // +n: pass end moved n times in a row, −n: fail end
+    int retained = 0;  // +n: pass end moved n times in a row, −n: fail end
     for (int i = 0; i < kMaxRefineIterations && std::abs(fail.d_m - pass.d_m) > tolerance_m_; ++i) {
       const double lo = std::min(pass.d_m, fail.d_m), hi = std::max(pass.d_m, fail.d_m);
       double x = 0.5 * (lo + hi);
@@ -342,6 +370,7 @@ class DirectionSearch {
   }
 
   const RiserOffsetEvaluator& evaluator_;
+  const DirectionSearch* previous_;
   Eigen::Vector2d unit_;
   double tolerance_m_;
   double step_m_;
@@ -378,8 +407,8 @@ void parallel_for(int count, int threads, const Task& task) {
 
 // ---------------------------------------------------------------------------
 
-double polygon_allowable(const std::vector<double>& directions_deg, const std::vector<double>& allowable_m,
-                         double direction_deg) {
+double polygon_allowable(const std::vector<double>& directions_deg,
+                         const std::vector<double>& allowable_m, double direction_deg) {
   const std::size_t n = directions_deg.size();
   const double step = 360.0 / static_cast<double>(n);
   const double x = normalize_deg(direction_deg - directions_deg.front()) / step;
@@ -392,8 +421,9 @@ void validate_soz_options(const Project& project, const SozOptions& o) {
   const double count = 360.0 / o.step_deg;
   if (!(o.step_deg > 0.0) || o.step_deg > 360.0 ||
       std::abs(count - std::round(count)) > kStepDivisionTolerance * count) {
-    throw option_error(project, "--step-deg", "soz_step_divides_360",
-                       fmt::format("the direction step must divide 360 deg, got {} deg", o.step_deg));
+    throw option_error(
+        project, "--step-deg", "soz_step_divides_360",
+        fmt::format("the direction step must divide 360 deg, got {} deg", o.step_deg));
   }
   if (!(o.tolerance_m > 0.0)) {
     throw option_error(project, "--tolerance", "soz_tolerance_positive",
@@ -405,8 +435,10 @@ void validate_soz_options(const Project& project, const SozOptions& o) {
                                    o.march_step_pct_depth, o.search_limit_pct_depth));
   }
   for (const std::string& name : o.exclude_risers) {
-    if (std::none_of(project.risers.begin(), project.risers.end(), [&](const Riser& r) { return r.name == name; })) {
-      throw option_error(project, "--exclude", "command_line_reference", fmt::format("no riser named \"{}\"", name));
+    if (std::none_of(project.risers.begin(), project.risers.end(),
+                     [&](const Riser& r) { return r.name == name; })) {
+      throw option_error(project, "--exclude", "command_line_reference",
+                         fmt::format("no riser named \"{}\"", name));
     }
   }
   if (o.load_case && std::none_of(project.load_cases.begin(), project.load_cases.end(),
@@ -418,8 +450,8 @@ void validate_soz_options(const Project& project, const SozOptions& o) {
   }
 }
 
-SozResult compute_soz(const Project& project, const std::vector<RiserDesign>& risers, const SozConditions& conditions,
-                      const SozOptions& options) {
+SozResult compute_soz(const Project& project, const std::vector<RiserDesign>& risers,
+                      const SozConditions& conditions, const SozOptions& options) {
   validate_soz_options(project, options);
   const auto start = std::chrono::steady_clock::now();
   SozResult result;
@@ -436,8 +468,8 @@ SozResult compute_soz(const Project& project, const std::vector<RiserDesign>& ri
   const int n_risers = static_cast<int>(risers.size());
   std::vector<std::unique_ptr<RiserOffsetEvaluator>> evaluators(risers.size());
   parallel_for(n_risers, result.threads, [&](int r) {
-    evaluators[static_cast<std::size_t>(r)] =
-        std::make_unique<RiserOffsetEvaluator>(project, risers[static_cast<std::size_t>(r)], conditions, options.model);
+    evaluators[static_cast<std::size_t>(r)] = std::make_unique<RiserOffsetEvaluator>(
+        project, risers[static_cast<std::size_t>(r)], conditions, options.model);
   });
   result.risers.resize(risers.size());
   for (std::size_t r = 0; r < risers.size(); ++r) {
@@ -459,6 +491,10 @@ SozResult compute_soz(const Project& project, const std::vector<RiserDesign>& ri
     const std::size_t r = static_cast<std::size_t>(task / chunks);
     RiserSoz& z = result.risers[r];
     const int first = (task % chunks) * kDirectionsPerTask;
+    // Directions of a task run in order, each warm-started from its
+    // predecessor in the task; the chunks are fixed, so the result does not
+    // depend on the thread count.
+    std::unique_ptr<DirectionSearch> previous;
     for (int k = first; k < std::min(first + kDirectionsPerTask, n_directions); ++k) {
       SozDirection& out = z.directions[static_cast<std::size_t>(k)];
       const double direction_deg = result.directions_deg[static_cast<std::size_t>(k)];
@@ -468,8 +504,11 @@ SozResult compute_soz(const Project& project, const std::vector<RiserDesign>& ri
         out.governing_utilization = z.zero_offset_utilization;
         continue;
       }
-      DirectionSearch search(*evaluators[r], direction_deg * kDegToRad, options, project.site.depth_m);
-      out = search.run(direction_deg);
+      auto search = std::make_unique<DirectionSearch>(
+          *evaluators[r], direction_deg * kDegToRad, options, project.site.depth_m, previous.get());
+      out = search->run(direction_deg);
+      search->detach();
+      previous = std::move(search);
     }
   });
 
@@ -491,7 +530,8 @@ SozResult compute_soz(const Project& project, const std::vector<RiserDesign>& ri
     z.cross_right_m = polygon_allowable(result.directions_deg, allowable, z.azimuth_deg - 90.0);
     const auto nearest = [&](double deg) -> const std::string& {
       const double x = normalize_deg(deg) / options.step_deg;
-      return z.directions[static_cast<std::size_t>(std::lround(x)) % z.directions.size()].governing_criterion;
+      return z.directions[static_cast<std::size_t>(std::lround(x)) % z.directions.size()]
+          .governing_criterion;
     };
     z.near_governing = nearest(z.azimuth_deg);
     z.far_governing = nearest(z.azimuth_deg + 180.0);
@@ -523,20 +563,24 @@ SozResult run_soz(const ValidatedProject& validated, const SozOptions& options) 
   if (options.load_case) {
     cases.push_back(run_static_case(validated, {options.load_case, std::nullopt, false}));
   } else if (options.offset_check) {
-    for (const LoadCase& c : project.load_cases) cases.push_back(run_static_case(validated, {c.name, std::nullopt, false}));
+    for (const LoadCase& c : project.load_cases)
+      cases.push_back(run_static_case(validated, {c.name, std::nullopt, false}));
   }
   const double check_wall_s = seconds_since(check_start);
   if (options.load_case) {
     const StaticCaseResult& c = cases.front();
-    const LoadCase& lc = *std::find_if(project.load_cases.begin(), project.load_cases.end(),
-                                       [&](const LoadCase& l) { return l.name == *options.load_case; });
-    const Environment& env = *std::find_if(project.environments.begin(), project.environments.end(),
-                                           [&](const Environment& e) { return e.name == lc.environment; });
+    const LoadCase& lc =
+        *std::find_if(project.load_cases.begin(), project.load_cases.end(),
+                      [&](const LoadCase& l) { return l.name == *options.load_case; });
+    const Environment& env =
+        *std::find_if(project.environments.begin(), project.environments.end(),
+                      [&](const Environment& e) { return e.name == lc.environment; });
     conditions.name = c.case_name;
     conditions.heave_m = c.offset(2);
     conditions.rotation_rad = c.offset.tail<3>();
     conditions.condition = lc.condition;
-    if (env.current && !env.current->profile.empty()) conditions.current = current_profile_of(*env.current);
+    if (env.current && !env.current->profile.empty())
+      conditions.current = current_profile_of(*env.current);
   }
 
   std::vector<RiserDesign> designs;
@@ -583,11 +627,13 @@ SozResult run_soz(const ValidatedProject& validated, const SozOptions& options) 
     }
     if (!options.load_case && !cases.empty()) {
       result.notes.push_back(
-          "offset check against the still-water zone (no current on the risers, no mean heave/rotations); "
+          "offset check against the still-water zone (no current on the risers, no mean "
+          "heave/rotations); "
           "use --case NAME for a case's own zone");
     }
     if (!cases.empty()) {
-      result.notes.push_back("offsets are static (mean); extreme offsets need the dynamic analyses (not yet run)");
+      result.notes.push_back(
+          "offsets are static (mean); extreme offsets need the dynamic analyses (not yet run)");
     }
   }
   return result;

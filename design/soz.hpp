@@ -40,12 +40,11 @@
 // hidden: the offset counts as failing with criterion "no_static_solution" and
 // the solver's message is kept.
 
+#include <Eigen/Core>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "design/riser_model.hpp"
 #include "design/validated_project.hpp"
@@ -63,8 +62,8 @@ enum class SozModel { fe, catenary };
 const char* to_string(SozModel model);
 
 struct SozOptions {
-  double step_deg = 5.0;                 ///< direction step, > 0, must divide 360
-  double tolerance_m = 0.1;              ///< bracket width of each allowable offset, > 0
+  double step_deg = 5.0;     ///< direction step, > 0, must divide 360
+  double tolerance_m = 0.1;  ///< bracket width of each allowable offset, > 0
   /// Coarse march step, % of depth, > 0. 2.5 % (45 m in 1800 m): the FE
   /// Newton solve warm-started 45 m away converges in ≈ 20 iterations,
   /// 90 m away it needs a continuation and ≈ 100 (measured on the default SCR).
@@ -76,10 +75,10 @@ struct SozOptions {
   /// the offset check covers every load case of the project.
   std::optional<std::string> load_case;
   DesignCondition condition = DesignCondition::normal;  ///< without load_case
-  bool offset_check = true;              ///< run the load cases' static equilibria and check them
+  bool offset_check = true;  ///< run the load cases' static equilibria and check them
   std::vector<std::string> exclude_risers;  ///< left out of the analysis (e.g. sensitivity)
   SozModel model = SozModel::fe;
-  int threads = 0;                       ///< 0: std::thread::hardware_concurrency()
+  int threads = 0;  ///< 0: std::thread::hardware_concurrency()
 };
 
 /// Where the risers hang when the hull is at zero horizontal offset, and what acts on them.
@@ -128,9 +127,9 @@ struct RiserSoz {
 };
 
 struct PlatformSoz {
-  std::vector<double> allowable_offset_m;       ///< per grid direction: min over risers
-  std::vector<std::string> governing_riser;     ///< the riser that sets it
-  std::vector<std::string> governing_criterion; ///< that riser's criterion there
+  std::vector<double> allowable_offset_m;        ///< per grid direction: min over risers
+  std::vector<std::string> governing_riser;      ///< the riser that sets it
+  std::vector<std::string> governing_criterion;  ///< that riser's criterion there
 };
 
 /// One load case's static offset against the platform SOZ.
@@ -141,9 +140,9 @@ struct OffsetCheck {
   std::string kind = "static";  ///< static (mean); extreme offsets need dynamic results (not yet)
   double offset_m = 0.0;        ///< horizontal offset of the reference point
   double direction_deg = 0.0;
-  double allowable_m = 0.0;     ///< platform SOZ in that direction (interpolated)
-  double margin_m = 0.0;        ///< allowable − offset
-  double ratio = 0.0;           ///< offset / allowable (≤ 1 passes; infinite if allowable is 0)
+  double allowable_m = 0.0;  ///< platform SOZ in that direction (interpolated)
+  double margin_m = 0.0;     ///< allowable − offset
+  double ratio = 0.0;        ///< offset / allowable (≤ 1 passes; infinite if allowable is 0)
   bool passes = true;
   std::string governing_riser;
   /// The zone it was checked against: the case's own (with its current) or still-water.
@@ -160,7 +159,7 @@ struct SozResult {
   PlatformSoz platform;
   std::vector<OffsetCheck> offset_checks;
   std::vector<std::string> notes;
-  int solves = 0;         ///< riser static solves of the zone computation
+  int solves = 0;  ///< riser static solves of the zone computation
   double zone_wall_s = 0.0;
   double check_wall_s = 0.0;
   int threads = 1;
@@ -173,16 +172,16 @@ void validate_soz_options(const Project& project, const SozOptions& options);
 
 /// The zones of `risers` under `conditions` (no offset check, no load case
 /// lookup): the core computation, usable on designs built in code.
-SozResult compute_soz(const Project& project, const std::vector<RiserDesign>& risers, const SozConditions& conditions,
-                      const SozOptions& options);
+SozResult compute_soz(const Project& project, const std::vector<RiserDesign>& risers,
+                      const SozConditions& conditions, const SozOptions& options);
 
 /// Zones of the project's risers, platform intersection and offset check.
 SozResult run_soz(const ValidatedProject& project, const SozOptions& options);
 
 /// Allowable offset of a polar polygon (grid `directions_deg`, uniform step)
 /// in `direction_deg`, by linear interpolation in angle.
-double polygon_allowable(const std::vector<double>& directions_deg, const std::vector<double>& allowable_m,
-                         double direction_deg);
+double polygon_allowable(const std::vector<double>& directions_deg,
+                         const std::vector<double>& allowable_m, double direction_deg);
 
 /// One riser's criteria as a function of the hull's horizontal offset, for
 /// one thread (it holds no mutable state; solutions are passed back in for
@@ -191,18 +190,22 @@ double polygon_allowable(const std::vector<double>& directions_deg, const std::v
 class RiserOffsetEvaluator {
  public:
   struct Evaluation {
-    RiserStaticsRow row;  ///< checks incl. max_touchdown_excursion when the riser has that criterion
-    std::shared_ptr<const engine::FeStaticsResult> solution;  ///< FE model only; null when the solve failed
-    std::string error;  ///< solver message when the solve failed (row then fails "no_static_solution")
+    RiserStaticsRow
+        row;  ///< checks incl. max_touchdown_excursion when the riser has that criterion
+    std::shared_ptr<const engine::FeStaticsResult>
+        solution;  ///< FE model only; null when the solve failed
+    std::string
+        error;  ///< solver message when the solve failed (row then fails "no_static_solution")
     bool passes() const { return error.empty() && row.passes; }
   };
   /// Solves the riser at zero offset (the reference of the TDP excursion).
   /// Throws engine::SolverError when it cannot.
-  RiserOffsetEvaluator(const Project& project, const RiserDesign& design, const SozConditions& conditions,
-                       SozModel model);
+  RiserOffsetEvaluator(const Project& project, const RiserDesign& design,
+                       const SozConditions& conditions, SozModel model);
   /// The row at hull offset `offset_xy_m` (m, global x, y), warm-started from
   /// `warm` (a solution of this evaluator) or, when null, from the zero-offset one.
-  Evaluation evaluate(const Eigen::Vector2d& offset_xy_m, const engine::FeStaticsResult* warm) const;
+  Evaluation evaluate(const Eigen::Vector2d& offset_xy_m,
+                      const engine::FeStaticsResult* warm) const;
   const Evaluation& zero_offset() const { return zero_; }
   const RiserDesign& design() const { return design_; }
 

@@ -2,9 +2,8 @@
 // Output of `spiral soz`: the terminal table, the JSON document `spiral.soz`
 // v1 and the CSV table (docs/output-format.md).
 
-#include <string>
-
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "design/soz.hpp"
 

@@ -24,11 +24,16 @@ void run(benchmark::State& state, SozModel model) {
   }
   state.counters["solves"] = result.solves;
   state.counters["threads"] = result.threads;
-  state.counters["ms_per_solve_per_thread"] = 1e3 * result.zone_wall_s * result.threads / result.solves;
+  state.counters["ms_per_solve_per_thread"] =
+      1e3 * result.zone_wall_s * result.threads / result.solves;
 }
 
-void BM_Soz_DefaultScenario_Fe(benchmark::State& state) { run(state, SozModel::fe); }
-void BM_Soz_DefaultScenario_Catenary(benchmark::State& state) { run(state, SozModel::catenary); }
+void BM_Soz_DefaultScenario_Fe(benchmark::State& state) {
+  run(state, SozModel::fe);
+}
+void BM_Soz_DefaultScenario_Catenary(benchmark::State& state) {
+  run(state, SozModel::catenary);
+}
 BENCHMARK(BM_Soz_DefaultScenario_Fe)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
 BENCHMARK(BM_Soz_DefaultScenario_Catenary)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
 

@@ -4,7 +4,6 @@
 
 #include <filesystem>
 #include <fstream>
-
 #include <nlohmann/json.hpp>
 
 #include "support/run_command.hpp"
@@ -14,14 +13,16 @@ namespace spiral::test {
 namespace {
 
 std::string write_project(const std::string& name, const std::string& text) {
-  const auto path = std::filesystem::temp_directory_path() / ("spiral-soz-" + std::to_string(::getpid()) + "-" + name);
+  const auto path = std::filesystem::temp_directory_path() /
+                    ("spiral-soz-" + std::to_string(::getpid()) + "-" + name);
   std::ofstream(path) << text;
   return "'" + path.string() + "'";
 }
 
 TEST(CliSoz, JsonHasTheDocumentedKeys) {
-  const std::string file = write_project("two.yaml", soz_project_yaml(soz_riser_yaml("A", 0.0, 20.0) +
-                                                                      soz_riser_yaml("B", 180.0, 20.0)));
+  const std::string file = write_project(
+      "two.yaml",
+      soz_project_yaml(soz_riser_yaml("A", 0.0, 20.0) + soz_riser_yaml("B", 180.0, 20.0)));
   const CommandResult r = run_spiral("soz " + file + " --step-deg 45 --json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json j = nlohmann::json::parse(r.out);
@@ -65,7 +66,9 @@ TEST(CliSoz, StepThatDoesNotDivide360IsBadInput) {
   const std::string file = write_project("step.yaml", soz_project_yaml(soz_riser_yaml("R", 0.0)));
   const CommandResult r = run_spiral("soz " + file + " --step-deg 7");
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find("--step-deg: the direction step must divide 360 deg, got 7 deg"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--step-deg: the direction step must divide 360 deg, got 7 deg"),
+            std::string::npos)
+      << r.err;
 }
 
 TEST(CliSoz, RiserFailingAtZeroOffsetIsBadInputNamingTheCriterion) {
@@ -81,7 +84,8 @@ TEST(CliSoz, FlexibleRiserWithoutBendingRadiusIsBadInput) {
   const std::string riser =
       "  - name: F\n    kind: flexible\n    hang_off: [0.0, 0.0, -20.0]\n    azimuth_deg: 0.0\n"
       "    top_angle_deg: 12.0\n    sections:\n"
-      "      - {length: 700.0, outer_diameter: 0.3, contents_density: 800.0, axial_stiffness: 5.0e8,\n"
+      "      - {length: 700.0, outer_diameter: 0.3, contents_density: 800.0, axial_stiffness: "
+      "5.0e8,\n"
       "         bending_stiffness: 5.0e4, mass_per_length: 150.0}\n";
   const std::string file = write_project("flex.yaml", soz_project_yaml(riser));
   const CommandResult r = run_spiral("soz " + file);

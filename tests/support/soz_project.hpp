@@ -9,23 +9,27 @@
 
 namespace spiral::test {
 
-inline std::string soz_riser_yaml(const std::string& name, double azimuth_deg, double hang_off_radius_m = 0.0,
-                                  const std::string& extra = "") {
-  return "  - name: " + name + "\n    kind: scr\n    hang_off: {radius: " + std::to_string(hang_off_radius_m) +
-         ", azimuth_deg: " + std::to_string(azimuth_deg) + ", z: -20.0}\n    azimuth_deg: " +
-         std::to_string(azimuth_deg) +
+inline std::string soz_riser_yaml(const std::string& name, double azimuth_deg,
+                                  double hang_off_radius_m = 0.0, const std::string& extra = "") {
+  return "  - name: " + name +
+         "\n    kind: scr\n    hang_off: {radius: " + std::to_string(hang_off_radius_m) +
+         ", azimuth_deg: " + std::to_string(azimuth_deg) +
+         ", z: -20.0}\n    azimuth_deg: " + std::to_string(azimuth_deg) +
          "\n    top_angle_deg: 12.0\n    sections:\n"
-         "      - {length: 700.0, outer_diameter: 0.2731, wall_thickness: 0.0254, youngs_modulus: 2.07e11,\n"
+         "      - {length: 700.0, outer_diameter: 0.2731, wall_thickness: 0.0254, youngs_modulus: "
+         "2.07e11,\n"
          "         yield_stress: 4.48e8, steel_density: 7850.0, contents_density: 800.0}\n"
-         "    fe: {element_length: 5.0, touchdown_refinement: {length: 120.0, element_length: 1.0}}\n" +
+         "    fe: {element_length: 5.0, touchdown_refinement: {length: 120.0, element_length: "
+         "1.0}}\n" +
          extra;
 }
 
 /// The project text with the given `risers:` entries and riser criteria.
-inline std::string soz_project_yaml(const std::string& risers, const std::string& criteria =
-                                                                    "    min_effective_tension: 0.0\n"
-                                                                    "    max_top_tension: 0.9e6\n"
-                                                                    "    max_top_angle_deg: 16.0\n") {
+inline std::string soz_project_yaml(const std::string& risers,
+                                    const std::string& criteria =
+                                        "    min_effective_tension: 0.0\n"
+                                        "    max_top_tension: 0.9e6\n"
+                                        "    max_top_angle_deg: 16.0\n") {
   return R"(version: 1
 name: soz-test
 site:
@@ -52,7 +56,8 @@ hull:
   waterplane_area: 400.0
   waterplane_inertia: [1.0e5, 1.0e5]
 risers:
-)" + risers + R"(environments:
+)" + risers +
+         R"(environments:
   - name: calm
   - name: current-east
     current:

@@ -3,6 +3,8 @@
 // the search against a brute-force sweep, the platform intersection, current,
 // the catenary screening model against FE, and bad input.
 
+#include "design/soz.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -12,7 +14,6 @@
 #include "design/input_error.hpp"
 #include "design/project_loader.hpp"
 #include "design/project_validation.hpp"
-#include "design/soz.hpp"
 #include "support/soz_project.hpp"
 
 namespace spiral::design {
@@ -34,7 +35,8 @@ constexpr double kSweepFine_m = 0.02;
 constexpr double kScreeningTopTension = 0.01;
 constexpr double kScreeningOffset = 0.10;
 
-Project project(const std::string& risers, const std::optional<std::string>& criteria = std::nullopt) {
+Project project(const std::string& risers,
+                const std::optional<std::string>& criteria = std::nullopt) {
   Project p = criteria ? parse_project(test::soz_project_yaml(risers, *criteria), "soz-test.yaml")
                        : parse_project(test::soz_project_yaml(risers), "soz-test.yaml");
   return p;
@@ -67,7 +69,8 @@ TEST(Soz, SymmetricAboutTheAzimuthPlaneAndNearFarGovernedByDifferentPhysics) {
   ASSERT_FALSE(z.fails_at_zero_offset) << z.zero_offset_governing_criterion;
   for (std::size_t k = 1; k < r.directions_deg.size() / 2; ++k) {
     const std::size_t mirror = r.directions_deg.size() - k;
-    EXPECT_NEAR(z.directions[k].allowable_offset_m, z.directions[mirror].allowable_offset_m, kSymmetry_m)
+    EXPECT_NEAR(z.directions[k].allowable_offset_m, z.directions[mirror].allowable_offset_m,
+                kSymmetry_m)
         << r.directions_deg[k] << "° vs " << r.directions_deg[mirror] << "°";
     EXPECT_EQ(z.directions[k].governing_criterion, z.directions[mirror].governing_criterion);
   }
@@ -77,7 +80,9 @@ TEST(Soz, SymmetricAboutTheAzimuthPlaneAndNearFarGovernedByDifferentPhysics) {
   const std::string& near = z.directions.front().governing_criterion;
   const std::string& far = z.directions[r.directions_deg.size() / 2].governing_criterion;
   EXPECT_NE(near, far);
-  EXPECT_TRUE(near == "von_mises" || near == "min_effective_tension" || near == "min_bending_radius") << near;
+  EXPECT_TRUE(near == "von_mises" || near == "min_effective_tension" ||
+              near == "min_bending_radius")
+      << near;
   EXPECT_TRUE(far == "max_top_tension" || far == "max_top_angle" || far == "von_mises") << far;
   EXPECT_TRUE(z.star_shaped);
   EXPECT_GT(z.near_m, 0.0);
@@ -92,7 +97,8 @@ TEST(Soz, SearchAgreesWithABruteForceSweep) {
     const SozResult r = compute_soz(p, d, {}, o);
     const double found = at(r, 0, direction_deg);
     const RiserOffsetEvaluator evaluator(p, d[0], {}, SozModel::fe);
-    const Eigen::Vector2d unit(std::cos(direction_deg * M_PI / 180.0), std::sin(direction_deg * M_PI / 180.0));
+    const Eigen::Vector2d unit(std::cos(direction_deg * M_PI / 180.0),
+                               std::sin(direction_deg * M_PI / 180.0));
     std::shared_ptr<const engine::FeStaticsResult> warm = evaluator.zero_offset().solution;
     double last_pass = 0.0;
     for (double s = kSweepCoarse_m;; s += kSweepCoarse_m) {
@@ -114,12 +120,14 @@ TEST(Soz, SearchAgreesWithABruteForceSweep) {
 }
 
 TEST(Soz, PlatformZoneIsTheIntersectionAndShrinksWithEveryRiser) {
-  const Project p = project(test::soz_riser_yaml("A", 0.0, 20.0) + test::soz_riser_yaml("B", 120.0, 20.0) +
-                            test::soz_riser_yaml("C", 240.0, 20.0));
+  const Project p =
+      project(test::soz_riser_yaml("A", 0.0, 20.0) + test::soz_riser_yaml("B", 120.0, 20.0) +
+              test::soz_riser_yaml("C", 240.0, 20.0));
   const std::vector<RiserDesign> all = designs(p);
   const SozResult r = compute_soz(p, all, {}, options(30.0));
   for (std::size_t k = 0; k < r.directions_deg.size(); ++k) {
-    for (const RiserSoz& z : r.risers) EXPECT_LE(r.platform.allowable_offset_m[k], z.directions[k].allowable_offset_m);
+    for (const RiserSoz& z : r.risers)
+      EXPECT_LE(r.platform.allowable_offset_m[k], z.directions[k].allowable_offset_m);
   }
   // Remove the riser that governs direction 0 and recompute.
   const std::string governing = r.platform.governing_riser[0];
@@ -131,7 +139,8 @@ TEST(Soz, PlatformZoneIsTheIntersectionAndShrinksWithEveryRiser) {
   bool larger_somewhere = false;
   for (std::size_t k = 0; k < r.directions_deg.size(); ++k) {
     EXPECT_GE(s.platform.allowable_offset_m[k], r.platform.allowable_offset_m[k]);
-    larger_somewhere = larger_somewhere || s.platform.allowable_offset_m[k] > r.platform.allowable_offset_m[k];
+    larger_somewhere =
+        larger_somewhere || s.platform.allowable_offset_m[k] > r.platform.allowable_offset_m[k];
   }
   EXPECT_GT(s.platform.allowable_offset_m[0], r.platform.allowable_offset_m[0]);
   EXPECT_TRUE(larger_somewhere);
@@ -166,15 +175,17 @@ TEST(Soz, CatenaryScreeningAgreesWithFeWhereTensionGovernsAndIsConservativeAtThe
   const SozResult fe = compute_soz(p, d, {}, o);
   o.model = SozModel::catenary;
   const SozResult catenary = compute_soz(p, d, {}, o);
-  const RiserOffsetEvaluator fe_zero(p, d[0], {}, SozModel::fe), cat_zero(p, d[0], {}, SozModel::catenary);
-  EXPECT_NEAR(cat_zero.zero_offset().row.top_tension_N / fe_zero.zero_offset().row.top_tension_N, 1.0,
-              kScreeningTopTension);
+  const RiserOffsetEvaluator fe_zero(p, d[0], {}, SozModel::fe),
+      cat_zero(p, d[0], {}, SozModel::catenary);
+  EXPECT_NEAR(cat_zero.zero_offset().row.top_tension_N / fe_zero.zero_offset().row.top_tension_N,
+              1.0, kScreeningTopTension);
   for (std::size_t k = 0; k < fe.directions_deg.size(); ++k) {
     const SozDirection& f = fe.risers[0].directions[k];
     const SozDirection& c = catenary.risers[0].directions[k];
-    const std::string where = std::to_string(fe.directions_deg[k]) + "°: fe " + std::to_string(f.allowable_offset_m) +
-                              " m (" + f.governing_criterion + "), catenary " + std::to_string(c.allowable_offset_m) +
-                              " m (" + c.governing_criterion + ")";
+    const std::string where =
+        std::to_string(fe.directions_deg[k]) + "°: fe " + std::to_string(f.allowable_offset_m) +
+        " m (" + f.governing_criterion + "), catenary " + std::to_string(c.allowable_offset_m) +
+        " m (" + c.governing_criterion + ")";
     if (f.governing_criterion == "von_mises") {
       // Near: the TDP curvature. The catenary's w/H is the rigid-seabed
       // boundary-layer peak (Pesce et al. 1998); the FE riser rests on the
@@ -188,7 +199,8 @@ TEST(Soz, CatenaryScreeningAgreesWithFeWhereTensionGovernsAndIsConservativeAtThe
 }
 
 TEST(Soz, RiserFailingAtZeroOffsetHasNoZoneAndNamesTheCriterion) {
-  const Project p = project(test::soz_riser_yaml("R", 0.0), std::string("    max_top_tension: 3.0e5\n"));
+  const Project p =
+      project(test::soz_riser_yaml("R", 0.0), std::string("    max_top_tension: 3.0e5\n"));
   const SozResult r = compute_soz(p, designs(p), {}, options(90.0));
   const RiserSoz& z = r.risers[0];
   EXPECT_TRUE(z.fails_at_zero_offset);
