@@ -13,8 +13,8 @@ namespace spiral::test {
 namespace {
 
 std::string write_project(const std::string& name, const std::string& text) {
-  const auto path = std::filesystem::temp_directory_path() /
-                    ("spiral-soz-" + std::to_string(::getpid()) + "-" + name);
+  std::filesystem::path path = std::filesystem::temp_directory_path();
+  path /= "spiral-soz-" + std::to_string(::getpid()) + "-" + name;
   std::ofstream(path) << text;
   return "'" + path.string() + "'";
 }
@@ -37,9 +37,9 @@ TEST(CliSoz, JsonHasTheDocumentedKeys) {
     EXPECT_LE(j["platform"]["allowable_offset_m"][k].get<double>(),
               j["risers"][0]["allowable_offset_m"][k].get<double>());
   }
-  // Offset check of the project's one load case (its one mooring line pulls
-  // the hull off: a non-zero static offset).
-  ASSERT_EQ(j["offset_checks"].size(), 1u);
+  // Offset check of both load cases (the one mooring line pulls the hull
+  // off: non-zero static offsets).
+  ASSERT_EQ(j["offset_checks"].size(), 2u);
   const nlohmann::json& check = j["offset_checks"][0];
   EXPECT_EQ(check["case"], "lc1");
   EXPECT_EQ(check["condition"], "intact");
@@ -47,6 +47,20 @@ TEST(CliSoz, JsonHasTheDocumentedKeys) {
               check["allowable_m"].get<double>() - check["offset_m"].get<double>(), 1e-9);
   EXPECT_EQ(check["passes"].get<bool>(), check["ratio"].get<double>() <= 1.0);
   EXPECT_GT(j["solves"].get<int>(), 0);
+}
+
+TEST(CliSoz, CaseBringsItsCurrentHullPositionAndCondition) {
+  const std::string file =
+      write_project("case-zone.yaml", soz_project_yaml(soz_riser_yaml("R", 0.0)));
+  const CommandResult r = run_spiral("soz " + file + " --case lc2 --step-deg 90 --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["conditions"]["name"], "lc2");
+  EXPECT_TRUE(j["conditions"]["current"].get<bool>());
+  EXPECT_EQ(j["conditions"]["design_condition"], "extreme");
+  ASSERT_EQ(j["offset_checks"].size(), 1u);
+  EXPECT_EQ(j["offset_checks"][0]["zone"], "case");
+  EXPECT_EQ(j["offset_checks"][0]["case"], "lc2");
 }
 
 TEST(CliSoz, TableAndCsv) {

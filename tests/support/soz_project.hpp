@@ -65,6 +65,7 @@ risers:
       profile: [[0.0, 1.0], [-400.0, 0.5]]
 load_cases:
   - {name: lc1, environment: calm, condition: normal}
+  - {name: lc2, environment: current-east, condition: extreme}
 criteria:
   mooring: {code: api_rp_2sk}
   risers:
