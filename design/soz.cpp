@@ -90,16 +90,12 @@ RiserOffsetEvaluator::RiserOffsetEvaluator(const Project& project, const RiserDe
   zero_ = model_ == SozModel::fe ? solve_fe(hang_off_g({0.0, 0.0}), nullptr)
                                  : solve_catenary(hang_off_g({0.0, 0.0}));
   if (!zero_.error.empty()) throw engine::SolverError(zero_.error);
-  if (zero_.solution && zero_.solution->touchdown) {
-    reference_touchdown_g_ = zero_.solution->touchdown->position_m;
-    has_reference_touchdown_ = true;
-  } else if (!zero_.solution && zero_.row.touchdown_distance_m > 0.0) {
-    reference_touchdown_g_ = zero_.row.profile.front().position_g;  // set by solve_catenary below
+  if (zero_.touchdown_g) {
+    reference_touchdown_g_ = *zero_.touchdown_g;
     has_reference_touchdown_ = true;
   }
   // The zero-offset point itself has no excursion.
-  add_touchdown_check(
-      zero_, has_reference_touchdown_ ? std::optional(reference_touchdown_g_) : std::nullopt);
+  add_touchdown_check(zero_, zero_.touchdown_g);
 }
 
 Eigen::Vector3d RiserOffsetEvaluator::hang_off_g(const Eigen::Vector2d& offset_xy_m) const {
@@ -118,10 +114,7 @@ RiserOffsetEvaluator::Evaluation RiserOffsetEvaluator::evaluate(
     e = solve_fe(top, warm ? warm : zero_.solution.get());
   }
   if (!e.error.empty()) return e;
-  std::optional<Eigen::Vector3d> touchdown;
-  if (e.solution && e.solution->touchdown) touchdown = e.solution->touchdown->position_m;
-  if (!e.solution && e.row.touchdown_distance_m > 0.0) touchdown = e.row.profile.front().position_g;
-  add_touchdown_check(e, touchdown);
+  add_touchdown_check(e, e.touchdown_g);
   return e;
 }
 
@@ -152,6 +145,7 @@ RiserOffsetEvaluator::Evaluation RiserOffsetEvaluator::solve_fe(
     auto solution = std::make_shared<engine::FeStaticsResult>(engine::solve_fe_line_statics(
         design_.fe_model, environment_, {design_.foot_g, top}, options));
     e.row = riser_statics_row(project_, design_, *solution, conditions_.condition);
+    if (solution->touchdown) e.touchdown_g = solution->touchdown->position_m;
     e.solution = std::move(solution);
   } catch (const engine::SolverError& error) {
     e.error = fmt::format("riser '{}' at hang-off ({:.2f}, {:.2f}, {:.2f}) m: {}", design_.name,
@@ -212,9 +206,7 @@ RiserOffsetEvaluator::Evaluation RiserOffsetEvaluator::solve_catenary(
       r.touchdown = engine::FeTouchdown{c.laid_length_m, tdp};
     }
     e.row = riser_statics_row(project_, design_, r, conditions_.condition);
-    // The catenary carries no solution for warm starts; keep the TDP in the
-    // profile's first point for the excursion check.
-    if (r.touchdown) e.row.profile.front().position_g = r.touchdown->position_m;
+    if (r.touchdown) e.touchdown_g = r.touchdown->position_m;
   } catch (const engine::SolverError& error) {
     e.error =
         fmt::format("riser '{}' (catenary screening) at hang-off ({:.2f}, {:.2f}, {:.2f}) m: {}",

@@ -190,12 +190,14 @@ double polygon_allowable(const std::vector<double>& directions_deg,
 class RiserOffsetEvaluator {
  public:
   struct Evaluation {
-    RiserStaticsRow
-        row;  ///< checks incl. max_touchdown_excursion when the riser has that criterion
-    std::shared_ptr<const engine::FeStaticsResult>
-        solution;  ///< FE model only; null when the solve failed
-    std::string
-        error;  ///< solver message when the solve failed (row then fails "no_static_solution")
+    /// Checks, incl. max_touchdown_excursion when the riser has that criterion.
+    RiserStaticsRow row;
+    /// FE model only; null when the solve failed.
+    std::shared_ptr<const engine::FeStaticsResult> solution;
+    /// Solver message when the solve failed (the row then fails "no_static_solution").
+    std::string error;
+    /// Touchdown point (global); none when the riser is fully suspended.
+    std::optional<Eigen::Vector3d> touchdown_g;
     bool passes() const { return error.empty() && row.passes; }
   };
   /// Solves the riser at zero offset (the reference of the TDP excursion).

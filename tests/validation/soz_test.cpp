@@ -198,6 +198,27 @@ TEST(Soz, CatenaryScreeningAgreesWithFeWhereTensionGovernsAndIsConservativeAtThe
   }
 }
 
+TEST(Soz, TouchdownExcursionLimitsTheZoneWhereGiven) {
+  // TDP travel is about as large as the hull offset along the riser plane:
+  // a 5 m limit governs there, long before the top angle.
+  const Project p =
+      project(test::soz_riser_yaml("R", 0.0), std::string("    max_top_angle_deg: 16.0\n"
+                                                          "    max_touchdown_excursion: 5.0\n"));
+  const std::vector<RiserDesign> d = designs(p);
+  const SozResult r = compute_soz(p, d, {}, options(180.0));
+  const SozDirection& far = r.risers[0].directions[1];
+  EXPECT_EQ(far.governing_criterion, "max_touchdown_excursion");
+  const RiserOffsetEvaluator evaluator(p, d[0], {}, SozModel::fe);
+  const auto e = evaluator.evaluate({-far.allowable_offset_m, 0.0}, nullptr);
+  ASSERT_TRUE(e.passes());
+  const auto check = std::find_if(
+      e.row.checks.begin(), e.row.checks.end(),
+      [](const RiserCriterionCheck& c) { return c.criterion == "max_touchdown_excursion"; });
+  ASSERT_NE(check, e.row.checks.end());
+  EXPECT_LE(check->value, 5.0);
+  EXPECT_GT(check->value, 5.0 - 2.0 * kTolerance_m);  // TDP moves ≈ as far as the hang-off
+}
+
 TEST(Soz, RiserFailingAtZeroOffsetHasNoZoneAndNamesTheCriterion) {
   const Project p =
       project(test::soz_riser_yaml("R", 0.0), std::string("    max_top_tension: 3.0e5\n"));
