@@ -219,6 +219,19 @@ TEST(Soz, TouchdownExcursionLimitsTheZoneWhereGiven) {
   EXPECT_GT(check->value, 5.0 - 2.0 * kTolerance_m);  // TDP moves ≈ as far as the hang-off
 }
 
+TEST(Soz, ResultsDoNotDependOnTheThreadCount) {
+  const Project p = project(test::soz_riser_yaml("A", 0.0, 20.0) + test::soz_riser_yaml("B", 180.0, 20.0));
+  const std::vector<RiserDesign> d = designs(p);
+  SozOptions o = options(45.0);
+  o.threads = 1;
+  const SozResult one = compute_soz(p, d, {}, o);
+  o.threads = 3;
+  const SozResult three = compute_soz(p, d, {}, o);
+  EXPECT_EQ(one.platform.allowable_offset_m, three.platform.allowable_offset_m);  // bit for bit
+  EXPECT_EQ(one.platform.governing_riser, three.platform.governing_riser);
+  EXPECT_EQ(one.solves, three.solves);
+}
+
 TEST(Soz, RiserFailingAtZeroOffsetHasNoZoneAndNamesTheCriterion) {
   const Project p =
       project(test::soz_riser_yaml("R", 0.0), std::string("    max_top_tension: 3.0e5\n"));
