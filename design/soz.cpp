@@ -584,6 +584,12 @@ SozResult run_soz(const ValidatedProject& validated, const SozOptions& options) 
     designs.push_back(riser_design(project, riser));
   }
   SozResult result = compute_soz(project, designs, conditions, options);
+  if (options.model == SozModel::catenary && conditions.current) {
+    result.notes.push_back(
+        "the catenary screening model carries no current: this zone ignores the case's current on "
+        "the risers "
+        "(use --model fe)");
+  }
   result.check_wall_s = check_wall_s;
   for (const std::string& n : notes) result.notes.push_back(n);
   if (!options.exclude_risers.empty()) {
