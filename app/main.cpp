@@ -20,6 +20,8 @@
 #include "design/static_case.hpp"
 #include "design/static_case_output.hpp"
 #include "design/statics_output.hpp"
+#include "design/soz.hpp"
+#include "design/soz_output.hpp"
 #include "design/static_stage.hpp"
 #include "design/statics_study.hpp"
 #include "design/validated_project.hpp"
@@ -73,6 +75,33 @@ int run_static_case_command(const std::string& project_file, const design::Stati
     fmt::print("{}", design::stiffness_table(result, loaded.project.name));
   }
   return app::kExitOk;
+}
+
+enum class SozView { table, json, csv };
+
+int run_soz_command(const std::string& project_file, const design::SozOptions& options, SozView view) {
+  const design::ValidatedProject loaded = design::load_validated_project(project_file);
+  const design::SozResult result = design::run_soz(loaded, options);
+  if (view == SozView::json) {
+    fmt::print("{}\n", design::soz_to_json(result).dump(2));
+  } else if (view == SozView::csv) {
+    fmt::print("{}", design::soz_to_csv(result));
+  } else {
+    fmt::print("{}", design::soz_table(result));
+  }
+  // A riser that fails its criteria with the hull at rest has no zone: the
+  // riser or its criteria are wrong, which is an input problem.
+  bool failed = false;
+  for (const design::RiserSoz& z : result.risers) {
+    if (!z.fails_at_zero_offset) continue;
+    fmt::print(stderr,
+               "{}: riser '{}' fails its criteria at zero offset ({}): {} utilization {:.3f} > 1 — it has no safe "
+               "zone; check its criteria (criteria.risers, risers[].criteria) or its design\n",
+               project_file, z.name, result.conditions.name, z.zero_offset_governing_criterion,
+               z.zero_offset_utilization);
+    failed = true;
+  }
+  return failed ? app::kExitBadInput : app::kExitOk;
 }
 
 constexpr const char* kVersion = "0.1.0";
@@ -170,6 +199,34 @@ int main(int argc, char** argv) {
   report_cmd->add_option("--out", out_dir, "Output folder (default: out/<project-stem>/<stage>)");
   report_cmd->footer(kExitCodeHelp);
 
+  CLI::App* soz_cmd = cli.add_subcommand(
+      "soz", "Riser safe operational zones (allowable hull offset per direction) and the offset check");
+  soz_cmd->add_option("PROJECT", project_file, "Project YAML file")->required();
+  design::SozOptions soz_options;
+  std::string soz_condition, soz_model = "fe";
+  bool csv = false;
+  soz_cmd->add_option("--case", case_name,
+                      "Load case: its current on the risers, mean heave/rotations and design condition "
+                      "(default: still water, offset check of every load case)");
+  soz_cmd->add_option("--step-deg", soz_options.step_deg, "Direction step, deg (must divide 360; default 5)");
+  soz_cmd->add_option("--tolerance", soz_options.tolerance_m, "Tolerance of each allowable offset, m (default 0.1)");
+  soz_cmd->add_option("--search-limit", soz_options.search_limit_pct_depth,
+                      "Largest offset searched, % of depth (default 20)");
+  soz_cmd->add_option("--march-step", soz_options.march_step_pct_depth,
+                      "Coarse march step, % of depth (default 2.5)");
+  soz_cmd->add_option("--condition", soz_condition,
+                      "Design condition without --case: normal (default), extreme, survival")
+      ->check(CLI::IsMember({"normal", "extreme", "survival"}));
+  soz_cmd->add_option("--model", soz_model, "Riser model: fe (reference, default) or catenary (screening)")
+      ->check(CLI::IsMember({"fe", "catenary"}));
+  soz_cmd->add_option("--exclude", soz_options.exclude_risers, "Risers to leave out (repeatable)");
+  soz_cmd->add_option("--threads", soz_options.threads, "Threads (default: all cores)");
+  bool no_check = false;
+  soz_cmd->add_flag("--no-check", no_check, "Skip the load cases' equilibria and the offset check");
+  soz_cmd->add_flag("--json", json, "Machine output spiral.soz (docs/output-format.md) instead of the table");
+  soz_cmd->add_flag("--csv", csv, "CSV per direction and riser instead of the table");
+  soz_cmd->footer(kExitCodeHelp);
+
   try {
     cli.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
@@ -180,6 +237,14 @@ int main(int argc, char** argv) {
   try {
     if (validate->parsed()) return run_validate(project_file);
     if (statics->parsed()) return run_statics(project_file, offset_input, json);
+    if (soz_cmd->parsed()) {
+      if (!case_name.empty()) soz_options.load_case = case_name;
+      if (soz_condition == "extreme") soz_options.condition = design::DesignCondition::extreme;
+      if (soz_condition == "survival") soz_options.condition = design::DesignCondition::survival;
+      soz_options.model = soz_model == "catenary" ? design::SozModel::catenary : design::SozModel::fe;
+      soz_options.offset_check = !no_check;
+      return run_soz_command(project_file, soz_options, json ? SozView::json : csv ? SozView::csv : SozView::table);
+    }
     if (report_cmd->parsed()) return run_report(project_file, stage_name, out_dir);
     if (equilibrium->parsed() || stiffness->parsed()) {
       if (!case_name.empty()) case_request.load_case = case_name;

@@ -1,0 +1,640 @@
+#include "design/soz.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <deque>
+#include <limits>
+#include <numbers>
+#include <thread>
+
+#include "design/environment_loads.hpp"
+#include "design/input_error.hpp"
+#include "design/static_case.hpp"
+#include "engine/analysis/rigid_body.hpp"
+#include "engine/lines/catenary.hpp"
+
+namespace spiral::design {
+
+namespace {
+
+constexpr double kDegToRad = std::numbers::pi / 180.0;
+constexpr double kRadToDeg = 180.0 / std::numbers::pi;
+// A step "divides 360" when 360/step is an integer to this relative precision
+// (5.0, 2.5, 0.1 … pass; 7.0 does not).
+constexpr double kStepDivisionTolerance = 1e-9;
+// Regula falsi keeps each new point this fraction of the tolerance inside the
+// bracket, so that a converging one-sided sequence closes the bracket from the
+// other side in one more solve.
+constexpr double kFalsiInset = 0.4;
+// Refinement iterations per bracket: bisection of a 20 %-of-depth bracket to
+// 1 mm takes < 25; this only stops a pathological case.
+constexpr int kMaxRefineIterations = 60;
+// Directions per parallel task: 72 directions × 12 risers give 144 tasks on
+// any core count, fine enough to balance 2–64 threads.
+constexpr int kDirectionsPerTask = 6;
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+InputError option_error(const Project& project, const std::string& option,
+                        const std::string& condition, const std::string& message) {
+  InputIssue issue;
+  issue.file = project.source_file;
+  issue.path = option;
+  issue.message = message;
+  issue.condition = condition;
+  return InputError({issue});
+}
+
+/// Re-derives the governing criterion and pass flag after a check was added.
+void regovern(RiserStaticsRow& row) {
+  row.utilization = 0.0;
+  row.governing_criterion.clear();
+  row.passes = true;
+  for (const RiserCriterionCheck& check : row.checks) {
+    if (check.utilization >= row.utilization || row.governing_criterion.empty()) {
+      row.utilization = check.utilization;
+      row.governing_criterion = check.criterion;
+    }
+    row.passes = row.passes && check.passes;
+  }
+}
+
+double normalize_deg(double deg) {
+  deg = std::fmod(deg, 360.0);
+  return deg < 0.0 ? deg + 360.0 : deg;
+}
+
+}  // namespace
+
+const char* to_string(SozModel model) {
+  return model == SozModel::fe ? "fe" : "catenary";
+}
+
+// ---------------------------------------------------------------------------
+// Riser statics at an offset.
+
+RiserOffsetEvaluator::RiserOffsetEvaluator(const Project& project, const RiserDesign& design,
+                                           const SozConditions& conditions, SozModel model)
+    : project_(project),
+      design_(design),
+      conditions_(conditions),
+      model_(model),
+      environment_(fe_environment(project, conditions.current,
+                                  design.sections.front().properties.hydrodynamic_diameter_m)) {
+  zero_ = model_ == SozModel::fe ? solve_fe(hang_off_g({0.0, 0.0}), nullptr)
+                                 : solve_catenary(hang_off_g({0.0, 0.0}));
+  if (!zero_.error.empty()) throw engine::SolverError(zero_.error);
+  if (zero_.touchdown_g) {
+    reference_touchdown_g_ = *zero_.touchdown_g;
+    has_reference_touchdown_ = true;
+  }
+  // The zero-offset point itself has no excursion.
+  add_touchdown_check(zero_, zero_.touchdown_g);
+}
+
+Eigen::Vector3d RiserOffsetEvaluator::hang_off_g(const Eigen::Vector2d& offset_xy_m) const {
+  engine::Vector6d offset;
+  offset << offset_xy_m.x(), offset_xy_m.y(), conditions_.heave_m, conditions_.rotation_rad;
+  return engine::body_point_to_global(project_.hull.reference_point_g, offset, design_.hang_off_b);
+}
+
+RiserOffsetEvaluator::Evaluation RiserOffsetEvaluator::evaluate(
+    const Eigen::Vector2d& offset_xy_m, const engine::FeStaticsResult* warm) const {
+  const Eigen::Vector3d top = hang_off_g(offset_xy_m);
+  Evaluation e;
+  if (model_ == SozModel::catenary) {
+    e = solve_catenary(top);
+  } else {
+    e = solve_fe(top, warm ? warm : zero_.solution.get());
+  }
+  if (!e.error.empty()) return e;
+  add_touchdown_check(e, e.touchdown_g);
+  return e;
+}
+
+void RiserOffsetEvaluator::add_touchdown_check(
+    Evaluation& e, const std::optional<Eigen::Vector3d>& touchdown_g) const {
+  const auto& limit = design_.criteria.max_touchdown_excursion_m;
+  if (!limit || !e.error.empty()) return;
+  // A riser that lifts off the seabed entirely has moved its TDP to the foot
+  // or beyond: count the excursion as unbounded rather than silently zero.
+  const double excursion_m = touchdown_g && has_reference_touchdown_
+                                 ? (*touchdown_g - reference_touchdown_g_).head<2>().norm()
+                                 : std::numeric_limits<double>::infinity();
+  const double u = excursion_m / *limit;
+  e.row.checks.push_back({"max_touchdown_excursion", excursion_m, *limit, "m", u, u <= 1.0});
+  regovern(e.row);
+}
+
+RiserOffsetEvaluator::Evaluation RiserOffsetEvaluator::solve_fe(
+    const Eigen::Vector3d& top, const engine::FeStaticsResult* warm) const {
+  engine::FeStaticsOptions options;
+  options.compute_end_B_stiffness = false;  // the zone needs forces and stresses only
+  if (warm) {
+    options.warm_start_state = warm->state;
+    options.warm_start_node_arc_length_m = warm->node_arc_length_m;
+  }
+  Evaluation e;
+  try {
+    auto solution = std::make_shared<engine::FeStaticsResult>(engine::solve_fe_line_statics(
+        design_.fe_model, environment_, {design_.foot_g, top}, options));
+    e.row = riser_statics_row(project_, design_, *solution, conditions_.condition);
+    if (solution->touchdown) e.touchdown_g = solution->touchdown->position_m;
+    e.solution = std::move(solution);
+  } catch (const engine::SolverError& error) {
+    e.error = fmt::format("riser '{}' at hang-off ({:.2f}, {:.2f}, {:.2f}) m: {}", design_.name,
+                          top.x(), top.y(), top.z(), error.what());
+    e.row.name = design_.name;
+    e.row.kind = to_string(design_.kind);
+    e.row.governing_criterion = "no_static_solution";
+    e.row.utilization = std::numeric_limits<double>::infinity();
+    e.row.passes = false;
+  }
+  return e;
+}
+
+// Screening model: the riser as a multi-segment elastic catenary in the
+// vertical plane through its foot and hang-off (no current, no bending
+// stiffness in the equilibrium). Curvature of the suspended part from the
+// catenary, κ = w H / T² (Irvine 1981), which at the touchdown point is the
+// boundary-layer peak w/H of Pesce et al. (1998) — the FE solution is within
+// ≈ 1 % of it for these SCRs (fe_line_statics.hpp); the bending moment is
+// EI κ. The result is packed as an FE result so the same criteria apply.
+RiserOffsetEvaluator::Evaluation RiserOffsetEvaluator::solve_catenary(
+    const Eigen::Vector3d& top) const {
+  Evaluation e;
+  engine::CatenaryLine line;
+  for (const RiserSectionDesign& s : design_.sections) {
+    line.segments.push_back({s.length_m, s.properties.effective_weight_N_per_m, s.properties.EA_N});
+  }
+  const Eigen::Vector2d span_xy = top.head<2>() - design_.foot_g.head<2>();
+  const double span_m = span_xy.norm();
+  const Eigen::Vector2d along =
+      span_m > 0.0 ? Eigen::Vector2d(span_xy / span_m) : Eigen::Vector2d(1.0, 0.0);
+  engine::CatenaryOptions options;
+  options.profile_points_per_segment = 400;
+  try {
+    const engine::CatenarySolution c =
+        engine::solve_catenary(line, {span_m, top.z() - design_.foot_g.z(), 0.0}, options);
+    engine::FeStaticsResult r;
+    const double H = c.fairlead_horizontal_N;
+    for (const engine::CatenaryProfilePoint& p : c.profile) {
+      const RiserSectionDesign& s = design_.sections[static_cast<std::size_t>(p.segment)];
+      const double w = s.properties.effective_weight_N_per_m;
+      const double kappa =
+          p.on_seabed || !(p.tension_N > 0.0) ? 0.0 : std::abs(w) * H / (p.tension_N * p.tension_N);
+      r.node_arc_length_m.push_back(p.arc_length_m);
+      Eigen::Vector3d position = design_.foot_g;
+      position.head<2>() += p.x_m * along;
+      position.z() += p.z_m;
+      r.node_position_m.push_back(position);
+      r.node_tension_N.push_back(p.tension_N);
+      r.node_curvature_per_m.push_back(kappa);
+      r.node_bending_moment_Nm.push_back(s.properties.EI_N_m2 * kappa);
+    }
+    r.node_position_m.back() = top;
+    r.end_B_force_N << -H * along.x(), -H * along.y(), -c.fairlead_vertical_N;
+    if (c.laid_length_m > 0.0) {
+      Eigen::Vector3d tdp = design_.foot_g;
+      tdp.head<2>() += c.touchdown_x_m * along;
+      r.touchdown = engine::FeTouchdown{c.laid_length_m, tdp};
+    }
+    e.row = riser_statics_row(project_, design_, r, conditions_.condition);
+    if (r.touchdown) e.touchdown_g = r.touchdown->position_m;
+  } catch (const engine::SolverError& error) {
+    e.error =
+        fmt::format("riser '{}' (catenary screening) at hang-off ({:.2f}, {:.2f}, {:.2f}) m: {}",
+                    design_.name, top.x(), top.y(), top.z(), error.what());
+    e.row.name = design_.name;
+    e.row.kind = to_string(design_.kind);
+    e.row.governing_criterion = "no_static_solution";
+    e.row.utilization = std::numeric_limits<double>::infinity();
+    e.row.passes = false;
+  }
+  return e;
+}
+
+// ---------------------------------------------------------------------------
+// Zone search in one direction.
+
+namespace {
+
+struct Sample {
+  double d_m = 0.0;
+  RiserOffsetEvaluator::Evaluation evaluation;
+  /// Governing utilization − 1: ≤ 0 passes. A failed solve counts as +1.
+  double g() const {
+    if (!evaluation.error.empty()) return 1.0;
+    return evaluation.row.utilization - 1.0;
+  }
+};
+
+class DirectionSearch {
+ public:
+  /// `previous`: the search of the neighbouring direction in the same task
+  /// (or null); its solutions are warm starts too — at offset d the two
+  /// hang-offs are only d·step apart, closer than the march step.
+  DirectionSearch(const RiserOffsetEvaluator& evaluator, double direction_rad,
+                  const SozOptions& options, double depth_m, const DirectionSearch* previous)
+      : evaluator_(evaluator),
+        previous_(previous),
+        unit_(std::cos(direction_rad), std::sin(direction_rad)),
+        tolerance_m_(options.tolerance_m),
+        step_m_(options.march_step_pct_depth * depth_m / 100.0),
+        limit_m_(options.search_limit_pct_depth * depth_m / 100.0) {
+    samples_.push_back({0.0, evaluator.zero_offset()});
+  }
+
+  SozDirection run(double direction_deg) {
+    SozDirection result;
+    result.direction_deg = direction_deg;
+    const Sample* pass = &samples_.front();
+    const Sample* fail = nullptr;
+    double d = 0.0;
+    // 1. Coarse march to the first failure.
+    while (d < limit_m_ - 1e-9) {
+      d = std::min(d + step_m_, limit_m_);
+      const Sample& s = evaluate(d);
+      if (s.g() > 0.0) {
+        fail = &s;
+        break;
+      }
+      pass = &s;
+    }
+    if (!fail) {
+      result.allowable_offset_m = limit_m_;
+      result.governing_criterion = "search_limit";
+      result.governing_utilization = pass->evaluation.row.utilization;
+      result.limited_by_search = true;
+      result.solves = solves_;
+      return result;
+    }
+    // 2. Refine the first boundary.
+    const auto [edge_pass, edge_fail] = refine(*pass, *fail);
+    result.allowable_offset_m = edge_pass.d_m;
+    result.governing_criterion = edge_fail.evaluation.row.governing_criterion;
+    result.governing_utilization = edge_fail.evaluation.row.utilization;
+    result.solver_message = edge_fail.evaluation.error;
+    // 3. Continue the coarse march: does the riser pass again farther out?
+    const Sample* previous = fail;
+    std::optional<SozBand> open;
+    while (d < limit_m_ - 1e-9) {
+      d = std::min(d + step_m_, limit_m_);
+      const Sample& s = evaluate(d);
+      const bool passes = s.g() <= 0.0;
+      const bool previous_passes = previous->g() <= 0.0;
+      if (passes && !previous_passes) {
+        open = SozBand{refine(s, *previous).first.d_m, limit_m_};
+      } else if (!passes && previous_passes && open) {
+        open->to_m = refine(*previous, s).first.d_m;
+        result.reopened_bands.push_back(*open);
+        open.reset();
+      }
+      previous = &s;
+    }
+    if (open) result.reopened_bands.push_back(*open);
+    result.solves = solves_;
+    return result;
+  }
+
+ private:
+  /// Solves at offset d along the direction, warm-started from the sample
+  /// (of this direction or the previous one) whose hull offset is nearest.
+  const Sample& evaluate(double d) {
+    const Eigen::Vector2d x = d * unit_;
+    const engine::FeStaticsResult* warm = nullptr;
+    double nearest_m = std::numeric_limits<double>::infinity();
+    const auto consider = [&](const DirectionSearch& search) {
+      for (const Sample& s : search.samples_) {
+        const double distance_m = (s.d_m * search.unit_ - x).norm();
+        if (s.evaluation.solution && distance_m < nearest_m) {
+          nearest_m = distance_m;
+          warm = s.evaluation.solution.get();
+        }
+      }
+    };
+    consider(*this);
+    if (previous_) consider(*previous_);
+    ++solves_;
+    samples_.push_back({d, evaluator_.evaluate(x, warm)});
+    return samples_.back();
+  }
+
+ public:
+  /// Forgets the previous direction (before it is destroyed).
+  void detach() { previous_ = nullptr; }
+
+ private:
+  /// Shrinks [pass, fail] (either order along d) to the tolerance by
+  /// safeguarded regula falsi (Illinois): returns the final passing and
+  /// failing samples.
+  std::pair<Sample, Sample> refine(Sample pass, Sample fail) {
+    double g_pass = pass.g(), g_fail = fail.g();  // Illinois-scaled copies
+    int retained = 0;  // +n: pass end moved n times in a row, −n: fail end
+    for (int i = 0; i < kMaxRefineIterations && std::abs(fail.d_m - pass.d_m) > tolerance_m_; ++i) {
+      const double lo = std::min(pass.d_m, fail.d_m), hi = std::max(pass.d_m, fail.d_m);
+      double x = 0.5 * (lo + hi);
+      if (std::isfinite(g_pass) && std::isfinite(g_fail) && g_fail > g_pass) {
+        x = pass.d_m + (fail.d_m - pass.d_m) * (-g_pass) / (g_fail - g_pass);
+      }
+      const double inset = kFalsiInset * tolerance_m_;
+      x = std::clamp(x, lo + inset, hi - inset);
+      const Sample s = evaluate(x);
+      if (s.g() <= 0.0) {
+        pass = s;
+        g_pass = s.g();
+        retained = retained > 0 ? retained + 1 : 1;
+        if (retained >= 2) g_fail *= 0.5;  // the fail end is stale: Illinois step
+      } else {
+        fail = s;
+        g_fail = s.g();
+        retained = retained < 0 ? retained - 1 : -1;
+        if (retained <= -2) g_pass *= 0.5;
+      }
+    }
+    return {pass, fail};
+  }
+
+  const RiserOffsetEvaluator& evaluator_;
+  const DirectionSearch* previous_;
+  Eigen::Vector2d unit_;
+  double tolerance_m_;
+  double step_m_;
+  double limit_m_;
+  std::deque<Sample> samples_;  // stable addresses
+  int solves_ = 0;
+};
+
+/// Runs `task(i)` for i in [0, count) on `threads` threads (atomic work queue).
+template <class Task>
+void parallel_for(int count, int threads, const Task& task) {
+  std::atomic<int> next{0};
+  std::vector<std::exception_ptr> errors(static_cast<std::size_t>(count));
+  const auto worker = [&] {
+    for (int i = next++; i < count; i = next++) {
+      try {
+        task(i);
+      } catch (...) {
+        errors[static_cast<std::size_t>(i)] = std::current_exception();
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 1; t < std::min(threads, count); ++t) pool.emplace_back(worker);
+  worker();
+  for (std::thread& t : pool) t.join();
+  // The first failing task in index order: the same error for any thread count.
+  for (const std::exception_ptr& e : errors) {
+    if (e) std::rethrow_exception(e);
+  }
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------
+
+double polygon_allowable(const std::vector<double>& directions_deg,
+                         const std::vector<double>& allowable_m, double direction_deg) {
+  const std::size_t n = directions_deg.size();
+  const double step = 360.0 / static_cast<double>(n);
+  const double x = normalize_deg(direction_deg - directions_deg.front()) / step;
+  const std::size_t i = static_cast<std::size_t>(std::floor(x)) % n;
+  const double t = x - std::floor(x);
+  return (1.0 - t) * allowable_m[i] + t * allowable_m[(i + 1) % n];
+}
+
+void validate_soz_options(const Project& project, const SozOptions& o) {
+  const double count = 360.0 / o.step_deg;
+  if (!(o.step_deg > 0.0) || o.step_deg > 360.0 ||
+      std::abs(count - std::round(count)) > kStepDivisionTolerance * count) {
+    throw option_error(
+        project, "--step-deg", "soz_step_divides_360",
+        fmt::format("the direction step must divide 360 deg, got {} deg", o.step_deg));
+  }
+  if (!(o.tolerance_m > 0.0)) {
+    throw option_error(project, "--tolerance", "soz_tolerance_positive",
+                       fmt::format("must be > 0, got {} m", o.tolerance_m));
+  }
+  if (!(o.march_step_pct_depth > 0.0) || !(o.search_limit_pct_depth >= o.march_step_pct_depth)) {
+    throw option_error(project, "--search-limit", "soz_search_range",
+                       fmt::format("need 0 < march step ({} %) <= search limit ({} %) of depth",
+                                   o.march_step_pct_depth, o.search_limit_pct_depth));
+  }
+  for (const std::string& name : o.exclude_risers) {
+    if (std::none_of(project.risers.begin(), project.risers.end(),
+                     [&](const Riser& r) { return r.name == name; })) {
+      throw option_error(project, "--exclude", "command_line_reference",
+                         fmt::format("no riser named \"{}\"", name));
+    }
+  }
+  if (o.load_case && std::none_of(project.load_cases.begin(), project.load_cases.end(),
+                                  [&](const LoadCase& c) { return c.name == *o.load_case; })) {
+    std::string names;
+    for (const LoadCase& c : project.load_cases) names += (names.empty() ? "" : ", ") + c.name;
+    throw option_error(project, "--case", "command_line_reference",
+                       fmt::format("no load case named \"{}\" (defined: {})", *o.load_case, names));
+  }
+}
+
+SozResult compute_soz(const Project& project, const std::vector<RiserDesign>& risers,
+                      const SozConditions& conditions, const SozOptions& options) {
+  validate_soz_options(project, options);
+  const auto start = std::chrono::steady_clock::now();
+  SozResult result;
+  result.project = project.name;
+  result.depth_m = project.site.depth_m;
+  result.options = options;
+  result.conditions = conditions;
+  const int n_directions = static_cast<int>(std::lround(360.0 / options.step_deg));
+  for (int k = 0; k < n_directions; ++k) result.directions_deg.push_back(k * options.step_deg);
+  const int hardware = static_cast<int>(std::thread::hardware_concurrency());
+  result.threads = options.threads > 0 ? options.threads : std::max(1, hardware);
+
+  // Zero-offset solves (cold), one riser per task.
+  const int n_risers = static_cast<int>(risers.size());
+  std::vector<std::unique_ptr<RiserOffsetEvaluator>> evaluators(risers.size());
+  parallel_for(n_risers, result.threads, [&](int r) {
+    evaluators[static_cast<std::size_t>(r)] = std::make_unique<RiserOffsetEvaluator>(
+        project, risers[static_cast<std::size_t>(r)], conditions, options.model);
+  });
+  result.risers.resize(risers.size());
+  for (std::size_t r = 0; r < risers.size(); ++r) {
+    RiserSoz& z = result.risers[r];
+    const RiserStaticsRow& zero = evaluators[r]->zero_offset().row;
+    z.name = risers[r].name;
+    z.kind = to_string(risers[r].kind);
+    z.azimuth_deg = normalize_deg(risers[r].azimuth_rad * kRadToDeg);
+    z.zero_offset_governing_criterion = zero.governing_criterion;
+    z.zero_offset_utilization = zero.utilization;
+    z.fails_at_zero_offset = !zero.passes;
+    z.directions.resize(static_cast<std::size_t>(n_directions));
+    z.solves = 1;
+  }
+
+  // Directions: tasks of kDirectionsPerTask directions of one riser.
+  const int chunks = (n_directions + kDirectionsPerTask - 1) / kDirectionsPerTask;
+  parallel_for(n_risers * chunks, result.threads, [&](int task) {
+    const std::size_t r = static_cast<std::size_t>(task / chunks);
+    RiserSoz& z = result.risers[r];
+    const int first = (task % chunks) * kDirectionsPerTask;
+    // Directions of a task run in order, each warm-started from its
+    // predecessor in the task; the chunks are fixed, so the result does not
+    // depend on the thread count.
+    std::unique_ptr<DirectionSearch> previous;
+    for (int k = first; k < std::min(first + kDirectionsPerTask, n_directions); ++k) {
+      SozDirection& out = z.directions[static_cast<std::size_t>(k)];
+      const double direction_deg = result.directions_deg[static_cast<std::size_t>(k)];
+      if (z.fails_at_zero_offset) {
+        out.direction_deg = direction_deg;
+        out.governing_criterion = z.zero_offset_governing_criterion;
+        out.governing_utilization = z.zero_offset_utilization;
+        continue;
+      }
+      auto search = std::make_unique<DirectionSearch>(
+          *evaluators[r], direction_deg * kDegToRad, options, project.site.depth_m, previous.get());
+      out = search->run(direction_deg);
+      search->detach();
+      previous = std::move(search);
+    }
+  });
+
+  // Per-riser summaries and the platform intersection.
+  result.platform.allowable_offset_m.assign(static_cast<std::size_t>(n_directions),
+                                            std::numeric_limits<double>::infinity());
+  result.platform.governing_riser.assign(static_cast<std::size_t>(n_directions), "");
+  result.platform.governing_criterion.assign(static_cast<std::size_t>(n_directions), "");
+  for (RiserSoz& z : result.risers) {
+    std::vector<double> allowable;
+    for (const SozDirection& d : z.directions) {
+      allowable.push_back(d.allowable_offset_m);
+      z.solves += d.solves;
+      z.star_shaped = z.star_shaped && d.reopened_bands.empty();
+    }
+    z.near_m = polygon_allowable(result.directions_deg, allowable, z.azimuth_deg);
+    z.far_m = polygon_allowable(result.directions_deg, allowable, z.azimuth_deg + 180.0);
+    z.cross_left_m = polygon_allowable(result.directions_deg, allowable, z.azimuth_deg + 90.0);
+    z.cross_right_m = polygon_allowable(result.directions_deg, allowable, z.azimuth_deg - 90.0);
+    const auto nearest = [&](double deg) -> const std::string& {
+      const double x = normalize_deg(deg) / options.step_deg;
+      return z.directions[static_cast<std::size_t>(std::lround(x)) % z.directions.size()]
+          .governing_criterion;
+    };
+    z.near_governing = nearest(z.azimuth_deg);
+    z.far_governing = nearest(z.azimuth_deg + 180.0);
+    result.solves += z.solves;
+    for (std::size_t k = 0; k < z.directions.size(); ++k) {
+      if (z.directions[k].allowable_offset_m < result.platform.allowable_offset_m[k]) {
+        result.platform.allowable_offset_m[k] = z.directions[k].allowable_offset_m;
+        result.platform.governing_riser[k] = z.name;
+        result.platform.governing_criterion[k] = z.directions[k].governing_criterion;
+      }
+    }
+  }
+  if (risers.empty()) result.notes.push_back("the project has no risers: no SOZ");
+  result.zone_wall_s = seconds_since(start);
+  return result;
+}
+
+SozResult run_soz(const ValidatedProject& validated, const SozOptions& options) {
+  const Project& project = validated.project;
+  validate_soz_options(project, options);
+  SozConditions conditions;
+  conditions.condition = options.condition;
+  std::vector<OffsetCheck> checks;
+  std::vector<std::string> notes;
+  const auto check_start = std::chrono::steady_clock::now();
+  // Static equilibria of the load cases: the offsets to check, and (with
+  // --case) the mean heave/rotations the zone is computed at.
+  std::vector<StaticCaseResult> cases;
+  if (options.load_case) {
+    cases.push_back(run_static_case(validated, {options.load_case, std::nullopt, false}));
+  } else if (options.offset_check) {
+    for (const LoadCase& c : project.load_cases)
+      cases.push_back(run_static_case(validated, {c.name, std::nullopt, false}));
+  }
+  const double check_wall_s = seconds_since(check_start);
+  if (options.load_case) {
+    const StaticCaseResult& c = cases.front();
+    const LoadCase& lc =
+        *std::find_if(project.load_cases.begin(), project.load_cases.end(),
+                      [&](const LoadCase& l) { return l.name == *options.load_case; });
+    const Environment& env =
+        *std::find_if(project.environments.begin(), project.environments.end(),
+                      [&](const Environment& e) { return e.name == lc.environment; });
+    conditions.name = c.case_name;
+    conditions.heave_m = c.offset(2);
+    conditions.rotation_rad = c.offset.tail<3>();
+    conditions.condition = lc.condition;
+    if (env.current && !env.current->profile.empty())
+      conditions.current = current_profile_of(*env.current);
+  }
+
+  std::vector<RiserDesign> designs;
+  for (const Riser& riser : project.risers) {
+    if (std::find(options.exclude_risers.begin(), options.exclude_risers.end(), riser.name) !=
+        options.exclude_risers.end()) {
+      continue;
+    }
+    designs.push_back(riser_design(project, riser));
+  }
+  SozResult result = compute_soz(project, designs, conditions, options);
+  if (options.model == SozModel::catenary && conditions.current) {
+    result.notes.push_back(
+        "the catenary screening model carries no current: this zone ignores the case's current on "
+        "the risers "
+        "(use --model fe)");
+  }
+  result.check_wall_s = check_wall_s;
+  for (const std::string& n : notes) result.notes.push_back(n);
+  if (!options.exclude_risers.empty()) {
+    std::string names;
+    for (const std::string& n : options.exclude_risers) names += (names.empty() ? "" : ", ") + n;
+    result.notes.push_back("risers left out of the platform zone: " + names);
+  }
+
+  if (!designs.empty()) {
+    for (const StaticCaseResult& c : cases) {
+      OffsetCheck check;
+      check.case_name = c.case_name;
+      check.condition = c.condition;
+      check.damaged_line = c.damaged_line;
+      check.offset_m = c.offset_summary.horizontal_m;
+      check.direction_deg = c.offset_summary.direction_deg;
+      check.zone = options.load_case ? "case" : "still-water";
+      check.allowable_m = std::numeric_limits<double>::infinity();
+      for (const RiserSoz& z : result.risers) {
+        std::vector<double> allowable;
+        for (const SozDirection& d : z.directions) allowable.push_back(d.allowable_offset_m);
+        const double a = polygon_allowable(result.directions_deg, allowable, check.direction_deg);
+        if (a < check.allowable_m) {
+          check.allowable_m = a;
+          check.governing_riser = z.name;
+        }
+      }
+      check.margin_m = check.allowable_m - check.offset_m;
+      check.ratio = check.allowable_m > 0.0 ? check.offset_m / check.allowable_m
+                                            : std::numeric_limits<double>::infinity();
+      check.passes = check.offset_m <= check.allowable_m;
+      result.offset_checks.push_back(check);
+    }
+    if (!options.load_case && !cases.empty()) {
+      result.notes.push_back(
+          "offset check against the still-water zone (no current on the risers, no mean "
+          "heave/rotations); "
+          "use --case NAME for a case's own zone");
+    }
+    if (!cases.empty()) {
+      result.notes.push_back(
+          "offsets are static (mean); extreme offsets need the dynamic analyses (not yet run)");
+    }
+  }
+  return result;
+}
+
+}  // namespace spiral::design

@@ -1,0 +1,273 @@
+// Riser safe operational zones (design/soz.hpp) on a small SCR project
+// (tests/support/soz_project.hpp): symmetry, the physics of near/far limits,
+// the search against a brute-force sweep, the platform intersection, current,
+// the catenary screening model against FE, and bad input.
+
+#include "design/soz.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "design/environment_loads.hpp"
+#include "design/input_error.hpp"
+#include "design/project_loader.hpp"
+#include "design/project_validation.hpp"
+#include "support/soz_project.hpp"
+
+namespace spiral::design {
+namespace {
+
+// The zone search closes each bracket to this width (SozOptions default).
+constexpr double kTolerance_m = 0.1;
+// Two symmetric directions run their own searches (different sample points,
+// warm starts): each is within the tolerance of the true boundary, so they
+// agree within twice of it.
+constexpr double kSymmetry_m = 2.0 * kTolerance_m;
+// Brute-force sweep: 1 m steps to the first failure, then this step inside it.
+constexpr double kSweepCoarse_m = 1.0;
+constexpr double kSweepFine_m = 0.02;
+// Catenary screening vs FE: the catenary ignores bending stiffness (top
+// tension within a fraction of a percent for an SCR) and takes the TDP
+// curvature as w/H (FE within ≈ 1 %, fe_line_statics.hpp); allowable
+// offsets through those curvatures and tensions agree to a few percent.
+constexpr double kScreeningTopTension = 0.01;
+constexpr double kScreeningOffset = 0.10;
+
+Project project(const std::string& risers,
+                const std::optional<std::string>& criteria = std::nullopt) {
+  Project p = criteria ? parse_project(test::soz_project_yaml(risers, *criteria), "soz-test.yaml")
+                       : parse_project(test::soz_project_yaml(risers), "soz-test.yaml");
+  return p;
+}
+
+std::vector<RiserDesign> designs(const Project& p) {
+  std::vector<RiserDesign> out;
+  for (const Riser& r : p.risers) out.push_back(riser_design(p, r));
+  return out;
+}
+
+SozOptions options(double step_deg) {
+  SozOptions o;
+  o.step_deg = step_deg;
+  o.offset_check = false;
+  return o;
+}
+
+double at(const SozResult& r, std::size_t riser, double direction_deg) {
+  std::vector<double> a;
+  for (const SozDirection& d : r.risers[riser].directions) a.push_back(d.allowable_offset_m);
+  return polygon_allowable(r.directions_deg, a, direction_deg);
+}
+
+TEST(Soz, SymmetricAboutTheAzimuthPlaneAndNearFarGovernedByDifferentPhysics) {
+  const Project p = project(test::soz_riser_yaml("R", 0.0));
+  const SozResult r = compute_soz(p, designs(p), {}, options(30.0));
+  ASSERT_EQ(r.risers.size(), 1u);
+  const RiserSoz& z = r.risers[0];
+  ASSERT_FALSE(z.fails_at_zero_offset) << z.zero_offset_governing_criterion;
+  for (std::size_t k = 1; k < r.directions_deg.size() / 2; ++k) {
+    const std::size_t mirror = r.directions_deg.size() - k;
+    EXPECT_NEAR(z.directions[k].allowable_offset_m, z.directions[mirror].allowable_offset_m,
+                kSymmetry_m)
+        << r.directions_deg[k] << "° vs " << r.directions_deg[mirror] << "°";
+    EXPECT_EQ(z.directions[k].governing_criterion, z.directions[mirror].governing_criterion);
+  }
+  // Near (hull towards the riser's azimuth, 0°): the riser slackens at the
+  // TDP — curvature (stress) or compression there. Far (180°): the top
+  // tension / angle grow.
+  const std::string& near = z.directions.front().governing_criterion;
+  const std::string& far = z.directions[r.directions_deg.size() / 2].governing_criterion;
+  EXPECT_NE(near, far);
+  EXPECT_TRUE(near == "von_mises" || near == "min_effective_tension" ||
+              near == "min_bending_radius")
+      << near;
+  EXPECT_TRUE(far == "max_top_tension" || far == "max_top_angle" || far == "von_mises") << far;
+  EXPECT_TRUE(z.star_shaped);
+  EXPECT_GT(z.near_m, 0.0);
+  EXPECT_GT(z.far_m, 0.0);
+}
+
+TEST(Soz, SearchAgreesWithABruteForceSweep) {
+  const Project p = project(test::soz_riser_yaml("R", 0.0));
+  const std::vector<RiserDesign> d = designs(p);
+  for (const double direction_deg : {0.0, 180.0}) {
+    SozOptions o = options(360.0 / 4);
+    const SozResult r = compute_soz(p, d, {}, o);
+    const double found = at(r, 0, direction_deg);
+    const RiserOffsetEvaluator evaluator(p, d[0], {}, SozModel::fe);
+    const Eigen::Vector2d unit(std::cos(direction_deg * M_PI / 180.0),
+                               std::sin(direction_deg * M_PI / 180.0));
+    std::shared_ptr<const engine::FeStaticsResult> warm = evaluator.zero_offset().solution;
+    double last_pass = 0.0;
+    for (double s = kSweepCoarse_m;; s += kSweepCoarse_m) {
+      ASSERT_LT(s, 200.0) << "no failure found";
+      const auto e = evaluator.evaluate(s * unit, warm.get());
+      if (!e.passes()) break;
+      last_pass = s;
+      warm = e.solution;
+    }
+    double boundary = last_pass;
+    for (double s = last_pass + kSweepFine_m; s < last_pass + kSweepCoarse_m; s += kSweepFine_m) {
+      const auto e = evaluator.evaluate(s * unit, warm.get());
+      if (!e.passes()) break;
+      boundary = s;
+      warm = e.solution;
+    }
+    EXPECT_NEAR(found, boundary, kTolerance_m + kSweepFine_m) << "direction " << direction_deg;
+  }
+}
+
+TEST(Soz, PlatformZoneIsTheIntersectionAndShrinksWithEveryRiser) {
+  const Project p =
+      project(test::soz_riser_yaml("A", 0.0, 20.0) + test::soz_riser_yaml("B", 120.0, 20.0) +
+              test::soz_riser_yaml("C", 240.0, 20.0));
+  const std::vector<RiserDesign> all = designs(p);
+  const SozResult r = compute_soz(p, all, {}, options(30.0));
+  for (std::size_t k = 0; k < r.directions_deg.size(); ++k) {
+    for (const RiserSoz& z : r.risers)
+      EXPECT_LE(r.platform.allowable_offset_m[k], z.directions[k].allowable_offset_m);
+  }
+  // Remove the riser that governs direction 0 and recompute.
+  const std::string governing = r.platform.governing_riser[0];
+  std::vector<RiserDesign> fewer;
+  for (const RiserDesign& d : all) {
+    if (d.name != governing) fewer.push_back(d);
+  }
+  const SozResult s = compute_soz(p, fewer, {}, options(30.0));
+  bool larger_somewhere = false;
+  for (std::size_t k = 0; k < r.directions_deg.size(); ++k) {
+    EXPECT_GE(s.platform.allowable_offset_m[k], r.platform.allowable_offset_m[k]);
+    larger_somewhere =
+        larger_somewhere || s.platform.allowable_offset_m[k] > r.platform.allowable_offset_m[k];
+  }
+  EXPECT_GT(s.platform.allowable_offset_m[0], r.platform.allowable_offset_m[0]);
+  EXPECT_TRUE(larger_somewhere);
+}
+
+TEST(Soz, CurrentInTheRiserPlaneMovesTheFarLimitAsTheTopAngleSays) {
+  // The far limit of this riser is its top angle. A current towards its foot
+  // (+x; azimuth 0°) pushes the riser away from the hull and raises the top
+  // angle — the far allowable offset (180°) shrinks; a current towards the
+  // hull lowers it and the far offset grows. (The near limit, TDP curvature,
+  // tightens with a current towards the foot as well: the sag bend is pushed
+  // onto the touchdown zone.)
+  const Project p = project(test::soz_riser_yaml("R", 0.0));
+  const std::vector<RiserDesign> d = designs(p);
+  const SozResult still = compute_soz(p, d, {}, options(180.0));
+  ASSERT_EQ(still.risers[0].directions[1].governing_criterion, "max_top_angle");
+  SozConditions downstream;
+  downstream.current = current_profile_of(*p.environments[1].current);
+  SozConditions upstream = downstream;
+  upstream.current->heading_rad = M_PI;
+  const SozResult towards_foot = compute_soz(p, d, downstream, options(180.0));
+  const SozResult towards_hull = compute_soz(p, d, upstream, options(180.0));
+  EXPECT_LT(at(towards_foot, 0, 180.0), at(still, 0, 180.0) - kTolerance_m);
+  EXPECT_GT(at(towards_hull, 0, 180.0), at(still, 0, 180.0) + kTolerance_m);
+  EXPECT_LT(at(towards_foot, 0, 0.0), at(still, 0, 0.0) - kTolerance_m);
+}
+
+TEST(Soz, CatenaryScreeningAgreesWithFeWhereTensionGovernsAndIsConservativeAtTheTdp) {
+  const Project p = project(test::soz_riser_yaml("R", 0.0));
+  const std::vector<RiserDesign> d = designs(p);
+  SozOptions o = options(90.0);
+  const SozResult fe = compute_soz(p, d, {}, o);
+  o.model = SozModel::catenary;
+  const SozResult catenary = compute_soz(p, d, {}, o);
+  const RiserOffsetEvaluator fe_zero(p, d[0], {}, SozModel::fe),
+      cat_zero(p, d[0], {}, SozModel::catenary);
+  EXPECT_NEAR(cat_zero.zero_offset().row.top_tension_N / fe_zero.zero_offset().row.top_tension_N,
+              1.0, kScreeningTopTension);
+  for (std::size_t k = 0; k < fe.directions_deg.size(); ++k) {
+    const SozDirection& f = fe.risers[0].directions[k];
+    const SozDirection& c = catenary.risers[0].directions[k];
+    const std::string where =
+        std::to_string(fe.directions_deg[k]) + "°: fe " + std::to_string(f.allowable_offset_m) +
+        " m (" + f.governing_criterion + "), catenary " + std::to_string(c.allowable_offset_m) +
+        " m (" + c.governing_criterion + ")";
+    if (f.governing_criterion == "von_mises") {
+      // Near: the TDP curvature. The catenary's w/H is the rigid-seabed
+      // boundary-layer peak (Pesce et al. 1998); the FE riser rests on the
+      // project's elastic seabed, which spreads the bend: lower peak.
+      EXPECT_LE(c.allowable_offset_m, f.allowable_offset_m + kTolerance_m) << where;
+    } else {
+      EXPECT_EQ(c.governing_criterion, f.governing_criterion) << where;
+      EXPECT_NEAR(c.allowable_offset_m / f.allowable_offset_m, 1.0, kScreeningOffset) << where;
+    }
+  }
+}
+
+TEST(Soz, TouchdownExcursionLimitsTheZoneWhereGiven) {
+  // TDP travel is about as large as the hull offset along the riser plane:
+  // a 5 m limit governs there, long before the top angle.
+  const Project p =
+      project(test::soz_riser_yaml("R", 0.0), std::string("    max_top_angle_deg: 16.0\n"
+                                                          "    max_touchdown_excursion: 5.0\n"));
+  const std::vector<RiserDesign> d = designs(p);
+  const SozResult r = compute_soz(p, d, {}, options(180.0));
+  const SozDirection& far = r.risers[0].directions[1];
+  EXPECT_EQ(far.governing_criterion, "max_touchdown_excursion");
+  const RiserOffsetEvaluator evaluator(p, d[0], {}, SozModel::fe);
+  const auto e = evaluator.evaluate({-far.allowable_offset_m, 0.0}, nullptr);
+  ASSERT_TRUE(e.passes());
+  const auto check = std::find_if(
+      e.row.checks.begin(), e.row.checks.end(),
+      [](const RiserCriterionCheck& c) { return c.criterion == "max_touchdown_excursion"; });
+  ASSERT_NE(check, e.row.checks.end());
+  EXPECT_LE(check->value, 5.0);
+  EXPECT_GT(check->value, 5.0 - 2.0 * kTolerance_m);  // TDP moves ≈ as far as the hang-off
+}
+
+TEST(Soz, ResultsDoNotDependOnTheThreadCount) {
+  const Project p = project(test::soz_riser_yaml("A", 0.0, 20.0) + test::soz_riser_yaml("B", 180.0, 20.0));
+  const std::vector<RiserDesign> d = designs(p);
+  SozOptions o = options(45.0);
+  o.threads = 1;
+  const SozResult one = compute_soz(p, d, {}, o);
+  o.threads = 3;
+  const SozResult three = compute_soz(p, d, {}, o);
+  EXPECT_EQ(one.platform.allowable_offset_m, three.platform.allowable_offset_m);  // bit for bit
+  EXPECT_EQ(one.platform.governing_riser, three.platform.governing_riser);
+  EXPECT_EQ(one.solves, three.solves);
+}
+
+TEST(Soz, RiserFailingAtZeroOffsetHasNoZoneAndNamesTheCriterion) {
+  const Project p =
+      project(test::soz_riser_yaml("R", 0.0), std::string("    max_top_tension: 3.0e5\n"));
+  const SozResult r = compute_soz(p, designs(p), {}, options(90.0));
+  const RiserSoz& z = r.risers[0];
+  EXPECT_TRUE(z.fails_at_zero_offset);
+  EXPECT_EQ(z.zero_offset_governing_criterion, "max_top_tension");
+  EXPECT_GT(z.zero_offset_utilization, 1.0);
+  for (const SozDirection& d : z.directions) {
+    EXPECT_EQ(d.allowable_offset_m, 0.0);
+    EXPECT_EQ(d.governing_criterion, "max_top_tension");
+  }
+  EXPECT_EQ(r.platform.allowable_offset_m[0], 0.0);
+}
+
+TEST(Soz, DirectionStepMustDivide360) {
+  const Project p = project(test::soz_riser_yaml("R", 0.0));
+  for (const double step : {7.0, 0.0, -5.0}) {
+    try {
+      compute_soz(p, designs(p), {}, options(step));
+      ADD_FAILURE() << "step " << step << " accepted";
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.issues().front().condition, "soz_step_divides_360");
+      EXPECT_NE(std::string(e.what()).find("--step-deg"), std::string::npos);
+    }
+  }
+  EXPECT_NO_THROW(validate_soz_options(p, options(2.5)));
+}
+
+TEST(Soz, PolygonInterpolatesBetweenGridDirections) {
+  const std::vector<double> dirs{0.0, 90.0, 180.0, 270.0};
+  const std::vector<double> a{10.0, 20.0, 30.0, 40.0};
+  EXPECT_DOUBLE_EQ(polygon_allowable(dirs, a, 45.0), 15.0);
+  EXPECT_DOUBLE_EQ(polygon_allowable(dirs, a, 315.0), 25.0);  // between 270 (40) and 360 (10)
+  EXPECT_DOUBLE_EQ(polygon_allowable(dirs, a, -90.0), 40.0);
+}
+
+}  // namespace
+}  // namespace spiral::design
