@@ -89,7 +89,7 @@ WaveTransferTable parse_transfer(std::istream& text, const std::string& file_nam
                       "first-order wave load)",
                       column_name, period_column ? "s" : "rad/s", column1));
     }
-    const double omega = period_column ? 2.0 * kPi / column1 : column1;
+    const double omega = (period_column ? 2.0 * kPi / column1 : column1) / options.period_scale;
     rows.push_back({omega, v[1], dof, {v[5], v[6]}, line_number});
   }
   if (text.bad()) throw FileFormatError(file_name, line_number, "read error");
@@ -153,7 +153,9 @@ WaveTransferTable parse_transfer(std::istream& text, const std::string& file_nam
               file_name, 0,
               fmt::format("incomplete table: I = {} missing at {} = {:.6g} {}, BETA = {} deg "
                           "(every DOF present must be given at every frequency and heading)",
-                          d + 1, column_name, period_column ? 2.0 * kPi / omegas[iw] : omegas[iw],
+                          d + 1, column_name,
+                          period_column ? 2.0 * kPi / (omegas[iw] * options.period_scale)
+                                        : omegas[iw] * options.period_scale,
                           period_column ? "s" : "rad/s", headings[ih]));
         }
       }
