@@ -31,15 +31,21 @@ SlowDriftSeries prepare_slow_drift(const WaveRealization& sea, const MeanDriftTa
 }
 
 Vector6d slow_drift_force(const SlowDriftSeries& s, double t_s) {
-  Vector6d plain = Vector6d::Zero();
-  Vector6d signed_sum = Vector6d::Zero();
+  Vector6d z_re = Vector6d::Zero();
+  Vector6d z_im = Vector6d::Zero();
+  Vector6d zs_re = Vector6d::Zero();
+  Vector6d zs_im = Vector6d::Zero();
   for (Eigen::Index k = 0; k < s.weight.cols(); ++k) {
-    const double c = std::cos(s.omega_rad_per_s[static_cast<std::size_t>(k)] * t_s +
-                              s.phase_rad[static_cast<std::size_t>(k)]);
-    plain += c * s.weight.col(k);
-    signed_sum += c * s.signed_weight.col(k);
+    const double theta = s.omega_rad_per_s[static_cast<std::size_t>(k)] * t_s + s.phase_rad[static_cast<std::size_t>(k)];
+    const double c = std::cos(theta);
+    const double sn = std::sin(theta);
+    z_re += c * s.weight.col(k);
+    z_im += sn * s.weight.col(k);
+    zs_re += c * s.signed_weight.col(k);
+    zs_im += sn * s.signed_weight.col(k);
   }
-  const Vector6d body = 2.0 * plain.cwiseProduct(signed_sum);
+  // Re{Z_s conj(Z)}.
+  const Vector6d body = zs_re.cwiseProduct(z_re) + zs_im.cwiseProduct(z_im);
   // Body -> global by the mean yaw: (Fx, Fy) and (Mx, My) rotate, Fz and Mz do not.
   const double cy = std::cos(s.yaw_rad);
   const double sy = std::sin(s.yaw_rad);
