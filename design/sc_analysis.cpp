@@ -113,8 +113,9 @@ engine::WaveRealization realize_sea(const Project& project, const Waves& waves, 
   return engine::make_wave_realization(input);
 }
 
-/// Motion RAOs from .1 + .3: xi = [−w²(M + A) + i w (B + B_lin) + C]^-1 X.
-engine::MotionRaoTable raos_from_excitation(const engine::ExcitationTable& x, const engine::HydroCoefficients& r,
+}  // namespace
+
+engine::MotionRaoTable motion_raos_from_excitation(const engine::ExcitationTable& x, const engine::HydroCoefficients& r,
                                             const engine::Matrix6d& mass, const engine::Matrix6d& linear_damping,
                                             const engine::Matrix6d& stiffness) {
   engine::MotionRaoTable out;
@@ -144,6 +145,8 @@ engine::MotionRaoTable raos_from_excitation(const engine::ExcitationTable& x, co
   }
   return out;
 }
+
+namespace {
 
 /// Fairlead velocity covariance (global, 3x3) per mooring line from a motion
 /// record (central differences of the fairlead positions).
@@ -434,7 +437,7 @@ DynamicAnalysisResult run_dynamic_analysis(const ValidatedProject& validated, co
       const engine::WamitReadOptions read = wamit_options_of(project, *hydro);
       const engine::MotionRaoTable raos =
           hydro->rao_file ? engine::read_wamit_4(*hydro->rao_file, read)
-                          : raos_from_excitation(engine::read_wamit_3(*hydro->excitation_file, read), *hull.radiation,
+                          : motion_raos_from_excitation(engine::read_wamit_3(*hydro->excitation_file, read), *hull.radiation,
                                                  hull.mass_matrix, model.hull.linear_damping,
                                                  hull.statics.hydrostatic_stiffness + model.statics.stiffness);
       const engine::WaveRealization sea = realize_sea(project, *environment.waves, request.duration_s, request.seed);

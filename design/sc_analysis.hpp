@@ -46,6 +46,8 @@
 #include "design/static_case.hpp"
 #include "design/validated_project.hpp"
 #include "engine/analysis/hull_dynamics.hpp"
+#include "engine/hull/wamit_1.hpp"
+#include "engine/hull/wamit_3.hpp"
 
 namespace spiral::design {
 
@@ -117,6 +119,16 @@ struct DynamicAnalysisResult {
   double wave_frequency_wall_s = 0.0;
   double tensions_wall_s = 0.0;
 };
+
+/// Motion RAOs (WAMIT e^{iwt} convention, per unit wave amplitude) from the
+/// excitation X (.3) and A(w), B(w) (.1) on the excitation table's grid:
+///   xi(w, beta) = [−w² (mass + A(w)) + i w (B(w) + linear_damping) + stiffness]^-1 X(w, beta)
+/// (A, B interpolated in w, held outside the .1 table).
+engine::MotionRaoTable motion_raos_from_excitation(const engine::ExcitationTable& excitation,
+                                                   const engine::HydroCoefficients& radiation,
+                                                   const engine::Matrix6d& mass,
+                                                   const engine::Matrix6d& linear_damping,
+                                                   const engine::Matrix6d& stiffness);
 
 DynamicAnalysisResult run_dynamic_analysis(const ValidatedProject& project,
                                            const DynamicAnalysisRequest& request);
