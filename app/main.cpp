@@ -180,8 +180,9 @@ int run_analyze(const std::string& project_file, const AnalyzeOptions& o) {
   }
   fmt::print("{} analysis of '{}', case {} (seed {}, {:.0f} s): {}\n", o.level, loaded.project.name, o.case_name,
              o.seed, o.duration_s, folder.string());
-  fmt::print("  equilibrium {:.3f} s, reduction {:.3f} s, dynamics {:.3f} s, WF {:.3f} s, tensions {:.3f} s\n",
-             result.equilibrium_wall_s, result.reduction_wall_s, result.dynamics_wall_s,
+  fmt::print("  equilibrium {:.3f} s, reduction {:.3f} s, forcing {:.3f} s, dynamics {:.3f} s, WF {:.3f} s, "
+             "tensions {:.3f} s\n",
+             result.equilibrium_wall_s, result.reduction_wall_s, result.forcing_wall_s, result.dynamics_wall_s,
              result.wave_frequency_wall_s, result.tensions_wall_s);
   for (const auto& note : result.notes) fmt::print("  note: {}\n", note);
   return app::kExitOk;

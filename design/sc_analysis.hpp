@@ -84,6 +84,7 @@ struct DynamicModel {
   std::vector<std::string> notes;
   double equilibrium_wall_s = 0.0;  ///< static case (equilibrium)
   double reduction_wall_s = 0.0;    ///< K reduction (+ line hydrodynamics for sc-enhanced)
+  double forcing_wall_s = 0.0;      ///< wave/wind realizations and the tabulated forcing
 };
 
 /// Builds the model of `request` (no integration). `fairlead_velocity_std`
@@ -115,6 +116,7 @@ struct DynamicAnalysisResult {
   std::vector<std::string> notes;
   double equilibrium_wall_s = 0.0;
   double reduction_wall_s = 0.0;
+  double forcing_wall_s = 0.0;
   double dynamics_wall_s = 0.0;
   double wave_frequency_wall_s = 0.0;
   double tensions_wall_s = 0.0;
