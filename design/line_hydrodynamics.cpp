@@ -21,6 +21,21 @@ Eigen::Matrix3d skew(const Eigen::Vector3d& a) {
   return m;
 }
 
+/// Position on a profile at unstretched arc length s (linear between points;
+/// the point count may differ between solutions, e.g. with a touchdown point).
+Eigen::Vector3d position_at_arc(const std::vector<engine::LineProfilePoint>& profile, double s) {
+  if (s <= profile.front().arc_length_m) return profile.front().position_g;
+  for (std::size_t j = 1; j < profile.size(); ++j) {
+    const double s0 = profile[j - 1].arc_length_m;
+    const double s1 = profile[j].arc_length_m;
+    if (s <= s1 && s1 > s0) {
+      const double u = (s - s0) / (s1 - s0);
+      return (1.0 - u) * profile[j - 1].position_g + u * profile[j].position_g;
+    }
+  }
+  return profile.back().position_g;
+}
+
 }  // namespace
 
 LineHydrodynamicsResult line_hydrodynamics(LineArrayModel& model, const engine::HullPose& pose,
@@ -41,11 +56,10 @@ LineHydrodynamicsResult line_hydrodynamics(LineArrayModel& model, const engine::
       const Eigen::Vector3d step = kFairleadStep_m * Eigen::Vector3d::Unit(i);
       const engine::LineState plus = line.state(x_f + step, kPointsPerSegment);
       const engine::LineState minus = line.state(x_f - step, kPointsPerSegment);
-      if (plus.profile.size() != n || minus.profile.size() != n) {
-        throw std::runtime_error(fmt::format("line {}: profile size changed in the shape derivative", line.name()));
-      }
       for (std::size_t j = 0; j < n; ++j) {
-        J[j].col(i) = (plus.profile[j].position_g - minus.profile[j].position_g) / (2.0 * kFairleadStep_m);
+        const double arc = base.profile[j].arc_length_m;
+        J[j].col(i) = (position_at_arc(plus.profile, arc) - position_at_arc(minus.profile, arc)) /
+                      (2.0 * kFairleadStep_m);
       }
     }
     line.solve(x_f);  // leave the warm start at the equilibrium

@@ -9,7 +9,8 @@
 // 1) Shape derivative. For each catenary line at its equilibrium fairlead
 //    position x_f, the quasi-static profile r_j (points at fixed unstretched
 //    arc length s_j) is solved at x_f ± h e_i (h = 0.1 m, central
-//    differences): J_j = d r_j / d x_f (3x3). The line is assumed to move
+//    differences; the perturbed profiles are read at the same arc lengths by
+//    linear interpolation): J_j = d r_j / d x_f (3x3). The line is assumed to move
 //    quasi-statically with the fairlead (no line dynamics, no current).
 // 2) Per node, with the normal projector P_n = I − t tᵀ (t the unit tangent),
 //    tributary length ds_j, hydrodynamic diameter d, Cd, Ca of its segment:

@@ -280,6 +280,41 @@ std::vector<double> output_times(double duration_s, double step_s) {
   return t;
 }
 
+engine::HullSimulationOptions forced_run_options(const DynamicAnalysisRequest& request) {
+  engine::HullSimulationOptions options;
+  options.output_times_s = output_times(request.duration_s, request.output_step_s);
+  options.integrator.relative_tolerance = kForcedRunRelTol;
+  Eigen::VectorXd atol(12);
+  for (int i = 0; i < 12; ++i) atol(i) = (i % 6) < 3 ? kForcedRunAbsTolTranslation : kForcedRunAbsTolRotation;
+  options.integrator.absolute_tolerances = atol;
+  return options;
+}
+
+/// Wave-frequency motions (global, m, rad) at `times` from the .4 RAOs or
+/// from .1 + .3; empty when the project has neither (or no waves).
+std::optional<Eigen::Matrix<double, 6, Eigen::Dynamic>> wave_frequency_motion(
+    const Project& project, const Environment& environment, const DynamicModel& model,
+    const DynamicAnalysisRequest& request, const Eigen::VectorXd& times) {
+  const auto& hydro = project.hull.hydrodynamics;
+  if (!environment.waves || !hydro || !(hydro->rao_file || hydro->excitation_file)) return std::nullopt;
+  const HullModel hull = build_hull_model(project);
+  const engine::WamitReadOptions read = wamit_options_of(project, *hydro);
+  const engine::MotionRaoTable raos =
+      hydro->rao_file ? engine::read_wamit_4(*hydro->rao_file, read)
+                      : motion_raos_from_excitation(engine::read_wamit_3(*hydro->excitation_file, read),
+                                                    *hull.radiation, hull.mass_matrix, model.hull.linear_damping,
+                                                    hull.statics.hydrostatic_stiffness + model.statics.stiffness);
+  const engine::WaveRealization sea = realize_sea(project, *environment.waves, request.duration_s, request.seed);
+  const Eigen::Vector3d& ref = project.hull.reference_point_g;
+  try {
+    const engine::FirstOrderWaveSeries series = engine::prepare_first_order_series(
+        sea, raos, {ref.x() + model.statics.offset(0), ref.y() + model.statics.offset(1), model.statics.offset(5)});
+    return engine::evaluate_first_order_many(series, times);
+  } catch (const std::invalid_argument& e) {
+    heading_error(project, environment.name, "wave-frequency RAOs (hull.hydrodynamics)", e);
+  }
+}
+
 }  // namespace
 
 const char* to_string(AnalysisLevel level) {
@@ -457,14 +492,13 @@ DynamicModel build_dynamic_model(const ValidatedProject& validated, const Dynami
   // linearized on the fairlead velocities of a first plain S-C run.
   if (request.level == AnalysisLevel::semi_coupled_enhanced) {
     const auto start = std::chrono::steady_clock::now();
-    DynamicAnalysisRequest first = request;
-    first.level = AnalysisLevel::semi_coupled;
-    first.compute_tensions = false;
-    first.progress = nullptr;
-    const DynamicAnalysisResult plain = run_dynamic_analysis(validated, first);
+    // The plain S-C model as built so far (same forcing, same seed).
+    const engine::HullTimeSeries plain = engine::simulate_hull(
+        model.hull, model.loads, model.initial_offset, engine::Vector6d::Zero(), forced_run_options(request));
+    Eigen::Matrix<double, 6, Eigen::Dynamic> motion = plain.position;
+    if (const auto wf = wave_frequency_motion(project, environment, model, request, plain.times_s)) motion += *wf;
     LineArrayModel mooring = build_mooring_model(project, damaged);
-    const auto covariance =
-        fairlead_velocity_covariance(mooring, reference_point, plain.total, request.output_step_s);
+    const auto covariance = fairlead_velocity_covariance(mooring, reference_point, motion, request.output_step_s);
     const LineHydrodynamicsResult lines =
         line_hydrodynamics(mooring, engine::pose_from_offset(reference_point, model.statics.offset), covariance, rho_w);
     linearized.added_mass = lines.added_mass;
@@ -502,12 +536,7 @@ DynamicAnalysisResult run_dynamic_analysis(const ValidatedProject& validated, co
   result.forcing_wall_s = model.forcing_wall_s;
 
   // Low-frequency dynamics from the static equilibrium, at rest.
-  engine::HullSimulationOptions options;
-  options.output_times_s = output_times(request.duration_s, request.output_step_s);
-  options.integrator.relative_tolerance = kForcedRunRelTol;
-  Eigen::VectorXd atol(12);
-  for (int i = 0; i < 12; ++i) atol(i) = (i % 6) < 3 ? kForcedRunAbsTolTranslation : kForcedRunAbsTolRotation;
-  options.integrator.absolute_tolerances = atol;
+  const engine::HullSimulationOptions options = forced_run_options(request);
   if (request.progress && model.loads.external) {
     // Progress from the integrator's time (the force is evaluated at
     // increasing t, up to retried steps); reports at 1 % steps only.
@@ -534,31 +563,13 @@ DynamicAnalysisResult run_dynamic_analysis(const ValidatedProject& validated, co
   // Wave-frequency motions.
   auto start = std::chrono::steady_clock::now();
   result.wave_frequency.setZero(6, lf.times_s.size());
-  if (environment.waves) {
-    const auto& hydro = project.hull.hydrodynamics;
-    if (hydro && (hydro->rao_file || hydro->excitation_file)) {
-      const HullModel hull = build_hull_model(project);
-      const engine::WamitReadOptions read = wamit_options_of(project, *hydro);
-      const engine::MotionRaoTable raos =
-          hydro->rao_file ? engine::read_wamit_4(*hydro->rao_file, read)
-                          : motion_raos_from_excitation(engine::read_wamit_3(*hydro->excitation_file, read), *hull.radiation,
-                                                 hull.mass_matrix, model.hull.linear_damping,
-                                                 hull.statics.hydrostatic_stiffness + model.statics.stiffness);
-      const engine::WaveRealization sea = realize_sea(project, *environment.waves, request.duration_s, request.seed);
-      const Eigen::Vector3d& ref = project.hull.reference_point_g;
-      try {
-        const engine::FirstOrderWaveSeries series = engine::prepare_first_order_series(
-            sea, raos, {ref.x() + model.statics.offset(0), ref.y() + model.statics.offset(1), model.statics.offset(5)});
-        result.wave_frequency = engine::evaluate_first_order_many(series, lf.times_s);
-      } catch (const std::invalid_argument& e) {
-        heading_error(project, environment.name, "wave-frequency RAOs (hull.hydrodynamics)", e);
-      }
-      result.wave_frequency_computed = true;
-    } else {
-      result.notes.push_back(
-          "no wave-frequency motions: the project gives no hull.hydrodynamics.excitation_file (.3) or rao_file (.4); "
-          "motions are low-frequency only");
-    }
+  if (auto wf = wave_frequency_motion(project, environment, model, request, lf.times_s)) {
+    result.wave_frequency = std::move(*wf);
+    result.wave_frequency_computed = true;
+  } else if (environment.waves) {
+    result.notes.push_back(
+        "no wave-frequency motions: the project gives no hull.hydrodynamics.excitation_file (.3) or rao_file (.4); "
+        "motions are low-frequency only");
   }
   result.total = result.low_frequency + result.wave_frequency;
   result.wave_frequency_wall_s = seconds_since(start);

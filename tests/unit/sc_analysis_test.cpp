@@ -187,13 +187,26 @@ TEST(ScAnalysis, EnhancedScAddsSymmetricLineDampingAndAddedMass) {
   request.compute_tensions = false;
   const auto r = run_dynamic_analysis(p, request);
   ASSERT_TRUE(r.line_added_mass && r.line_damping);
-  // Three chains of 835 m, 0.0766 m nominal: added mass of the order of the
-  // line's displaced mass, small against the hull's 8.7e6 kg surge added mass.
-  EXPECT_GT((*r.line_added_mass)(0, 0), 1e3);
-  EXPECT_LT((*r.line_added_mass)(0, 0), 0.05 * 8.7e6);
+  // Scale check against the lines' whole added mass, sum rho Ca (pi d²/4) L
+  // (every node moving with the fairlead, normal to the line). Not a strict
+  // bound: near the touchdown point the nodes move more than the fairlead (the
+  // line lifts off the seabed) while the laid part hardly moves, so the ratio
+  // depends on the catenary; measured 0.92 here. Accepted: 0.05 to 2.
+  double bound_kg = 0.0;
+  for (const auto& line : p.project.mooring.lines) {
+    for (const auto& segment : line.segments) {
+      for (const auto& type : p.line_types) {
+        if (type.name != segment.type) continue;
+        bound_kg += 1025.0 * type.added_mass_normal * 0.25 * std::numbers::pi * type.hydrodynamic_diameter_m *
+                    type.hydrodynamic_diameter_m * segment.length_m;
+      }
+    }
+  }
+  EXPECT_LT((*r.line_added_mass)(0, 0), 2.0 * bound_kg);
+  EXPECT_GT((*r.line_added_mass)(0, 0), 0.05 * bound_kg);
   EXPECT_GT((*r.line_damping)(0, 0), 0.0);
   EXPECT_LT(((*r.line_damping) - r.line_damping->transpose()).norm(), 1e-9 * r.line_damping->norm());
-  std::cout << "line added mass surge " << (*r.line_added_mass)(0, 0) << " kg, damping surge "
+  std::cout << "line added mass surge " << (*r.line_added_mass)(0, 0) << " kg (bound " << bound_kg << " kg), damping surge "
             << (*r.line_damping)(0, 0) << " N s/m\n";
 }
 
