@@ -1,10 +1,10 @@
 #include "design/line_hydrodynamics.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
-
-#include <fmt/format.h>
 
 namespace spiral::design {
 namespace {
@@ -42,7 +42,8 @@ LineHydrodynamicsResult line_hydrodynamics(LineArrayModel& model, const engine::
                                            const std::vector<Eigen::Matrix3d>& covariance,
                                            double rho) {
   if (covariance.size() != model.lines.size() || model.designs.size() != model.lines.size()) {
-    throw std::invalid_argument("line_hydrodynamics: one covariance per catenary mooring line is needed");
+    throw std::invalid_argument(
+        "line_hydrodynamics: one covariance per catenary mooring line is needed");
   }
   LineHydrodynamicsResult out;
   for (std::size_t l = 0; l < model.lines.size(); ++l) {
@@ -75,13 +76,15 @@ LineHydrodynamicsResult line_hydrodynamics(LineArrayModel& model, const engine::
       if (t.norm() <= 0.0) continue;
       t.normalize();
       const Eigen::Matrix3d Pn = Eigen::Matrix3d::Identity() - t * t.transpose();
-      const auto& type = model.designs[l].segment_types.at(static_cast<std::size_t>(base.profile[j].segment));
+      const auto& type =
+          model.designs[l].segment_types.at(static_cast<std::size_t>(base.profile[j].segment));
       const double d = type.hydrodynamic_diameter_m;
       const Eigen::Matrix3d PJ = Pn * J[j];
       const double sigma = std::sqrt(std::max(0.0, (PJ * covariance[l] * PJ.transpose()).trace()));
       sigma_sum += sigma;
       const double c_eq = std::sqrt(8.0 / std::numbers::pi) * sigma;
-      A_f += J[j].transpose() * (rho * type.added_mass_normal * 0.25 * std::numbers::pi * d * d * ds * Pn) * J[j];
+      A_f += J[j].transpose() *
+             (rho * type.added_mass_normal * 0.25 * std::numbers::pi * d * d * ds * Pn) * J[j];
       B_f += J[j].transpose() * (0.5 * rho * type.drag_normal * d * ds * c_eq * Pn) * J[j];
     }
     out.line_drag_velocity_std_m_per_s.push_back(n > 0 ? sigma_sum / static_cast<double>(n) : 0.0);

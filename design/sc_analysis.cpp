@@ -2,14 +2,14 @@
 // (sc_analysis.hpp has the method and its sources).
 #include "design/sc_analysis.hpp"
 
+#include <fmt/format.h>
+
+#include <Eigen/LU>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <memory>
 #include <numbers>
-
-#include <Eigen/LU>
-#include <fmt/format.h>
 
 #include "design/environment_loads.hpp"
 #include "design/hull_model.hpp"
@@ -53,7 +53,8 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-InputError argument_error(const Project& project, const std::string& option, const std::string& message) {
+InputError argument_error(const Project& project, const std::string& option,
+                          const std::string& message) {
   InputIssue issue;
   issue.file = project.source_file;
   issue.path = option;
@@ -68,7 +69,8 @@ const LoadCase& find_case(const Project& project, const std::string& name) {
   if (it == project.load_cases.end()) {
     std::string names;
     for (const LoadCase& c : project.load_cases) names += (names.empty() ? "" : ", ") + c.name;
-    throw argument_error(project, "--case", fmt::format("no load case named \"{}\" (defined: {})", name, names));
+    throw argument_error(project, "--case",
+                         fmt::format("no load case named \"{}\" (defined: {})", name, names));
   }
   return *it;
 }
@@ -90,8 +92,8 @@ std::string environment_path(const Project& project, const std::string& name, co
 }
 
 /// Heading outside a hydrodynamic database: an input error at the environment.
-[[noreturn]] void heading_error(const Project& project, const std::string& environment, const std::string& what,
-                                const std::exception& e) {
+[[noreturn]] void heading_error(const Project& project, const std::string& environment,
+                                const std::string& what, const std::exception& e) {
   throw InputError({make_issue(project, environment_path(project, environment, "waves.heading_deg"),
                                "heading_in_database", fmt::format("{}: {}", what, e.what()))});
 }
@@ -102,7 +104,8 @@ engine::WaveRealization realize_sea(const Project& project, const Waves& waves, 
   input.spectrum = wave_spectrum_of(waves);
   input.mean_heading_rad = waves.heading_rad;
   if (waves.spreading_s) {
-    input.spreading = engine::DirectionalSpreading{engine::SpreadingForm::cos_2s, *waves.spreading_s};
+    input.spreading =
+        engine::DirectionalSpreading{engine::SpreadingForm::cos_2s, *waves.spreading_s};
     input.direction_count = kSpreadingDirections;
   }
   input.components_per_direction = kWaveComponents;
@@ -115,9 +118,11 @@ engine::WaveRealization realize_sea(const Project& project, const Waves& waves, 
 
 }  // namespace
 
-engine::MotionRaoTable motion_raos_from_excitation(const engine::ExcitationTable& x, const engine::HydroCoefficients& r,
-                                            const engine::Matrix6d& mass, const engine::Matrix6d& linear_damping,
-                                            const engine::Matrix6d& stiffness) {
+engine::MotionRaoTable motion_raos_from_excitation(const engine::ExcitationTable& x,
+                                                   const engine::HydroCoefficients& r,
+                                                   const engine::Matrix6d& mass,
+                                                   const engine::Matrix6d& linear_damping,
+                                                   const engine::Matrix6d& stiffness) {
   engine::MotionRaoTable out;
   out.quantity = engine::TransferQuantity::motion_rao;
   out.omega_rad_per_s = x.omega_rad_per_s;
@@ -150,10 +155,9 @@ namespace {
 
 /// Fairlead velocity covariance (global, 3x3) per mooring line from a motion
 /// record (central differences of the fairlead positions).
-std::vector<Eigen::Matrix3d> fairlead_velocity_covariance(const LineArrayModel& mooring,
-                                                          const Eigen::Vector3d& reference_point,
-                                                          const Eigen::Matrix<double, 6, Eigen::Dynamic>& motion,
-                                                          double dt_s) {
+std::vector<Eigen::Matrix3d> fairlead_velocity_covariance(
+    const LineArrayModel& mooring, const Eigen::Vector3d& reference_point,
+    const Eigen::Matrix<double, 6, Eigen::Dynamic>& motion, double dt_s) {
   std::vector<Eigen::Matrix3d> out(mooring.lines.size(), Eigen::Matrix3d::Zero());
   const Eigen::Index n = motion.cols();
   if (n < 3) return out;
@@ -195,9 +199,11 @@ constexpr double kForcingMargin_s = 120.0;
 /// by Catmull-Rom interpolation (C1 in time, so the Adams steps stay long).
 class ForcingTable {
  public:
-  ForcingTable(const engine::SlowDriftSeries* drift, const engine::WindRealization* gust, double duration_s)
+  ForcingTable(const engine::SlowDriftSeries* drift, const engine::WindRealization* gust,
+               double duration_s)
       : drift_(drift), gust_(gust) {
-    const auto n = static_cast<Eigen::Index>(std::ceil((duration_s + kForcingMargin_s) / kForcingStep_s)) + 4;
+    const auto n =
+        static_cast<Eigen::Index>(std::ceil((duration_s + kForcingMargin_s) / kForcingStep_s)) + 4;
     values_.setZero(7, n);
     if (drift) tabulate_drift(*drift);
     if (gust) tabulate_gust(*gust);
@@ -207,8 +213,11 @@ class ForcingTable {
     const auto j = static_cast<Eigen::Index>(std::floor(s));
     if (j < 1 || j + 2 >= values_.cols()) return exact(t);
     const double u = s - static_cast<double>(j);
-    const auto p0 = values_.col(j - 1), p1 = values_.col(j), p2 = values_.col(j + 1), p3 = values_.col(j + 2);
-    return p1 + 0.5 * u * ((p2 - p0) + u * ((2.0 * p0 - 5.0 * p1 + 4.0 * p2 - p3) + u * (3.0 * (p1 - p2) + p3 - p0)));
+    const auto p0 = values_.col(j - 1), p1 = values_.col(j), p2 = values_.col(j + 1),
+               p3 = values_.col(j + 2);
+    return p1 + 0.5 * u *
+                    ((p2 - p0) +
+                     u * ((2.0 * p0 - 5.0 * p1 + 4.0 * p2 - p3) + u * (3.0 * (p1 - p2) + p3 - p0)));
   }
 
  private:
@@ -230,16 +239,18 @@ class ForcingTable {
       if (j % kPhasorResync == 0) {
         const double t = static_cast<double>(j - 1) * kForcingStep_s;
         for (Eigen::Index i = 0; i < k; ++i) {
-          const double theta = d.omega_rad_per_s[static_cast<std::size_t>(i)] * t + d.phase_rad[static_cast<std::size_t>(i)];
+          const double theta = d.omega_rad_per_s[static_cast<std::size_t>(i)] * t +
+                               d.phase_rad[static_cast<std::size_t>(i)];
           c(i) = std::cos(theta);
           sn(i) = std::sin(theta);
         }
       }
       const engine::Vector6d z_re = d.weight * c.matrix(), z_im = d.weight * sn.matrix();
-      const engine::Vector6d zs_re = d.signed_weight * c.matrix(), zs_im = d.signed_weight * sn.matrix();
+      const engine::Vector6d zs_re = d.signed_weight * c.matrix(),
+                             zs_im = d.signed_weight * sn.matrix();
       const engine::Vector6d b = zs_re.cwiseProduct(z_re) + zs_im.cwiseProduct(z_im);
-      values_.col(j).head<6>() << cy * b(0) - sy * b(1), sy * b(0) + cy * b(1), b(2), cy * b(3) - sy * b(4),
-          sy * b(3) + cy * b(4), b(5);
+      values_.col(j).head<6>() << cy * b(0) - sy * b(1), sy * b(0) + cy * b(1), b(2),
+          cy * b(3) - sy * b(4), sy * b(3) + cy * b(4), b(5);
       const Eigen::ArrayXd next_c = c * rc - sn * rs;
       sn = sn * rc + c * rs;
       c = next_c;
@@ -257,7 +268,8 @@ class ForcingTable {
       if (j % kPhasorResync == 0) {
         const double t = static_cast<double>(j - 1) * kForcingStep_s;
         for (Eigen::Index i = 0; i < k; ++i) {
-          const double theta = w.omega_rad_per_s[static_cast<std::size_t>(i)] * t + w.phase_rad[static_cast<std::size_t>(i)];
+          const double theta = w.omega_rad_per_s[static_cast<std::size_t>(i)] * t +
+                               w.phase_rad[static_cast<std::size_t>(i)];
           c(i) = std::cos(theta);
           sn(i) = std::sin(theta);
         }
@@ -285,7 +297,8 @@ engine::HullSimulationOptions forced_run_options(const DynamicAnalysisRequest& r
   options.output_times_s = output_times(request.duration_s, request.output_step_s);
   options.integrator.relative_tolerance = kForcedRunRelTol;
   Eigen::VectorXd atol(12);
-  for (int i = 0; i < 12; ++i) atol(i) = (i % 6) < 3 ? kForcedRunAbsTolTranslation : kForcedRunAbsTolRotation;
+  for (int i = 0; i < 12; ++i)
+    atol(i) = (i % 6) < 3 ? kForcedRunAbsTolTranslation : kForcedRunAbsTolRotation;
   options.integrator.absolute_tolerances = atol;
   return options;
 }
@@ -296,19 +309,24 @@ std::optional<Eigen::Matrix<double, 6, Eigen::Dynamic>> wave_frequency_motion(
     const Project& project, const Environment& environment, const DynamicModel& model,
     const DynamicAnalysisRequest& request, const Eigen::VectorXd& times) {
   const auto& hydro = project.hull.hydrodynamics;
-  if (!environment.waves || !hydro || !(hydro->rao_file || hydro->excitation_file)) return std::nullopt;
+  if (!environment.waves || !hydro || !(hydro->rao_file || hydro->excitation_file))
+    return std::nullopt;
   const HullModel hull = build_hull_model(project);
   const engine::WamitReadOptions read = wamit_options_of(project, *hydro);
   const engine::MotionRaoTable raos =
       hydro->rao_file ? engine::read_wamit_4(*hydro->rao_file, read)
-                      : motion_raos_from_excitation(engine::read_wamit_3(*hydro->excitation_file, read),
-                                                    *hull.radiation, hull.mass_matrix, model.hull.linear_damping,
-                                                    hull.statics.hydrostatic_stiffness + model.statics.stiffness);
-  const engine::WaveRealization sea = realize_sea(project, *environment.waves, request.duration_s, request.seed);
+                      : motion_raos_from_excitation(
+                            engine::read_wamit_3(*hydro->excitation_file, read), *hull.radiation,
+                            hull.mass_matrix, model.hull.linear_damping,
+                            hull.statics.hydrostatic_stiffness + model.statics.stiffness);
+  const engine::WaveRealization sea =
+      realize_sea(project, *environment.waves, request.duration_s, request.seed);
   const Eigen::Vector3d& ref = project.hull.reference_point_g;
   try {
     const engine::FirstOrderWaveSeries series = engine::prepare_first_order_series(
-        sea, raos, {ref.x() + model.statics.offset(0), ref.y() + model.statics.offset(1), model.statics.offset(5)});
+        sea, raos,
+        {ref.x() + model.statics.offset(0), ref.y() + model.statics.offset(1),
+         model.statics.offset(5)});
     return engine::evaluate_first_order_many(series, times);
   } catch (const std::invalid_argument& e) {
     heading_error(project, environment.name, "wave-frequency RAOs (hull.hydrodynamics)", e);
@@ -330,22 +348,26 @@ const char* to_string(AnalysisLevel level) {
 }
 
 AnalysisLevel parse_analysis_level(const std::string& name, const Project& project) {
-  for (AnalysisLevel level :
-       {AnalysisLevel::uncoupled, AnalysisLevel::semi_coupled, AnalysisLevel::semi_coupled_enhanced}) {
+  for (AnalysisLevel level : {AnalysisLevel::uncoupled, AnalysisLevel::semi_coupled,
+                              AnalysisLevel::semi_coupled_enhanced}) {
     if (name == to_string(level)) return level;
   }
-  throw argument_error(project, "--level",
-                       fmt::format("unknown analysis level \"{}\"; allowed: uncoupled | sc | sc-enhanced "
-                                   "(coupled is not available yet)",
-                                   name));
+  throw argument_error(
+      project, "--level",
+      fmt::format("unknown analysis level \"{}\"; allowed: uncoupled | sc | sc-enhanced "
+                  "(coupled is not available yet)",
+                  name));
 }
 
-DynamicModel build_dynamic_model(const ValidatedProject& validated, const DynamicAnalysisRequest& request) {
+DynamicModel build_dynamic_model(const ValidatedProject& validated,
+                                 const DynamicAnalysisRequest& request) {
   const Project& project = validated.project;
-  if (!(request.duration_s > 0.0) || !(request.output_step_s > 0.0) || request.output_step_s > request.duration_s) {
-    throw argument_error(project, "--duration",
-                         fmt::format("need duration > 0 s and 0 < output step <= duration, got {} s and {} s",
-                                     request.duration_s, request.output_step_s));
+  if (!(request.duration_s > 0.0) || !(request.output_step_s > 0.0) ||
+      request.output_step_s > request.duration_s) {
+    throw argument_error(
+        project, "--duration",
+        fmt::format("need duration > 0 s and 0 < output step <= duration, got {} s and {} s",
+                    request.duration_s, request.output_step_s));
   }
   const LoadCase& load_case = find_case(project, request.load_case);
   const Environment& environment = find_environment(project, load_case.environment);
@@ -374,17 +396,19 @@ DynamicModel build_dynamic_model(const ValidatedProject& validated, const Dynami
     model.hull.linear_damping.diagonal() = project.hull.hydrodynamics->linear_damping;
     model.hull.quadratic_damping = project.hull.hydrodynamics->quadratic_damping;
   } else {
-    model.notes.push_back("no hull.hydrodynamics: the hull has no added mass and no wave-frequency motions");
+    model.notes.push_back(
+        "no hull.hydrodynamics: the hull has no added mass and no wave-frequency motions");
   }
 
   // Lines.
   const Eigen::Vector3d reference_point = project.hull.reference_point_g;
   const std::string damaged = load_case.damaged_line.value_or("");
-  engine::LinearizedLines linearized{model.statics.line_force, model.statics.stiffness, model.statics.offset,
-                                     std::nullopt, std::nullopt};
+  engine::LinearizedLines linearized{model.statics.line_force, model.statics.stiffness,
+                                     model.statics.offset, std::nullopt, std::nullopt};
   if (request.level == AnalysisLevel::uncoupled) {
     auto mooring = std::make_shared<LineArrayModel>(build_mooring_model(project, damaged));
-    const engine::HullPose pose_eq = engine::pose_from_offset(reference_point, model.statics.offset);
+    const engine::HullPose pose_eq =
+        engine::pose_from_offset(reference_point, model.statics.offset);
     // The rest of the array (risers; current drag on model: fe lines) held at
     // its linearization about the S-C equilibrium: F_rest0 − K_rest (q − q0).
     const engine::Vector6d rest_force =
@@ -394,7 +418,8 @@ DynamicModel build_dynamic_model(const ValidatedProject& validated, const Dynami
       rest_stiffness += model.statics.line_stiffness[i];
     }
     if (!model.statics.risers.empty()) {
-      model.notes.push_back("uncoupled: risers enter linearized about the static equilibrium (F0 − K (q − q0))");
+      model.notes.push_back(
+          "uncoupled: risers enter linearized about the static equilibrium (F0 − K (q − q0))");
     }
     const engine::Vector6d q0 = model.statics.offset;
     model.loads.lines = engine::NonlinearLineForce(
@@ -417,26 +442,28 @@ DynamicModel build_dynamic_model(const ValidatedProject& validated, const Dynami
   const auto forcing_start = std::chrono::steady_clock::now();
   std::shared_ptr<const engine::SlowDriftSeries> drift;
   if (environment.waves && project.hull.mean_drift) {
-    const engine::WaveRealization sea = realize_sea(project, *environment.waves, request.duration_s, request.seed);
+    const engine::WaveRealization sea =
+        realize_sea(project, *environment.waves, request.duration_s, request.seed);
     const engine::MeanDriftTable table = drift_table_of(project, *project.hull.mean_drift);
     try {
       drift = std::make_shared<const engine::SlowDriftSeries>(engine::prepare_slow_drift(
           sea, table,
-          {reference_point.x() + model.statics.offset(0), reference_point.y() + model.statics.offset(1),
-           model.statics.offset(5)}));
+          {reference_point.x() + model.statics.offset(0),
+           reference_point.y() + model.statics.offset(1), model.statics.offset(5)}));
     } catch (const std::invalid_argument& e) {
       heading_error(project, environment.name, "slow drift (hull.mean_drift)", e);
     }
     const double c = std::cos(drift->yaw_rad);
     const double s = std::sin(drift->yaw_rad);
     const engine::Vector6d& b = drift->mean_force_b;
-    model.mean_slow_drift_force << c * b(0) - s * b(1), s * b(0) + c * b(1), b(2), c * b(3) - s * b(4),
-        s * b(3) + c * b(4), b(5);
+    model.mean_slow_drift_force << c * b(0) - s * b(1), s * b(0) + c * b(1), b(2),
+        c * b(3) - s * b(4), s * b(3) + c * b(4), b(5);
     model.slow_drift = [drift](double t) { return engine::slow_drift_force(*drift, t); };
   }
   std::optional<engine::CoefficientTable> current_table;
   Eigen::Vector3d current_velocity = Eigen::Vector3d::Zero();
-  if (environment.current && !environment.current->profile.empty() && project.hull.current_coefficients) {
+  if (environment.current && !environment.current->profile.empty() &&
+      project.hull.current_coefficients) {
     current_table = table_of(*project.hull.current_coefficients);
     current_velocity = engine::current_velocity_g(current_profile_of(*environment.current), 0.0);
   }
@@ -457,8 +484,8 @@ DynamicModel build_dynamic_model(const ValidatedProject& validated, const Dynami
         const engine::NpdSpectrumInput npd{wind.speed_m_per_s, height};
         input.spectrum = [npd](double f) { return engine::npd_wind_spectrum(npd, f); };
       } else {
-        const engine::ApiSpectrumInput api{wind_speed, height, engine::api_turbulence_intensity(height) * wind_speed,
-                                           0.025};
+        const engine::ApiSpectrumInput api{
+            wind_speed, height, engine::api_turbulence_intensity(height) * wind_speed, 0.025};
         input.spectrum = [api](double f) { return engine::api_wind_spectrum(api, f); };
       }
       gust = std::make_shared<const engine::WindRealization>(engine::make_wind_realization(input));
@@ -468,7 +495,8 @@ DynamicModel build_dynamic_model(const ValidatedProject& validated, const Dynami
   const double rho_a = project.site.air_density_kg_per_m3;
   if (drift || current_table || wind_table) {
     std::shared_ptr<const ForcingTable> forcing;
-    if (drift || gust) forcing = std::make_shared<const ForcingTable>(drift.get(), gust.get(), request.duration_s);
+    if (drift || gust)
+      forcing = std::make_shared<const ForcingTable>(drift.get(), gust.get(), request.duration_s);
     model.loads.external = [=](double t, const engine::Vector6d& q, const engine::Vector6d& qd) {
       engine::Vector6d f = engine::Vector6d::Zero();
       Eigen::Matrix<double, 7, 1> tabulated = Eigen::Matrix<double, 7, 1>::Zero();
@@ -476,11 +504,15 @@ DynamicModel build_dynamic_model(const ValidatedProject& validated, const Dynami
       if (drift) f += tabulated.head<6>();
       const Eigen::Vector3d hull_velocity(qd(0), qd(1), 0.0);
       if (current_table) {
-        f += engine::coefficient_load(*current_table, {rho_w, current_velocity - hull_velocity, q(5)}).load_g;
+        f += engine::coefficient_load(*current_table,
+                                      {rho_w, current_velocity - hull_velocity, q(5)})
+                 .load_g;
       }
       if (wind_table) {
         const double u = wind_speed + tabulated(6);
-        f += engine::coefficient_load(*wind_table, {rho_a, u * wind_direction - hull_velocity, q(5)}).load_g;
+        f +=
+            engine::coefficient_load(*wind_table, {rho_a, u * wind_direction - hull_velocity, q(5)})
+                .load_g;
       }
       return f;
     };
@@ -493,14 +525,18 @@ DynamicModel build_dynamic_model(const ValidatedProject& validated, const Dynami
   if (request.level == AnalysisLevel::semi_coupled_enhanced) {
     const auto start = std::chrono::steady_clock::now();
     // The plain S-C model as built so far (same forcing, same seed).
-    const engine::HullTimeSeries plain = engine::simulate_hull(
-        model.hull, model.loads, model.initial_offset, engine::Vector6d::Zero(), forced_run_options(request));
+    const engine::HullTimeSeries plain =
+        engine::simulate_hull(model.hull, model.loads, model.initial_offset,
+                              engine::Vector6d::Zero(), forced_run_options(request));
     Eigen::Matrix<double, 6, Eigen::Dynamic> motion = plain.position;
-    if (const auto wf = wave_frequency_motion(project, environment, model, request, plain.times_s)) motion += *wf;
+    if (const auto wf = wave_frequency_motion(project, environment, model, request, plain.times_s))
+      motion += *wf;
     LineArrayModel mooring = build_mooring_model(project, damaged);
-    const auto covariance = fairlead_velocity_covariance(mooring, reference_point, motion, request.output_step_s);
+    const auto covariance =
+        fairlead_velocity_covariance(mooring, reference_point, motion, request.output_step_s);
     const LineHydrodynamicsResult lines =
-        line_hydrodynamics(mooring, engine::pose_from_offset(reference_point, model.statics.offset), covariance, rho_w);
+        line_hydrodynamics(mooring, engine::pose_from_offset(reference_point, model.statics.offset),
+                           covariance, rho_w);
     linearized.added_mass = lines.added_mass;
     linearized.damping = lines.damping;
     model.line_added_mass = lines.added_mass;
@@ -508,14 +544,17 @@ DynamicModel build_dynamic_model(const ValidatedProject& validated, const Dynami
     model.loads.lines = linearized;
     model.reduction_wall_s += seconds_since(start);
     model.notes.push_back(
-        "sc-enhanced: line damping and added mass from the quasi-static line shape derivative (normal Morison drag "
-        "linearized on the fairlead velocities of a first sc run, sqrt(8/pi) sigma); current on the lines and line "
+        "sc-enhanced: line damping and added mass from the quasi-static line shape derivative "
+        "(normal Morison drag "
+        "linearized on the fairlead velocities of a first sc run, sqrt(8/pi) sigma); current on "
+        "the lines and line "
         "dynamics neglected in these matrices");
   }
   return model;
 }
 
-DynamicAnalysisResult run_dynamic_analysis(const ValidatedProject& validated, const DynamicAnalysisRequest& request) {
+DynamicAnalysisResult run_dynamic_analysis(const ValidatedProject& validated,
+                                           const DynamicAnalysisRequest& request) {
   const Project& project = validated.project;
   DynamicModel model = build_dynamic_model(validated, request);
   const LoadCase& load_case = find_case(project, request.load_case);
@@ -552,8 +591,8 @@ DynamicAnalysisResult run_dynamic_analysis(const ValidatedProject& validated, co
       return inner(t, q, qd);
     };
   }
-  const engine::HullTimeSeries lf =
-      engine::simulate_hull(model.hull, model.loads, model.initial_offset, engine::Vector6d::Zero(), options);
+  const engine::HullTimeSeries lf = engine::simulate_hull(
+      model.hull, model.loads, model.initial_offset, engine::Vector6d::Zero(), options);
   if (request.progress) request.progress(1.0);
   result.times_s = lf.times_s;
   result.low_frequency = lf.position;
@@ -568,7 +607,8 @@ DynamicAnalysisResult run_dynamic_analysis(const ValidatedProject& validated, co
     result.wave_frequency_computed = true;
   } else if (environment.waves) {
     result.notes.push_back(
-        "no wave-frequency motions: the project gives no hull.hydrodynamics.excitation_file (.3) or rao_file (.4); "
+        "no wave-frequency motions: the project gives no hull.hydrodynamics.excitation_file (.3) "
+        "or rao_file (.4); "
         "motions are low-frequency only");
   }
   result.total = result.low_frequency + result.wave_frequency;
@@ -579,13 +619,16 @@ DynamicAnalysisResult run_dynamic_analysis(const ValidatedProject& validated, co
   if (request.compute_tensions) {
     LineArrayModel mooring = build_mooring_model(project, load_case.damaged_line.value_or(""));
     const Eigen::Index n = result.total.cols();
-    for (const auto& line : mooring.lines) result.tensions.push_back({line->name(), std::vector<double>(n)});
+    for (const auto& line : mooring.lines)
+      result.tensions.push_back({line->name(), std::vector<double>(n)});
     for (Eigen::Index k = 0; k < n; ++k) {
-      const engine::HullPose pose = engine::pose_from_offset(project.hull.reference_point_g, result.total.col(k));
+      const engine::HullPose pose =
+          engine::pose_from_offset(project.hull.reference_point_g, result.total.col(k));
       for (std::size_t l = 0; l < mooring.lines.size(); ++l) {
         const auto& line = mooring.lines[l];
         result.tensions[l].tension_N[static_cast<std::size_t>(k)] =
-            line->solve(pose.reference_point_g + pose.rotation * line->attachment_b()).top_tension_N;
+            line->solve(pose.reference_point_g + pose.rotation * line->attachment_b())
+                .top_tension_N;
       }
     }
   }

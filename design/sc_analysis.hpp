@@ -79,10 +79,10 @@ struct DynamicAnalysisRequest {
 struct DynamicModel {
   engine::HullDynamicsModel hull;
   engine::HullLoads loads;
-  engine::Vector6d initial_offset = engine::Vector6d::Zero();  ///< static equilibrium q0
-  StaticCaseResult statics;                                    ///< the S-C static case
-  std::optional<engine::Matrix6d> line_added_mass;             ///< sc-enhanced
-  std::optional<engine::Matrix6d> line_damping;                ///< sc-enhanced
+  engine::Vector6d initial_offset = engine::Vector6d::Zero();         ///< static equilibrium q0
+  StaticCaseResult statics;                                           ///< the S-C static case
+  std::optional<engine::Matrix6d> line_added_mass;                    ///< sc-enhanced
+  std::optional<engine::Matrix6d> line_damping;                       ///< sc-enhanced
   engine::Vector6d mean_slow_drift_force = engine::Vector6d::Zero();  ///< sum a_k² D_k, global
   /// The slow-drift force alone, F_sd(t) (global), empty without waves or drift data.
   std::function<engine::Vector6d(double)> slow_drift;
@@ -95,7 +95,8 @@ struct DynamicModel {
 /// Builds the model of `request` (no integration). `fairlead_velocity_std`
 /// (m/s, per line and global axis), when given, sets the velocity amplitude of
 /// the enhanced S-C drag linearization; else a first sc pass supplies it.
-DynamicModel build_dynamic_model(const ValidatedProject& project, const DynamicAnalysisRequest& request);
+DynamicModel build_dynamic_model(const ValidatedProject& project,
+                                 const DynamicAnalysisRequest& request);
 
 struct TensionSeries {
   std::string line;

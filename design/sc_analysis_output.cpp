@@ -1,11 +1,11 @@
 #include "design/sc_analysis_output.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <fstream>
 #include <numbers>
 #include <stdexcept>
-
-#include <fmt/format.h>
 
 #include "engine/analysis/statistics.hpp"
 
@@ -16,8 +16,12 @@ constexpr const char* kDofNames[6] = {"surge", "sway", "heave", "roll", "pitch",
 constexpr double kRadToDeg = 180.0 / std::numbers::pi;
 
 /// Output unit of a DOF: m for translations, deg for rotations (SI inside).
-double dof_scale(int dof) { return dof < 3 ? 1.0 : kRadToDeg; }
-const char* dof_unit(int dof) { return dof < 3 ? "m" : "deg"; }
+double dof_scale(int dof) {
+  return dof < 3 ? 1.0 : kRadToDeg;
+}
+const char* dof_unit(int dof) {
+  return dof < 3 ? "m" : "deg";
+}
 
 /// Welch segment: the largest power of two <= n/8 (>= 8 segments averaged
 /// with 50 % overlap, ~15 for a full record), at least 16 samples.
@@ -27,8 +31,8 @@ std::size_t welch_segment(std::size_t n) {
   return std::min(s, n);
 }
 
-nlohmann::json channel_json(const std::string& name, const std::string& unit, const std::vector<double>& x,
-                            double dt_s) {
+nlohmann::json channel_json(const std::string& name, const std::string& unit,
+                            const std::vector<double>& x, double dt_s) {
   nlohmann::json j;
   j["name"] = name;
   j["unit"] = unit;
@@ -59,7 +63,8 @@ nlohmann::json channel_json(const std::string& name, const std::string& unit, co
 
 std::vector<double> row_of(const Eigen::Matrix<double, 6, Eigen::Dynamic>& m, int dof) {
   std::vector<double> out(static_cast<std::size_t>(m.cols()));
-  for (Eigen::Index k = 0; k < m.cols(); ++k) out[static_cast<std::size_t>(k)] = m(dof, k) * dof_scale(dof);
+  for (Eigen::Index k = 0; k < m.cols(); ++k)
+    out[static_cast<std::size_t>(k)] = m(dof, k) * dof_scale(dof);
   return out;
 }
 
@@ -75,7 +80,8 @@ nlohmann::json matrix_json(const engine::Matrix6d& m) {
 
 }  // namespace
 
-void write_dynamic_time_series_csv(const DynamicAnalysisResult& r, const std::filesystem::path& file) {
+void write_dynamic_time_series_csv(const DynamicAnalysisResult& r,
+                                   const std::filesystem::path& file) {
   std::ofstream out(file);
   if (!out) throw std::runtime_error(fmt::format("cannot write {}", file.string()));
   out << "time_s";
@@ -89,13 +95,15 @@ void write_dynamic_time_series_csv(const DynamicAnalysisResult& r, const std::fi
     for (const auto* m : {&r.total, &r.low_frequency, &r.wave_frequency}) {
       for (int d = 0; d < 6; ++d) out << fmt::format(",{:.6g}", (*m)(d, k) * dof_scale(d));
     }
-    for (const auto& t : r.tensions) out << fmt::format(",{:.7g}", t.tension_N[static_cast<std::size_t>(k)]);
+    for (const auto& t : r.tensions)
+      out << fmt::format(",{:.7g}", t.tension_N[static_cast<std::size_t>(k)]);
     out << '\n';
   }
   if (!out) throw std::runtime_error(fmt::format("error while writing {}", file.string()));
 }
 
-nlohmann::json dynamic_analysis_to_json(const DynamicAnalysisResult& r, const std::string& project_name) {
+nlohmann::json dynamic_analysis_to_json(const DynamicAnalysisResult& r,
+                                        const std::string& project_name) {
   nlohmann::json j;
   j["project"] = project_name;
   j["load_case"] = r.case_name;
@@ -107,7 +115,8 @@ nlohmann::json dynamic_analysis_to_json(const DynamicAnalysisResult& r, const st
   j["output_step_s"] = dt;
   j["wave_frequency_motions"] = r.wave_frequency_computed;
   nlohmann::json offset;
-  for (int d = 0; d < 6; ++d) offset[fmt::format("{}_{}", kDofNames[d], dof_unit(d))] = r.static_offset(d) * dof_scale(d);
+  for (int d = 0; d < 6; ++d)
+    offset[fmt::format("{}_{}", kDofNames[d], dof_unit(d))] = r.static_offset(d) * dof_scale(d);
   j["static_offset"] = offset;
   nlohmann::json drift = nlohmann::json::array();
   for (int d = 0; d < 6; ++d) drift.push_back(r.mean_slow_drift_force(d));
@@ -117,13 +126,15 @@ nlohmann::json dynamic_analysis_to_json(const DynamicAnalysisResult& r, const st
   nlohmann::json channels = nlohmann::json::array();
   if (r.times_s.size() >= 2) {
     for (int d = 0; d < 6; ++d) {
-      channels.push_back(channel_json(fmt::format("{}_{}", kDofNames[d], dof_unit(d)), dof_unit(d), row_of(r.total, d), dt));
+      channels.push_back(channel_json(fmt::format("{}_{}", kDofNames[d], dof_unit(d)), dof_unit(d),
+                                      row_of(r.total, d), dt));
     }
     for (int d = 0; d < 6; ++d) {
-      channels.push_back(
-          channel_json(fmt::format("{}_lf_{}", kDofNames[d], dof_unit(d)), dof_unit(d), row_of(r.low_frequency, d), dt));
+      channels.push_back(channel_json(fmt::format("{}_lf_{}", kDofNames[d], dof_unit(d)),
+                                      dof_unit(d), row_of(r.low_frequency, d), dt));
     }
-    for (const auto& t : r.tensions) channels.push_back(channel_json("tension_" + t.line + "_N", "N", t.tension_N, dt));
+    for (const auto& t : r.tensions)
+      channels.push_back(channel_json("tension_" + t.line + "_N", "N", t.tension_N, dt));
   }
   j["channels"] = channels;
   j["timing_s"] = {{"equilibrium", r.equilibrium_wall_s},
@@ -132,8 +143,8 @@ nlohmann::json dynamic_analysis_to_json(const DynamicAnalysisResult& r, const st
                    {"dynamics", r.dynamics_wall_s},
                    {"wave_frequency", r.wave_frequency_wall_s},
                    {"tensions", r.tensions_wall_s},
-                   {"total", r.equilibrium_wall_s + r.reduction_wall_s + r.forcing_wall_s + r.dynamics_wall_s + r.wave_frequency_wall_s +
-                                 r.tensions_wall_s}};
+                   {"total", r.equilibrium_wall_s + r.reduction_wall_s + r.forcing_wall_s +
+                                 r.dynamics_wall_s + r.wave_frequency_wall_s + r.tensions_wall_s}};
   j["solver"] = {{"steps", r.solver.steps},
                  {"rhs_evaluations", r.solver.rhs_evaluations},
                  {"jacobian_evaluations", r.solver.jacobian_evaluations},

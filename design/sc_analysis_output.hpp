@@ -8,20 +8,21 @@
 //     (Gumbel, Weibull, Rayleigh) and minimum, spectral peak period; the
 //     wall-clock time of each step and the integrator statistics.
 #include <filesystem>
-#include <string>
-
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "design/sc_analysis.hpp"
 
 namespace spiral::design {
 
 /// Writes the CSV; throws std::runtime_error naming the file if it cannot.
-void write_dynamic_time_series_csv(const DynamicAnalysisResult& result, const std::filesystem::path& file);
+void write_dynamic_time_series_csv(const DynamicAnalysisResult& result,
+                                   const std::filesystem::path& file);
 
 /// Statistics of every channel (total motions, LF motions, tensions) and the
 /// run's metadata. Channels too short for an extreme-value fit carry
 /// "extremes_unavailable" with the reason instead of the MPMs.
-nlohmann::json dynamic_analysis_to_json(const DynamicAnalysisResult& result, const std::string& project_name);
+nlohmann::json dynamic_analysis_to_json(const DynamicAnalysisResult& result,
+                                        const std::string& project_name);
 
 }  // namespace spiral::design

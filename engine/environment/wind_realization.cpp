@@ -1,22 +1,24 @@
 #include "engine/environment/wind_realization.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <numbers>
 #include <random>
 #include <stdexcept>
-
-#include <fmt/format.h>
 
 namespace spiral::engine {
 
 WindRealization make_wind_realization(const WindRealizationInput& input) {
   if (!input.spectrum) throw std::invalid_argument("wind realization: no spectrum given");
   if (!(input.frequency_min_Hz > 0.0) || !(input.frequency_max_Hz > input.frequency_min_Hz)) {
-    throw std::invalid_argument(fmt::format("wind realization: band must satisfy 0 < f_min < f_max, got [{}, {}] Hz",
-                                            input.frequency_min_Hz, input.frequency_max_Hz));
+    throw std::invalid_argument(
+        fmt::format("wind realization: band must satisfy 0 < f_min < f_max, got [{}, {}] Hz",
+                    input.frequency_min_Hz, input.frequency_max_Hz));
   }
   if (input.components < 1) {
-    throw std::invalid_argument(fmt::format("wind realization: components must be >= 1, got {}", input.components));
+    throw std::invalid_argument(
+        fmt::format("wind realization: components must be >= 1, got {}", input.components));
   }
   std::mt19937_64 rng(input.seed);
   const auto uniform = [&rng] { return static_cast<double>(rng() >> 11) * 0x1.0p-53; };
@@ -30,7 +32,8 @@ WindRealization make_wind_realization(const WindRealizationInput& input) {
     const double phase = 2.0 * std::numbers::pi * uniform();
     const double s = input.spectrum(f);
     if (!(s >= 0.0) || !std::isfinite(s)) {
-      throw std::invalid_argument(fmt::format("wind realization: spectrum must be finite and >= 0, got {} at {} Hz", s, f));
+      throw std::invalid_argument(
+          fmt::format("wind realization: spectrum must be finite and >= 0, got {} at {} Hz", s, f));
     }
     const double a = std::sqrt(2.0 * s * (f_hi - f_lo));
     w.omega_rad_per_s.push_back(2.0 * std::numbers::pi * f);

@@ -31,7 +31,7 @@
 namespace spiral::engine {
 
 struct SlowDriftPlacement {
-  double x_m = 0.0;      ///< hull reference point, global
+  double x_m = 0.0;  ///< hull reference point, global
   double y_m = 0.0;
   double yaw_rad = 0.0;  ///< mean hull yaw
 };
@@ -39,8 +39,8 @@ struct SlowDriftPlacement {
 /// Precomputed per-component weights; evaluate with slow_drift_force.
 struct SlowDriftSeries {
   std::vector<double> omega_rad_per_s;
-  std::vector<double> phase_rad;                     ///< phi_k − k·x0
-  Eigen::Matrix<double, 6, Eigen::Dynamic> weight;   ///< a_k sqrt|D_ik|, body frame
+  std::vector<double> phase_rad;                           ///< phi_k − k·x0
+  Eigen::Matrix<double, 6, Eigen::Dynamic> weight;         ///< a_k sqrt|D_ik|, body frame
   Eigen::Matrix<double, 6, Eigen::Dynamic> signed_weight;  ///< a_k sgn(D_ik) sqrt|D_ik|
   double yaw_rad = 0.0;
   Vector6d mean_force_b = Vector6d::Zero();  ///< sum a_k^2 D_ik, body frame, N, N·m

@@ -17,8 +17,8 @@ namespace {
 using namespace spiral;
 
 design::ValidatedProject deepwater_with_drift() {
-  design::ValidatedProject p =
-      design::load_validated_project(std::string(SPIRAL_SOURCE_DIR) + "/scenarios/deepwater-fps.yaml");
+  design::ValidatedProject p = design::load_validated_project(std::string(SPIRAL_SOURCE_DIR) +
+                                                              "/scenarios/deepwater-fps.yaml");
   design::MeanDriftFile drift;
   drift.file = std::string(SPIRAL_SHARED_DATA_DIR) + "/hydro/oc4-semi/marin_semi.12d";
   drift.ulen_m = 2.0;
@@ -43,14 +43,20 @@ void run(benchmark::State& state, design::AnalysisLevel level) {
   state.counters["forcing_s"] = result.forcing_wall_s;
   state.counters["dynamics_s"] = result.dynamics_wall_s;
   state.counters["tensions_s"] = result.tensions_wall_s;
-  state.counters["after_equilibrium_s"] =
-      result.reduction_wall_s + result.forcing_wall_s + result.dynamics_wall_s + result.wave_frequency_wall_s + result.tensions_wall_s;
+  state.counters["after_equilibrium_s"] = result.reduction_wall_s + result.forcing_wall_s +
+                                          result.dynamics_wall_s + result.wave_frequency_wall_s +
+                                          result.tensions_wall_s;
   state.counters["cvode_steps"] = static_cast<double>(result.solver.steps);
-  state.counters["surge_std_m"] = std::sqrt((result.total.row(0).array() - result.total.row(0).mean()).square().mean());
+  state.counters["surge_std_m"] =
+      std::sqrt((result.total.row(0).array() - result.total.row(0).mean()).square().mean());
 }
 
-void BM_DeepwaterScStorm3h(benchmark::State& state) { run(state, design::AnalysisLevel::semi_coupled); }
-void BM_DeepwaterUncoupledStorm3h(benchmark::State& state) { run(state, design::AnalysisLevel::uncoupled); }
+void BM_DeepwaterScStorm3h(benchmark::State& state) {
+  run(state, design::AnalysisLevel::semi_coupled);
+}
+void BM_DeepwaterUncoupledStorm3h(benchmark::State& state) {
+  run(state, design::AnalysisLevel::uncoupled);
+}
 
 BENCHMARK(BM_DeepwaterScStorm3h)->Unit(benchmark::kSecond)->Iterations(1);
 BENCHMARK(BM_DeepwaterUncoupledStorm3h)->Unit(benchmark::kSecond)->Iterations(1);

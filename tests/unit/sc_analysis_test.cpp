@@ -2,13 +2,14 @@
 // project: free-decay periods of the OC4 S-C model, mean offset = static
 // offset under steady loads, seeded reproducibility, slow-drift mean, and the
 // input errors of the analysis.
+#include "design/sc_analysis.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <fstream>
 #include <numbers>
 
-#include "design/sc_analysis.hpp"
 #include "engine/analysis/statistics.hpp"
 
 namespace spiral::design {
@@ -20,7 +21,8 @@ const std::string kOc4 = std::string(SPIRAL_SOURCE_DIR) + "/scenarios/oc4-semisu
 /// Period of a free decay record about its equilibrium (zero up-crossings).
 double decay_period_s(const engine::HullTimeSeries& s, int dof, double equilibrium, double dt) {
   std::vector<double> x(static_cast<std::size_t>(s.position.cols()));
-  for (Eigen::Index k = 0; k < s.position.cols(); ++k) x[static_cast<std::size_t>(k)] = s.position(dof, k) - equilibrium;
+  for (Eigen::Index k = 0; k < s.position.cols(); ++k)
+    x[static_cast<std::size_t>(k)] = s.position(dof, k) - equilibrium;
   const auto up = engine::upcrossing_times_s(x, dt, 0.0);
   return (up.back() - up.front()) / static_cast<double>(up.size() - 1);
 }
@@ -48,7 +50,8 @@ TEST(ScAnalysis, Oc4FreeDecayReproducesNaturalPeriods) {
       if (m.dominant_dof == names[dof]) expected = m.period_s;
     ASSERT_GT(expected, 0.0) << names[dof];
     const double dt = 0.1;
-    const auto decay = engine::free_decay(model.hull, model.loads.lines, dof, displacement[dof], 10.0 * expected, dt);
+    const auto decay = engine::free_decay(model.hull, model.loads.lines, dof, displacement[dof],
+                                          10.0 * expected, dt);
     const double period = decay_period_s(decay, dof, model.initial_offset(dof), dt);
     EXPECT_NEAR(period, expected, kModePeriodTolerance * expected) << names[dof];
     std::cout << names[dof] << ": free decay " << period << " s, mode " << expected << " s\n";
@@ -103,7 +106,8 @@ TEST(ScAnalysis, SteadyWindAndCurrentMeanOffsetEqualsStaticOffset) {
                                            engine::Vector6d::Zero(), options);
     const engine::Vector6d mean = run.position.rightCols(361).rowwise().mean();
     for (int d = 0; d < 6; ++d) {
-      EXPECT_NEAR(mean(d), model.statics.offset(d), d < 3 ? kMeanOffsetTolerance_m : kMeanRotationTolerance_rad)
+      EXPECT_NEAR(mean(d), model.statics.offset(d),
+                  d < 3 ? kMeanOffsetTolerance_m : kMeanRotationTolerance_rad)
           << to_string(level) << " dof " << d;
     }
   }
@@ -141,7 +145,8 @@ TEST(ScAnalysis, SlowDriftMeanEqualsStaticMeanDrift) {
   request.load_case = "intact-raft-jonswap";
   const DynamicModel model = build_dynamic_model(p, request);
   ASSERT_TRUE(model.slow_drift);
-  // OC4 has no hull current/wind coefficients: the static environment force is the mean drift alone.
+  // OC4 has no hull current/wind coefficients: the static environment force is the mean drift
+  // alone.
   const double static_drift = model.statics.environment_force(0);
   ASSERT_GT(static_drift, 1e4);
   EXPECT_NEAR(model.mean_slow_drift_force(0), static_drift, kBandTruncation * static_drift);
@@ -149,8 +154,8 @@ TEST(ScAnalysis, SlowDriftMeanEqualsStaticMeanDrift) {
   const int n = 21600;
   for (int k = 0; k < n; ++k) sum += model.slow_drift(0.5 * k)(0);
   EXPECT_NEAR(sum / n, static_drift, kTimeAverage * static_drift);
-  std::cout << "mean drift static " << static_drift << " N, realization " << model.mean_slow_drift_force(0)
-            << " N, 3-h time average " << sum / n << " N\n";
+  std::cout << "mean drift static " << static_drift << " N, realization "
+            << model.mean_slow_drift_force(0) << " N, 3-h time average " << sum / n << " N\n";
 }
 
 TEST(ScAnalysis, HeadingOutsideTheDriftDatabaseIsAnInputError) {
@@ -197,17 +202,18 @@ TEST(ScAnalysis, EnhancedScAddsSymmetricLineDampingAndAddedMass) {
     for (const auto& segment : line.segments) {
       for (const auto& type : p.line_types) {
         if (type.name != segment.type) continue;
-        bound_kg += 1025.0 * type.added_mass_normal * 0.25 * std::numbers::pi * type.hydrodynamic_diameter_m *
-                    type.hydrodynamic_diameter_m * segment.length_m;
+        bound_kg += 1025.0 * type.added_mass_normal * 0.25 * std::numbers::pi *
+                    type.hydrodynamic_diameter_m * type.hydrodynamic_diameter_m * segment.length_m;
       }
     }
   }
   EXPECT_LT((*r.line_added_mass)(0, 0), 2.0 * bound_kg);
   EXPECT_GT((*r.line_added_mass)(0, 0), 0.05 * bound_kg);
   EXPECT_GT((*r.line_damping)(0, 0), 0.0);
-  EXPECT_LT(((*r.line_damping) - r.line_damping->transpose()).norm(), 1e-9 * r.line_damping->norm());
-  std::cout << "line added mass surge " << (*r.line_added_mass)(0, 0) << " kg (bound " << bound_kg << " kg), damping surge "
-            << (*r.line_damping)(0, 0) << " N s/m\n";
+  EXPECT_LT(((*r.line_damping) - r.line_damping->transpose()).norm(),
+            1e-9 * r.line_damping->norm());
+  std::cout << "line added mass surge " << (*r.line_added_mass)(0, 0) << " kg (bound " << bound_kg
+            << " kg), damping surge " << (*r.line_damping)(0, 0) << " N s/m\n";
 }
 
 }  // namespace
@@ -259,13 +265,15 @@ namespace {
 TEST(ScAnalysis, RaosFromExcitationSolveTheMotionEquation) {
   engine::HydroCoefficients radiation;
   radiation.omega_rad_per_s = {0.2, 1.0};
-  radiation.added_mass = {engine::Matrix6d::Identity() * 2.0e6, engine::Matrix6d::Identity() * 4.0e6};
+  radiation.added_mass = {engine::Matrix6d::Identity() * 2.0e6,
+                          engine::Matrix6d::Identity() * 4.0e6};
   radiation.damping = {engine::Matrix6d::Identity() * 1.0e5, engine::Matrix6d::Identity() * 3.0e5};
   engine::ExcitationTable x;
   x.omega_rad_per_s = {0.6};
   x.headings_rad = {0.0};
   for (int d = 0; d < 6; ++d) {
-    x.values[static_cast<std::size_t>(d)] = Eigen::MatrixXcd::Constant(1, 1, std::complex<double>(1.0e6 * (d + 1), -2.0e5));
+    x.values[static_cast<std::size_t>(d)] =
+        Eigen::MatrixXcd::Constant(1, 1, std::complex<double>(1.0e6 * (d + 1), -2.0e5));
     x.dof_present[static_cast<std::size_t>(d)] = true;
   }
   const engine::Matrix6d mass = engine::Matrix6d::Identity() * 1.0e7;
@@ -273,12 +281,13 @@ TEST(ScAnalysis, RaosFromExcitationSolveTheMotionEquation) {
   const engine::Matrix6d stiffness = engine::Matrix6d::Identity() * 3.0e6;
   const auto rao = motion_raos_from_excitation(x, radiation, mass, damping, stiffness);
   const double w = 0.6;
-  const double a = 3.0e6;   // linear between 2e6 at 0.2 and 4e6 at 1.0 rad/s
+  const double a = 3.0e6;  // linear between 2e6 at 0.2 and 4e6 at 1.0 rad/s
   const double b = 2.0e5 + 5.0e4;
   for (int d = 0; d < 6; ++d) {
-    const std::complex<double> expected =
-        x.values[static_cast<std::size_t>(d)](0, 0) / std::complex<double>(-w * w * (1.0e7 + a) + 3.0e6, w * b);
-    EXPECT_NEAR(std::abs(rao.values[static_cast<std::size_t>(d)](0, 0) - expected), 0.0, 1e-12 * std::abs(expected));
+    const std::complex<double> expected = x.values[static_cast<std::size_t>(d)](0, 0) /
+                                          std::complex<double>(-w * w * (1.0e7 + a) + 3.0e6, w * b);
+    EXPECT_NEAR(std::abs(rao.values[static_cast<std::size_t>(d)](0, 0) - expected), 0.0,
+                1e-12 * std::abs(expected));
   }
   EXPECT_EQ(rao.quantity, engine::TransferQuantity::motion_rao);
 }
