@@ -1,5 +1,8 @@
 // Uncoupled and semi-coupled time-domain hull analyses of one load case
-// (sc_analysis.hpp has the method and its sources).
+// (sc_analysis.hpp has the method and its sources). Slightly past ~600
+// lines: the model assembly, its forcing table and the run read best together;
+// the tabulated forcing is the first candidate to move to engine/ when the
+// coupled level needs it too.
 #include "design/sc_analysis.hpp"
 
 #include <fmt/format.h>

@@ -105,6 +105,8 @@ void write_dynamic_time_series_csv(const DynamicAnalysisResult& r,
 nlohmann::json dynamic_analysis_to_json(const DynamicAnalysisResult& r,
                                         const std::string& project_name) {
   nlohmann::json j;
+  j["format"] = "spiral.dynamic_analysis";
+  j["version"] = 1;
   j["project"] = project_name;
   j["load_case"] = r.case_name;
   j["environment"] = r.environment;

@@ -30,6 +30,7 @@ TEST(CliAnalyze, ScRunWritesCsvAndJson) {
   // 1200 s at 0.5 s: 2401 rows + header.
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 2402);
   const auto doc = nlohmann::json::parse(read_text(out / "summary.json"));
+  EXPECT_EQ(doc["format"], "spiral.dynamic_analysis");
   EXPECT_EQ(doc["level"], "sc");
   EXPECT_EQ(doc["seed"], 3);
   EXPECT_EQ(doc["load_case"], "intact-raft-jonswap");
