@@ -106,7 +106,7 @@ nlohmann::json dynamic_analysis_to_json(const DynamicAnalysisResult& r,
                                         const std::string& project_name) {
   nlohmann::json j;
   j["format"] = "spiral.dynamic_analysis";
-  j["version"] = 1;
+  j["format_version"] = 1;
   j["project"] = project_name;
   j["load_case"] = r.case_name;
   j["environment"] = r.environment;
