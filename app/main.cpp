@@ -5,9 +5,12 @@
 #include <cstdlib>
 #include <ctime>
 #include <filesystem>
+#include <fstream>
 #include <numbers>
 #include <string>
 #include <vector>
+
+#include <unistd.h>
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -17,6 +20,8 @@
 #include "design/model_hash.hpp"
 #include "design/mooring_model.hpp"
 #include "design/project_summary.hpp"
+#include "design/sc_analysis.hpp"
+#include "design/sc_analysis_output.hpp"
 #include "design/static_case.hpp"
 #include "design/static_case_output.hpp"
 #include "design/statics_output.hpp"
@@ -25,6 +30,7 @@
 #include "design/static_stage.hpp"
 #include "design/statics_study.hpp"
 #include "design/validated_project.hpp"
+#include "engine/common/file_format_error.hpp"
 #include "engine/common/solver_error.hpp"
 #include "report/report_writer.hpp"
 #include "report/static_stage_report.hpp"
@@ -150,6 +156,67 @@ int run_report(const std::string& project_file, const std::string& stage, const 
   return app::kExitOk;
 }
 
+struct AnalyzeOptions {
+  std::string case_name;
+  std::string level = "sc";
+  double duration_s = 10800.0;
+  double step_s = 0.5;
+  std::uint64_t seed = 1;
+  std::string out;
+};
+
+/// `spiral analyze`: one load case at one level in the time domain; CSV time
+/// series + JSON summary (docs/output-format.md). A progress bar goes to
+/// stderr only when stderr is a terminal.
+int run_analyze(const std::string& project_file, const AnalyzeOptions& o) {
+  const design::ValidatedProject loaded = design::load_validated_project(project_file);
+  design::DynamicAnalysisRequest request;
+  request.load_case = o.case_name;
+  request.level = design::parse_analysis_level(o.level, loaded.project);
+  request.duration_s = o.duration_s;
+  request.output_step_s = o.step_s;
+  request.seed = o.seed;
+  if (isatty(STDERR_FILENO)) {
+    request.progress = [](double fraction) {
+      const int width = 40;
+      const int filled = static_cast<int>(fraction * width);
+      fmt::print(stderr, "\r  dynamics [{}{}] {:3.0f} %", std::string(static_cast<std::size_t>(filled), '#'),
+                 std::string(static_cast<std::size_t>(width - filled), ' '), 100.0 * fraction);
+      if (fraction >= 1.0) fmt::print(stderr, "\n");
+      std::fflush(stderr);
+    };
+  }
+  design::DynamicAnalysisResult result;
+  try {
+    result = design::run_dynamic_analysis(loaded, request);
+  } catch (const engine::FileFormatError& error) {
+    fmt::print(stderr, "{}\n", error.what());
+    return app::kExitBadInput;
+  }
+  const std::filesystem::path folder =
+      o.out.empty() ? std::filesystem::path("out") / std::filesystem::path(project_file).stem() / "analyze" /
+                          fmt::format("{}-{}-seed{}", o.case_name, o.level, o.seed)
+                    : std::filesystem::path(o.out);
+  try {
+    std::filesystem::create_directories(folder);
+    design::write_dynamic_time_series_csv(result, folder / "time_series.csv");
+    std::ofstream json_out(folder / "summary.json");
+    json_out << design::dynamic_analysis_to_json(result, loaded.project.name).dump(2) << "\n";
+    if (!json_out) throw std::runtime_error("cannot write " + (folder / "summary.json").string());
+  } catch (const std::exception& error) {
+    fmt::print(stderr, "output error: {}\n", error.what());
+    return app::kExitOutputError;
+  }
+  fmt::print("{} analysis of '{}', case {} (seed {}, {:.0f} s): {}\n", o.level, loaded.project.name, o.case_name,
+             o.seed, o.duration_s, folder.string());
+  fmt::print("  equilibrium {:.3f} s, reduction {:.3f} s, forcing {:.3f} s, dynamics {:.3f} s, WF {:.3f} s, "
+             "tensions {:.3f} s\n",
+             result.equilibrium_wall_s, result.reduction_wall_s, result.forcing_wall_s, result.dynamics_wall_s,
+             result.wave_frequency_wall_s, result.tensions_wall_s);
+  for (const auto& note : result.notes) fmt::print("  note: {}\n", note);
+  return app::kExitOk;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -227,6 +294,19 @@ int main(int argc, char** argv) {
   soz_cmd->add_flag("--csv", csv, "CSV per direction and riser instead of the table");
   soz_cmd->footer(kExitCodeHelp);
 
+  AnalyzeOptions analyze_options;
+  CLI::App* analyze = cli.add_subcommand(
+      "analyze", "Time-domain hull analysis of a load case (uncoupled | sc | sc-enhanced): CSV + JSON");
+  analyze->add_option("PROJECT", project_file, "Project YAML file")->required();
+  analyze->add_option("--case", analyze_options.case_name, "Load case name")->required();
+  analyze->add_option("--level", analyze_options.level, "uncoupled | sc | sc-enhanced (default: sc)");
+  analyze->add_option("--duration", analyze_options.duration_s, "Simulated time, s (default: 10800)");
+  analyze->add_option("--step", analyze_options.step_s, "Output step, s (default: 0.5)");
+  analyze->add_option("--seed", analyze_options.seed, "Random seed of the wave and wind realizations (default: 1)");
+  analyze->add_option("--out", analyze_options.out,
+                      "Output folder (default: out/<project-stem>/analyze/<case>-<level>-seed<N>)");
+  analyze->footer(kExitCodeHelp);
+
   try {
     cli.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
@@ -246,6 +326,7 @@ int main(int argc, char** argv) {
       return run_soz_command(project_file, soz_options, json ? SozView::json : csv ? SozView::csv : SozView::table);
     }
     if (report_cmd->parsed()) return run_report(project_file, stage_name, out_dir);
+    if (analyze->parsed()) return run_analyze(project_file, analyze_options);
     if (equilibrium->parsed() || stiffness->parsed()) {
       if (!case_name.empty()) case_request.load_case = case_name;
       if (!damaged_line.empty()) case_request.damaged_line = damaged_line;

@@ -14,10 +14,13 @@ engine::CoefficientTable table_of(const HullLoadCoefficients& c) {
   return {c.headings_rad, c.surge_m2, c.sway_m2, c.yaw_m3};
 }
 
+}  // namespace
+
 engine::MeanDriftTable drift_table_of(const Project& project, const MeanDrift& drift) {
   if (const auto* file = std::get_if<MeanDriftFile>(&drift)) {
     return engine::read_wamit_12d_mean_drift(file->file, project.site.water_density_kg_per_m3,
-                                             project.site.gravity_m_per_s2, file->ulen_m);
+                                             project.site.gravity_m_per_s2, file->ulen_m,
+                                             file->period_scale);
   }
   const auto& t = std::get<design::MeanDriftTable>(drift);
   engine::MeanDriftTable table;
@@ -40,8 +43,6 @@ engine::MeanDriftTable drift_table_of(const Project& project, const MeanDrift& d
   }
   return table;
 }
-
-}  // namespace
 
 engine::CurrentProfile current_profile_of(const Current& current) {
   // The project lists the profile from the surface down; the engine wants z increasing.

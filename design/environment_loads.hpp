@@ -12,6 +12,7 @@
 #include "engine/analysis/static_equilibrium.hpp"
 #include "engine/environment/current_profile.hpp"
 #include "engine/environment/wave_spectrum.hpp"
+#include "engine/hull/mean_environmental_loads.hpp"
 
 namespace spiral::design {
 
@@ -27,6 +28,9 @@ engine::CurrentProfile current_profile_of(const Current& current);
 /// The environment's sea spectrum.
 engine::WaveSpectrum wave_spectrum_of(const Waves& waves);
 
+/// The hull's mean drift coefficients (from the .12d file or the table).
+/// Throws engine::FileFormatError for a bad .12d file.
+engine::MeanDriftTable drift_table_of(const Project& project, const MeanDrift& drift);
 /// Throws engine::FileFormatError for a bad .12d file.
 MeanEnvironmentLoad mean_environment_load(const Project& project, const Environment& environment);
 

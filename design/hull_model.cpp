@@ -6,6 +6,17 @@
 
 namespace spiral::design {
 
+engine::WamitReadOptions wamit_options_of(const Project& project, const HullHydrodynamics& h) {
+  engine::WamitReadOptions options;
+  options.frequency_column = h.frequency_column == FrequencyColumnKind::period
+                                 ? engine::FrequencyColumn::period_s
+                                 : engine::FrequencyColumn::angular_frequency;
+  options.ulen_m = h.ulen_m;
+  options.period_scale = h.period_scale;
+  options.water = {project.site.water_density_kg_per_m3, project.site.gravity_m_per_s2};
+  return options;
+}
+
 HullModel build_hull_model(const Project& project) {
   const Hull& hull = project.hull;
   const engine::Seawater water{project.site.water_density_kg_per_m3, project.site.gravity_m_per_s2};
@@ -43,6 +54,14 @@ HullModel build_hull_model(const Project& project) {
     inertia.diagonal() = hull.mass_kg * hull.radii_of_gyration_m->cwiseProduct(*hull.radii_of_gyration_m);
   }
   model.mass_matrix = engine::rigid_body_mass_matrix(hull.mass_kg, hull.center_of_gravity_b, inertia);
+  if (hull.hydrodynamics) {
+    model.radiation = engine::read_wamit_1(hull.hydrodynamics->radiation_file,
+                                           wamit_options_of(project, *hull.hydrodynamics));
+    model.added_mass_frequency_rad_per_s = hull.hydrodynamics->added_mass_frequency_rad_per_s.value_or(
+        model.radiation->omega_rad_per_s.front());
+    model.low_frequency_added_mass =
+        engine::added_mass_at(*model.radiation, model.added_mass_frequency_rad_per_s);
+  }
   return model;
 }
 

@@ -7,6 +7,8 @@
 #include "engine/analysis/rigid_body.hpp"
 #include "engine/analysis/static_equilibrium.hpp"
 #include "engine/hull/hydrostatics.hpp"
+#include "engine/hull/wamit_1.hpp"
+#include <optional>
 
 namespace spiral::design {
 
@@ -14,13 +16,26 @@ struct HullModel {
   engine::HullStaticModel statics;      ///< restoring (buoyancy + gravity) and rest force
   engine::HydrostaticRestoring restoring;
   engine::Matrix6d mass_matrix = engine::Matrix6d::Zero();  ///< rigid body, about the reference point
+  /// A(w), B(w) from hull.hydrodynamics.radiation_file (absent without it).
+  std::optional<engine::HydroCoefficients> radiation;
+  /// A(w_LF) for the low-frequency equations and natural periods (zero without
+  /// radiation data), and the w_LF it was taken at (rad/s).
+  engine::Matrix6d low_frequency_added_mass = engine::Matrix6d::Zero();
+  double added_mass_frequency_rad_per_s = 0.0;
 };
+
+/// The WAMIT read options of the project's hydrodynamics (water, ULEN,
+/// frequency column, period scale).
+engine::WamitReadOptions wamit_options_of(const Project& project, const HullHydrodynamics& h);
 
 /// Builds the hull model. The restoring comes from the WAMIT .hst file when
 /// the project gives one (buoyancy terms, as NREL/OpenFAST files hold them)
 /// plus the gravity terms of the project's mass, else from the waterplane and
 /// volume properties. Throws engine::FileFormatError for a bad .hst file and
-/// std::invalid_argument when the displaced volume is missing.
+/// std::invalid_argument when the displaced volume is missing. With
+/// hull.hydrodynamics the .1 file is read (FileFormatError with file and
+/// line) and A is taken at added_mass_frequency (default: the lowest
+/// frequency in the file, the low-frequency limit the file offers).
 HullModel build_hull_model(const Project& project);
 
 }  // namespace spiral::design

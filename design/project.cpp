@@ -37,6 +37,10 @@ const char* to_string(RiserKind kind) {
   return "?";
 }
 
+const char* to_string(FrequencyColumnKind column) {
+  return column == FrequencyColumnKind::period ? "period" : "angular_frequency";
+}
+
 const char* to_string(WaveSpectrum spectrum) {
   switch (spectrum) {
     case WaveSpectrum::jonswap:

@@ -130,6 +130,26 @@ struct WindCoefficients : HullLoadCoefficients {
 struct MeanDriftFile {
   std::filesystem::path file;  ///< resolved relative to the project file's folder
   double ulen_m = 1.0;         ///< WAMIT ULEN of the file, > 0
+  double period_scale = 1.0;   ///< file periods multiplied by this (Froude-scaled hull: sqrt(lambda)), > 0
+};
+/// What column 1 of a WAMIT-format file holds.
+enum class FrequencyColumnKind { period, angular_frequency };
+/// Frequency-dependent hull hydrodynamics from WAMIT-format files, and the
+/// hull's viscous damping (docs/project-format.md, "Hull hydrodynamics").
+struct HullHydrodynamics {
+  std::filesystem::path radiation_file;  ///< WAMIT .1 (added mass, radiation damping)
+  FrequencyColumnKind frequency_column = FrequencyColumnKind::period;
+  double ulen_m = 1.0;        ///< WAMIT ULEN, > 0
+  double period_scale = 1.0;  ///< periods multiplied by this (frequencies divided), > 0
+  std::optional<std::filesystem::path> excitation_file;  ///< WAMIT .3 (first-order excitation)
+  std::optional<std::filesystem::path> rao_file;         ///< WAMIT .4 (motion RAOs)
+  /// Diagonal viscous damping, surge..yaw: N s/m (translations), N m s/rad (rotations), >= 0.
+  Eigen::Matrix<double, 6, 1> linear_damping = Eigen::Matrix<double, 6, 1>::Zero();
+  /// Quadratic damping per DOF, N s^2/m^2, N m s^2/rad^2, >= 0.
+  Eigen::Matrix<double, 6, 1> quadratic_damping = Eigen::Matrix<double, 6, 1>::Zero();
+  /// Frequency of A(w) used for the low-frequency equations, rad/s, > 0;
+  /// absent: the lowest frequency in the file.
+  std::optional<double> added_mass_frequency_rad_per_s;
 };
 
 /// Mean drift coefficients as a table: force per wave amplitude squared
@@ -189,6 +209,7 @@ struct Hull {
   std::optional<WindCoefficients> wind_coefficients;
   std::optional<HullLoadCoefficients> current_coefficients;
   std::optional<MeanDrift> mean_drift;
+  std::optional<HullHydrodynamics> hydrodynamics;  ///< absent: no added mass, no WF motions
   std::optional<HullGeometry> geometry;
 };
 
@@ -389,6 +410,7 @@ struct Project {
 const char* to_string(AttachmentKind kind);
 const char* to_string(RiserKind kind);
 const char* to_string(WaveSpectrum spectrum);
+const char* to_string(FrequencyColumnKind column);
 const char* to_string(WindSpectrum spectrum);
 const char* to_string(MooringCode code);
 const char* to_string(LineModel model);

@@ -612,6 +612,7 @@ MeanDrift read_mean_drift(MapReader& r, const std::filesystem::path& base_folder
     MeanDriftFile f;
     if (const auto file = r.text("file", kRequired)) f.file = resolve(*file, base_folder);
     assign(f.ulen_m, r.number("ulen", "m", kOptional));
+    assign(f.period_scale, r.number("period_scale", "-", kOptional));
     for (const auto key : kTableKeys) {
       const auto node = r.child(key, kOptional);
       if (!node) continue;
@@ -624,10 +625,12 @@ MeanDrift read_mean_drift(MapReader& r, const std::filesystem::path& base_folder
     return f;
   }
   r.child("file", kOptional);  // known key, for suggestions
-  if (const auto node = r.child("ulen", kOptional)) {
-    r.context().add(node->Mark(), r.path_of("ulen"),
-                    "applies to a WAMIT file (file: path.12d) only, got a table",
-                    "key_not_applicable");
+  for (const char* key : {"ulen", "period_scale"}) {
+    if (const auto node = r.child(key, kOptional)) {
+      r.context().add(node->Mark(), r.path_of(key),
+                      "applies to a WAMIT file (file: path.12d) only, got a table",
+                      "key_not_applicable");
+    }
   }
   MeanDriftTable t;
   assign(t.headings_rad, r.angles("headings", kRequired));
@@ -636,6 +639,23 @@ MeanDrift read_mean_drift(MapReader& r, const std::filesystem::path& base_folder
   assign(t.sway_N_per_m2, r.number_rows("sway", "N/m^2", kRequired));
   assign(t.yaw_N_m_per_m2, r.number_rows("yaw", "N m/m^2", kRequired));
   return t;
+}
+
+HullHydrodynamics read_hull_hydrodynamics(MapReader& r, const std::filesystem::path& base_folder) {
+  static const EnumTable<FrequencyColumnKind> kColumns = {
+      {"period", FrequencyColumnKind::period},
+      {"angular_frequency", FrequencyColumnKind::angular_frequency}};
+  HullHydrodynamics h;
+  if (const auto file = r.text("radiation_file", kRequired)) h.radiation_file = resolve(*file, base_folder);
+  assign(h.frequency_column, r.enumeration("frequency_column", kColumns, kOptional));
+  assign(h.ulen_m, r.number("ulen", "m", kOptional));
+  assign(h.period_scale, r.number("period_scale", "-", kOptional));
+  if (const auto file = r.text("excitation_file", kOptional)) h.excitation_file = resolve(*file, base_folder);
+  if (const auto file = r.text("rao_file", kOptional)) h.rao_file = resolve(*file, base_folder);
+  assign(h.linear_damping, r.vector<6>("linear_damping", "N s/m, N m s/rad", kOptional));
+  assign(h.quadratic_damping, r.vector<6>("quadratic_damping", "N s^2/m^2, N m s^2/rad^2", kOptional));
+  h.added_mass_frequency_rad_per_s = r.number("added_mass_frequency", "rad/s", kOptional);
+  return h;
 }
 
 HullGeometry read_hull_geometry(MapReader& r) {
@@ -703,6 +723,8 @@ Hull read_hull(MapReader& r, const std::filesystem::path& base_folder) {
   });
   r.map("mean_drift", kOptional,
         [&](MapReader& d) { hull.mean_drift = read_mean_drift(d, base_folder); });
+  r.map("hydrodynamics", kOptional,
+        [&](MapReader& d) { hull.hydrodynamics = read_hull_hydrodynamics(d, base_folder); });
   r.map("geometry", kOptional, [&](MapReader& g) { hull.geometry = read_hull_geometry(g); });
   return hull;
 }

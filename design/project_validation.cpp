@@ -494,6 +494,29 @@ void check_mooring(const Project& p, const LineCheckTable& table, Reporter& r) {
   }
 }
 
+void check_file(Reporter& r, const std::string& at, const std::filesystem::path& file) {
+  if (!std::filesystem::is_regular_file(file)) {
+    r.fail(at, "file_exists", fmt::format("file not found: {}", file.string()));
+  }
+}
+
+void check_hull_hydrodynamics(Reporter& r, const HullHydrodynamics& h) {
+  const std::string at = "hull.hydrodynamics";
+  check_file(r, at + ".radiation_file", h.radiation_file);
+  if (h.excitation_file) check_file(r, at + ".excitation_file", *h.excitation_file);
+  if (h.rao_file) check_file(r, at + ".rao_file", *h.rao_file);
+  positive(r, at + ".ulen", h.ulen_m, "m", "hull_value_positive");
+  positive(r, at + ".period_scale", h.period_scale, "", "hull_value_positive");
+  positive(r, at + ".added_mass_frequency", h.added_mass_frequency_rad_per_s, "rad/s",
+           "hull_value_positive");
+  for (int k = 0; k < 6; ++k) {
+    at_least(r, fmt::format("{}.linear_damping[{}]", at, k), h.linear_damping[k], 0.0,
+             k < 3 ? "N s/m" : "N m s/rad", "hull_damping_non_negative");
+    at_least(r, fmt::format("{}.quadratic_damping[{}]", at, k), h.quadratic_damping[k], 0.0,
+             k < 3 ? "N s^2/m^2" : "N m s^2/rad^2", "hull_damping_non_negative");
+  }
+}
+
 void check_hull(const Project& p, Reporter& r) {
   const Hull& h = p.hull;
   positive(r, "hull.mass", h.mass_kg, "kg", "hull_value_positive");
@@ -543,10 +566,12 @@ void check_hull(const Project& p, Reporter& r) {
                fmt::format("file not found: {}", f->file.string()));
       }
       positive(r, "hull.mean_drift.ulen", f->ulen_m, "m", "hull_value_positive");
+      positive(r, "hull.mean_drift.period_scale", f->period_scale, "", "hull_value_positive");
     } else {
       check_mean_drift_table(r, "hull.mean_drift", std::get<MeanDriftTable>(*h.mean_drift));
     }
   }
+  if (h.hydrodynamics) check_hull_hydrodynamics(r, *h.hydrodynamics);
   if (h.geometry) check_hull_geometry(r, *h.geometry);
 }
 

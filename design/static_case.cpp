@@ -170,8 +170,11 @@ StaticCaseResult run_static_case(const ValidatedProject& validated, const Static
     result.risers.push_back(riser_statics_row(project, lines.risers[r], *riser.last_result(), result.design_condition));
   }
 
-  result.natural_modes = natural_modes(hull.statics.hydrostatic_stiffness + result.stiffness, hull.mass_matrix);
-  result.added_mass_included = false;
+  // With a radiation file the modes use M + A(w_LF) (the hull's added mass at
+  // the low frequency of the moored modes); without it, M alone (flagged).
+  result.added_mass_included = hull.radiation.has_value();
+  result.natural_modes = natural_modes(hull.statics.hydrostatic_stiffness + result.stiffness,
+                                       hull.mass_matrix + hull.low_frequency_added_mass);
   return result;
 }
 

@@ -14,6 +14,9 @@ constexpr double kTwoPi = 2.0 * std::numbers::pi;
 // Relative headings closer than this to a table end count as on it (rounding of
 // degrees written with 5-6 significant digits).
 constexpr double kHeadingTolerance_rad = 1e-6;
+/// A relative heading this far beyond the end of a table that does not cover
+/// the circle is evaluated at the end heading (header, heading rule).
+constexpr double kHeadingEndHold_rad = 0.5 * std::numbers::pi / 180.0;
 
 double wrap_0_2pi(double angle) {
   double a = std::fmod(angle, kTwoPi);
@@ -49,8 +52,8 @@ Bracket heading_bracket(const std::vector<double>& h, double beta, const char* t
   if (n > 1 && wrap_gap <= largest_gap + kHeadingTolerance_rad) {
     return {n - 1, 0, (b - last) / wrap_gap};
   }
-  if (b - last <= kHeadingTolerance_rad) return {n - 1, n - 1, 0.0};
-  if (first + kTwoPi - b <= kHeadingTolerance_rad) return {0, 0, 0.0};
+  if (b - last <= kHeadingEndHold_rad) return {n - 1, n - 1, 0.0};
+  if (first + kTwoPi - b <= kHeadingEndHold_rad) return {0, 0, 0.0};
   throw std::invalid_argument(fmt::format(
       "{}: relative heading {:.6g} deg lies outside the tabulated headings {:.6g}..{:.6g} deg "
       "and the table does not cover the circle (no extrapolation in heading)",

@@ -31,9 +31,11 @@
 //    between those two, when that wrap-around gap is no larger than the
 //    largest gap between consecutive headings (true for any table covering
 //    0-360 deg, e.g. 0, 15, ..., 345 deg). Otherwise (a half-circle table, a
-//    single heading) a beta outside [first, last] (after wrapping, within
-//    1e-6 rad) throws std::invalid_argument: no silent extrapolation; mirror
-//    the table for a symmetric hull before calling.
+//    single heading) a beta up to 0.5 deg beyond an end heading takes the end
+//    value (the hull's own equilibrium yaw, typically hundredths of a degree
+//    for a moored semi, must not make a single-heading database unusable),
+//    and a beta further outside [first, last] throws std::invalid_argument:
+//    no extrapolation; mirror the table for a symmetric hull before calling.
 //    Current on the hull: the current velocity at a reference depth
 //    (default z = 0, the surface current; e.g. half the draught for a
 //    deep-draught hull if the coefficients were derived that way - state it

@@ -125,7 +125,7 @@ HydroCoefficients parse_wamit_1(std::istream& text, const std::string& file_name
       } else if (column1 < 0.0) {
         kind = RowKind::zero_frequency;
       } else {
-        omega = 2.0 * std::numbers::pi / column1;
+        omega = 2.0 * std::numbers::pi / (column1 * options.period_scale);
       }
     } else {
       if (column1 == 0.0) {
@@ -137,7 +137,7 @@ HydroCoefficients parse_wamit_1(std::istream& text, const std::string& file_name
                                           "this layout)",
                                           column1));
       } else {
-        omega = column1;
+        omega = column1 / options.period_scale;
       }
     }
     if (kind == RowKind::regular && tokens.size() != 5) {

@@ -49,7 +49,11 @@ std::size_t index_of(const std::vector<double>& sorted, double v, Tol tol) {
 }  // namespace
 
 MeanDriftTable parse_wamit_12d_mean_drift(std::istream& text, const std::string& file_name,
-                                          double rho, double g, double ulen) {
+                                          double rho, double g, double ulen, double period_scale) {
+  if (!(period_scale > 0.0) || !std::isfinite(period_scale)) {
+    throw std::invalid_argument(
+        fmt::format("WAMIT .12d: period_scale must be > 0, got {}", period_scale));
+  }
   if (!(rho > 0.0) || !(g > 0.0) || !(ulen > 0.0) || !std::isfinite(rho * g * ulen)) {
     throw std::invalid_argument(fmt::format(
         "WAMIT .12d: rho, g and ULEN must be > 0, got {} kg/m^3, {} m/s^2, {} m", rho, g, ulen));
@@ -136,7 +140,7 @@ MeanDriftTable parse_wamit_12d_mean_drift(std::istream& text, const std::string&
   MeanDriftTable table;
   // Increasing frequency = decreasing period.
   for (std::size_t k = 0; k < np; ++k) {
-    table.omega_rad_per_s.push_back(2.0 * std::numbers::pi / periods[np - 1 - k]);
+    table.omega_rad_per_s.push_back(2.0 * std::numbers::pi / (periods[np - 1 - k] * period_scale));
   }
   for (double h : headings) table.headings_rad.push_back(h * std::numbers::pi / 180.0);
 
@@ -188,10 +192,10 @@ MeanDriftTable parse_wamit_12d_mean_drift(std::istream& text, const std::string&
 }
 
 MeanDriftTable read_wamit_12d_mean_drift(const std::filesystem::path& path, double rho, double g,
-                                         double ulen) {
+                                         double ulen, double period_scale) {
   std::ifstream in(path);
   if (!in) throw FileFormatError(path.string(), 0, "cannot open WAMIT .12d file");
-  return parse_wamit_12d_mean_drift(in, path.string(), rho, g, ulen);
+  return parse_wamit_12d_mean_drift(in, path.string(), rho, g, ulen, period_scale);
 }
 
 }  // namespace spiral::engine

@@ -19,7 +19,9 @@ constexpr double kSameFrequencyRelTol = 1e-9;
 // Headings are printed in degrees with >= 4 decimals; 1e-6 deg merges repeats only.
 constexpr double kSameHeadingAbsTol_deg = 1e-6;
 // A query heading counts as "on" a single-heading table within this angle.
-constexpr double kSingleHeadingTol_rad = 1e-9;
+/// A heading this far beyond the ends of the table takes the end value (the
+/// hull's own equilibrium yaw; header comment).
+constexpr double kHeadingEndHold_rad = 0.5 * kPi / 180.0;
 
 struct Row {
   double omega = 0.0;
@@ -89,7 +91,7 @@ WaveTransferTable parse_transfer(std::istream& text, const std::string& file_nam
                       "first-order wave load)",
                       column_name, period_column ? "s" : "rad/s", column1));
     }
-    const double omega = period_column ? 2.0 * kPi / column1 : column1;
+    const double omega = (period_column ? 2.0 * kPi / column1 : column1) / options.period_scale;
     rows.push_back({omega, v[1], dof, {v[5], v[6]}, line_number});
   }
   if (text.bad()) throw FileFormatError(file_name, line_number, "read error");
@@ -153,7 +155,9 @@ WaveTransferTable parse_transfer(std::istream& text, const std::string& file_nam
               file_name, 0,
               fmt::format("incomplete table: I = {} missing at {} = {:.6g} {}, BETA = {} deg "
                           "(every DOF present must be given at every frequency and heading)",
-                          d + 1, column_name, period_column ? 2.0 * kPi / omegas[iw] : omegas[iw],
+                          d + 1, column_name,
+                          period_column ? 2.0 * kPi / (omegas[iw] * options.period_scale)
+                                        : omegas[iw] * options.period_scale,
                           period_column ? "s" : "rad/s", headings[ih]));
         }
       }
@@ -232,17 +236,18 @@ Vector6cd transfer_at(const WaveTransferTable& table, double omega_rad_per_s, do
   if (b < h_min) b += 2.0 * kPi;
   if (h.size() == 1) {
     const double gap = std::min(std::abs(b - h_min), std::abs(b - h_min - 2.0 * kPi));
-    if (gap > kSingleHeadingTol_rad) {
+    if (gap > kHeadingEndHold_rad) {
       throw std::invalid_argument(fmt::format(
           "heading {:.6g} deg outside the database range [{:.6g}, {:.6g}] deg (table {})",
           heading_rad / kDeg, h_min / kDeg, h_max / kDeg, table.file));
     }
     b = h_min;
-  } else if (b > h_max) {
+  } else if (b > h_max + kHeadingEndHold_rad && b < h_min + 2.0 * kPi - kHeadingEndHold_rad) {
     throw std::invalid_argument(
         fmt::format("heading {:.6g} deg outside the database range [{:.6g}, {:.6g}] deg (table {})",
                     heading_rad / kDeg, h_min / kDeg, h_max / kDeg, table.file));
   }
+  if (b > h_max) b = (b - h_max <= kHeadingEndHold_rad) ? h_max : h_min;
   Eigen::Index w0, w1, b0, b1;
   double sw, sb;
   bracket(table.omega_rad_per_s, omega_rad_per_s, w0, w1, sw);

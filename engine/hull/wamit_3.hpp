@@ -89,10 +89,12 @@ MotionRaoTable read_wamit_4(const std::filesystem::path& file, const WamitReadOp
 /// X(w, beta): complex linear interpolation in w and in beta (bilinear on the
 /// real and imaginary parts). Frequencies outside the table are held at the
 /// end values. The heading is first wrapped into [beta_min, beta_min + 360 deg);
-/// if it is then above beta_max it is outside the table and std::invalid_argument
-/// says "heading X deg outside the database range [a, b] deg" (no symmetry is
-/// assumed: supply the headings the sea state needs). A single-heading table
-/// accepts that heading only (to 1e-9 rad).
+/// if it is then more than 0.5 deg above beta_max (or below beta_min) it is
+/// outside the table and std::invalid_argument says "heading X deg outside the
+/// database range [a, b] deg" (no symmetry is assumed: supply the headings the
+/// sea state needs). Within 0.5 deg of an end the end value is used: the
+/// hull's own equilibrium yaw (hundredths of a degree for a moored semi) must
+/// not make a single-heading table unusable.
 Vector6cd transfer_at(const WaveTransferTable& table, double omega_rad_per_s, double heading_rad);
 
 }  // namespace spiral::engine

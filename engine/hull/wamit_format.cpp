@@ -13,6 +13,10 @@ void validate_wamit_options(const WamitReadOptions& options, const char* reader)
     throw std::invalid_argument(
         fmt::format("{}: ulen_m must be > 0 m, got {} m", reader, options.ulen_m));
   }
+  if (bad(options.period_scale)) {
+    throw std::invalid_argument(
+        fmt::format("{}: period_scale must be > 0, got {}", reader, options.period_scale));
+  }
   if (bad(options.water.density_kg_per_m3) || bad(options.water.gravity_m_per_s2)) {
     throw std::invalid_argument(
         fmt::format("{}: water density and gravity must be > 0, got {} kg/m^3 and {} m/s^2", reader,

@@ -38,6 +38,11 @@ enum class FrequencyColumn {
 struct WamitReadOptions {
   FrequencyColumn frequency_column = FrequencyColumn::period_s;
   double ulen_m = 1.0;  ///< WAMIT length scale ULEN of the run, > 0
+  /// Periods multiplied by period_scale (frequencies divided by it) before
+  /// use: a Froude-scaled hull of scale lambda reuses the non-dimensional
+  /// coefficients at equal w^2 L / g with ULEN x lambda and periods x sqrt(lambda)
+  /// (shared/data/reference-platforms.md §2.4). > 0; 1 = the file as written.
+  double period_scale = 1.0;
   Seawater water;       ///< rho (and g for excitation) used to dimensionalise
 };
 

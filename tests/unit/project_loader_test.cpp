@@ -532,11 +532,20 @@ TEST(ProjectLoader, ScenariosCarryTheCoupledStaticsData) {
   ASSERT_TRUE(oc4.hull.geometry.has_value());
   EXPECT_EQ(oc4.hull.geometry->columns.size(), 7u);    // main + 3 upper + 3 base (ref §1.3)
   EXPECT_EQ(oc4.hull.geometry->pontoons.size(), 15u);  // members 8-22
-  EXPECT_FALSE(oc4.hull.wind_coefficients || oc4.hull.current_coefficients || oc4.hull.mean_drift);
+  EXPECT_FALSE(oc4.hull.wind_coefficients || oc4.hull.current_coefficients);
+  // WAMIT data of the OC4 model (shared/data/hydro/oc4-semi), ULEN 1, periods as written.
+  ASSERT_TRUE(oc4.hull.mean_drift && oc4.hull.hydrodynamics);
+  EXPECT_DOUBLE_EQ(std::get<MeanDriftFile>(*oc4.hull.mean_drift).period_scale, 1.0);
+  EXPECT_DOUBLE_EQ(oc4.hull.hydrodynamics->ulen_m, 1.0);
 
   const Project fps = load_project(folder + "deepwater-fps.yaml");
   ASSERT_TRUE(fps.hull.geometry && fps.hull.current_coefficients && fps.hull.wind_coefficients);
+  // No mean drift: the .12d has heading 0 only and three cases are at 45 deg.
   EXPECT_FALSE(fps.hull.mean_drift.has_value());
+  // The lambda = 2 proxy reuses the OC4 .1: ULEN 2, periods x sqrt(2).
+  ASSERT_TRUE(fps.hull.hydrodynamics.has_value());
+  EXPECT_DOUBLE_EQ(fps.hull.hydrodynamics->ulen_m, 2.0);
+  EXPECT_NEAR(fps.hull.hydrodynamics->period_scale, std::sqrt(2.0), 1e-8);
   // The lambda = 2 geometry: main column 13 m from -40 to +20 m.
   EXPECT_DOUBLE_EQ(fps.hull.geometry->columns[0].diameter_m, 13.0);
   EXPECT_DOUBLE_EQ(fps.hull.geometry->columns[0].z_bottom_m, -40.0);

@@ -1,0 +1,160 @@
+#include "design/sc_analysis_output.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <fstream>
+#include <numbers>
+#include <stdexcept>
+
+#include "engine/analysis/statistics.hpp"
+
+namespace spiral::design {
+namespace {
+
+constexpr const char* kDofNames[6] = {"surge", "sway", "heave", "roll", "pitch", "yaw"};
+constexpr double kRadToDeg = 180.0 / std::numbers::pi;
+
+/// Output unit of a DOF: m for translations, deg for rotations (SI inside).
+double dof_scale(int dof) {
+  return dof < 3 ? 1.0 : kRadToDeg;
+}
+const char* dof_unit(int dof) {
+  return dof < 3 ? "m" : "deg";
+}
+
+/// Welch segment: the largest power of two <= n/8 (>= 8 segments averaged
+/// with 50 % overlap, ~15 for a full record), at least 16 samples.
+std::size_t welch_segment(std::size_t n) {
+  std::size_t s = 16;
+  while (s * 2 <= n / 8) s *= 2;
+  return std::min(s, n);
+}
+
+nlohmann::json channel_json(const std::string& name, const std::string& unit,
+                            const std::vector<double>& x, double dt_s) {
+  nlohmann::json j;
+  j["name"] = name;
+  j["unit"] = unit;
+  const engine::ChannelMoments m = engine::channel_moments(x);
+  j["mean"] = m.mean;
+  j["std"] = m.std_dev;
+  j["min"] = m.minimum;
+  j["max"] = m.maximum;
+  if (m.std_dev <= 1e-12 * std::max(1.0, std::abs(m.mean))) {
+    j["extremes_unavailable"] = "constant channel";
+    return j;
+  }
+  try {
+    const engine::ChannelStatistics s = engine::analyze_channel(x, dt_s, welch_segment(x.size()));
+    j["spectral_peak_period_s"] = s.spectral_peak_period_s;
+    j["zero_upcrossing_period_s"] = s.zero_upcrossing_period_s;
+    j["mpm_max_3h"] = {{"gumbel", s.maximum.mpm_gumbel},
+                       {"weibull", s.maximum.mpm_weibull},
+                       {"rayleigh", s.maximum.mpm_rayleigh}};
+    j["mpm_min_3h"] = {{"gumbel", s.minimum.mpm_gumbel},
+                       {"weibull", s.minimum.mpm_weibull},
+                       {"rayleigh", s.minimum.mpm_rayleigh}};
+  } catch (const std::exception& e) {
+    j["extremes_unavailable"] = e.what();
+  }
+  return j;
+}
+
+std::vector<double> row_of(const Eigen::Matrix<double, 6, Eigen::Dynamic>& m, int dof) {
+  std::vector<double> out(static_cast<std::size_t>(m.cols()));
+  for (Eigen::Index k = 0; k < m.cols(); ++k)
+    out[static_cast<std::size_t>(k)] = m(dof, k) * dof_scale(dof);
+  return out;
+}
+
+nlohmann::json matrix_json(const engine::Matrix6d& m) {
+  nlohmann::json rows = nlohmann::json::array();
+  for (int i = 0; i < 6; ++i) {
+    nlohmann::json row = nlohmann::json::array();
+    for (int j = 0; j < 6; ++j) row.push_back(m(i, j));
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+}  // namespace
+
+void write_dynamic_time_series_csv(const DynamicAnalysisResult& r,
+                                   const std::filesystem::path& file) {
+  std::ofstream out(file);
+  if (!out) throw std::runtime_error(fmt::format("cannot write {}", file.string()));
+  out << "time_s";
+  for (const char* suffix : {"", "_lf", "_wf"}) {
+    for (int d = 0; d < 6; ++d) out << ',' << kDofNames[d] << suffix << '_' << dof_unit(d);
+  }
+  for (const auto& t : r.tensions) out << ",tension_" << t.line << "_N";
+  out << '\n';
+  for (Eigen::Index k = 0; k < r.times_s.size(); ++k) {
+    out << fmt::format("{:.3f}", r.times_s(k));
+    for (const auto* m : {&r.total, &r.low_frequency, &r.wave_frequency}) {
+      for (int d = 0; d < 6; ++d) out << fmt::format(",{:.6g}", (*m)(d, k) * dof_scale(d));
+    }
+    for (const auto& t : r.tensions)
+      out << fmt::format(",{:.7g}", t.tension_N[static_cast<std::size_t>(k)]);
+    out << '\n';
+  }
+  if (!out) throw std::runtime_error(fmt::format("error while writing {}", file.string()));
+}
+
+nlohmann::json dynamic_analysis_to_json(const DynamicAnalysisResult& r,
+                                        const std::string& project_name) {
+  nlohmann::json j;
+  j["format"] = "spiral.dynamic_analysis";
+  j["format_version"] = 1;
+  j["project"] = project_name;
+  j["load_case"] = r.case_name;
+  j["environment"] = r.environment;
+  j["level"] = to_string(r.level);
+  j["seed"] = r.seed;
+  const double dt = r.times_s.size() > 1 ? r.times_s(1) - r.times_s(0) : 0.0;
+  j["duration_s"] = r.times_s.size() > 0 ? r.times_s(r.times_s.size() - 1) : 0.0;
+  j["output_step_s"] = dt;
+  j["wave_frequency_motions"] = r.wave_frequency_computed;
+  nlohmann::json offset;
+  for (int d = 0; d < 6; ++d)
+    offset[fmt::format("{}_{}", kDofNames[d], dof_unit(d))] = r.static_offset(d) * dof_scale(d);
+  j["static_offset"] = offset;
+  nlohmann::json drift = nlohmann::json::array();
+  for (int d = 0; d < 6; ++d) drift.push_back(r.mean_slow_drift_force(d));
+  j["mean_slow_drift_force_N"] = drift;
+  if (r.line_added_mass) j["line_added_mass"] = matrix_json(*r.line_added_mass);
+  if (r.line_damping) j["line_damping"] = matrix_json(*r.line_damping);
+  nlohmann::json channels = nlohmann::json::array();
+  if (r.times_s.size() >= 2) {
+    for (int d = 0; d < 6; ++d) {
+      channels.push_back(channel_json(fmt::format("{}_{}", kDofNames[d], dof_unit(d)), dof_unit(d),
+                                      row_of(r.total, d), dt));
+    }
+    for (int d = 0; d < 6; ++d) {
+      channels.push_back(channel_json(fmt::format("{}_lf_{}", kDofNames[d], dof_unit(d)),
+                                      dof_unit(d), row_of(r.low_frequency, d), dt));
+    }
+    for (const auto& t : r.tensions)
+      channels.push_back(channel_json("tension_" + t.line + "_N", "N", t.tension_N, dt));
+  }
+  j["channels"] = channels;
+  j["timing_s"] = {{"equilibrium", r.equilibrium_wall_s},
+                   {"reduction", r.reduction_wall_s},
+                   {"forcing", r.forcing_wall_s},
+                   {"dynamics", r.dynamics_wall_s},
+                   {"wave_frequency", r.wave_frequency_wall_s},
+                   {"tensions", r.tensions_wall_s},
+                   {"total", r.equilibrium_wall_s + r.reduction_wall_s + r.forcing_wall_s +
+                                 r.dynamics_wall_s + r.wave_frequency_wall_s + r.tensions_wall_s}};
+  j["solver"] = {{"steps", r.solver.steps},
+                 {"rhs_evaluations", r.solver.rhs_evaluations},
+                 {"jacobian_evaluations", r.solver.jacobian_evaluations},
+                 {"error_test_failures", r.solver.error_test_failures},
+                 {"nonlinear_convergence_failures", r.solver.nonlinear_convergence_failures},
+                 {"last_step_s", r.solver.last_step_s}};
+  j["notes"] = r.notes;
+  return j;
+}
+
+}  // namespace spiral::design

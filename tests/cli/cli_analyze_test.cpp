@@ -1,0 +1,83 @@
+// End-to-end runs of `spiral analyze`: CSV time series and JSON summary.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "app/exit_codes.hpp"
+#include "support/run_command.hpp"
+
+namespace spiral::test {
+namespace {
+
+TEST(CliAnalyze, ScRunWritesCsvAndJson) {
+  const auto out =
+      std::filesystem::temp_directory_path() / ("spiral-analyze-" + std::to_string(::getpid()));
+  std::filesystem::remove_all(out);
+  const auto result =
+      run_spiral("analyze " + scenario("oc4-semisubmersible.yaml") +
+                 " --case intact-raft-jonswap --level sc --duration 1200 --seed 3 --out '" +
+                 out.string() + "'");
+  ASSERT_EQ(result.exit_code, app::kExitOk) << result.err;
+  EXPECT_EQ(result.err.find("dynamics ["), std::string::npos)
+      << "no progress bar when stderr is not a terminal";
+  const std::string csv = read_text(out / "time_series.csv");
+  ASSERT_EQ(csv.rfind("time_s,surge_m,sway_m,heave_m,roll_deg,pitch_deg,yaw_deg,surge_lf_m", 0), 0u)
+      << csv.substr(0, 200);
+  EXPECT_NE(csv.find(",tension_L1_N"), std::string::npos);
+  // 1200 s at 0.5 s: 2401 rows + header.
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 2402);
+  const auto doc = nlohmann::json::parse(read_text(out / "summary.json"));
+  EXPECT_EQ(doc["format"], "spiral.dynamic_analysis");
+  EXPECT_EQ(doc["level"], "sc");
+  EXPECT_EQ(doc["seed"], 3);
+  EXPECT_EQ(doc["load_case"], "intact-raft-jonswap");
+  EXPECT_FALSE(doc["wave_frequency_motions"].get<bool>());
+  bool wf_note = false;
+  for (const auto& n : doc["notes"])
+    wf_note = wf_note || n.get<std::string>().find("no wave-frequency") != std::string::npos;
+  EXPECT_TRUE(wf_note) << "OC4 has no .3/.4: the summary must say so";
+  ASSERT_GE(doc["channels"].size(), 15u);
+  const auto& surge = doc["channels"][0];
+  EXPECT_EQ(surge["name"], "surge_m");
+  EXPECT_GT(surge["std"].get<double>(), 0.0);
+  EXPECT_TRUE(surge.contains("mpm_max_3h")) << surge.dump();
+  for (const char* step : {"equilibrium", "reduction", "dynamics", "tensions"}) {
+    EXPECT_GE(doc["timing_s"][step].get<double>(), 0.0) << step;
+  }
+  EXPECT_GT(doc["solver"]["steps"].get<long>(), 0);
+  std::filesystem::remove_all(out);
+}
+
+TEST(CliAnalyze, UnknownLevelIsBadInput) {
+  const auto result =
+      run_spiral("analyze " + scenario("oc4-semisubmersible.yaml") +
+                 " --case intact-raft-jonswap --level coupled --out /tmp/spiral-never");
+  EXPECT_EQ(result.exit_code, app::kExitBadInput);
+  EXPECT_NE(result.err.find("--level"), std::string::npos) << result.err;
+}
+
+TEST(CliAnalyze, MissingRadiationFileIsBadInputWithFile) {
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("spiral-analyze-bad-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  std::string text =
+      read_text(std::string(SPIRAL_SOURCE_DIR) + "/scenarios/oc4-semisubmersible.yaml");
+  const std::string key = "radiation_file: ../../shared/data/hydro/oc4-semi/marin_semi.1";
+  text.replace(text.find(key), key.size(), "radiation_file: nonexistent.1");
+  const std::string drift = "../../shared/data/hydro/oc4-semi/marin_semi.12d";
+  text.replace(text.find(drift), drift.size(),
+               std::string(SPIRAL_SHARED_DATA_DIR) + "/hydro/oc4-semi/marin_semi.12d");
+  { std::ofstream(dir / "p.yaml") << text; }
+  const auto result =
+      run_spiral("analyze '" + (dir / "p.yaml").string() + "' --case intact-raft-jonswap");
+  EXPECT_EQ(result.exit_code, app::kExitBadInput);
+  EXPECT_NE(result.err.find("hull.hydrodynamics.radiation_file"), std::string::npos) << result.err;
+  EXPECT_NE(result.err.find("nonexistent.1"), std::string::npos) << result.err;
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace spiral::test
