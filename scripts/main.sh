@@ -1,5 +1,9 @@
 #!/usr/bin/env bash
-# The main job: set up, build, then run the default scenario through the design spiral.
+# The main job: set up, build, then run the default scenario through the
+# stages that exist today: validation, mooring statics, the preliminary
+# stage's static analyses with their report, the riser safe operational zones
+# (catenary screening model; `--model fe` is the slower reference) and a
+# semi-coupled 3-hour storm of the first load case.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
@@ -7,3 +11,6 @@ scenario=scenarios/deepwater-fps.yaml
 ./build/app/spiral validate "$scenario"
 ./build/app/spiral statics "$scenario"
 ./build/app/spiral report "$scenario" --out out/deepwater-fps
+./build/app/spiral soz "$scenario" --model catenary --step-deg 15
+./build/app/spiral analyze "$scenario" --case lc1-survival-collinear-0deg --level sc-enhanced \
+  --out out/deepwater-fps/analyze
