@@ -3,6 +3,7 @@
 // lines: the model assembly, its forcing table and the run read best together;
 // the tabulated forcing is the first candidate to move to engine/ when the
 // coupled level needs it too.
+#include "design/command_line_reference.hpp"
 #include "design/sc_analysis.hpp"
 
 #include <fmt/format.h>
@@ -54,28 +55,6 @@ constexpr double kForcedRunAbsTolRotation = 1e-8;
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-InputError argument_error(const Project& project, const std::string& option,
-                          const std::string& message) {
-  InputIssue issue;
-  issue.file = project.source_file;
-  issue.path = option;
-  issue.message = message;
-  issue.condition = "command_line_reference";
-  return InputError({issue});
-}
-
-const LoadCase& find_case(const Project& project, const std::string& name) {
-  const auto it = std::find_if(project.load_cases.begin(), project.load_cases.end(),
-                               [&](const LoadCase& c) { return c.name == name; });
-  if (it == project.load_cases.end()) {
-    std::string names;
-    for (const LoadCase& c : project.load_cases) names += (names.empty() ? "" : ", ") + c.name;
-    throw argument_error(project, "--case",
-                         fmt::format("no load case named \"{}\" (defined: {})", name, names));
-  }
-  return *it;
 }
 
 const Environment& find_environment(const Project& project, const std::string& name) {
@@ -355,7 +334,7 @@ AnalysisLevel parse_analysis_level(const std::string& name, const Project& proje
                               AnalysisLevel::semi_coupled_enhanced}) {
     if (name == to_string(level)) return level;
   }
-  throw argument_error(
+  throw command_line_error(
       project, "--level",
       fmt::format("unknown analysis level \"{}\"; allowed: uncoupled | sc | sc-enhanced "
                   "(coupled is not available yet)",
@@ -367,12 +346,12 @@ DynamicModel build_dynamic_model(const ValidatedProject& validated,
   const Project& project = validated.project;
   if (!(request.duration_s > 0.0) || !(request.output_step_s > 0.0) ||
       request.output_step_s > request.duration_s) {
-    throw argument_error(
+    throw command_line_error(
         project, "--duration",
         fmt::format("need duration > 0 s and 0 < output step <= duration, got {} s and {} s",
                     request.duration_s, request.output_step_s));
   }
-  const LoadCase& load_case = find_case(project, request.load_case);
+  const LoadCase& load_case = find_load_case(project, request.load_case);
   const Environment& environment = find_environment(project, load_case.environment);
 
   DynamicModel model;
@@ -560,7 +539,7 @@ DynamicAnalysisResult run_dynamic_analysis(const ValidatedProject& validated,
                                            const DynamicAnalysisRequest& request) {
   const Project& project = validated.project;
   DynamicModel model = build_dynamic_model(validated, request);
-  const LoadCase& load_case = find_case(project, request.load_case);
+  const LoadCase& load_case = find_load_case(project, request.load_case);
   const Environment& environment = find_environment(project, load_case.environment);
 
   DynamicAnalysisResult result;

@@ -1,3 +1,4 @@
+#include "design/command_line_reference.hpp"
 #include "design/soz.hpp"
 
 #include <fmt/format.h>
@@ -39,16 +40,6 @@ constexpr int kDirectionsPerTask = 6;
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-InputError option_error(const Project& project, const std::string& option,
-                        const std::string& condition, const std::string& message) {
-  InputIssue issue;
-  issue.file = project.source_file;
-  issue.path = option;
-  issue.message = message;
-  issue.condition = condition;
-  return InputError({issue});
 }
 
 /// Re-derives the governing criterion and pass flag after a check was added.
@@ -132,6 +123,17 @@ void RiserOffsetEvaluator::add_touchdown_check(
   regovern(e.row);
 }
 
+RiserOffsetEvaluator::Evaluation RiserOffsetEvaluator::failed(std::string message) const {
+  Evaluation e;
+  e.error = std::move(message);
+  e.row.name = design_.name;
+  e.row.kind = to_string(design_.kind);
+  e.row.governing_criterion = "no_static_solution";
+  e.row.utilization = std::numeric_limits<double>::infinity();
+  e.row.passes = false;
+  return e;
+}
+
 RiserOffsetEvaluator::Evaluation RiserOffsetEvaluator::solve_fe(
     const Eigen::Vector3d& top, const engine::FeStaticsResult* warm) const {
   engine::FeStaticsOptions options;
@@ -148,13 +150,8 @@ RiserOffsetEvaluator::Evaluation RiserOffsetEvaluator::solve_fe(
     if (solution->touchdown) e.touchdown_g = solution->touchdown->position_m;
     e.solution = std::move(solution);
   } catch (const engine::SolverError& error) {
-    e.error = fmt::format("riser '{}' at hang-off ({:.2f}, {:.2f}, {:.2f}) m: {}", design_.name,
-                          top.x(), top.y(), top.z(), error.what());
-    e.row.name = design_.name;
-    e.row.kind = to_string(design_.kind);
-    e.row.governing_criterion = "no_static_solution";
-    e.row.utilization = std::numeric_limits<double>::infinity();
-    e.row.passes = false;
+    e = failed(fmt::format("riser '{}' at hang-off ({:.2f}, {:.2f}, {:.2f}) m: {}", design_.name, top.x(),
+                           top.y(), top.z(), error.what()));
   }
   return e;
 }
@@ -208,14 +205,8 @@ RiserOffsetEvaluator::Evaluation RiserOffsetEvaluator::solve_catenary(
     e.row = riser_statics_row(project_, design_, r, conditions_.condition);
     if (r.touchdown) e.touchdown_g = r.touchdown->position_m;
   } catch (const engine::SolverError& error) {
-    e.error =
-        fmt::format("riser '{}' (catenary screening) at hang-off ({:.2f}, {:.2f}, {:.2f}) m: {}",
-                    design_.name, top.x(), top.y(), top.z(), error.what());
-    e.row.name = design_.name;
-    e.row.kind = to_string(design_.kind);
-    e.row.governing_criterion = "no_static_solution";
-    e.row.utilization = std::numeric_limits<double>::infinity();
-    e.row.passes = false;
+    e = failed(fmt::format("riser '{}' (catenary screening) at hang-off ({:.2f}, {:.2f}, {:.2f}) m: {}",
+                           design_.name, top.x(), top.y(), top.z(), error.what()));
   }
   return e;
 }
@@ -413,33 +404,27 @@ void validate_soz_options(const Project& project, const SozOptions& o) {
   const double count = 360.0 / o.step_deg;
   if (!(o.step_deg > 0.0) || o.step_deg > 360.0 ||
       std::abs(count - std::round(count)) > kStepDivisionTolerance * count) {
-    throw option_error(
-        project, "--step-deg", "soz_step_divides_360",
-        fmt::format("the direction step must divide 360 deg, got {} deg", o.step_deg));
+    throw command_line_error(project, "--step-deg",
+                             fmt::format("the direction step must divide 360 deg, got {} deg", o.step_deg),
+                             "soz_step_divides_360");
   }
   if (!(o.tolerance_m > 0.0)) {
-    throw option_error(project, "--tolerance", "soz_tolerance_positive",
-                       fmt::format("must be > 0, got {} m", o.tolerance_m));
+    throw command_line_error(project, "--tolerance", fmt::format("must be > 0, got {} m", o.tolerance_m),
+                             "soz_tolerance_positive");
   }
   if (!(o.march_step_pct_depth > 0.0) || !(o.search_limit_pct_depth >= o.march_step_pct_depth)) {
-    throw option_error(project, "--search-limit", "soz_search_range",
-                       fmt::format("need 0 < march step ({} %) <= search limit ({} %) of depth",
-                                   o.march_step_pct_depth, o.search_limit_pct_depth));
+    throw command_line_error(project, "--search-limit",
+                             fmt::format("need 0 < march step ({} %) <= search limit ({} %) of depth",
+                                         o.march_step_pct_depth, o.search_limit_pct_depth),
+                             "soz_search_range");
   }
   for (const std::string& name : o.exclude_risers) {
     if (std::none_of(project.risers.begin(), project.risers.end(),
                      [&](const Riser& r) { return r.name == name; })) {
-      throw option_error(project, "--exclude", "command_line_reference",
-                         fmt::format("no riser named \"{}\"", name));
+      throw command_line_error(project, "--exclude", fmt::format("no riser named \"{}\"", name));
     }
   }
-  if (o.load_case && std::none_of(project.load_cases.begin(), project.load_cases.end(),
-                                  [&](const LoadCase& c) { return c.name == *o.load_case; })) {
-    std::string names;
-    for (const LoadCase& c : project.load_cases) names += (names.empty() ? "" : ", ") + c.name;
-    throw option_error(project, "--case", "command_line_reference",
-                       fmt::format("no load case named \"{}\" (defined: {})", *o.load_case, names));
-  }
+  if (o.load_case) find_load_case(project, *o.load_case);
 }
 
 SozResult compute_soz(const Project& project, const std::vector<RiserDesign>& risers,

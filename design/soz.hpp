@@ -213,6 +213,8 @@ class RiserOffsetEvaluator {
 
  private:
   Eigen::Vector3d hang_off_g(const Eigen::Vector2d& offset_xy_m) const;
+  /// The evaluation of a solve that failed with `message` (fails "no_static_solution").
+  Evaluation failed(std::string message) const;
   Evaluation solve_fe(const Eigen::Vector3d& hang_off_g, const engine::FeStaticsResult* warm) const;
   Evaluation solve_catenary(const Eigen::Vector3d& hang_off_g) const;
   void add_touchdown_check(Evaluation& e, const std::optional<Eigen::Vector3d>& touchdown_g) const;

@@ -1,3 +1,4 @@
+#include "design/command_line_reference.hpp"
 #include "design/static_case.hpp"
 
 #include <algorithm>
@@ -23,15 +24,6 @@ constexpr const char* kDofNames[6] = {"surge", "sway", "heave", "roll", "pitch",
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-InputError argument_error(const Project& project, const std::string& option, const std::string& message) {
-  InputIssue issue;
-  issue.file = project.source_file;
-  issue.path = option;
-  issue.message = message;
-  issue.condition = "command_line_reference";
-  return InputError({issue});
 }
 
 OffsetSummary summarize_offset(const engine::Vector6d& offset, double depth_m) {
@@ -80,14 +72,7 @@ StaticCaseResult run_static_case(const ValidatedProject& validated, const Static
   result.environment = "none";
   std::optional<std::string> damaged = request.damaged_line;
   if (request.load_case) {
-    const auto it = std::find_if(project.load_cases.begin(), project.load_cases.end(),
-                                 [&](const LoadCase& c) { return c.name == *request.load_case; });
-    if (it == project.load_cases.end()) {
-      std::string names;
-      for (const LoadCase& c : project.load_cases) names += (names.empty() ? "" : ", ") + c.name;
-      throw argument_error(project, "--case",
-                           fmt::format("no load case named \"{}\" (defined: {})", *request.load_case, names));
-    }
+    const LoadCase* it = &find_load_case(project, *request.load_case);
     result.case_name = it->name;
     result.environment = it->environment;
     if (!damaged) damaged = it->damaged_line;
@@ -96,7 +81,7 @@ StaticCaseResult run_static_case(const ValidatedProject& validated, const Static
                               [&](const MooringLine& l) { return l.name == *damaged; })) {
     std::string names;
     for (const MooringLine& l : project.mooring.lines) names += (names.empty() ? "" : ", ") + l.name;
-    throw argument_error(project, "--damaged",
+    throw command_line_error(project, "--damaged",
                          fmt::format("no mooring line named \"{}\" (defined: {})", *damaged, names));
   }
   result.damaged_line = damaged;
