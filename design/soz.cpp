@@ -138,10 +138,7 @@ RiserOffsetEvaluator::Evaluation RiserOffsetEvaluator::solve_fe(
     const Eigen::Vector3d& top, const engine::FeStaticsResult* warm) const {
   engine::FeStaticsOptions options;
   options.compute_end_B_stiffness = false;  // the zone needs forces and stresses only
-  if (warm) {
-    options.warm_start_state = warm->state;
-    options.warm_start_node_arc_length_m = warm->node_arc_length_m;
-  }
+  if (warm) engine::warm_start_from(options, *warm);
   Evaluation e;
   try {
     auto solution = std::make_shared<engine::FeStaticsResult>(engine::solve_fe_line_statics(

@@ -40,11 +40,7 @@ FeStaticLine::FeStaticLine(std::string name, Eigen::Vector3d end_A_g, Eigen::Vec
 LineEndResponse FeStaticLine::solve(const Eigen::Vector3d& attachment_g) {
   FeStaticsOptions options = options_;
   options.compute_end_B_stiffness = true;
-  if (last_) {
-    options.warm_start_state = last_->state;
-    options.warm_start_node_arc_length_m = last_->node_arc_length_m;
-    options.warm_start_tangent = last_->tangent;
-  }
+  if (last_) warm_start_from(options, *last_);
   try {
     last_ = solve_fe_line_statics(model_, environment_, {end_A_g_, attachment_g}, options);
   } catch (const SolverError& error) {

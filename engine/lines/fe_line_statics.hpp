@@ -224,6 +224,14 @@ struct FeStaticsResult {
 /// Throws SolverError on invalid model data.
 std::vector<double> fe_line_mesh(const FeLineModel& model);
 
+/// Seeds `options` with everything a previous solution of the same model
+/// offers a warm start: its state, node arc lengths and factorised tangent.
+inline void warm_start_from(FeStaticsOptions& options, const FeStaticsResult& previous) {
+  options.warm_start_state = previous.state;
+  options.warm_start_node_arc_length_m = previous.node_arc_length_m;
+  options.warm_start_tangent = previous.tangent;
+}
+
 /// Static equilibrium. Throws SolverError on invalid input (message names the
 /// field and value) and on non-convergence (iterations, residual in N, hint).
 FeStaticsResult solve_fe_line_statics(const FeLineModel& model, const FeEnvironment& environment,
