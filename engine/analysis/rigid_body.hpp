@@ -4,6 +4,8 @@
 // pitch (about y), yaw (about z) composed as R = Rz(yaw)·Ry(pitch)·Rx(roll),
 // mapping body-frame vectors to the global frame — valid for large yaw.
 
+#include <cmath>
+
 #include <Eigen/Core>
 
 #include "engine/common/eigen_types.hpp"
@@ -31,6 +33,20 @@ inline Eigen::Vector3d body_point_to_global(const Eigen::Vector3d& reference_poi
 }  // namespace spiral::engine
 
 namespace spiral::engine {
+
+/// A 6-DOF load in hull axes turned to global axes by the hull's yaw ψ
+/// (rad): the horizontal force (Fx, Fy) and the heel moments (Mx, My)
+/// rotate about z, Fz and Mz do not. Roll and pitch are taken as small.
+inline Vector6d yaw_body_to_global(const Vector6d& load_b, double yaw_rad) {
+  const double c = std::cos(yaw_rad);
+  const double s = std::sin(yaw_rad);
+  Vector6d g = load_b;
+  g(0) = c * load_b(0) - s * load_b(1);
+  g(1) = s * load_b(0) + c * load_b(1);
+  g(3) = c * load_b(3) - s * load_b(4);
+  g(4) = s * load_b(3) + c * load_b(4);
+  return g;
+}
 
 /// The 6×6 rigid-body mass matrix about the reference point (body axes =
 /// global axes at rest) of a body of mass m with its centre of gravity at

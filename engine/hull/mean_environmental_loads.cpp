@@ -76,18 +76,6 @@ double lerp(const std::vector<double>& v, const Bracket& b) {
   return (1.0 - b.t) * v[b.j0] + b.t * v[b.j1];
 }
 
-// Body -> global for a yaw psi: (Fx, Fy) and (Mx, My) rotate, Fz and Mz do not.
-Vector6d body_to_global(const Vector6d& load_b, double psi) {
-  const double c = std::cos(psi);
-  const double s = std::sin(psi);
-  Vector6d g = load_b;
-  g(0) = c * load_b(0) - s * load_b(1);
-  g(1) = s * load_b(0) + c * load_b(1);
-  g(3) = c * load_b(3) - s * load_b(4);
-  g(4) = s * load_b(3) + c * load_b(4);
-  return g;
-}
-
 void require_finite(double value, const char* what, const char* unit) {
   if (!std::isfinite(value)) {
     throw std::invalid_argument(fmt::format("{} must be finite ({}), got {}", what, unit, value));
@@ -149,7 +137,7 @@ CoefficientLoadResult coefficient_load(const CoefficientTable& table,
   r.load_b(0) = q * r.coefficients(0);
   r.load_b(1) = q * r.coefficients(1);
   r.load_b(5) = q * r.coefficients(2);
-  r.load_g = body_to_global(r.load_b, in.hull_yaw_rad);
+  r.load_g = yaw_body_to_global(r.load_b, in.hull_yaw_rad);
   return r;
 }
 
@@ -309,7 +297,7 @@ MeanDriftResult mean_wave_drift_load(const MeanDriftTable& table, const MeanDrif
     integral += q.tail_m0_m2 * interpolate_drift(table, fw.back(), fb);
     r.load_b += 2.0 * dir.weight * integral;
   }
-  r.load_g = body_to_global(r.load_b, in.hull_yaw_rad);
+  r.load_g = yaw_body_to_global(r.load_b, in.hull_yaw_rad);
   return r;
 }
 

@@ -1,5 +1,7 @@
 #include "engine/hull/slow_drift.hpp"
 
+#include "engine/analysis/rigid_body.hpp"
+
 #include <cmath>
 #include <numbers>
 
@@ -48,15 +50,8 @@ Vector6d slow_drift_force(const SlowDriftSeries& s, double t_s) {
   }
   // Re{Z_s conj(Z)}.
   const Vector6d body = zs_re.cwiseProduct(z_re) + zs_im.cwiseProduct(z_im);
-  // Body -> global by the mean yaw: (Fx, Fy) and (Mx, My) rotate, Fz and Mz do not.
-  const double cy = std::cos(s.yaw_rad);
-  const double sy = std::sin(s.yaw_rad);
-  Vector6d global = body;
-  global(0) = cy * body(0) - sy * body(1);
-  global(1) = sy * body(0) + cy * body(1);
-  global(3) = cy * body(3) - sy * body(4);
-  global(4) = sy * body(3) + cy * body(4);
-  return global;
+  // Body -> global by the mean yaw.
+  return yaw_body_to_global(body, s.yaw_rad);
 }
 
 }  // namespace spiral::engine
