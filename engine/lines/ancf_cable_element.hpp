@@ -125,27 +125,27 @@ inline ShapeAt shape_at(double xi, double L) {
 /// Element tangent, 12×12 row-major: K[12 i + j] = ∂g_i/∂q_j.
 using ElementTangent = std::array<double, 144>;
 
-template <typename T>
-void add_seabed_contact(const ElementProperties& e, const LoadContext& ctx, const V3<T>* node,
-                        V3<T>* force, ElementTangent* K = nullptr) {
+/// The pieces [ξ_a, ξ_b] of the element below the seabed (at most 4; the
+/// penetration of a cubic changes sign at most 3 times), found on 16 samples
+/// refined by bisection. node_z: the z components of [r_a, r'_a, r_b, r'_b].
+/// Returns the number of pieces.
+inline int seabed_contact_pieces(const ElementProperties& e, double seabed_z_m, const std::array<double, 4>& node_z,
+                                 std::array<std::array<double, 2>, 4>& pieces) {
   const double L = e.length_m;
-  const double zs = ctx.seabed_z_m;
   auto z_at = [&](double xi) {
     const ShapeAt sh = shape_at(xi, L);
     double z = 0.0;
-    for (int k = 0; k < 4; ++k) z += sh.S[k] * value_of(node[k].z);
-    return z;
+    for (int k = 0; k < 4; ++k) z += sh.S[k] * node_z[static_cast<std::size_t>(k)];
+    return z - seabed_z_m;
   };
-  // Penetration changes sign at most 3 times on a cubic; sample finely enough
-  // to separate them, then bisect.
   constexpr int kSamples = 16;
   std::array<double, kSamples + 1> zv;
   bool any = false;
   for (int j = 0; j <= kSamples; ++j) {
-    zv[j] = z_at(static_cast<double>(j) / kSamples) - zs;
+    zv[j] = z_at(static_cast<double>(j) / kSamples);
     any = any || zv[j] < 0.0;
   }
-  if (!any) return;
+  if (!any) return 0;
   std::array<double, 8> cuts{};
   int nc = 0;
   cuts[nc++] = 0.0;
@@ -155,32 +155,50 @@ void add_seabed_contact(const ElementProperties& e, const LoadContext& ctx, cons
       const bool lo_in = zv[j] < 0.0;
       for (int it = 0; it < 60; ++it) {
         const double mid = 0.5 * (lo + hi);
-        ((z_at(mid) - zs < 0.0) == lo_in ? lo : hi) = mid;
+        ((z_at(mid) < 0.0) == lo_in ? lo : hi) = mid;
       }
       if (nc < 7) cuts[nc++] = 0.5 * (lo + hi);
     }
   }
   cuts[nc++] = 1.0;
-  static constexpr std::array<double, 4> gx = {0.0694318442029737, 0.3300094782075719,
-                                               0.6699905217924281, 0.9305681557970263};
-  static constexpr std::array<double, 4> gw = {0.1739274225687269, 0.3260725774312731,
-                                               0.3260725774312731, 0.1739274225687269};
-  for (int c = 0; c + 1 < nc; ++c) {
+  int n = 0;
+  for (int c = 0; c + 1 < nc && n < 4; ++c) {
     const double a = cuts[c], b = cuts[c + 1];
-    if (b - a <= 0.0 || z_at(0.5 * (a + b)) - zs >= 0.0) continue;
+    if (b - a <= 0.0 || z_at(0.5 * (a + b)) >= 0.0) continue;
+    pieces[static_cast<std::size_t>(n++)] = {a, b};
+  }
+  return n;
+}
+
+/// 4-point Gauss–Legendre rule on [0, 1] for the contact pieces.
+inline constexpr std::array<double, 4> kContactGaussXi = {0.0694318442029737, 0.3300094782075719,
+                                                          0.6699905217924281, 0.9305681557970263};
+inline constexpr std::array<double, 4> kContactGaussW = {0.1739274225687269, 0.3260725774312731,
+                                                         0.3260725774312731, 0.1739274225687269};
+
+template <typename T>
+void add_seabed_contact(const ElementProperties& e, const LoadContext& ctx, const V3<T>* node,
+                        V3<T>* force, ElementTangent* K = nullptr) {
+  const double L = e.length_m;
+  const double zs = ctx.seabed_z_m;
+  std::array<std::array<double, 2>, 4> pieces;
+  const int n_pieces = seabed_contact_pieces(
+      e, zs, {value_of(node[0].z), value_of(node[1].z), value_of(node[2].z), value_of(node[3].z)}, pieces);
+  for (int c = 0; c < n_pieces; ++c) {
+    const double a = pieces[static_cast<std::size_t>(c)][0], b = pieces[static_cast<std::size_t>(c)][1];
     for (int gp = 0; gp < 4; ++gp) {
-      const double xi = a + (b - a) * gx[gp];
+      const double xi = a + (b - a) * kContactGaussXi[gp];
       const ShapeAt sh = shape_at(xi, L);
       T z = T(0.0);
       for (int k = 0; k < 4; ++k) z = z + sh.S[k] * node[k].z;
       const T pen = zs - z;
       if (value_of(pen) <= 0.0) continue;
-      const double c = ctx.seabed_stiffness_N_per_m2 * gw[gp] * (b - a) * L;
-      const T fz = c * pen;
+      const double c_w = ctx.seabed_stiffness_N_per_m2 * kContactGaussW[gp] * (b - a) * L;
+      const T fz = c_w * pen;
       for (int k = 0; k < 4; ++k) force[k].z = force[k].z + sh.S[k] * fz;
       if (K != nullptr) {
         for (int k = 0; k < 4; ++k) {
-          for (int j = 0; j < 4; ++j) (*K)[12 * (3 * k + 2) + 3 * j + 2] -= c * sh.S[k] * sh.S[j];
+          for (int j = 0; j < 4; ++j) (*K)[12 * (3 * k + 2) + 3 * j + 2] -= c_w * sh.S[k] * sh.S[j];
         }
       }
     }

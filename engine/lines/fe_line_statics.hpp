@@ -107,6 +107,12 @@ struct FeLineSection {
   double drag_normal = 0.0;            ///< Cdn on hydro_diameter_m, >= 0
   double drag_tangential = 0.0;        ///< Cdt on π·hydro_diameter_m, >= 0
   double element_length_m = 0.0;       ///< target element length, > 0 (elements are equal within a section)
+  // Dynamics only (fe_line_dynamics.hpp); statics ignores them.
+  double displaced_area_m2 = 0.0;      ///< volume per length (Froude–Krylov, added mass), >= 0
+  double added_mass_normal = 0.0;      ///< C_an on displaced_area_m2, >= 0
+  double added_mass_tangential = 0.0;  ///< C_at on displaced_area_m2, >= 0
+  double axial_damping_Ns = 0.0;       ///< c in N_d = c dε/dt (strain-rate damping), >= 0
+  double EA_dynamic_N = 0.0;           ///< axial stiffness for the fluctuations about the mean (polyester); 0: EA_N
 };
 
 /// A stretch of finer mesh, e.g. around the expected touchdown point.

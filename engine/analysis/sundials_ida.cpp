@@ -1,0 +1,323 @@
+#include "engine/analysis/sundials_ida.hpp"
+
+#include <ida/ida.h>
+#include <ida/ida_ls.h>
+#include <fmt/format.h>
+#include <nvector/nvector_serial.h>
+#include <sundials/sundials_context.h>
+#include <sundials/sundials_linearsolver.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <exception>
+#include <stdexcept>
+#include <utility>
+
+namespace spiral::engine {
+namespace {
+
+// IDAResFn return codes: 0 success, > 0 recoverable, < 0 fatal.
+constexpr int kResidualSuccess = 0;
+constexpr int kResidualRecoverable = 1;
+constexpr int kResidualFatal = -1;
+// IDA's default c_j change that triggers a Newton-matrix refresh (IDASetDeltaCjLSetup).
+constexpr double kCjChangeForSetup = 0.25;
+
+std::string flag_name(int flag) {
+  char* name = IDAGetReturnFlagName(flag);  // malloc'ed by IDA
+  std::string s = name != nullptr ? name : fmt::format("flag {}", flag);
+  std::free(name);
+  return s;
+}
+
+std::string hint_for(int flag) {
+  switch (flag) {
+    case IDA_TOO_MUCH_WORK:
+      return "raise max_steps_between_outputs, shorten the output interval, or check the model for an "
+             "unbounded (unstable) response";
+    case IDA_TOO_MUCH_ACC:
+      return "the tolerances are below what double precision can deliver: relax them";
+    case IDA_ERR_FAIL:
+      return "the step size collapsed on the error test: look for a discontinuity or a non-smooth force "
+             "(contact, snap loads), or loosen the tolerances";
+    case IDA_CONV_FAIL:
+    case IDA_LSOLVE_FAIL:
+      return "the Newton iteration failed repeatedly at ever smaller steps: the state may be unphysical "
+             "(a line in compression, a node far below the seabed) or the Newton matrix singular";
+    case IDA_RES_FAIL:
+    case IDA_REP_RES_ERR:
+    case IDA_FIRST_RES_FAIL:
+      return "the residual failed (see its message): check the state it was given";
+    default:
+      return "check the model inputs and the integrator options";
+  }
+}
+
+}  // namespace
+
+struct IdaIntegrator::Impl {
+  ImplicitSystem* system = nullptr;
+  IdaOptions options;
+  SUNContext context = nullptr;
+  N_Vector y = nullptr, yp = nullptr, atol = nullptr, id = nullptr;
+  SUNLinearSolver linear_solver = nullptr;
+  void* ida = nullptr;
+
+  Eigen::VectorXd y_work, yp_work, r_work, b_work;
+  Eigen::VectorXd y_out, yp_out;
+  double t_out = 0.0;
+
+  // Newton-matrix refresh bookkeeping.
+  bool factored = false;
+  double cj_at_setup = 0.0;
+  long steps_at_setup = 0;
+  long convergence_failures_at_setup = 0;
+  long setups = 0;
+  long solves = 0;
+
+  std::exception_ptr fatal_exception;
+  std::string last_residual_message;
+  std::string last_ida_message;
+  long recoverable_failures = 0;
+
+  ~Impl() {
+    if (ida != nullptr) IDAFree(&ida);
+    if (linear_solver != nullptr) {
+      linear_solver->content = nullptr;
+      SUNLinSolFreeEmpty(linear_solver);
+    }
+    for (N_Vector* v : {&y, &yp, &atol, &id}) {
+      if (*v != nullptr) N_VDestroy(*v);
+    }
+    if (context != nullptr) SUNContext_Free(&context);
+  }
+
+  static Eigen::Map<Eigen::VectorXd> map(N_Vector v) {
+    return {N_VGetArrayPointer_Serial(v), static_cast<Eigen::Index>(N_VGetLength_Serial(v))};
+  }
+
+  static int residual_callback(realtype t, N_Vector y, N_Vector yp, N_Vector r, void* user_data) {
+    auto* self = static_cast<Impl*>(user_data);
+    self->y_work = map(y);
+    self->yp_work = map(yp);
+    try {
+      self->system->residual(t, self->y_work, self->yp_work, self->r_work);
+      if (self->r_work.size() != self->y_work.size()) {
+        throw std::logic_error(fmt::format("DAE residual wrote {} entries for {} states", self->r_work.size(),
+                                           self->y_work.size()));
+      }
+      if (!self->r_work.allFinite()) {
+        self->last_residual_message = fmt::format("non-finite residual at t = {} s", t);
+        ++self->recoverable_failures;
+        return kResidualRecoverable;
+      }
+    } catch (const SolverError& e) {
+      self->last_residual_message = e.what();
+      ++self->recoverable_failures;
+      return kResidualRecoverable;
+    } catch (...) {
+      self->fatal_exception = std::current_exception();
+      return kResidualFatal;
+    }
+    map(r) = self->r_work;
+    return kResidualSuccess;
+  }
+
+  static SUNLinearSolver_Type solver_type(SUNLinearSolver) { return SUNLINEARSOLVER_MATRIX_EMBEDDED; }
+
+  static int solve_callback(SUNLinearSolver ls, SUNMatrix, N_Vector x, N_Vector b, realtype) {
+    auto* self = static_cast<Impl*>(ls->content);
+    realtype t = 0.0, cj = 0.0;
+    N_Vector yy_pred, yp_pred, yy, yp, res;
+    void* user_data = nullptr;
+    if (IDAGetNonlinearSystemData(self->ida, &t, &yy_pred, &yp_pred, &yy, &yp, &res, &cj, &user_data) != 0) {
+      return SUNLS_PACKAGE_FAIL_UNREC;
+    }
+    try {
+      long steps = 0, failures = 0;
+      IDAGetNumSteps(self->ida, &steps);
+      IDAGetNumNonlinSolvConvFails(self->ida, &failures);
+      const bool stale = !self->factored || std::abs(cj / self->cj_at_setup - 1.0) > kCjChangeForSetup ||
+                         failures > self->convergence_failures_at_setup ||
+                         steps - self->steps_at_setup >= self->options.max_steps_between_setups;
+      if (stale) {
+        self->y_work = map(yy);
+        self->yp_work = map(yp);
+        ++self->setups;
+        self->factored = self->system->setup_newton_matrix(t, self->y_work, self->yp_work, cj);
+        self->cj_at_setup = cj;
+        self->steps_at_setup = steps;
+        self->convergence_failures_at_setup = failures;
+        if (!self->factored) return SUNLS_PACKAGE_FAIL_REC;
+      }
+      self->b_work = map(b);
+      self->system->solve_newton_system(cj, self->b_work);
+      ++self->solves;
+      if (!self->b_work.allFinite()) {
+        self->factored = false;
+        return SUNLS_PACKAGE_FAIL_REC;
+      }
+      map(x) = self->b_work;
+    } catch (const SolverError& e) {
+      self->last_residual_message = e.what();
+      self->factored = false;
+      return SUNLS_PACKAGE_FAIL_REC;
+    } catch (...) {
+      self->fatal_exception = std::current_exception();
+      return SUNLS_PACKAGE_FAIL_UNREC;
+    }
+    return SUNLS_SUCCESS;
+  }
+
+  static void error_handler(int, const char* module, const char* function, char* msg, void* user_data) {
+    static_cast<Impl*>(user_data)->last_ida_message = fmt::format("{}/{}: {}", module, function, msg);
+  }
+
+  void check(int flag, const char* call) const {
+    if (flag < 0) {
+      throw SolverError(fmt::format("IDA setup: {} returned {} ({})", call, flag_name(flag), last_ida_message));
+    }
+  }
+};
+
+IdaIntegrator::IdaIntegrator(ImplicitSystem& system, double t0_s, const Eigen::VectorXd& y0,
+                             const Eigen::VectorXd& yp0, const IdaOptions& options)
+    : impl_(std::make_unique<Impl>()) {
+  const Eigen::Index n = y0.size();
+  if (n == 0 || yp0.size() != n) {
+    throw std::invalid_argument(fmt::format("IDA: y0 and yp0 must be non-empty and of one size, got {} and {}",
+                                            n, yp0.size()));
+  }
+  if (!y0.allFinite() || !yp0.allFinite() || !std::isfinite(t0_s)) {
+    throw std::invalid_argument("IDA: the initial time, state and derivative must be finite");
+  }
+  if (!(options.relative_tolerance > 0.0) || !(options.absolute_tolerance > 0.0)) {
+    throw std::invalid_argument(fmt::format("IDA: relative_tolerance and absolute_tolerance must be > 0, got {} and {}",
+                                            options.relative_tolerance, options.absolute_tolerance));
+  }
+  if (options.absolute_tolerances &&
+      (options.absolute_tolerances->size() != n || !(options.absolute_tolerances->array() > 0.0).all())) {
+    throw std::invalid_argument(fmt::format("IDA: absolute_tolerances must have {} entries, all > 0", n));
+  }
+  if (options.differential_id && options.differential_id->size() != n) {
+    throw std::invalid_argument(fmt::format("IDA: differential_id must have {} entries", n));
+  }
+  if (options.max_order < 1 || options.max_order > 5) {
+    throw std::invalid_argument(fmt::format("IDA: max_order must be 1..5, got {}", options.max_order));
+  }
+  if ((options.max_step_s && !(*options.max_step_s > 0.0)) ||
+      (options.initial_step_s && !(*options.initial_step_s > 0.0))) {
+    throw std::invalid_argument("IDA: max_step_s and initial_step_s must be > 0 s");
+  }
+  if (options.max_steps_between_outputs <= 0 || options.max_steps_between_setups <= 0) {
+    throw std::invalid_argument("IDA: max_steps_between_outputs and max_steps_between_setups must be > 0");
+  }
+
+  Impl& m = *impl_;
+  m.system = &system;
+  m.options = options;
+  m.y_out = y0;
+  m.yp_out = yp0;
+  m.t_out = t0_s;
+  m.r_work.resize(n);
+
+  if (SUNContext_Create(nullptr, &m.context) != 0) throw SolverError("IDA setup: SUNContext_Create failed");
+  const auto len = static_cast<sunindextype>(n);
+  for (N_Vector* v : {&m.y, &m.yp}) {
+    *v = N_VNew_Serial(len, m.context);
+    if (*v == nullptr) throw SolverError("IDA setup: N_VNew_Serial failed");
+  }
+  Impl::map(m.y) = y0;
+  Impl::map(m.yp) = yp0;
+
+  m.ida = IDACreate(m.context);
+  if (m.ida == nullptr) throw SolverError("IDA setup: IDACreate failed");
+  m.check(IDASetErrHandlerFn(m.ida, &Impl::error_handler, &m), "IDASetErrHandlerFn");
+  m.check(IDAInit(m.ida, &Impl::residual_callback, t0_s, m.y, m.yp), "IDAInit");
+  m.check(IDASetUserData(m.ida, &m), "IDASetUserData");
+  if (options.absolute_tolerances) {
+    m.atol = N_VNew_Serial(len, m.context);
+    if (m.atol == nullptr) throw SolverError("IDA setup: N_VNew_Serial failed");
+    Impl::map(m.atol) = *options.absolute_tolerances;
+    m.check(IDASVtolerances(m.ida, options.relative_tolerance, m.atol), "IDASVtolerances");
+  } else {
+    m.check(IDASStolerances(m.ida, options.relative_tolerance, options.absolute_tolerance), "IDASStolerances");
+  }
+  if (options.differential_id) {
+    m.id = N_VNew_Serial(len, m.context);
+    if (m.id == nullptr) throw SolverError("IDA setup: N_VNew_Serial failed");
+    Impl::map(m.id) = *options.differential_id;
+    m.check(IDASetId(m.ida, m.id), "IDASetId");
+    m.check(IDASetSuppressAlg(m.ida, SUNTRUE), "IDASetSuppressAlg");
+  }
+  m.linear_solver = SUNLinSolNewEmpty(m.context);
+  if (m.linear_solver == nullptr) throw SolverError("IDA setup: SUNLinSolNewEmpty failed");
+  m.linear_solver->content = &m;
+  m.linear_solver->ops->gettype = &Impl::solver_type;
+  m.linear_solver->ops->solve = &Impl::solve_callback;
+  m.check(IDASetLinearSolver(m.ida, m.linear_solver, nullptr), "IDASetLinearSolver");
+  m.check(IDASetMaxOrd(m.ida, options.max_order), "IDASetMaxOrd");
+  m.check(IDASetMaxNumSteps(m.ida, options.max_steps_between_outputs), "IDASetMaxNumSteps");
+  if (options.max_step_s) m.check(IDASetMaxStep(m.ida, *options.max_step_s), "IDASetMaxStep");
+  if (options.initial_step_s) m.check(IDASetInitStep(m.ida, *options.initial_step_s), "IDASetInitStep");
+}
+
+IdaIntegrator::~IdaIntegrator() = default;
+IdaIntegrator::IdaIntegrator(IdaIntegrator&&) noexcept = default;
+IdaIntegrator& IdaIntegrator::operator=(IdaIntegrator&&) noexcept = default;
+
+void IdaIntegrator::advance_to(double t_out_s) {
+  Impl& m = *impl_;
+  if (!(t_out_s > m.t_out)) {
+    throw std::invalid_argument(fmt::format("IDA: output time {} s must be after {} s", t_out_s, m.t_out));
+  }
+  realtype t_reached = m.t_out;
+  const int flag = IDASolve(m.ida, t_out_s, &t_reached, m.y, m.yp, IDA_NORMAL);
+  if (m.fatal_exception) {
+    std::exception_ptr e = std::exchange(m.fatal_exception, nullptr);
+    std::rethrow_exception(e);
+  }
+  if (flag < 0) {
+    realtype h = 0.0, t_cur = 0.0;
+    IDAGetLastStep(m.ida, &h);
+    IDAGetCurrentTime(m.ida, &t_cur);
+    std::string msg = fmt::format("IDA failed at t = {:.6g} s (step {:.3g} s): {}; {}", t_cur, h, flag_name(flag),
+                                  hint_for(flag));
+    if (!m.last_residual_message.empty()) msg += fmt::format(" (last residual/solver message: {})", m.last_residual_message);
+    if (!m.last_ida_message.empty()) msg += fmt::format(" [{}]", m.last_ida_message);
+    SolverDiagnostics d;
+    d.iterations = static_cast<int>(statistics().steps);
+    throw IntegrationError(msg, t_cur, h, flag, d);
+  }
+  m.t_out = t_reached;
+  m.y_out = Impl::map(m.y);
+  m.yp_out = Impl::map(m.yp);
+}
+
+void IdaIntegrator::set_stop_time(double tstop_s) { impl_->check(IDASetStopTime(impl_->ida, tstop_s), "IDASetStopTime"); }
+
+double IdaIntegrator::time_s() const { return impl_->t_out; }
+const Eigen::VectorXd& IdaIntegrator::state() const { return impl_->y_out; }
+const Eigen::VectorXd& IdaIntegrator::state_derivative() const { return impl_->yp_out; }
+
+IdaStatistics IdaIntegrator::statistics() const {
+  const Impl& m = *impl_;
+  IdaStatistics s;
+  IDAGetNumSteps(m.ida, &s.steps);
+  IDAGetNumResEvals(m.ida, &s.residual_evaluations);
+  IDAGetNumErrTestFails(m.ida, &s.error_test_failures);
+  IDAGetNumNonlinSolvIters(m.ida, &s.nonlinear_iterations);
+  IDAGetNumNonlinSolvConvFails(m.ida, &s.nonlinear_convergence_failures);
+  realtype h = 0.0, t = 0.0;
+  IDAGetLastStep(m.ida, &h);
+  IDAGetCurrentTime(m.ida, &t);
+  IDAGetLastOrder(m.ida, &s.last_order);
+  s.last_step_s = h;
+  s.current_time_s = t;
+  s.newton_matrix_setups = m.setups;
+  s.linear_solves = m.solves;
+  s.recoverable_residual_failures = m.recoverable_failures;
+  return s;
+}
+
+}  // namespace spiral::engine

@@ -1,0 +1,114 @@
+#pragma once
+// A thin RAII adapter around SUNDIALS IDA (6.4.1, serial N_Vector) for
+// implicit differential(-algebraic) systems F(t, y, y') = 0 whose Newton
+// matrix J = ∂F/∂y + c_j ∂F/∂y' the system factors and solves itself
+// (IDA's "matrix-embedded" linear solver, IDA user guide §"SUNLinearSolver:
+// matrix-embedded"): a structural model knows its matrix structure (banded
+// per line, a second-order reduction, a Schur complement for a hull) far
+// better than a generic SUNMatrix.
+//
+// Method: variable-order, variable-step BDF (orders 1..5, IDA user guide
+// "Mathematical considerations"). For undamped oscillatory systems orders
+// above 2 are not A-stable (their stability regions miss part of the
+// imaginary axis), so structural models usually cap the order at 2, where
+// BDF is A-stable and damps unresolved high-frequency modes.
+//
+// Newton matrix updates. With a matrix-embedded solver IDA calls no setup;
+// the adapter decides when the system refreshes its factorisation (the rule
+// of IDA's own direct solvers, with their default thresholds): before the
+// first solve, when c_j has changed by more than 25 % since the last
+// refresh (IDASetDeltaCjLSetup default), after a nonlinear convergence
+// failure, and at least every `max_steps_between_setups` steps.
+//
+// Residual errors, as in the CVODE adapter: a SolverError or a non-finite
+// residual is recoverable (IDA retries with a smaller step); any other
+// exception is fatal and rethrown after IDASolve returns. IDA failures throw
+// IntegrationError (engine/analysis/sundials_cvode.hpp) with the time
+// reached, the last step and a hint.
+
+#include <Eigen/Core>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "engine/analysis/sundials_cvode.hpp"
+
+namespace spiral::engine {
+
+/// F(t, y, y') = 0 with its own Newton-matrix solver.
+class ImplicitSystem {
+ public:
+  virtual ~ImplicitSystem() = default;
+  /// r = F(t, y, y'). May throw SolverError (recoverable).
+  virtual void residual(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp,
+                        Eigen::VectorXd& r) = 0;
+  /// Builds and factors (an approximation of) J = ∂F/∂y + cj ∂F/∂y' at
+  /// (t, y, y'). Returns false if it cannot (singular): IDA then retries
+  /// with a smaller step.
+  virtual bool setup_newton_matrix(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp,
+                                   double cj) = 0;
+  /// Solves J x = b in place with the last factorisation; cj is IDA's
+  /// current value (it may differ from the one of the setup).
+  virtual void solve_newton_system(double cj, Eigen::Ref<Eigen::VectorXd> b) = 0;
+};
+
+struct IdaOptions {
+  double relative_tolerance = 1e-6;                    ///< > 0
+  double absolute_tolerance = 1e-8;                    ///< > 0, used if no vector
+  std::optional<Eigen::VectorXd> absolute_tolerances;  ///< per state, > 0
+  /// Per state: 1 differential, 0 algebraic. Algebraic states are left out of
+  /// the local error test (IDASetSuppressAlg).
+  std::optional<Eigen::VectorXd> differential_id;
+  int max_order = 5;                        ///< 1..5
+  std::optional<double> max_step_s;         ///< > 0
+  std::optional<double> initial_step_s;     ///< > 0
+  long max_steps_between_outputs = 500000;  ///< > 0
+  int max_steps_between_setups = 20;        ///< > 0: Newton matrix refreshed at least this often
+};
+
+struct IdaStatistics {
+  long steps = 0;
+  long residual_evaluations = 0;
+  long newton_matrix_setups = 0;  ///< factorisations (the "Jacobian evaluations")
+  long linear_solves = 0;
+  long error_test_failures = 0;
+  long nonlinear_iterations = 0;
+  long nonlinear_convergence_failures = 0;
+  long recoverable_residual_failures = 0;
+  double last_step_s = 0.0;
+  double current_time_s = 0.0;
+  int last_order = 0;
+};
+
+/// One IDA integration of a system (not owned: it must outlive the
+/// integrator). Not thread-safe: one integrator per thread.
+class IdaIntegrator {
+ public:
+  /// y0, yp0: consistent initial values (F(t0, y0, yp0) ≈ 0). Throws
+  /// std::invalid_argument for bad sizes, non-finite values or options.
+  IdaIntegrator(ImplicitSystem& system, double t0_s, const Eigen::VectorXd& y0,
+                const Eigen::VectorXd& yp0, const IdaOptions& options = {});
+  ~IdaIntegrator();
+  IdaIntegrator(IdaIntegrator&&) noexcept;
+  IdaIntegrator& operator=(IdaIntegrator&&) noexcept;
+  IdaIntegrator(const IdaIntegrator&) = delete;
+  IdaIntegrator& operator=(const IdaIntegrator&) = delete;
+
+  /// Integrates to t_out_s (> the last output time); y, y' at t_out_s are
+  /// then state() and state_derivative() (interpolated by IDA). Throws
+  /// IntegrationError or the residual's fatal exception.
+  void advance_to(double t_out_s);
+  /// IDA will not step past tstop_s (IDASetStopTime).
+  void set_stop_time(double tstop_s);
+
+  double time_s() const;
+  const Eigen::VectorXd& state() const;
+  const Eigen::VectorXd& state_derivative() const;
+  IdaStatistics statistics() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace spiral::engine
