@@ -1,8 +1,8 @@
 #include "engine/analysis/sundials_ida.hpp"
 
+#include <fmt/format.h>
 #include <ida/ida.h>
 #include <ida/ida_ls.h>
-#include <fmt/format.h>
 #include <nvector/nvector_serial.h>
 #include <sundials/sundials_context.h>
 #include <sundials/sundials_linearsolver.h>
@@ -33,16 +33,19 @@ std::string flag_name(int flag) {
 std::string hint_for(int flag) {
   switch (flag) {
     case IDA_TOO_MUCH_WORK:
-      return "raise max_steps_between_outputs, shorten the output interval, or check the model for an "
+      return "raise max_steps_between_outputs, shorten the output interval, or check the model for "
+             "an "
              "unbounded (unstable) response";
     case IDA_TOO_MUCH_ACC:
       return "the tolerances are below what double precision can deliver: relax them";
     case IDA_ERR_FAIL:
-      return "the step size collapsed on the error test: look for a discontinuity or a non-smooth force "
+      return "the step size collapsed on the error test: look for a discontinuity or a non-smooth "
+             "force "
              "(contact, snap loads), or loosen the tolerances";
     case IDA_CONV_FAIL:
     case IDA_LSOLVE_FAIL:
-      return "the Newton iteration failed repeatedly at ever smaller steps: the state may be unphysical "
+      return "the Newton iteration failed repeatedly at ever smaller steps: the state may be "
+             "unphysical "
              "(a line in compression, a node far below the seabed) or the Newton matrix singular";
     case IDA_RES_FAIL:
     case IDA_REP_RES_ERR:
@@ -103,8 +106,8 @@ struct IdaIntegrator::Impl {
     try {
       self->system->residual(t, self->y_work, self->yp_work, self->r_work);
       if (self->r_work.size() != self->y_work.size()) {
-        throw std::logic_error(fmt::format("DAE residual wrote {} entries for {} states", self->r_work.size(),
-                                           self->y_work.size()));
+        throw std::logic_error(fmt::format("DAE residual wrote {} entries for {} states",
+                                           self->r_work.size(), self->y_work.size()));
       }
       if (!self->r_work.allFinite()) {
         self->last_residual_message = fmt::format("non-finite residual at t = {} s", t);
@@ -123,21 +126,25 @@ struct IdaIntegrator::Impl {
     return kResidualSuccess;
   }
 
-  static SUNLinearSolver_Type solver_type(SUNLinearSolver) { return SUNLINEARSOLVER_MATRIX_EMBEDDED; }
+  static SUNLinearSolver_Type solver_type(SUNLinearSolver) {
+    return SUNLINEARSOLVER_MATRIX_EMBEDDED;
+  }
 
   static int solve_callback(SUNLinearSolver ls, SUNMatrix, N_Vector x, N_Vector b, realtype) {
     auto* self = static_cast<Impl*>(ls->content);
     realtype t = 0.0, cj = 0.0;
     N_Vector yy_pred, yp_pred, yy, yp, res;
     void* user_data = nullptr;
-    if (IDAGetNonlinearSystemData(self->ida, &t, &yy_pred, &yp_pred, &yy, &yp, &res, &cj, &user_data) != 0) {
+    if (IDAGetNonlinearSystemData(self->ida, &t, &yy_pred, &yp_pred, &yy, &yp, &res, &cj,
+                                  &user_data) != 0) {
       return SUNLS_PACKAGE_FAIL_UNREC;
     }
     try {
       long steps = 0, failures = 0;
       IDAGetNumSteps(self->ida, &steps);
       IDAGetNumNonlinSolvConvFails(self->ida, &failures);
-      const bool stale = !self->factored || std::abs(cj / self->cj_at_setup - 1.0) > kCjChangeForSetup ||
+      const bool stale = !self->factored ||
+                         std::abs(cj / self->cj_at_setup - 1.0) > kCjChangeForSetup ||
                          failures > self->convergence_failures_at_setup ||
                          steps - self->steps_at_setup >= self->options.max_steps_between_setups;
       if (stale) {
@@ -169,13 +176,16 @@ struct IdaIntegrator::Impl {
     return SUNLS_SUCCESS;
   }
 
-  static void error_handler(int, const char* module, const char* function, char* msg, void* user_data) {
-    static_cast<Impl*>(user_data)->last_ida_message = fmt::format("{}/{}: {}", module, function, msg);
+  static void error_handler(int, const char* module, const char* function, char* msg,
+                            void* user_data) {
+    static_cast<Impl*>(user_data)->last_ida_message =
+        fmt::format("{}/{}: {}", module, function, msg);
   }
 
   void check(int flag, const char* call) const {
     if (flag < 0) {
-      throw SolverError(fmt::format("IDA setup: {} returned {} ({})", call, flag_name(flag), last_ida_message));
+      throw SolverError(
+          fmt::format("IDA setup: {} returned {} ({})", call, flag_name(flag), last_ida_message));
     }
   }
 };
@@ -185,32 +195,36 @@ IdaIntegrator::IdaIntegrator(ImplicitSystem& system, double t0_s, const Eigen::V
     : impl_(std::make_unique<Impl>()) {
   const Eigen::Index n = y0.size();
   if (n == 0 || yp0.size() != n) {
-    throw std::invalid_argument(fmt::format("IDA: y0 and yp0 must be non-empty and of one size, got {} and {}",
-                                            n, yp0.size()));
+    throw std::invalid_argument(fmt::format(
+        "IDA: y0 and yp0 must be non-empty and of one size, got {} and {}", n, yp0.size()));
   }
   if (!y0.allFinite() || !yp0.allFinite() || !std::isfinite(t0_s)) {
     throw std::invalid_argument("IDA: the initial time, state and derivative must be finite");
   }
   if (!(options.relative_tolerance > 0.0) || !(options.absolute_tolerance > 0.0)) {
-    throw std::invalid_argument(fmt::format("IDA: relative_tolerance and absolute_tolerance must be > 0, got {} and {}",
-                                            options.relative_tolerance, options.absolute_tolerance));
+    throw std::invalid_argument(
+        fmt::format("IDA: relative_tolerance and absolute_tolerance must be > 0, got {} and {}",
+                    options.relative_tolerance, options.absolute_tolerance));
   }
-  if (options.absolute_tolerances &&
-      (options.absolute_tolerances->size() != n || !(options.absolute_tolerances->array() > 0.0).all())) {
-    throw std::invalid_argument(fmt::format("IDA: absolute_tolerances must have {} entries, all > 0", n));
+  if (options.absolute_tolerances && (options.absolute_tolerances->size() != n ||
+                                      !(options.absolute_tolerances->array() > 0.0).all())) {
+    throw std::invalid_argument(
+        fmt::format("IDA: absolute_tolerances must have {} entries, all > 0", n));
   }
   if (options.differential_id && options.differential_id->size() != n) {
     throw std::invalid_argument(fmt::format("IDA: differential_id must have {} entries", n));
   }
   if (options.max_order < 1 || options.max_order > 5) {
-    throw std::invalid_argument(fmt::format("IDA: max_order must be 1..5, got {}", options.max_order));
+    throw std::invalid_argument(
+        fmt::format("IDA: max_order must be 1..5, got {}", options.max_order));
   }
   if ((options.max_step_s && !(*options.max_step_s > 0.0)) ||
       (options.initial_step_s && !(*options.initial_step_s > 0.0))) {
     throw std::invalid_argument("IDA: max_step_s and initial_step_s must be > 0 s");
   }
   if (options.max_steps_between_outputs <= 0 || options.max_steps_between_setups <= 0) {
-    throw std::invalid_argument("IDA: max_steps_between_outputs and max_steps_between_setups must be > 0");
+    throw std::invalid_argument(
+        "IDA: max_steps_between_outputs and max_steps_between_setups must be > 0");
   }
 
   Impl& m = *impl_;
@@ -221,7 +235,8 @@ IdaIntegrator::IdaIntegrator(ImplicitSystem& system, double t0_s, const Eigen::V
   m.t_out = t0_s;
   m.r_work.resize(n);
 
-  if (SUNContext_Create(nullptr, &m.context) != 0) throw SolverError("IDA setup: SUNContext_Create failed");
+  if (SUNContext_Create(nullptr, &m.context) != 0)
+    throw SolverError("IDA setup: SUNContext_Create failed");
   const auto len = static_cast<sunindextype>(n);
   for (N_Vector* v : {&m.y, &m.yp}) {
     *v = N_VNew_Serial(len, m.context);
@@ -241,7 +256,8 @@ IdaIntegrator::IdaIntegrator(ImplicitSystem& system, double t0_s, const Eigen::V
     Impl::map(m.atol) = *options.absolute_tolerances;
     m.check(IDASVtolerances(m.ida, options.relative_tolerance, m.atol), "IDASVtolerances");
   } else {
-    m.check(IDASStolerances(m.ida, options.relative_tolerance, options.absolute_tolerance), "IDASStolerances");
+    m.check(IDASStolerances(m.ida, options.relative_tolerance, options.absolute_tolerance),
+            "IDASStolerances");
   }
   if (options.differential_id) {
     m.id = N_VNew_Serial(len, m.context);
@@ -259,7 +275,8 @@ IdaIntegrator::IdaIntegrator(ImplicitSystem& system, double t0_s, const Eigen::V
   m.check(IDASetMaxOrd(m.ida, options.max_order), "IDASetMaxOrd");
   m.check(IDASetMaxNumSteps(m.ida, options.max_steps_between_outputs), "IDASetMaxNumSteps");
   if (options.max_step_s) m.check(IDASetMaxStep(m.ida, *options.max_step_s), "IDASetMaxStep");
-  if (options.initial_step_s) m.check(IDASetInitStep(m.ida, *options.initial_step_s), "IDASetInitStep");
+  if (options.initial_step_s)
+    m.check(IDASetInitStep(m.ida, *options.initial_step_s), "IDASetInitStep");
 }
 
 IdaIntegrator::~IdaIntegrator() = default;
@@ -269,7 +286,8 @@ IdaIntegrator& IdaIntegrator::operator=(IdaIntegrator&&) noexcept = default;
 void IdaIntegrator::advance_to(double t_out_s) {
   Impl& m = *impl_;
   if (!(t_out_s > m.t_out)) {
-    throw std::invalid_argument(fmt::format("IDA: output time {} s must be after {} s", t_out_s, m.t_out));
+    throw std::invalid_argument(
+        fmt::format("IDA: output time {} s must be after {} s", t_out_s, m.t_out));
   }
   realtype t_reached = m.t_out;
   const int flag = IDASolve(m.ida, t_out_s, &t_reached, m.y, m.yp, IDA_NORMAL);
@@ -281,9 +299,10 @@ void IdaIntegrator::advance_to(double t_out_s) {
     realtype h = 0.0, t_cur = 0.0;
     IDAGetLastStep(m.ida, &h);
     IDAGetCurrentTime(m.ida, &t_cur);
-    std::string msg = fmt::format("IDA failed at t = {:.6g} s (step {:.3g} s): {}; {}", t_cur, h, flag_name(flag),
-                                  hint_for(flag));
-    if (!m.last_residual_message.empty()) msg += fmt::format(" (last residual/solver message: {})", m.last_residual_message);
+    std::string msg = fmt::format("IDA failed at t = {:.6g} s (step {:.3g} s): {}; {}", t_cur, h,
+                                  flag_name(flag), hint_for(flag));
+    if (!m.last_residual_message.empty())
+      msg += fmt::format(" (last residual/solver message: {})", m.last_residual_message);
     if (!m.last_ida_message.empty()) msg += fmt::format(" [{}]", m.last_ida_message);
     SolverDiagnostics d;
     d.iterations = static_cast<int>(statistics().steps);
@@ -294,11 +313,19 @@ void IdaIntegrator::advance_to(double t_out_s) {
   m.yp_out = Impl::map(m.yp);
 }
 
-void IdaIntegrator::set_stop_time(double tstop_s) { impl_->check(IDASetStopTime(impl_->ida, tstop_s), "IDASetStopTime"); }
+void IdaIntegrator::set_stop_time(double tstop_s) {
+  impl_->check(IDASetStopTime(impl_->ida, tstop_s), "IDASetStopTime");
+}
 
-double IdaIntegrator::time_s() const { return impl_->t_out; }
-const Eigen::VectorXd& IdaIntegrator::state() const { return impl_->y_out; }
-const Eigen::VectorXd& IdaIntegrator::state_derivative() const { return impl_->yp_out; }
+double IdaIntegrator::time_s() const {
+  return impl_->t_out;
+}
+const Eigen::VectorXd& IdaIntegrator::state() const {
+  return impl_->y_out;
+}
+const Eigen::VectorXd& IdaIntegrator::state_derivative() const {
+  return impl_->yp_out;
+}
 
 IdaStatistics IdaIntegrator::statistics() const {
   const Impl& m = *impl_;

@@ -129,14 +129,23 @@ using ElementTangent = std::array<double, 144>;
 /// penetration of a cubic changes sign at most 3 times), found on 16 samples
 /// refined by bisection. node_z: the z components of [r_a, r'_a, r_b, r'_b].
 /// Returns the number of pieces.
-inline int seabed_contact_pieces(const ElementProperties& e, double seabed_z_m, const std::array<double, 4>& node_z,
+inline int seabed_contact_pieces(const ElementProperties& e, double seabed_z_m,
+                                 const std::array<double, 4>& node_z,
                                  std::array<std::array<double, 2>, 4>& pieces) {
   const double L = e.length_m;
+  // Bounds of the cubic: S1 + S3 = 1 with S1, S3 in [0, 1], and |S2|, |S4| <=
+  // 4L/27 (the maximum of ξ(1 − ξ)²), so z lies within the end values ± the
+  // slope terms. Most elements of a line are clear of the seabed or wholly on it.
+  const double reach = 4.0 / 27.0 * L * (std::abs(node_z[1]) + std::abs(node_z[3]));
+  if (std::min(node_z[0], node_z[2]) - reach >= seabed_z_m) return 0;
+  if (std::max(node_z[0], node_z[2]) + reach < seabed_z_m) {
+    pieces[0] = {0.0, 1.0};
+    return 1;
+  }
   auto z_at = [&](double xi) {
-    const ShapeAt sh = shape_at(xi, L);
-    double z = 0.0;
-    for (int k = 0; k < 4; ++k) z += sh.S[k] * node_z[static_cast<std::size_t>(k)];
-    return z - seabed_z_m;
+    const double x2 = xi * xi, x3 = x2 * xi;
+    return (1.0 - 3.0 * x2 + 2.0 * x3) * node_z[0] + L * (xi - 2.0 * x2 + x3) * node_z[1] +
+           (3.0 * x2 - 2.0 * x3) * node_z[2] + L * (x3 - x2) * node_z[3] - seabed_z_m;
   };
   constexpr int kSamples = 16;
   std::array<double, kSamples + 1> zv;
@@ -153,7 +162,7 @@ inline int seabed_contact_pieces(const ElementProperties& e, double seabed_z_m, 
     if ((zv[j] < 0.0) != (zv[j + 1] < 0.0)) {
       double lo = static_cast<double>(j) / kSamples, hi = static_cast<double>(j + 1) / kSamples;
       const bool lo_in = zv[j] < 0.0;
-      for (int it = 0; it < 60; ++it) {
+      for (int it = 0; it < 48; ++it) {  // 1/16 · 2⁻⁴⁸ ≈ 2e-16: the root to round-off
         const double mid = 0.5 * (lo + hi);
         ((z_at(mid) < 0.0) == lo_in ? lo : hi) = mid;
       }
@@ -183,9 +192,11 @@ void add_seabed_contact(const ElementProperties& e, const LoadContext& ctx, cons
   const double zs = ctx.seabed_z_m;
   std::array<std::array<double, 2>, 4> pieces;
   const int n_pieces = seabed_contact_pieces(
-      e, zs, {value_of(node[0].z), value_of(node[1].z), value_of(node[2].z), value_of(node[3].z)}, pieces);
+      e, zs, {value_of(node[0].z), value_of(node[1].z), value_of(node[2].z), value_of(node[3].z)},
+      pieces);
   for (int c = 0; c < n_pieces; ++c) {
-    const double a = pieces[static_cast<std::size_t>(c)][0], b = pieces[static_cast<std::size_t>(c)][1];
+    const double a = pieces[static_cast<std::size_t>(c)][0],
+                 b = pieces[static_cast<std::size_t>(c)][1];
     for (int gp = 0; gp < 4; ++gp) {
       const double xi = a + (b - a) * kContactGaussXi[gp];
       const ShapeAt sh = shape_at(xi, L);
@@ -210,7 +221,8 @@ void add_seabed_contact(const ElementProperties& e, const LoadContext& ctx, cons
 /// fe_line_statics.hpp). With ctx.drag_jacobian false, a Dual evaluation
 /// returns the drag as a dead load (values only, zero derivatives).
 template <typename T>
-V3<T> drag_load(const ElementProperties& e, const LoadContext& ctx, const V3<T>& r, const V3<T>& a, const T& na) {
+V3<T> drag_load(const ElementProperties& e, const LoadContext& ctx, const V3<T>& r, const V3<T>& a,
+                const T& na) {
   if (!ctx.drag_jacobian && !std::is_same_v<T, double>) {
     const V3<double> rv{value_of(r.x), value_of(r.y), value_of(r.z)};
     const V3<double> av{value_of(a.x), value_of(a.y), value_of(a.z)};
@@ -297,8 +309,8 @@ void element_forces(const ElementProperties& e, const LoadContext& ctx, const T*
 ///                − 3A⁻⁴(G I + a (2B a − 2C b)ᵀ) + 24 G A⁻⁵ a aᵀ],
 ///   ∂f_a/∂b = EI[A⁻³(2 a bᵀ − b aᵀ − C I) − 6A⁻⁴ a (A b − C a)ᵀ],
 ///   ∂f_b/∂b = EI A⁻³ (A I − a aᵀ),  ∂f_b/∂a = (∂f_a/∂b)ᵀ.
-inline void element_forces_and_tangent(const ElementProperties& e, const LoadContext& ctx, const double* q,
-                                       double* g, ElementTangent& K) {
+inline void element_forces_and_tangent(const ElementProperties& e, const LoadContext& ctx,
+                                       const double* q, double* g, ElementTangent& K) {
   using M3 = std::array<std::array<double, 3>, 3>;
   const double L = e.length_m;
   V3<double> node[4];
@@ -356,8 +368,8 @@ inline void element_forces_and_tangent(const ElementProperties& e, const LoadCon
       }
     }
     V3<double> p{0.0, 0.0, -e.weight_N_per_m};
-    M3 Pa{};                            // ∂p/∂a
-    double Pz[3] = {0.0, 0.0, 0.0};     // ∂p/∂z
+    M3 Pa{};                         // ∂p/∂a
+    double Pz[3] = {0.0, 0.0, 0.0};  // ∂p/∂z
     if (drag) {
       if (ctx.drag_jacobian) {
         using D = Dual<4>;

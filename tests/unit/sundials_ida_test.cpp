@@ -3,12 +3,12 @@
 // 2×2 Newton matrix solved by the system, and an algebraic (prescribed)
 // component excluded from the error test.
 
-#include <cmath>
+#include "engine/analysis/sundials_ida.hpp"
 
-#include <Eigen/LU>
 #include <gtest/gtest.h>
 
-#include "engine/analysis/sundials_ida.hpp"
+#include <Eigen/LU>
+#include <cmath>
 
 namespace spiral::engine {
 namespace {
@@ -22,19 +22,23 @@ double damped_oscillator(double t, double omega, double zeta) {
 class Oscillator : public ImplicitSystem {
  public:
   Oscillator(double omega, double zeta) : w_(omega), z_(zeta) {}
-  void residual(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp, Eigen::VectorXd& r) override {
+  void residual(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp,
+                Eigen::VectorXd& r) override {
     r.resize(3);
     r[0] = yp[0] - y[1];
     r[1] = yp[1] + 2.0 * z_ * w_ * y[1] + w_ * w_ * y[0];
     r[2] = y[2] - std::sin(t);  // algebraic: a prescribed value
   }
-  bool setup_newton_matrix(double, const Eigen::VectorXd&, const Eigen::VectorXd&, double cj) override {
+  bool setup_newton_matrix(double, const Eigen::VectorXd&, const Eigen::VectorXd&,
+                           double cj) override {
     J_ << cj, -1.0, 0.0, w_ * w_, cj + 2.0 * z_ * w_, 0.0, 0.0, 0.0, 1.0;
     lu_.compute(J_);
     ++setups;
     return true;
   }
-  void solve_newton_system(double, Eigen::Ref<Eigen::VectorXd> b) override { b = lu_.solve(Eigen::Vector3d(b)); }
+  void solve_newton_system(double, Eigen::Ref<Eigen::VectorXd> b) override {
+    b = lu_.solve(Eigen::Vector3d(b));
+  }
   int setups = 0;
 
  private:
@@ -82,14 +86,16 @@ TEST(SundialsIda, OrderTwoStaysStableOnAnUndampedOscillatorAtLargeSteps) {
   options.absolute_tolerance = 1e-3;
   options.initial_step_s = 0.05;
   options.differential_id = Eigen::Vector3d(1.0, 1.0, 0.0);
-  IdaIntegrator ida(system, 0.0, Eigen::Vector3d(1.0, 0.0, 0.0), Eigen::Vector3d(0.0, -omega * omega, 0.0), options);
+  IdaIntegrator ida(system, 0.0, Eigen::Vector3d(1.0, 0.0, 0.0),
+                    Eigen::Vector3d(0.0, -omega * omega, 0.0), options);
   ida.advance_to(20.0);
   EXPECT_LE(std::abs(ida.state()[0]), 1.0 + 1e-9);
 }
 
 TEST(SundialsIda, RejectsInconsistentSizes) {
   Oscillator system(1.0, 0.0);
-  EXPECT_THROW(IdaIntegrator(system, 0.0, Eigen::Vector3d::Zero(), Eigen::Vector2d::Zero()), std::invalid_argument);
+  EXPECT_THROW(IdaIntegrator(system, 0.0, Eigen::Vector3d::Zero(), Eigen::Vector2d::Zero()),
+               std::invalid_argument);
   IdaOptions bad;
   bad.max_order = 6;
   EXPECT_THROW(IdaIntegrator(system, 0.0, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), bad),

@@ -1,0 +1,503 @@
+// FE line dynamics: the DAE of fe_line_dynamics.hpp, its reduced Newton
+// matrix, consistent initial values and the outputs.
+
+#include "engine/lines/fe_line_dynamics.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "engine/lines/ancf_dynamic_loads.hpp"
+#include "engine/lines/fe_line_problem.hpp"
+
+namespace spiral::engine {
+
+using fe_detail::kElementDofs;
+using fe_detail::Problem;
+
+namespace {
+
+[[noreturn]] void invalid_dynamics(const std::string& what) {
+  throw SolverError("FE line dynamics: invalid input: " + what);
+}
+
+}  // namespace
+
+struct FeLineDynamics::Impl final : ImplicitSystem {
+  Problem p;
+  std::vector<ancf::DynamicElementProperties> dyn;
+  std::vector<std::array<double, 2>>
+      end_force_offset_N;         // N_0 at ξ = 0, 1 per element (node tensions)
+  ancf::LoadContext static_ctx;   // no current: the drag is dynamic
+  ancf::LoadContext current_ctx;  // for current_at
+  std::vector<CurrentProfilePoint> current;
+  ancf::SeabedDynamics bed;
+  WaveKinematicsFn waves;
+  FeDynamicsOptions options;
+  Eigen::Vector3d end_A_rest_m = Eigen::Vector3d::Zero(), end_B_rest_m = Eigen::Vector3d::Zero();
+  int n = 0;
+
+  // Workspace.
+  Eigen::VectorXd qw, vw, aw, G, rhs, w;
+  BandMatrix M, C, K, S, D;  // D = c_j M − C at the setup's c_j
+  std::unique_ptr<IdaIntegrator> ida;
+
+  bool fixed(int i) const { return p.fixed[static_cast<std::size_t>(i)] != 0; }
+
+  /// Overwrites the prescribed DOFs of (q, v, a) with their values at t.
+  void apply_prescribed(double t, Eigen::VectorXd& q, Eigen::VectorXd& v,
+                        Eigen::VectorXd& a) const {
+    const int ra = p.r_dof.front(), rb = p.r_dof.back();
+    if (options.end_A == FeEndCondition::fixed) {
+      q.segment<3>(ra) = end_A_rest_m;
+      v.segment<3>(ra).setZero();
+      a.segment<3>(ra).setZero();
+    }
+    if (options.end_B == FeEndCondition::fixed) {
+      q.segment<3>(rb) = end_B_rest_m;
+      v.segment<3>(rb).setZero();
+      a.segment<3>(rb).setZero();
+    } else if (options.end_B == FeEndCondition::prescribed) {
+      const EndKinematics k = options.end_B_motion(t);
+      q.segment<3>(rb) = k.position_m;
+      v.segment<3>(rb) = k.velocity_m_per_s;
+      a.segment<3>(rb) = k.acceleration_m_per_s2;
+    }
+  }
+
+  /// Fluid velocity and acceleration at the element's Gauss points.
+  void fluid_at(double t, std::size_t e, const double* qe, ancf::ElementFluid& fluid) const {
+    const double L = p.elements[e].length_m;
+    for (std::size_t gp = 0; gp < ancf::kGaussXi.size(); ++gp) {
+      const ancf::ShapeAt sh = ancf::shape_at(ancf::kGaussXi[gp], L);
+      Eigen::Vector3d r = Eigen::Vector3d::Zero();
+      for (int k = 0; k < 4; ++k)
+        r += sh.S[k] * Eigen::Vector3d(qe[3 * k], qe[3 * k + 1], qe[3 * k + 2]);
+      Eigen::Vector3d u = Eigen::Vector3d::Zero(), a = Eigen::Vector3d::Zero();
+      if (!current.empty()) {
+        const ancf::V3<double> c = ancf::current_at<double>(current_ctx, r.z());
+        u = {c.x, c.y, c.z};
+      }
+      if (waves) {
+        Eigen::Vector3d uw, aw_;
+        waves(r, t, uw, aw_);
+        u += uw;
+        a += aw_;
+      }
+      for (int x = 0; x < 3; ++x) {
+        fluid.velocity[gp][static_cast<std::size_t>(x)] = u[x];
+        fluid.acceleration[gp][static_cast<std::size_t>(x)] = a[x];
+      }
+    }
+  }
+
+  /// Net generalised nodal forces G (inertia included, d'Alembert) at
+  /// (t, q, v, a); with matrices, also K = ∂G/∂q (static tangent + force
+  /// offset), C = ∂G/∂v and the mass M.
+  void assemble_forces(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                       const Eigen::VectorXd& a, Eigen::VectorXd& g, bool matrices) {
+    g.setZero(n);
+    if (matrices) {
+      M.reset(n, p.band, p.band);
+      C.reset(n, p.band, p.band);
+      K.reset(n, p.band, p.band);
+    }
+    ancf::ElementTangent ke;
+    ancf::ElementDynamicMatrices dm;
+    ancf::ElementFluid fluid;
+    for (std::size_t e = 0; e < p.elements.size(); ++e) {
+      const auto blocks = fe_detail::element_blocks(p, e);
+      std::array<int, kElementDofs> dof;
+      std::array<double, kElementDofs> qe, ve, ae, ge;
+      for (int k = 0; k < kElementDofs; ++k) {
+        dof[k] = blocks[static_cast<std::size_t>(k / 3)] + k % 3;
+        qe[k] = q[dof[k]];
+        ve[k] = v[dof[k]];
+        ae[k] = a[dof[k]];
+      }
+      fluid_at(t, e, qe.data(), fluid);
+      if (matrices) {
+        ancf::element_forces_and_tangent(p.elements[e], static_ctx, qe.data(), ge.data(), ke);
+        dm.M.fill(0.0);
+        dm.C.fill(0.0);
+        dm.K.fill(0.0);
+        ancf::add_dynamic_element_forces(p.elements[e], dyn[e], static_ctx, bed, fluid, qe.data(),
+                                         ve.data(), ae.data(), ge.data(), &dm);
+        for (int i = 0; i < kElementDofs; ++i) {
+          for (int j = 0; j < kElementDofs; ++j) {
+            const auto ij = static_cast<std::size_t>(kElementDofs * i + j);
+            K.at(dof[i], dof[j]) += ke[ij] + dm.K[ij];
+            C.at(dof[i], dof[j]) += dm.C[ij];
+            M.at(dof[i], dof[j]) += dm.M[ij];
+          }
+        }
+      } else {
+        ancf::element_forces<double>(p.elements[e], static_ctx, qe.data(), ge.data());
+        ancf::add_dynamic_element_forces(p.elements[e], dyn[e], static_ctx, bed, fluid, qe.data(),
+                                         ve.data(), ae.data(), ge.data(), nullptr);
+      }
+      for (int i = 0; i < kElementDofs; ++i) g[dof[i]] += ge[i];
+    }
+    for (const auto& [node, f] : p.mesh.point_loads)
+      g[p.r_dof[static_cast<std::size_t>(node)] + 2] -= f;
+  }
+
+  void load_state(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp) {
+    qw = y.head(n);
+    vw = y.tail(n);
+    aw = yp.tail(n);
+    apply_prescribed(t, qw, vw, aw);
+  }
+
+  void residual(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp,
+                Eigen::VectorXd& r) override {
+    load_state(t, y, yp);
+    assemble_forces(t, qw, vw, aw, G, false);
+    r.resize(2 * n);
+    for (int i = 0; i < n; ++i) {
+      if (fixed(i)) {
+        r[i] = y[i] - qw[i];
+        r[n + i] = y[n + i] - vw[i];
+      } else {
+        r[i] = yp[i] - y[n + i];
+        r[n + i] = -G[i];
+      }
+    }
+  }
+
+  bool setup_newton_matrix(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp,
+                           double cj) override {
+    load_state(t, y, yp);
+    assemble_forces(t, qw, vw, aw, G, true);
+    S.reset(n, p.band, p.band);
+    D.reset(n, p.band, p.band);
+    for (int i = 0; i < n; ++i) {
+      if (fixed(i)) continue;
+      for (int j = std::max(0, i - p.band); j <= std::min(n - 1, i + p.band); ++j) {
+        D.at(i, j) = cj * M.at(i, j) - C.at(i, j);
+        S.at(i, j) = cj * D.at(i, j) - K.at(i, j);
+      }
+    }
+    for (int i = 0; i < n; ++i) {
+      if (fixed(i)) S.set_identity_row(i);
+    }
+    return S.factorize();
+  }
+
+  // Row 2 uses the setup's c_j (the matrix it factored); row 1 (δv = c δq −
+  // b_q) the current one, so the kinematic rows are always solved exactly.
+  void solve_newton_system(double cj, Eigen::Ref<Eigen::VectorXd> b) override {
+    w = b.head(n);
+    for (int i = 0; i < n; ++i) {
+      if (fixed(i)) w[i] = 0.0;
+    }
+    rhs = b.tail(n) + D.multiply(w);
+    for (int i = 0; i < n; ++i) {
+      if (fixed(i)) rhs[i] = 0.0;
+    }
+    S.solve_in_place(rhs);
+    for (int i = 0; i < n; ++i) {
+      if (fixed(i)) continue;  // δq = b_q, δv = b_v: b already holds them
+      const double bq = b[i];
+      b[i] = rhs[i];
+      b[n + i] = cj * rhs[i] - bq;
+    }
+  }
+};
+
+namespace {
+
+void validate_dynamics(const FeLineModel& model, const FeDynamicEnvironment& env,
+                       const FeDynamicsOptions& o) {
+  for (std::size_t i = 0; i < model.sections.size(); ++i) {
+    const auto& s = model.sections[i];
+    auto check = [&](const char* field, double v, const char* unit) {
+      if (!std::isfinite(v) || v < 0.0)
+        invalid_dynamics(
+            fmt::format("sections[{}].{}: must be >= 0 {}, got {}", i, field, unit, v));
+    };
+    check("displaced_area_m2", s.displaced_area_m2, "m2");
+    check("added_mass_normal", s.added_mass_normal, "");
+    check("added_mass_tangential", s.added_mass_tangential, "");
+    check("axial_damping_Ns", s.axial_damping_Ns, "N s");
+    check("EA_dynamic_N", s.EA_dynamic_N, "N");
+    if (!(s.mass_kg_per_m > 0.0) && !(s.added_mass_normal * s.displaced_area_m2 > 0.0)) {
+      invalid_dynamics(fmt::format(
+          "sections[{}].mass_kg_per_m: must be > 0 kg/m for dynamics, got {}", i, s.mass_kg_per_m));
+    }
+  }
+  auto check_env = [](const char* field, double v, bool ok, const char* rule) {
+    if (!std::isfinite(v) || !ok)
+      invalid_dynamics(fmt::format("{}: must be {}, got {}", field, rule, v));
+  };
+  check_env("seabed_lateral_friction", env.seabed_lateral_friction,
+            env.seabed_lateral_friction >= 0.0, ">= 0");
+  check_env("seabed_axial_friction", env.statics.seabed_axial_friction,
+            env.statics.seabed_axial_friction >= 0.0, ">= 0");
+  check_env("seabed_damping_N_s_per_m2", env.seabed_damping_N_s_per_m2,
+            env.seabed_damping_N_s_per_m2 >= 0.0, ">= 0 N s/m2");
+  check_env("friction_velocity_m_per_s", env.friction_velocity_m_per_s,
+            env.friction_velocity_m_per_s > 0.0, "> 0 m/s");
+  if (o.end_B == FeEndCondition::prescribed && !o.end_B_motion)
+    invalid_dynamics("end_B_motion: required when end B is prescribed");
+  if (o.end_A == FeEndCondition::prescribed)
+    invalid_dynamics("end_A: may be fixed or free (prescribe end B)");
+  if (o.end_A == FeEndCondition::free && o.end_B == FeEndCondition::free)
+    invalid_dynamics("end_A, end_B: at least one end must be held");
+  check_env("relative_tolerance", o.relative_tolerance, o.relative_tolerance > 0.0, "> 0");
+  check_env("position_tolerance_m", o.position_tolerance_m, o.position_tolerance_m > 0.0, "> 0 m");
+  check_env("slope_tolerance", o.slope_tolerance, o.slope_tolerance > 0.0, "> 0");
+  check_env("velocity_tolerance_m_per_s", o.velocity_tolerance_m_per_s,
+            o.velocity_tolerance_m_per_s > 0.0, "> 0 m/s");
+}
+
+}  // namespace
+
+FeLineDynamics::FeLineDynamics(const FeLineModel& model, const FeDynamicEnvironment& environment,
+                               const FeStaticsResult& initial, const FeDynamicsOptions& options)
+    : impl_(std::make_unique<Impl>()) {
+  Impl& m = *impl_;
+  validate_dynamics(model, environment, options);
+  if (initial.node_position_m.size() < 2)
+    invalid_dynamics("initial: not a static solution (no nodes)");
+  const FeLineEnds ends{initial.node_position_m.front(), initial.node_position_m.back()};
+  fe_detail::validate(model, environment.statics, ends, FeStaticsOptions{});
+  m.options = options;
+  m.p = fe_detail::make_problem(model, environment.statics, ends);
+  m.n = m.p.n_dofs;
+  if (initial.state.size() != m.n || !initial.state.allFinite()) {
+    invalid_dynamics(fmt::format(
+        "initial.state: needs {} finite entries (a static solution of this model), got {}", m.n,
+        initial.state.size()));
+  }
+  fe_detail::set_node_arc_lengths(m.p, initial.node_arc_length_m);
+  m.end_A_rest_m = ends.end_A_m;
+  m.end_B_rest_m = ends.end_B_m;
+  for (int k = 0; k < 3; ++k) {
+    if (options.end_A == FeEndCondition::free)
+      m.p.fixed[static_cast<std::size_t>(m.p.r_dof.front() + k)] = 0;
+    if (options.end_B == FeEndCondition::free)
+      m.p.fixed[static_cast<std::size_t>(m.p.r_dof.back() + k)] = 0;
+  }
+  m.current = environment.statics.current;
+  m.current_ctx.current = &m.current;
+  m.static_ctx = m.p.load;
+  m.static_ctx.current = nullptr;
+  m.bed.damping_N_s_per_m2 = environment.seabed_damping_N_s_per_m2;
+  m.bed.axial_friction = environment.statics.seabed_axial_friction;
+  m.bed.lateral_friction = environment.seabed_lateral_friction;
+  m.bed.friction_velocity_m_per_s = environment.friction_velocity_m_per_s;
+  m.waves = environment.waves;
+
+  // Element dynamic properties; a dynamic EA takes over from the static one
+  // with the force offset that keeps the static state in equilibrium.
+  const Eigen::VectorXd& q0 = initial.state;
+  const double rho = environment.statics.water_density_kg_per_m3;
+  m.dyn.resize(m.p.elements.size());
+  m.end_force_offset_N.assign(m.p.elements.size(), {0.0, 0.0});
+  for (std::size_t e = 0; e < m.p.elements.size(); ++e) {
+    const FeLineSection& s = model.sections[static_cast<std::size_t>(m.p.mesh.section[e])];
+    ancf::DynamicElementProperties& d = m.dyn[e];
+    d.mass_kg_per_m = s.mass_kg_per_m;
+    d.displaced_mass_kg_per_m = rho * s.displaced_area_m2;
+    d.added_mass_normal_kg_per_m = rho * s.displaced_area_m2 * s.added_mass_normal;
+    d.added_mass_tangential_kg_per_m = rho * s.displaced_area_m2 * s.added_mass_tangential;
+    d.axial_damping_Ns = s.axial_damping_Ns;
+    if (s.EA_dynamic_N > 0.0 && s.EA_dynamic_N != s.EA_N) {
+      const fe_detail::ElementState qe = fe_detail::gather(m.p, q0, e);
+      const double L = m.p.elements[e].length_m;
+      auto offset_at = [&](double xi) {
+        const double strain = fe_detail::slope(ancf::shape_at(xi, L), qe).norm() - 1.0;
+        return (s.EA_dynamic_N - s.EA_N) * strain;
+      };
+      for (std::size_t gp = 0; gp < ancf::kGaussXi.size(); ++gp)
+        d.axial_force_offset_N[gp] = offset_at(ancf::kGaussXi[gp]);
+      m.end_force_offset_N[e] = {offset_at(0.0), offset_at(1.0)};
+      m.p.elements[e].EA_N = s.EA_dynamic_N;
+    }
+  }
+
+  // Initial state, velocity and a consistent acceleration: M a0 = G(q0, v0, a = 0).
+  Eigen::VectorXd v0 = Eigen::VectorXd::Zero(m.n), a0 = Eigen::VectorXd::Zero(m.n);
+  if (options.initial_velocity) {
+    const double delta = 1e-6 * m.p.line_length_m;
+    for (std::size_t i = 0; i < static_cast<std::size_t>(m.p.n_nodes); ++i) {
+      const double s = m.p.mesh.s[i];
+      v0.segment<3>(m.p.r_dof[i]) = options.initial_velocity(s);
+      const double s0 = std::max(0.0, s - delta), s1 = std::min(m.p.line_length_m, s + delta);
+      const Eigen::Vector3d rate =
+          (options.initial_velocity(s1) - options.initial_velocity(s0)) / (s1 - s0);
+      v0.segment<3>(m.p.t_in[i]) = rate;
+      v0.segment<3>(m.p.t_out[i]) = rate;
+    }
+    if (!v0.allFinite()) invalid_dynamics("initial_velocity: returned non-finite values");
+  }
+  Eigen::VectorXd q_start = q0;
+  {
+    Eigen::VectorXd q_check = q0, v_check = v0, a_check = a0;
+    m.apply_prescribed(options.start_time_s, q_check, v_check, a_check);
+    const double mismatch = (q_check - q0).cwiseAbs().maxCoeff();
+    if (mismatch > 1e-6 * std::max(1.0, m.p.line_length_m)) {
+      invalid_dynamics(
+          fmt::format("end_B_motion: at the start time {} s the end is {:.6g} m from the static "
+                      "solution's end; start the motion from the static position",
+                      options.start_time_s, mismatch));
+    }
+    q_start = q_check;
+    v0 = v_check;
+    a0 = a_check;
+  }
+  m.assemble_forces(options.start_time_s, q_start, v0, a0, m.G, true);
+  m.S.reset(m.n, m.p.band, m.p.band);
+  for (int i = 0; i < m.n; ++i) {
+    for (int j = std::max(0, i - m.p.band); j <= std::min(m.n - 1, i + m.p.band); ++j)
+      m.S.at(i, j) = m.M.at(i, j);
+  }
+  m.rhs = m.G;
+  for (int i = 0; i < m.n; ++i) {
+    if (m.fixed(i)) {
+      m.S.set_identity_row(i);
+      m.rhs[i] = 0.0;
+    }
+  }
+  if (!m.S.factorize()) invalid_dynamics("mass matrix: singular (a section without mass?)");
+  m.S.solve_in_place(m.rhs);
+  for (int i = 0; i < m.n; ++i) {
+    if (!m.fixed(i)) a0[i] = m.rhs[i];
+  }
+
+  Eigen::VectorXd y0(2 * m.n), yp0(2 * m.n), atol(2 * m.n), id = Eigen::VectorXd::Ones(2 * m.n);
+  y0 << q_start, v0;
+  yp0 << v0, a0;
+  std::vector<char> is_position(static_cast<std::size_t>(m.n), 0);
+  for (int r : m.p.r_dof) {
+    for (int k = 0; k < 3; ++k) is_position[static_cast<std::size_t>(r + k)] = 1;
+  }
+  const double slope_rate_tolerance =
+      options.slope_tolerance * options.velocity_tolerance_m_per_s / options.position_tolerance_m;
+  for (int i = 0; i < m.n; ++i) {
+    const bool pos = is_position[static_cast<std::size_t>(i)] != 0;
+    atol[i] = pos ? options.position_tolerance_m : options.slope_tolerance;
+    atol[m.n + i] = pos ? options.velocity_tolerance_m_per_s : slope_rate_tolerance;
+    if (m.fixed(i)) id[i] = id[m.n + i] = 0.0;
+  }
+  IdaOptions io;
+  io.relative_tolerance = options.relative_tolerance;
+  io.absolute_tolerances = atol;
+  io.differential_id = id;
+  io.max_order = options.max_order;
+  io.max_step_s = options.max_step_s;
+  io.initial_step_s = options.initial_step_s;
+  m.ida = std::make_unique<IdaIntegrator>(m, options.start_time_s, y0, yp0, io);
+}
+
+FeLineDynamics::~FeLineDynamics() = default;
+FeLineDynamics::FeLineDynamics(FeLineDynamics&&) noexcept = default;
+FeLineDynamics& FeLineDynamics::operator=(FeLineDynamics&&) noexcept = default;
+
+void FeLineDynamics::advance_to(double t_s) {
+  impl_->ida->advance_to(t_s);
+}
+double FeLineDynamics::time_s() const {
+  return impl_->ida->time_s();
+}
+IdaStatistics FeLineDynamics::statistics() const {
+  return impl_->ida->statistics();
+}
+int FeLineDynamics::node_count() const {
+  return impl_->p.n_nodes;
+}
+int FeLineDynamics::dof_count() const {
+  return impl_->n;
+}
+
+Eigen::Vector3d FeLineDynamics::end_B_force_N() const {
+  Impl& m = *impl_;
+  m.load_state(m.ida->time_s(), m.ida->state(), m.ida->state_derivative());
+  if (m.options.end_B == FeEndCondition::free) return Eigen::Vector3d::Zero();
+  Eigen::VectorXd g;
+  m.assemble_forces(m.ida->time_s(), m.qw, m.vw, m.aw, g, false);
+  return g.segment<3>(m.p.r_dof.back());
+}
+
+FeLineDynamicSnapshot FeLineDynamics::snapshot() const {
+  Impl& m = *impl_;
+  const double t = m.ida->time_s();
+  m.load_state(t, m.ida->state(), m.ida->state_derivative());
+  Eigen::VectorXd g;
+  m.assemble_forces(t, m.qw, m.vw, m.aw, g, false);
+  FeLineDynamicSnapshot snap;
+  snap.time_s = t;
+  const auto nn = static_cast<std::size_t>(m.p.n_nodes);
+  for (std::size_t i = 0; i < nn; ++i) {
+    snap.node_position_m.push_back(m.qw.segment<3>(m.p.r_dof[i]));
+    snap.node_velocity_m_per_s.push_back(m.vw.segment<3>(m.p.r_dof[i]));
+    double sum = 0.0;
+    int count = 0;
+    if (i > 0) {
+      sum += m.p.elements[i - 1].EA_N * (m.qw.segment<3>(m.p.t_in[i]).norm() - 1.0) -
+             m.end_force_offset_N[i - 1][1];
+      ++count;
+    }
+    if (i + 1 < nn) {
+      sum += m.p.elements[i].EA_N * (m.qw.segment<3>(m.p.t_out[i]).norm() - 1.0) -
+             m.end_force_offset_N[i][0];
+      ++count;
+    }
+    snap.node_tension_N.push_back(sum / count);
+  }
+  if (m.options.end_A != FeEndCondition::free) snap.end_A_force_N = g.segment<3>(m.p.r_dof.front());
+  if (m.options.end_B != FeEndCondition::free) snap.end_B_force_N = g.segment<3>(m.p.r_dof.back());
+  return snap;
+}
+
+FeLineEnergy FeLineDynamics::energy() const {
+  Impl& m = *impl_;
+  m.load_state(m.ida->time_s(), m.ida->state(), m.ida->state_derivative());
+  FeLineEnergy en;
+  for (std::size_t e = 0; e < m.p.elements.size(); ++e) {
+    const ancf::ElementProperties& ep = m.p.elements[e];
+    const fe_detail::ElementState qe = fe_detail::gather(m.p, m.qw, e);
+    const fe_detail::ElementState ve = fe_detail::gather(m.p, m.vw, e);
+    for (std::size_t gp = 0; gp < ancf::kGaussXi.size(); ++gp) {
+      const ancf::ShapeAt sh = ancf::shape_at(ancf::kGaussXi[gp], ep.length_m);
+      const double wds = ancf::kGaussW[gp] * ep.length_m;
+      const Eigen::Vector3d r = fe_detail::position(sh, qe), a = fe_detail::slope(sh, qe);
+      const Eigen::Vector3d rd = fe_detail::position(sh, ve);
+      const double strain = a.norm() - 1.0;
+      en.kinetic_J += 0.5 * m.dyn[e].mass_kg_per_m * rd.squaredNorm() * wds;
+      double density = 0.5 * ep.EA_N * strain * strain - m.dyn[e].axial_force_offset_N[gp] * strain;
+      if (ep.EI_Nm2 > 0.0) {
+        const double kappa = fe_detail::curvature(sh, qe);
+        density += 0.5 * ep.EI_Nm2 * kappa * kappa;
+      }
+      en.strain_J += density * wds;
+      en.gravity_J += ep.weight_N_per_m * r.z() * wds;
+    }
+    if (m.static_ctx.seabed_stiffness_N_per_m2 > 0.0) {
+      std::array<std::array<double, 2>, 4> pieces;
+      const int np = ancf::seabed_contact_pieces(ep, m.static_ctx.seabed_z_m,
+                                                 {qe[2], qe[5], qe[8], qe[11]}, pieces);
+      for (int c = 0; c < np; ++c) {
+        const double pa = pieces[static_cast<std::size_t>(c)][0],
+                     pb = pieces[static_cast<std::size_t>(c)][1];
+        for (int gp = 0; gp < 4; ++gp) {
+          const double xi = pa + (pb - pa) * ancf::kContactGaussXi[gp];
+          const double pen = m.static_ctx.seabed_z_m -
+                             fe_detail::position(ancf::shape_at(xi, ep.length_m), qe).z();
+          if (pen > 0.0) {
+            en.seabed_J += 0.5 * m.static_ctx.seabed_stiffness_N_per_m2 * pen * pen *
+                           ancf::kContactGaussW[gp] * (pb - pa) * ep.length_m;
+          }
+        }
+      }
+    }
+  }
+  for (const auto& [node, f] : m.p.mesh.point_loads)
+    en.gravity_J += f * m.qw[m.p.r_dof[static_cast<std::size_t>(node)] + 2];
+  return en;
+}
+
+}  // namespace spiral::engine
