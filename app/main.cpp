@@ -1,5 +1,6 @@
 // spiral — integrated mooring–riser design-spiral application. CLI wiring only:
 // parse arguments, call the design layer, print, map errors to exit codes.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -163,6 +164,7 @@ struct AnalyzeOptions {
   double step_s = 0.5;
   std::uint64_t seed = 1;
   std::string out;
+  bool line_dynamics = false;
 };
 
 /// `spiral analyze`: one load case at one level in the time domain; CSV time
@@ -176,6 +178,7 @@ int run_analyze(const std::string& project_file, const AnalyzeOptions& o) {
   request.duration_s = o.duration_s;
   request.output_step_s = o.step_s;
   request.seed = o.seed;
+  request.line_dynamics = o.line_dynamics;
   if (isatty(STDERR_FILENO)) {
     request.progress = [](double fraction) {
       const int width = 40;
@@ -213,6 +216,16 @@ int run_analyze(const std::string& project_file, const AnalyzeOptions& o) {
              "tensions {:.3f} s\n",
              result.equilibrium_wall_s, result.reduction_wall_s, result.forcing_wall_s, result.dynamics_wall_s,
              result.wave_frequency_wall_s, result.tensions_wall_s);
+  if (!result.dynamic_tensions.empty()) {
+    fmt::print("  line dynamics {:.3f} s; max fairlead tension, quasi-static vs dynamic:\n", result.line_dynamics_wall_s);
+    for (std::size_t l = 0; l < result.dynamic_tensions.size() && l < result.tensions.size(); ++l) {
+      const auto& qs = result.tensions[l].tension_N;
+      const auto& dy = result.dynamic_tensions[l].tension_N;
+      fmt::print("    {:<12} {:10.1f} kN  {:10.1f} kN  ({} steps)\n", result.dynamic_tensions[l].line,
+                 *std::max_element(qs.begin(), qs.end()) / 1e3, *std::max_element(dy.begin(), dy.end()) / 1e3,
+                 result.dynamic_tensions[l].solver.steps);
+    }
+  }
   for (const auto& note : result.notes) fmt::print("  note: {}\n", note);
   return app::kExitOk;
 }
@@ -303,6 +316,8 @@ int main(int argc, char** argv) {
   analyze->add_option("--duration", analyze_options.duration_s, "Simulated time, s (default: 10800)");
   analyze->add_option("--step", analyze_options.step_s, "Output step, s (default: 0.5)");
   analyze->add_option("--seed", analyze_options.seed, "Random seed of the wave and wind realizations (default: 1)");
+  analyze->add_flag("--line-dynamics", analyze_options.line_dynamics,
+                    "Also dynamic tensions: every mooring line as a dynamic FE line driven by the hull motion");
   analyze->add_option("--out", analyze_options.out,
                       "Output folder (default: out/<project-stem>/analyze/<case>-<level>-seed<N>)");
   analyze->footer(kExitCodeHelp);

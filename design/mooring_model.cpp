@@ -1,6 +1,7 @@
 #include "design/mooring_model.hpp"
 
 #include <algorithm>
+#include <numbers>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -66,6 +67,9 @@ engine::FeLineModel fe_model_of(const Project& project, const MooringLine& line,
     section.hydro_diameter_m = type.hydrodynamic_diameter_m;
     section.drag_normal = type.drag_normal;
     section.drag_tangential = type.drag_axial;
+    section.displaced_area_m2 = std::numbers::pi / 4.0 * type.hydrodynamic_diameter_m * type.hydrodynamic_diameter_m;
+    section.added_mass_normal = type.added_mass_normal;
+    section.added_mass_tangential = type.added_mass_axial;
     section.element_length_m = std::min(line.fe.element_length_m, segment.length_m);
     model.sections.push_back(section);
   }
@@ -136,6 +140,11 @@ LineArrayModel build_line_array(const Project& project, const LineArrayOptions& 
     }
   }
   return model;
+}
+
+engine::FeLineModel fe_line_model(const Project& project, const MooringLine& line,
+                                  const std::vector<LineTypeProperties>& types) {
+  return fe_model_of(project, line, types);
 }
 
 }  // namespace spiral::design

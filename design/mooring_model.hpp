@@ -51,6 +51,12 @@ engine::CatenaryLine catenary_of(const Project& project, const MooringLine& line
 /// for an unknown line name.
 LineArrayModel build_mooring_model(const Project& project, const std::string& excluded_line = {});
 
+/// The FE model of one mooring line: per segment its EA, mass, submerged
+/// weight, Morison drag and added-mass coefficients on the volume-equivalent
+/// diameter (displaced area π d²/4), and the line's mesh.
+engine::FeLineModel fe_line_model(const Project& project, const MooringLine& line,
+                                  const std::vector<LineTypeProperties>& types);
+
 /// Every line attached to the hull for the coupled static analysis: mooring
 /// lines as catenaries or FE lines (`model`), risers as FE lines with bending.
 LineArrayModel build_line_array(const Project& project, const LineArrayOptions& options);

@@ -3,7 +3,6 @@
 // lines: the model assembly, its forcing table and the run read best together;
 // the tabulated forcing is the first candidate to move to engine/ when the
 // coupled level needs it too.
-#include "design/command_line_reference.hpp"
 #include "design/sc_analysis.hpp"
 
 #include <fmt/format.h>
@@ -15,6 +14,7 @@
 #include <memory>
 #include <numbers>
 
+#include "design/command_line_reference.hpp"
 #include "design/environment_loads.hpp"
 #include "design/hull_model.hpp"
 #include "design/line_hydrodynamics.hpp"
@@ -615,6 +615,26 @@ DynamicAnalysisResult run_dynamic_analysis(const ValidatedProject& validated,
     }
   }
   result.tensions_wall_s = seconds_since(start);
+
+  if (request.line_dynamics && result.times_s.size() >= 2) {
+    start = std::chrono::steady_clock::now();
+    LineDynamicsInput lines;
+    lines.damaged_line = load_case.damaged_line.value_or("");
+    if (environment.current && !environment.current->profile.empty())
+      lines.current = current_profile_of(*environment.current);
+    lines.static_offset = model.initial_offset;
+    lines.t0_s = result.times_s(0);
+    lines.dt_s = result.times_s(1) - result.times_s(0);
+    lines.motion = result.total;
+    lines.ramp_s = request.line_dynamics_ramp_s;
+    result.dynamic_tensions = run_mooring_line_dynamics(project, lines);
+    result.line_dynamics_wall_s = seconds_since(start);
+    result.notes.push_back(
+        fmt::format("dynamic tensions: FE lines with the total hull motion prescribed at the "
+                    "fairleads, built up over the "
+                    "first {:g} s; current on the lines, no wave kinematics on the lines",
+                    request.line_dynamics_ramp_s));
+  }
   return result;
 }
 

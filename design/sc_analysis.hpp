@@ -48,6 +48,7 @@
 #include <string>
 #include <vector>
 
+#include "design/line_dynamics.hpp"
 #include "design/static_case.hpp"
 #include "design/validated_project.hpp"
 #include "engine/analysis/hull_dynamics.hpp"
@@ -70,6 +71,10 @@ struct DynamicAnalysisRequest {
   double output_step_s = 0.5;   ///< > 0, <= duration
   std::uint64_t seed = 1;       ///< waves use `seed`, the wind gust `seed` + 1000003
   bool compute_tensions = true;
+  /// Also the dynamic tensions: every mooring line as a dynamic FE line with
+  /// the hull motion prescribed at its fairlead (design/line_dynamics.hpp).
+  bool line_dynamics = false;
+  double line_dynamics_ramp_s = 20.0;  ///< build-up ramp of the prescribed motion, >= 0
   /// Called with the fraction done (0..1) during the dynamics; may be empty.
   std::function<void(double)> progress;
 };
@@ -113,7 +118,8 @@ struct DynamicAnalysisResult {
   Eigen::Matrix<double, 6, Eigen::Dynamic> wave_frequency;  ///< m, rad (zero without RAOs)
   Eigen::Matrix<double, 6, Eigen::Dynamic> total;           ///< LF + WF
   bool wave_frequency_computed = false;
-  std::vector<TensionSeries> tensions;
+  std::vector<TensionSeries> tensions;               ///< quasi-static
+  std::vector<LineDynamicsSeries> dynamic_tensions;  ///< with request.line_dynamics
   engine::Vector6d static_offset = engine::Vector6d::Zero();
   engine::Vector6d mean_slow_drift_force = engine::Vector6d::Zero();
   std::optional<engine::Matrix6d> line_added_mass;
@@ -126,6 +132,7 @@ struct DynamicAnalysisResult {
   double dynamics_wall_s = 0.0;
   double wave_frequency_wall_s = 0.0;
   double tensions_wall_s = 0.0;
+  double line_dynamics_wall_s = 0.0;
 };
 
 /// Motion RAOs (WAMIT e^{iwt} convention, per unit wave amplitude) from the

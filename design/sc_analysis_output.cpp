@@ -89,6 +89,7 @@ void write_dynamic_time_series_csv(const DynamicAnalysisResult& r,
     for (int d = 0; d < 6; ++d) out << ',' << kDofNames[d] << suffix << '_' << dof_unit(d);
   }
   for (const auto& t : r.tensions) out << ",tension_" << t.line << "_N";
+  for (const auto& t : r.dynamic_tensions) out << ",dynamic_tension_" << t.line << "_N";
   out << '\n';
   for (Eigen::Index k = 0; k < r.times_s.size(); ++k) {
     out << fmt::format("{:.3f}", r.times_s(k));
@@ -96,6 +97,8 @@ void write_dynamic_time_series_csv(const DynamicAnalysisResult& r,
       for (int d = 0; d < 6; ++d) out << fmt::format(",{:.6g}", (*m)(d, k) * dof_scale(d));
     }
     for (const auto& t : r.tensions)
+      out << fmt::format(",{:.7g}", t.tension_N[static_cast<std::size_t>(k)]);
+    for (const auto& t : r.dynamic_tensions)
       out << fmt::format(",{:.7g}", t.tension_N[static_cast<std::size_t>(k)]);
     out << '\n';
   }
@@ -137,6 +140,8 @@ nlohmann::json dynamic_analysis_to_json(const DynamicAnalysisResult& r,
     }
     for (const auto& t : r.tensions)
       channels.push_back(channel_json("tension_" + t.line + "_N", "N", t.tension_N, dt));
+    for (const auto& t : r.dynamic_tensions)
+      channels.push_back(channel_json("dynamic_tension_" + t.line + "_N", "N", t.tension_N, dt));
   }
   j["channels"] = channels;
   j["timing_s"] = {{"equilibrium", r.equilibrium_wall_s},
@@ -145,14 +150,27 @@ nlohmann::json dynamic_analysis_to_json(const DynamicAnalysisResult& r,
                    {"dynamics", r.dynamics_wall_s},
                    {"wave_frequency", r.wave_frequency_wall_s},
                    {"tensions", r.tensions_wall_s},
+                   {"line_dynamics", r.line_dynamics_wall_s},
                    {"total", r.equilibrium_wall_s + r.reduction_wall_s + r.forcing_wall_s +
-                                 r.dynamics_wall_s + r.wave_frequency_wall_s + r.tensions_wall_s}};
+                                 r.dynamics_wall_s + r.wave_frequency_wall_s + r.tensions_wall_s +
+                                 r.line_dynamics_wall_s}};
   j["solver"] = {{"steps", r.solver.steps},
                  {"rhs_evaluations", r.solver.rhs_evaluations},
                  {"jacobian_evaluations", r.solver.jacobian_evaluations},
                  {"error_test_failures", r.solver.error_test_failures},
                  {"nonlinear_convergence_failures", r.solver.nonlinear_convergence_failures},
                  {"last_step_s", r.solver.last_step_s}};
+  nlohmann::json line_solvers = nlohmann::json::array();
+  for (const auto& t : r.dynamic_tensions) {
+    line_solvers.push_back({{"line", t.line},
+                            {"wall_s", t.wall_s},
+                            {"steps", t.solver.steps},
+                            {"residual_evaluations", t.solver.residual_evaluations},
+                            {"jacobian_evaluations", t.solver.newton_matrix_setups},
+                            {"error_test_failures", t.solver.error_test_failures},
+                            {"nonlinear_convergence_failures", t.solver.nonlinear_convergence_failures}});
+  }
+  if (!r.dynamic_tensions.empty()) j["line_dynamics_solver"] = line_solvers;
   j["notes"] = r.notes;
   return j;
 }

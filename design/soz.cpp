@@ -16,6 +16,7 @@
 #include "design/input_error.hpp"
 #include "design/static_case.hpp"
 #include "engine/analysis/rigid_body.hpp"
+#include "engine/common/parallel_for.hpp"
 #include "engine/lines/catenary.hpp"
 
 namespace spiral::design {
@@ -359,30 +360,6 @@ class DirectionSearch {
   int solves_ = 0;
 };
 
-/// Runs `task(i)` for i in [0, count) on `threads` threads (atomic work queue).
-template <class Task>
-void parallel_for(int count, int threads, const Task& task) {
-  std::atomic<int> next{0};
-  std::vector<std::exception_ptr> errors(static_cast<std::size_t>(count));
-  const auto worker = [&] {
-    for (int i = next++; i < count; i = next++) {
-      try {
-        task(i);
-      } catch (...) {
-        errors[static_cast<std::size_t>(i)] = std::current_exception();
-      }
-    }
-  };
-  std::vector<std::thread> pool;
-  for (int t = 1; t < std::min(threads, count); ++t) pool.emplace_back(worker);
-  worker();
-  for (std::thread& t : pool) t.join();
-  // The first failing task in index order: the same error for any thread count.
-  for (const std::exception_ptr& e : errors) {
-    if (e) std::rethrow_exception(e);
-  }
-}
-
 }  // namespace
 
 // ---------------------------------------------------------------------------
@@ -441,7 +418,7 @@ SozResult compute_soz(const Project& project, const std::vector<RiserDesign>& ri
   // Zero-offset solves (cold), one riser per task.
   const int n_risers = static_cast<int>(risers.size());
   std::vector<std::unique_ptr<RiserOffsetEvaluator>> evaluators(risers.size());
-  parallel_for(n_risers, result.threads, [&](int r) {
+  engine::parallel_for(n_risers, result.threads, [&](int r) {
     evaluators[static_cast<std::size_t>(r)] = std::make_unique<RiserOffsetEvaluator>(
         project, risers[static_cast<std::size_t>(r)], conditions, options.model);
   });
@@ -461,7 +438,7 @@ SozResult compute_soz(const Project& project, const std::vector<RiserDesign>& ri
 
   // Directions: tasks of kDirectionsPerTask directions of one riser.
   const int chunks = (n_directions + kDirectionsPerTask - 1) / kDirectionsPerTask;
-  parallel_for(n_risers * chunks, result.threads, [&](int task) {
+  engine::parallel_for(n_risers * chunks, result.threads, [&](int task) {
     const std::size_t r = static_cast<std::size_t>(task / chunks);
     RiserSoz& z = result.risers[r];
     const int first = (task % chunks) * kDirectionsPerTask;

@@ -390,6 +390,7 @@ FeLineDynamics::FeLineDynamics(const FeLineModel& model, const FeDynamicEnvironm
   io.max_order = options.max_order;
   io.max_step_s = options.max_step_s;
   io.initial_step_s = options.initial_step_s;
+  io.max_steps_between_outputs = options.max_steps_between_outputs;
   m.ida = std::make_unique<IdaIntegrator>(m, options.start_time_s, y0, yp0, io);
 }
 

@@ -104,6 +104,7 @@ struct FeDynamicsOptions {
   int max_order = 2;  ///< 1..5 (> 2 is not A-stable for undamped oscillations)
   std::optional<double> max_step_s;
   std::optional<double> initial_step_s;
+  long max_steps_between_outputs = 500000;  ///< IDA gives up (IntegrationError) beyond this
 };
 
 /// The state the caller reads at an output time.

@@ -51,6 +51,33 @@ TEST(CliAnalyze, ScRunWritesCsvAndJson) {
   std::filesystem::remove_all(out);
 }
 
+TEST(CliAnalyze, LineDynamicsWritesDynamicTensions) {
+  const auto out =
+      std::filesystem::temp_directory_path() / ("spiral-analyze-dyn-" + std::to_string(::getpid()));
+  std::filesystem::remove_all(out);
+  const auto result = run_spiral(
+      "analyze " + scenario("oc4-semisubmersible.yaml") +
+      " --case intact-raft-jonswap --duration 60 --line-dynamics --out '" + out.string() + "'");
+  ASSERT_EQ(result.exit_code, app::kExitOk) << result.err;
+  EXPECT_NE(result.out.find("quasi-static vs dynamic"), std::string::npos) << result.out;
+  const std::string csv = read_text(out / "time_series.csv");
+  for (const char* line : {"L1", "L2", "L3"})
+    EXPECT_NE(csv.find(std::string(",dynamic_tension_") + line + "_N"), std::string::npos) << line;
+  const auto doc = nlohmann::json::parse(read_text(out / "summary.json"));
+  ASSERT_EQ(doc["line_dynamics_solver"].size(), 3u);
+  EXPECT_GT(doc["line_dynamics_solver"][0]["steps"].get<long>(), 0);
+  EXPECT_GT(doc["timing_s"]["line_dynamics"].get<double>(), 0.0);
+  bool found = false;
+  for (const auto& c : doc["channels"]) {
+    if (c["name"] == "dynamic_tension_L2_N") {
+      found = true;
+      EXPECT_GT(c["mean"].get<double>(), 5e5) << c.dump();  // ~1.1 MN pretension
+    }
+  }
+  EXPECT_TRUE(found);
+  std::filesystem::remove_all(out);
+}
+
 TEST(CliAnalyze, UnknownLevelIsBadInput) {
   const auto result =
       run_spiral("analyze " + scenario("oc4-semisubmersible.yaml") +

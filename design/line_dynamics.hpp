@@ -1,0 +1,61 @@
+#pragma once
+// Dynamic mooring-line tensions from a prescribed hull motion (DESIGN.md §1:
+// the second half of the uncoupled analysis, and the dynamic tensions of the
+// S-C levels): every intact mooring line as a dynamic FE line
+// (engine/lines/fe_line_dynamics.hpp), started from its FE static solution
+// at the hull's static equilibrium with the case's current on it, its
+// fairlead moved along the hull motion (low + wave frequency), anchor fixed.
+//
+// The fairlead trajectory is the natural cubic spline through the fairlead
+// positions at the motion's output times (C² for the implicit integrator),
+// blended in from the static position by a quintic build-up ramp over
+// `ramp_s` (the motion at t = 0 already carries a wave-frequency offset, and
+// a line cannot start moving with a jump). Values inside the ramp are a
+// build-up transient.
+//
+// Per line: Morison drag and added mass on the velocity relative to the
+// current (waves on the lines are not modelled yet: a note says so),
+// polyester with its dynamic EA at the section's mean static tension
+// (design/line_properties.hpp), seabed penalty from site.seabed with contact
+// damping c = c_bot · d (c_bot = 1e5 Pa·s/m, MoorDyn's default) and Coulomb
+// friction (site.seabed.friction_axial / friction_lateral, regularised below
+// 0.01 m/s). Lines run in parallel on all cores.
+//
+// Errors: a line whose dynamics fail throws engine::SolverError naming the
+// line, the time reached and the cause.
+
+#include <Eigen/Core>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "design/project.hpp"
+#include "engine/analysis/sundials_ida.hpp"
+#include "engine/common/eigen_types.hpp"
+#include "engine/environment/current_profile.hpp"
+
+namespace spiral::design {
+
+struct LineDynamicsInput {
+  std::string damaged_line;                       ///< excluded mooring line ("" intact)
+  std::optional<engine::CurrentProfile> current;  ///< on the lines
+  engine::Vector6d static_offset =
+      engine::Vector6d::Zero();  ///< hull equilibrium the lines start from
+  double t0_s = 0.0;
+  double dt_s = 0.5;                                ///< sample spacing of `motion`, > 0
+  Eigen::Matrix<double, 6, Eigen::Dynamic> motion;  ///< hull offset (m, rad) at t0 + k dt
+  double ramp_s = 20.0;                             ///< build-up ramp, >= 0
+  long max_steps_between_samples = 500000;          ///< integrator work limit per sample
+};
+
+struct LineDynamicsSeries {
+  std::string line;
+  std::vector<double> tension_N;  ///< fairlead tension at the motion's sample times
+  engine::IdaStatistics solver;
+  double wall_s = 0.0;
+};
+
+std::vector<LineDynamicsSeries> run_mooring_line_dynamics(const Project& project,
+                                                          const LineDynamicsInput& input);
+
+}  // namespace spiral::design

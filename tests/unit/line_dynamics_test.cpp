@@ -1,0 +1,103 @@
+// Dynamic mooring-line tensions from a prescribed hull motion, assembled from
+// the OC4 project: the quasi-static limit of a slow motion, a hull at rest,
+// and a failing line named in the error.
+#include "design/line_dynamics.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "design/mooring_model.hpp"
+#include "design/validated_project.hpp"
+#include "engine/analysis/line_array.hpp"
+
+namespace spiral::design {
+namespace {
+
+const std::string kOc4 = std::string(SPIRAL_SOURCE_DIR) + "/scenarios/oc4-semisubmersible.yaml";
+
+LineDynamicsInput surge_motion(double amplitude_m, double period_s, double duration_s) {
+  LineDynamicsInput in;
+  in.dt_s = 0.5;
+  const auto n = static_cast<Eigen::Index>(duration_s / in.dt_s) + 1;
+  in.motion.setZero(6, n);
+  for (Eigen::Index k = 0; k < n; ++k) {
+    in.motion(0, k) = amplitude_m * std::sin(2.0 * std::numbers::pi * in.dt_s *
+                                             static_cast<double>(k) / period_s);
+  }
+  in.ramp_s =
+      0.0;  // the sine starts at zero offset; its velocity jump is what the ramp test covers
+  return in;
+}
+
+TEST(LineDynamics, HullAtRestKeepsTheStaticTension) {
+  const ValidatedProject p = load_validated_project(kOc4);
+  const std::vector<LineDynamicsSeries> lines =
+      run_mooring_line_dynamics(p.project, surge_motion(0.0, 100.0, 120.0));
+  ASSERT_EQ(lines.size(), 3u);
+  for (const LineDynamicsSeries& l : lines) {
+    for (double t : l.tension_N)
+      EXPECT_NEAR(t, l.tension_N.front(), 1e-6 * l.tension_N.front()) << l.line;
+  }
+}
+
+// A surge of 5 m over 200 s moves the fairleads at ≤ 0.16 m/s: drag and
+// inertia are < 0.5 % of the tension, so after the build-up the dynamic
+// tension follows the quasi-static catenary at the same fairlead position
+// (still water: no current on either).
+TEST(LineDynamics, SlowSurgeFollowsTheQuasiStaticCatenary) {
+  const ValidatedProject p = load_validated_project(kOc4);
+  LineDynamicsInput in = surge_motion(5.0, 200.0, 400.0);
+  in.ramp_s = 50.0;
+  const std::vector<LineDynamicsSeries> lines = run_mooring_line_dynamics(p.project, in);
+  LineArrayModel catenaries = build_mooring_model(p.project);
+  double worst = 0.0;
+  for (std::size_t l = 0; l < lines.size(); ++l) {
+    ASSERT_EQ(lines[l].line, catenaries.lines[l]->name());
+    for (Eigen::Index k = 0; k < in.motion.cols(); ++k) {
+      const double t = in.dt_s * static_cast<double>(k);
+      if (t < 100.0) continue;
+      const engine::HullPose pose =
+          engine::pose_from_offset(p.project.hull.reference_point_g, in.motion.col(k));
+      const double quasi_static =
+          catenaries.lines[l]
+              ->solve(pose.reference_point_g + pose.rotation * catenaries.lines[l]->attachment_b())
+              .top_tension_N;
+      worst = std::max(
+          worst, std::abs(lines[l].tension_N[static_cast<std::size_t>(k)] / quasi_static - 1.0));
+    }
+    EXPECT_GT(lines[l].solver.steps, 0);
+  }
+  // Drag/inertia (< 0.5 %), the FE mesh vs the exact catenary (10 m
+  // elements: ~1e-5) and the integrator (~0.25 %).
+  EXPECT_LT(worst, 0.01);
+}
+
+// An integrator that gives up (here: a work limit of 3 steps per sample)
+// stops the line with its name, the time reached and the cause.
+TEST(LineDynamics, AFailingLineIsNamedWithTheTimeReached) {
+  const ValidatedProject p = load_validated_project(kOc4);
+  LineDynamicsInput in = surge_motion(1.0, 20.0, 40.0);
+  in.max_steps_between_samples = 3;
+  try {
+    run_mooring_line_dynamics(p.project, in);
+    FAIL() << "the work limit must stop the integration";
+  } catch (const engine::SolverError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("line L1: FE dynamics failed"), std::string::npos) << what;
+    EXPECT_NE(what.find("IDA failed at t = "), std::string::npos) << what;
+    EXPECT_NE(what.find("IDA_TOO_MUCH_WORK"), std::string::npos) << what;
+  }
+}
+
+TEST(LineDynamics, NonFiniteMotionIsRejected) {
+  const ValidatedProject p = load_validated_project(kOc4);
+  LineDynamicsInput in = surge_motion(1.0, 20.0, 40.0);
+  in.motion(0, 40) = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(run_mooring_line_dynamics(p.project, in), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace spiral::design
