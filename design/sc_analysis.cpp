@@ -602,15 +602,15 @@ DynamicAnalysisResult run_dynamic_analysis(const ValidatedProject& validated,
     LineArrayModel mooring = build_mooring_model(project, load_case.damaged_line.value_or(""));
     const Eigen::Index n = result.total.cols();
     for (const auto& line : mooring.lines)
-      result.tensions.push_back({line->name(), std::vector<double>(n)});
+      result.tensions.push_back({line->name(), std::vector<double>(n), std::vector<Eigen::Vector3d>(n)});
     for (Eigen::Index k = 0; k < n; ++k) {
       const engine::HullPose pose =
           engine::pose_from_offset(project.hull.reference_point_g, result.total.col(k));
       for (std::size_t l = 0; l < mooring.lines.size(); ++l) {
         const auto& line = mooring.lines[l];
-        result.tensions[l].tension_N[static_cast<std::size_t>(k)] =
-            line->solve(pose.reference_point_g + pose.rotation * line->attachment_b())
-                .top_tension_N;
+        const Eigen::Vector3d fairlead = pose.reference_point_g + pose.rotation * line->attachment_b();
+        result.tensions[l].fairlead_g_m[static_cast<std::size_t>(k)] = fairlead;
+        result.tensions[l].tension_N[static_cast<std::size_t>(k)] = line->solve(fairlead).top_tension_N;
       }
     }
   }

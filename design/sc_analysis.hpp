@@ -106,6 +106,7 @@ DynamicModel build_dynamic_model(const ValidatedProject& project,
 struct TensionSeries {
   std::string line;
   std::vector<double> tension_N;
+  std::vector<Eigen::Vector3d> fairlead_g_m;  ///< fairlead position (global) at the total motion
 };
 
 struct DynamicAnalysisResult {

@@ -48,6 +48,19 @@ nlohmann::json channel_json(const std::string& name, const std::string& unit,
   try {
     const engine::ChannelStatistics s = engine::analyze_channel(x, dt_s, welch_segment(x.size()));
     j["spectral_peak_period_s"] = s.spectral_peak_period_s;
+    // The Welch spectrum (one-sided S(w), unit²·s/rad) up to where it holds
+    // all but 1e-6 of the variance: the Nyquist tail of a 0.5 s record is noise.
+    const engine::Spectrum& sp = s.spectrum;
+    double total = 0.0;
+    for (Eigen::Index k = 0; k < sp.density.size(); ++k) total += sp.density(k);
+    Eigen::Index last = sp.density.size() - 1;
+    for (double tail = 0.0; last > 1 && tail + sp.density(last) <= 1e-6 * total; --last) tail += sp.density(last);
+    std::vector<double> w(static_cast<std::size_t>(last + 1)), d(static_cast<std::size_t>(last + 1));
+    for (Eigen::Index k = 0; k <= last; ++k) {
+      w[static_cast<std::size_t>(k)] = sp.frequency_rad_s(k);
+      d[static_cast<std::size_t>(k)] = sp.density(k);
+    }
+    j["spectrum"] = {{"frequency_rad_per_s", w}, {"density_per_rad_per_s", d}, {"welch_segments", sp.segments}};
     j["zero_upcrossing_period_s"] = s.zero_upcrossing_period_s;
     j["mpm_max_3h"] = {{"gumbel", s.maximum.mpm_gumbel},
                        {"weibull", s.maximum.mpm_weibull},
@@ -90,6 +103,9 @@ void write_dynamic_time_series_csv(const DynamicAnalysisResult& r,
   }
   for (const auto& t : r.tensions) out << ",tension_" << t.line << "_N";
   for (const auto& t : r.dynamic_tensions) out << ",dynamic_tension_" << t.line << "_N";
+  for (const auto& t : r.tensions) {
+    for (const char* axis : {"x", "y", "z"}) out << ",fairlead_" << t.line << '_' << axis << "_m";
+  }
   out << '\n';
   for (Eigen::Index k = 0; k < r.times_s.size(); ++k) {
     out << fmt::format("{:.3f}", r.times_s(k));
@@ -100,6 +116,10 @@ void write_dynamic_time_series_csv(const DynamicAnalysisResult& r,
       out << fmt::format(",{:.7g}", t.tension_N[static_cast<std::size_t>(k)]);
     for (const auto& t : r.dynamic_tensions)
       out << fmt::format(",{:.7g}", t.tension_N[static_cast<std::size_t>(k)]);
+    for (const auto& t : r.tensions) {
+      const Eigen::Vector3d& f = t.fairlead_g_m[static_cast<std::size_t>(k)];
+      out << fmt::format(",{:.4f},{:.4f},{:.4f}", f.x(), f.y(), f.z());
+    }
     out << '\n';
   }
   if (!out) throw std::runtime_error(fmt::format("error while writing {}", file.string()));

@@ -27,6 +27,7 @@ TEST(CliAnalyze, ScRunWritesCsvAndJson) {
   ASSERT_EQ(csv.rfind("time_s,surge_m,sway_m,heave_m,roll_deg,pitch_deg,yaw_deg,surge_lf_m", 0), 0u)
       << csv.substr(0, 200);
   EXPECT_NE(csv.find(",tension_L1_N"), std::string::npos);
+  EXPECT_NE(csv.find(",fairlead_L3_x_m,fairlead_L3_y_m,fairlead_L3_z_m"), std::string::npos);
   // 1200 s at 0.5 s: 2401 rows + header.
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 2402);
   const auto doc = nlohmann::json::parse(read_text(out / "summary.json"));
@@ -44,6 +45,15 @@ TEST(CliAnalyze, ScRunWritesCsvAndJson) {
   EXPECT_EQ(surge["name"], "surge_m");
   EXPECT_GT(surge["std"].get<double>(), 0.0);
   EXPECT_TRUE(surge.contains("mpm_max_3h")) << surge.dump();
+  // The spectrum: frequencies and densities of one length, its sum·dw the variance (Welch, Parseval).
+  const auto& freq = surge["spectrum"]["frequency_rad_per_s"];
+  const auto& dens = surge["spectrum"]["density_per_rad_per_s"];
+  ASSERT_EQ(freq.size(), dens.size());
+  ASSERT_GT(freq.size(), 4u);
+  double variance = 0.0;
+  for (const auto& s : dens) variance += s.get<double>() * (freq[1].get<double>() - freq[0].get<double>());
+  const double sd = surge["std"].get<double>();
+  EXPECT_NEAR(variance, sd * sd, 0.3 * sd * sd);  // Welch windowing and segment means lose some variance
   for (const char* step : {"equilibrium", "reduction", "dynamics", "tensions"}) {
     EXPECT_GE(doc["timing_s"][step].get<double>(), 0.0) << step;
   }
