@@ -22,7 +22,10 @@ engine::PipeSection pipe_section_of(const RiserSection& s) {
   engine::PipeSection p;
   p.outer_diameter_m = s.outer_diameter_m;
   p.contents_density_kg_per_m3 = s.contents_density_kg_per_m3;
-  if (s.wall_thickness_m) p.wall_thickness_m = *s.wall_thickness_m;
+  // A steel wall, or a flexible's layered wall known by its bore (validation
+  // allows exactly one of the two).
+  p.wall_thickness_m = s.wall_thickness_m;
+  p.inner_diameter_m = s.inner_diameter_m;
   if (s.youngs_modulus_Pa) p.youngs_modulus_Pa = *s.youngs_modulus_Pa;
   if (s.steel_density_kg_per_m3) p.steel_density_kg_per_m3 = *s.steel_density_kg_per_m3;
   if (s.yield_stress_Pa) p.yield_stress_Pa = *s.yield_stress_Pa;
@@ -32,10 +35,8 @@ engine::PipeSection pipe_section_of(const RiserSection& s) {
   if (s.buoyancy_outer_diameter_m && s.buoyancy_density_kg_per_m3) {
     p.buoyancy = engine::SmearedBuoyancy{*s.buoyancy_outer_diameter_m, *s.buoyancy_density_kg_per_m3};
   }
-  if (s.axial_stiffness_N && s.bending_stiffness_N_m2 && s.mass_per_length_kg_per_m) {
-    p.explicit_properties =
-        engine::ExplicitSectionProperties{*s.axial_stiffness_N, *s.bending_stiffness_N_m2, *s.mass_per_length_kg_per_m};
-  }
+  p.explicit_properties = {s.axial_stiffness_N, s.bending_stiffness_N_m2,
+                           s.mass_per_length_kg_per_m};
   return p;
 }
 
@@ -80,7 +81,10 @@ RiserDesign riser_design(const Project& project, const Riser& riser) {
     RiserSectionDesign section;
     section.length_m = it->length_m;
     section.properties = engine::pipe_section_properties(pipe_section_of(*it), water);
-    section.steel = riser.kind != RiserKind::flexible && it->wall_thickness_m.has_value();
+    // Von Mises applies to a steel wall; a flexible pipe (even one given by
+    // steel-like properties) is checked by its bending radius and tensions.
+    section.steel = riser.kind != RiserKind::flexible &&
+                    section.properties.wall == engine::PipeWall::homogeneous;
     design.sections.push_back(section);
   }
 
@@ -167,7 +171,6 @@ RiserStaticsRow riser_statics_row(const Project& project, const RiserDesign& des
                                                  design.contents_density_top_kg_per_m3};
   const double factor = design_factor(design.criteria.design_factor, condition);
   row.min_effective_tension_N = std::numeric_limits<double>::infinity();
-  bool any_steel = false;
   const std::vector<int> sections = engine::node_sections(design.fe_model, solution);
   for (std::size_t i = 0; i < solution.node_position_m.size(); ++i) {
     const double arc = solution.node_arc_length_m[i];
@@ -180,7 +183,6 @@ RiserStaticsRow riser_statics_row(const Project& project, const RiserDesign& des
     row.max_curvature_per_m = std::max(row.max_curvature_per_m, std::abs(solution.node_curvature_per_m[i]));
     const RiserSectionDesign& sd = design.sections[section];
     if (sd.steel) {
-      any_steel = true;
       const double z = solution.node_position_m[i].z();
       const engine::PipePressures pressures{engine::internal_pressure_Pa(internal, z, water.gravity_m_per_s2),
                                             engine::external_pressure_Pa(z, water)};
@@ -189,7 +191,7 @@ RiserStaticsRow riser_statics_row(const Project& project, const RiserDesign& des
                      std::abs(solution.node_bending_moment_Nm[i]), pressures};
       input.design_factor = factor;
       const double u = engine::check_pipe_stress(sd.properties, input).utilization;
-      if (u > row.max_von_mises_utilization) {
+      if (!row.max_von_mises_utilization || u > *row.max_von_mises_utilization) {
         row.max_von_mises_utilization = u;
         row.max_von_mises_arc_m = arc;
       }
@@ -204,7 +206,9 @@ RiserStaticsRow riser_statics_row(const Project& project, const RiserDesign& des
   const auto add = [&](std::string name, double value, double limit, std::string unit, double utilization) {
     row.checks.push_back({std::move(name), value, limit, std::move(unit), utilization, utilization <= 1.0});
   };
-  if (any_steel) add("von_mises", row.max_von_mises_utilization, 1.0, "-", row.max_von_mises_utilization);
+  if (row.max_von_mises_utilization) {
+    add("von_mises", *row.max_von_mises_utilization, 1.0, "-", *row.max_von_mises_utilization);
+  }
   // A floor, not a capacity: no ratio of T_min to its limit measures closeness
   // (the limit is usually 0), so the check is pass/fail — 0 while it holds,
   // 1 + deficit/T_top once T_min drops below the limit.

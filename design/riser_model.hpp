@@ -79,8 +79,11 @@ struct RiserStaticsRow {
   double min_effective_tension_arc_m = 0.0;  ///< from the foot
   double max_curvature_per_m = 0.0;
   double min_bending_radius_m = 0.0;     ///< 1 / max curvature
-  double max_von_mises_utilization = 0.0;
-  double max_von_mises_arc_m = 0.0;      ///< from the foot
+  /// Largest von Mises utilization over the steel sections and where (arc
+  /// from the foot); empty when no section has a steel wall (a flexible pipe
+  /// is checked by its bending radius and tensions instead).
+  std::optional<double> max_von_mises_utilization;
+  std::optional<double> max_von_mises_arc_m;
   std::vector<RiserCriterionCheck> checks;
   std::string governing_criterion;       ///< the check with the largest utilization
   double utilization = 0.0;              ///< of the governing check
