@@ -1,22 +1,20 @@
 #include "design/riser_model.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
 
-#include <fmt/format.h>
-
 #include "engine/lines/catenary.hpp"
+#include "engine/lines/catenary_top_angle.hpp"
 
 namespace spiral::design {
 
 namespace {
 
 constexpr double kRadToDeg = 180.0 / std::numbers::pi;
-// Bisection on the foot distance: 80 halvings of a kilometre-scale bracket
-// reach round-off; the top angle is then exact to ~1e-12 rad.
-constexpr int kFootSearchIterations = 80;
 
 engine::PipeSection pipe_section_of(const RiserSection& s) {
   engine::PipeSection p;
@@ -40,11 +38,41 @@ engine::PipeSection pipe_section_of(const RiserSection& s) {
   return p;
 }
 
-/// Top angle from vertical (rad) of the riser as a catenary with its foot at
-/// horizontal distance `x_m` from the hang-off.
-double catenary_top_angle(const engine::CatenaryLine& line, double x_m, double z_m) {
-  const auto s = engine::solve_catenary(line, {x_m, z_m, 0.0});
-  return std::atan2(s.fairlead_horizontal_N, s.fairlead_vertical_N);
+// Profile points per section for the seabed check below: the sag bend of a
+// lazy wave spans hundreds of metres, so 100 points resolve its lowest point
+// to well under a metre.
+constexpr int kSeabedCheckPointsPerSection = 100;
+// The sag may come this close to the seabed (m) before it counts as touching:
+// the catenary's round-off on kilometre spans, not a physical clearance.
+constexpr double kSeabedClearanceTolerance_m = 1e-6;
+
+/// The catenary of the placement knows the seabed only from the foot to the
+/// touchdown point; a lazy wave's sag bend between the hull and the buoyant
+/// section must not dip below it either (it would lie there instead).
+void check_suspended_above_seabed(const std::string& name, const engine::CatenaryLine& catenary,
+                                  const engine::TopAngleCatenary& placement, double z_span_m) {
+  engine::CatenaryOptions options;
+  options.profile_points_per_segment = kSeabedCheckPointsPerSection;
+  const auto solution = engine::solve_catenary(
+      catenary, {placement.horizontal_span_m, z_span_m, 0.0}, options,
+      engine::CatenaryGuess{placement.fairlead_horizontal_N, placement.fairlead_vertical_N});
+  double lowest_m = std::numeric_limits<double>::infinity();
+  double lowest_arc_m = 0.0;
+  for (const engine::CatenaryProfilePoint& p : solution.profile) {
+    if (!p.on_seabed && p.arc_length_m > solution.laid_length_m && p.z_m < lowest_m) {
+      lowest_m = p.z_m;
+      lowest_arc_m = p.arc_length_m;
+    }
+  }
+  if (lowest_m < -kSeabedClearanceTolerance_m) {
+    throw engine::SolverError(
+        fmt::format("riser '{}': at its design top angle the suspended riser would dip {:.1f} m "
+                    "below the seabed "
+                    "{:.1f} m from the foot (a sag bend on the seabed); shorten the sections above "
+                    "the buoyancy or "
+                    "add buoyancy",
+                    name, -lowest_m, lowest_arc_m));
+  }
 }
 
 }  // namespace
@@ -103,25 +131,23 @@ RiserDesign riser_design(const Project& project, const Riser& riser) {
                                           "the hang-off",
                                           riser.name, length_m, z_span_m));
   }
-  double x_low = 1e-3 * length_m;
-  double x_high = 0.999 * std::sqrt(length_m * length_m - z_span_m * z_span_m);
-  const double angle_low = catenary_top_angle(catenary, x_low, z_span_m);
-  const double angle_high = catenary_top_angle(catenary, x_high, z_span_m);
-  if (riser.top_angle_rad < angle_low || riser.top_angle_rad > angle_high) {
-    throw engine::SolverError(fmt::format(
-        "riser '{}': no foot position gives the top angle {:.2f}° (a {:.1f} m riser spans {:.2f}°–{:.2f}°); "
-        "change top_angle_deg or the section lengths",
-        riser.name, riser.top_angle_rad * kRadToDeg, length_m, angle_low * kRadToDeg, angle_high * kRadToDeg));
+  // With the top angle given, the catenary's unknown is the top vertical force
+  // (engine/lines/catenary_top_angle.hpp); a lazy wave's buoyant section then
+  // stays suspended by construction.
+  engine::TopAngleCatenary placement;
+  try {
+    placement = engine::solve_catenary_for_top_angle(catenary, z_span_m, riser.top_angle_rad);
+  } catch (const engine::SolverError& error) {
+    throw engine::SolverError(
+        fmt::format("riser '{}' ({:.1f} m): {}; change top_angle_deg or the section lengths",
+                    riser.name, length_m, error.what()));
   }
-  for (int i = 0; i < kFootSearchIterations; ++i) {
-    const double x_mid = 0.5 * (x_low + x_high);
-    (catenary_top_angle(catenary, x_mid, z_span_m) < riser.top_angle_rad ? x_low : x_high) = x_mid;
-  }
-  const double foot_distance_m = 0.5 * (x_low + x_high);
+  const double foot_distance_m = placement.horizontal_span_m;
+  check_suspended_above_seabed(riser.name, catenary, placement, z_span_m);
   const Eigen::Vector3d direction(std::cos(riser.azimuth_rad), std::sin(riser.azimuth_rad), 0.0);
   design.foot_g = hang_off_g + foot_distance_m * direction;
   design.foot_g.z() = -project.site.depth_m;
-  const double laid_m = engine::solve_catenary(catenary, {foot_distance_m, z_span_m, 0.0}).laid_length_m;
+  const double laid_m = placement.laid_length_m;
 
   for (const RiserSectionDesign& s : design.sections) {
     engine::FeLineSection fe;

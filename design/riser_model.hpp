@@ -6,10 +6,13 @@
 // flex-joint rotation and minimum bending radius.
 //
 // The riser's foot (its seabed end) is placed so that at the hull's rest
-// position the riser leaves the hang-off at its design top angle: a 1-D
-// search on the foot distance with the riser as a multi-segment elastic
-// catenary (weight = effective weight, bending neglected — it changes the
-// top angle by hundredths of a degree for an SCR).
+// position the riser leaves the hang-off at its design top angle: the riser
+// as a multi-segment elastic catenary (weight = effective weight, bending
+// neglected — it changes the top angle by hundredths of a degree for an
+// SCR) solved for its top force on the ray H = V tan θ
+// (engine/lines/catenary_top_angle.hpp), which keeps a lazy wave's buoyant
+// section suspended; the suspended part must stay above the seabed (a sag
+// bend lying on it is a geometry error).
 
 #include <memory>
 #include <optional>
@@ -46,7 +49,8 @@ struct RiserDesign {
 
 /// Section properties, foot position and FE model of a riser. Throws
 /// engine::SolverError when no foot position gives the design top angle
-/// (riser too short to reach the seabed at that angle, or too long).
+/// (riser too short to reach the seabed at that angle, or too long or too
+/// buoyant: a buoyant section or the sag bend would lie on the seabed).
 RiserDesign riser_design(const Project& project, const Riser& riser);
 
 /// The FE environment of a line of contact diameter `diameter_m` (seabed
