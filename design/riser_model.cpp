@@ -94,6 +94,14 @@ engine::FeEnvironment fe_environment(const Project& project, const std::optional
   return environment;
 }
 
+std::optional<engine::FeRefinementZone> touchdown_refinement_zone(const FeMesh& mesh,
+                                                                  double laid_length_m) {
+  if (!mesh.touchdown_refinement || !(laid_length_m > 0.0)) return std::nullopt;
+  const TouchdownRefinement& zone = *mesh.touchdown_refinement;
+  return engine::FeRefinementZone{std::max(0.0, laid_length_m - 0.5 * zone.length_m), zone.length_m,
+                                  zone.element_length_m};
+}
+
 RiserDesign riser_design(const Project& project, const Riser& riser) {
   const engine::Seawater water{project.site.water_density_kg_per_m3, project.site.gravity_m_per_s2};
   RiserDesign design;
@@ -166,11 +174,7 @@ RiserDesign riser_design(const Project& project, const Riser& riser) {
     design.fe_model.sections[i].drag_normal = s.drag_normal;
     design.fe_model.sections[i].drag_tangential = s.drag_axial;
   }
-  if (riser.fe.touchdown_refinement && laid_m > 0.0) {
-    const auto& zone = *riser.fe.touchdown_refinement;
-    design.fe_model.refinement = engine::FeRefinementZone{
-        std::max(0.0, laid_m - 0.5 * zone.length_m), zone.length_m, zone.element_length_m};
-  }
+  design.fe_model.refinement = touchdown_refinement_zone(riser.fe, laid_m);
   return design;
 }
 
