@@ -73,7 +73,25 @@ engine::FeLineModel fe_model_of(const Project& project, const MooringLine& line,
     section.element_length_m = std::min(line.fe.element_length_m, segment.length_m);
     model.sections.push_back(section);
   }
-  model.joint_load_N = catenary_of(project, line, types).joint_load_N;
+  const engine::CatenaryLine catenary = catenary_of(project, line, types);
+  model.joint_load_N = catenary.joint_load_N;
+  if (line.fe.touchdown_refinement) {
+    // The zone is centred on the touchdown point of the at-rest line (hull at
+    // its reference point), from the multi-segment catenary: its laid length
+    // is the arc from the anchor to the TDP.
+    const Eigen::Vector3d fairlead_g = project.hull.reference_point_g + line.fairlead_b;
+    const engine::CatenaryGeometry at_rest{(fairlead_g - line.anchor_g).head<2>().norm(),
+                                           fairlead_g.z() - line.anchor_g.z(),
+                                           std::max(0.0, line.anchor_g.z() + project.site.depth_m)};
+    try {
+      model.refinement = touchdown_refinement_zone(
+          line.fe, engine::solve_catenary(catenary, at_rest).laid_length_m);
+    } catch (const engine::SolverError& error) {
+      throw engine::SolverError(fmt::format(
+          "line '{}': fe.touchdown_refinement needs the touchdown point of the line at rest: {}",
+          line.name, error.what()));
+    }
+  }
   return model;
 }
 

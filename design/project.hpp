@@ -218,10 +218,13 @@ enum class RiserKind { scr, lazy_wave, flexible };
 /// A riser section of uniform properties, ordered from the hang-off down.
 struct RiserSection {
   double length_m = 0.0;
-  double outer_diameter_m = 0.0;  ///< steel (or flexible) outer diameter
+  double outer_diameter_m = 0.0;  ///< steel (or flexible outer-sheath) outer diameter
   double contents_density_kg_per_m3 = 0.0;
   /// Steel pipe properties: required for scr and lazy_wave, optional for flexible.
   std::optional<double> wall_thickness_m;
+  /// Bore of a flexible pipe without a steel wall (layered wall, API 17J):
+  /// required there with axial_stiffness, bending_stiffness, mass_per_length.
+  std::optional<double> inner_diameter_m;
   std::optional<double> youngs_modulus_Pa;
   std::optional<double> yield_stress_Pa;
   std::optional<double> steel_density_kg_per_m3;
@@ -231,7 +234,8 @@ struct RiserSection {
   /// Lazy-wave buoyancy modules smeared to an equivalent cylinder (both or neither).
   std::optional<double> buoyancy_outer_diameter_m;
   std::optional<double> buoyancy_density_kg_per_m3;
-  /// Explicit overrides (flexible pipes: from the manufacturer's data sheet).
+  /// Explicit values (flexible pipes: from the manufacturer's data sheet), or
+  /// overrides of the steel formulas (each one given replaces its formula).
   std::optional<double> axial_stiffness_N;         ///< EA
   std::optional<double> bending_stiffness_N_m2;    ///< EI
   std::optional<double> mass_per_length_kg_per_m;  ///< in air, empty pipe incl. coating

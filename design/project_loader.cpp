@@ -735,6 +735,7 @@ RiserSection read_riser_section(MapReader& r) {
   assign(s.outer_diameter_m, r.number("outer_diameter", "m", kRequired));
   assign(s.contents_density_kg_per_m3, r.number("contents_density", "kg/m^3", kRequired));
   s.wall_thickness_m = r.number("wall_thickness", "m", kOptional);
+  s.inner_diameter_m = r.number("inner_diameter", "m", kOptional);
   s.youngs_modulus_Pa = r.number("youngs_modulus", "Pa", kOptional);
   s.yield_stress_Pa = r.number("yield_stress", "Pa", kOptional);
   s.steel_density_kg_per_m3 = r.number("steel_density", "kg/m^3", kOptional);

@@ -583,6 +583,7 @@ void check_riser_section(const Riser& riser, const RiserSection& s, const std::s
   at_least(r, at + ".contents_density", s.contents_density_kg_per_m3, 0.0, "kg/m^3",
            "riser_value_non_negative");
   positive(r, at + ".wall_thickness", s.wall_thickness_m, "m", c);
+  positive(r, at + ".inner_diameter", s.inner_diameter_m, "m", c);
   positive(r, at + ".youngs_modulus", s.youngs_modulus_Pa, "Pa", c);
   positive(r, at + ".yield_stress", s.yield_stress_Pa, "Pa", c);
   positive(r, at + ".steel_density", s.steel_density_kg_per_m3, "kg/m^3", c);
@@ -603,6 +604,15 @@ void check_riser_section(const Riser& riser, const RiserSection& s, const std::s
     r.fail(at + ".wall_thickness", "wall_thinner_than_radius",
            fmt::format("must be < outer_diameter / 2 = {} m, got {} m", 0.5 * s.outer_diameter_m,
                        *s.wall_thickness_m));
+  }
+  if (s.inner_diameter_m && s.wall_thickness_m) {
+    r.fail(at + ".inner_diameter", "bore_defined_once",
+           "give wall_thickness (steel wall) or inner_diameter (flexible bore), not both");
+  } else if (s.inner_diameter_m && s.outer_diameter_m > 0.0 &&
+             !(*s.inner_diameter_m < s.outer_diameter_m)) {
+    r.fail(at + ".inner_diameter", "bore_inside_pipe",
+           fmt::format("must be < outer_diameter {} m, got {} m", s.outer_diameter_m,
+                       *s.inner_diameter_m));
   }
   if (s.coating_thickness_m.has_value() != s.coating_density_kg_per_m3.has_value()) {
     r.fail(at, "coating_complete",
@@ -634,11 +644,12 @@ void check_riser_section(const Riser& riser, const RiserSection& s, const std::s
                fmt::format("a {} riser section needs {}", to_string(riser.kind), key));
       }
     }
-  } else if (!steel &&
-             !(s.axial_stiffness_N && s.bending_stiffness_N_m2 && s.mass_per_length_kg_per_m)) {
+  } else if (!steel && !(s.axial_stiffness_N && s.bending_stiffness_N_m2 &&
+                         s.mass_per_length_kg_per_m && s.inner_diameter_m)) {
     r.fail(at, "flexible_riser_complete",
-           "a flexible riser section needs axial_stiffness (N), bending_stiffness (N m^2) and "
-           "mass_per_length (kg/m), or the steel wall_thickness, youngs_modulus and steel_density");
+           "a flexible riser section needs inner_diameter (m, the bore), axial_stiffness (N), "
+           "bending_stiffness (N m^2) and mass_per_length (kg/m), or the steel wall_thickness, "
+           "youngs_modulus and steel_density");
   }
 }
 

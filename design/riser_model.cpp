@@ -1,28 +1,29 @@
 #include "design/riser_model.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
 
-#include <fmt/format.h>
-
 #include "engine/lines/catenary.hpp"
+#include "engine/lines/catenary_top_angle.hpp"
 
 namespace spiral::design {
 
 namespace {
 
 constexpr double kRadToDeg = 180.0 / std::numbers::pi;
-// Bisection on the foot distance: 80 halvings of a kilometre-scale bracket
-// reach round-off; the top angle is then exact to ~1e-12 rad.
-constexpr int kFootSearchIterations = 80;
 
 engine::PipeSection pipe_section_of(const RiserSection& s) {
   engine::PipeSection p;
   p.outer_diameter_m = s.outer_diameter_m;
   p.contents_density_kg_per_m3 = s.contents_density_kg_per_m3;
-  if (s.wall_thickness_m) p.wall_thickness_m = *s.wall_thickness_m;
+  // A steel wall, or a flexible's layered wall known by its bore (validation
+  // allows exactly one of the two).
+  p.wall_thickness_m = s.wall_thickness_m;
+  p.inner_diameter_m = s.inner_diameter_m;
   if (s.youngs_modulus_Pa) p.youngs_modulus_Pa = *s.youngs_modulus_Pa;
   if (s.steel_density_kg_per_m3) p.steel_density_kg_per_m3 = *s.steel_density_kg_per_m3;
   if (s.yield_stress_Pa) p.yield_stress_Pa = *s.yield_stress_Pa;
@@ -32,18 +33,46 @@ engine::PipeSection pipe_section_of(const RiserSection& s) {
   if (s.buoyancy_outer_diameter_m && s.buoyancy_density_kg_per_m3) {
     p.buoyancy = engine::SmearedBuoyancy{*s.buoyancy_outer_diameter_m, *s.buoyancy_density_kg_per_m3};
   }
-  if (s.axial_stiffness_N && s.bending_stiffness_N_m2 && s.mass_per_length_kg_per_m) {
-    p.explicit_properties =
-        engine::ExplicitSectionProperties{*s.axial_stiffness_N, *s.bending_stiffness_N_m2, *s.mass_per_length_kg_per_m};
-  }
+  p.explicit_properties = {s.axial_stiffness_N, s.bending_stiffness_N_m2,
+                           s.mass_per_length_kg_per_m};
   return p;
 }
 
-/// Top angle from vertical (rad) of the riser as a catenary with its foot at
-/// horizontal distance `x_m` from the hang-off.
-double catenary_top_angle(const engine::CatenaryLine& line, double x_m, double z_m) {
-  const auto s = engine::solve_catenary(line, {x_m, z_m, 0.0});
-  return std::atan2(s.fairlead_horizontal_N, s.fairlead_vertical_N);
+// Profile points per section for the seabed check below: the sag bend of a
+// lazy wave spans hundreds of metres, so 100 points resolve its lowest point
+// to well under a metre.
+constexpr int kSeabedCheckPointsPerSection = 100;
+// The sag may come this close to the seabed (m) before it counts as touching:
+// the catenary's round-off on kilometre spans, not a physical clearance.
+constexpr double kSeabedClearanceTolerance_m = 1e-6;
+
+/// The catenary of the placement knows the seabed only from the foot to the
+/// touchdown point; a lazy wave's sag bend between the hull and the buoyant
+/// section must not dip below it either (it would lie there instead).
+void check_suspended_above_seabed(const std::string& name, const engine::CatenaryLine& catenary,
+                                  const engine::TopAngleCatenary& placement, double z_span_m) {
+  engine::CatenaryOptions options;
+  options.profile_points_per_segment = kSeabedCheckPointsPerSection;
+  const auto solution = engine::solve_catenary(
+      catenary, {placement.horizontal_span_m, z_span_m, 0.0}, options,
+      engine::CatenaryGuess{placement.fairlead_horizontal_N, placement.fairlead_vertical_N});
+  double lowest_m = std::numeric_limits<double>::infinity();
+  double lowest_arc_m = 0.0;
+  for (const engine::CatenaryProfilePoint& p : solution.profile) {
+    if (!p.on_seabed && p.arc_length_m > solution.laid_length_m && p.z_m < lowest_m) {
+      lowest_m = p.z_m;
+      lowest_arc_m = p.arc_length_m;
+    }
+  }
+  if (lowest_m < -kSeabedClearanceTolerance_m) {
+    throw engine::SolverError(
+        fmt::format("riser '{}': at its design top angle the suspended riser would dip {:.1f} m "
+                    "below the seabed "
+                    "{:.1f} m from the foot (a sag bend on the seabed); shorten the sections above "
+                    "the buoyancy or "
+                    "add buoyancy",
+                    name, -lowest_m, lowest_arc_m));
+  }
 }
 
 }  // namespace
@@ -65,6 +94,14 @@ engine::FeEnvironment fe_environment(const Project& project, const std::optional
   return environment;
 }
 
+std::optional<engine::FeRefinementZone> touchdown_refinement_zone(const FeMesh& mesh,
+                                                                  double laid_length_m) {
+  if (!mesh.touchdown_refinement || !(laid_length_m > 0.0)) return std::nullopt;
+  const TouchdownRefinement& zone = *mesh.touchdown_refinement;
+  return engine::FeRefinementZone{std::max(0.0, laid_length_m - 0.5 * zone.length_m), zone.length_m,
+                                  zone.element_length_m};
+}
+
 RiserDesign riser_design(const Project& project, const Riser& riser) {
   const engine::Seawater water{project.site.water_density_kg_per_m3, project.site.gravity_m_per_s2};
   RiserDesign design;
@@ -80,7 +117,10 @@ RiserDesign riser_design(const Project& project, const Riser& riser) {
     RiserSectionDesign section;
     section.length_m = it->length_m;
     section.properties = engine::pipe_section_properties(pipe_section_of(*it), water);
-    section.steel = riser.kind != RiserKind::flexible && it->wall_thickness_m.has_value();
+    // Von Mises applies to a steel wall; a flexible pipe (even one given by
+    // steel-like properties) is checked by its bending radius and tensions.
+    section.steel = riser.kind != RiserKind::flexible &&
+                    section.properties.wall == engine::PipeWall::homogeneous;
     design.sections.push_back(section);
   }
 
@@ -99,25 +139,23 @@ RiserDesign riser_design(const Project& project, const Riser& riser) {
                                           "the hang-off",
                                           riser.name, length_m, z_span_m));
   }
-  double x_low = 1e-3 * length_m;
-  double x_high = 0.999 * std::sqrt(length_m * length_m - z_span_m * z_span_m);
-  const double angle_low = catenary_top_angle(catenary, x_low, z_span_m);
-  const double angle_high = catenary_top_angle(catenary, x_high, z_span_m);
-  if (riser.top_angle_rad < angle_low || riser.top_angle_rad > angle_high) {
-    throw engine::SolverError(fmt::format(
-        "riser '{}': no foot position gives the top angle {:.2f}° (a {:.1f} m riser spans {:.2f}°–{:.2f}°); "
-        "change top_angle_deg or the section lengths",
-        riser.name, riser.top_angle_rad * kRadToDeg, length_m, angle_low * kRadToDeg, angle_high * kRadToDeg));
+  // With the top angle given, the catenary's unknown is the top vertical force
+  // (engine/lines/catenary_top_angle.hpp); a lazy wave's buoyant section then
+  // stays suspended by construction.
+  engine::TopAngleCatenary placement;
+  try {
+    placement = engine::solve_catenary_for_top_angle(catenary, z_span_m, riser.top_angle_rad);
+  } catch (const engine::SolverError& error) {
+    throw engine::SolverError(
+        fmt::format("riser '{}' ({:.1f} m): {}; change top_angle_deg or the section lengths",
+                    riser.name, length_m, error.what()));
   }
-  for (int i = 0; i < kFootSearchIterations; ++i) {
-    const double x_mid = 0.5 * (x_low + x_high);
-    (catenary_top_angle(catenary, x_mid, z_span_m) < riser.top_angle_rad ? x_low : x_high) = x_mid;
-  }
-  const double foot_distance_m = 0.5 * (x_low + x_high);
+  const double foot_distance_m = placement.horizontal_span_m;
+  check_suspended_above_seabed(riser.name, catenary, placement, z_span_m);
   const Eigen::Vector3d direction(std::cos(riser.azimuth_rad), std::sin(riser.azimuth_rad), 0.0);
   design.foot_g = hang_off_g + foot_distance_m * direction;
   design.foot_g.z() = -project.site.depth_m;
-  const double laid_m = engine::solve_catenary(catenary, {foot_distance_m, z_span_m, 0.0}).laid_length_m;
+  const double laid_m = placement.laid_length_m;
 
   for (const RiserSectionDesign& s : design.sections) {
     engine::FeLineSection fe;
@@ -136,11 +174,7 @@ RiserDesign riser_design(const Project& project, const Riser& riser) {
     design.fe_model.sections[i].drag_normal = s.drag_normal;
     design.fe_model.sections[i].drag_tangential = s.drag_axial;
   }
-  if (riser.fe.touchdown_refinement && laid_m > 0.0) {
-    const auto& zone = *riser.fe.touchdown_refinement;
-    design.fe_model.refinement = engine::FeRefinementZone{
-        std::max(0.0, laid_m - 0.5 * zone.length_m), zone.length_m, zone.element_length_m};
-  }
+  design.fe_model.refinement = touchdown_refinement_zone(riser.fe, laid_m);
   return design;
 }
 
@@ -167,7 +201,6 @@ RiserStaticsRow riser_statics_row(const Project& project, const RiserDesign& des
                                                  design.contents_density_top_kg_per_m3};
   const double factor = design_factor(design.criteria.design_factor, condition);
   row.min_effective_tension_N = std::numeric_limits<double>::infinity();
-  bool any_steel = false;
   const std::vector<int> sections = engine::node_sections(design.fe_model, solution);
   for (std::size_t i = 0; i < solution.node_position_m.size(); ++i) {
     const double arc = solution.node_arc_length_m[i];
@@ -180,7 +213,6 @@ RiserStaticsRow riser_statics_row(const Project& project, const RiserDesign& des
     row.max_curvature_per_m = std::max(row.max_curvature_per_m, std::abs(solution.node_curvature_per_m[i]));
     const RiserSectionDesign& sd = design.sections[section];
     if (sd.steel) {
-      any_steel = true;
       const double z = solution.node_position_m[i].z();
       const engine::PipePressures pressures{engine::internal_pressure_Pa(internal, z, water.gravity_m_per_s2),
                                             engine::external_pressure_Pa(z, water)};
@@ -189,7 +221,7 @@ RiserStaticsRow riser_statics_row(const Project& project, const RiserDesign& des
                      std::abs(solution.node_bending_moment_Nm[i]), pressures};
       input.design_factor = factor;
       const double u = engine::check_pipe_stress(sd.properties, input).utilization;
-      if (u > row.max_von_mises_utilization) {
+      if (!row.max_von_mises_utilization || u > *row.max_von_mises_utilization) {
         row.max_von_mises_utilization = u;
         row.max_von_mises_arc_m = arc;
       }
@@ -204,7 +236,9 @@ RiserStaticsRow riser_statics_row(const Project& project, const RiserDesign& des
   const auto add = [&](std::string name, double value, double limit, std::string unit, double utilization) {
     row.checks.push_back({std::move(name), value, limit, std::move(unit), utilization, utilization <= 1.0});
   };
-  if (any_steel) add("von_mises", row.max_von_mises_utilization, 1.0, "-", row.max_von_mises_utilization);
+  if (row.max_von_mises_utilization) {
+    add("von_mises", *row.max_von_mises_utilization, 1.0, "-", *row.max_von_mises_utilization);
+  }
   // A floor, not a capacity: no ratio of T_min to its limit measures closeness
   // (the limit is usually 0), so the check is pass/fail — 0 while it holds,
   // 1 + deficit/T_top once T_min drops below the limit.

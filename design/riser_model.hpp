@@ -6,10 +6,13 @@
 // flex-joint rotation and minimum bending radius.
 //
 // The riser's foot (its seabed end) is placed so that at the hull's rest
-// position the riser leaves the hang-off at its design top angle: a 1-D
-// search on the foot distance with the riser as a multi-segment elastic
-// catenary (weight = effective weight, bending neglected — it changes the
-// top angle by hundredths of a degree for an SCR).
+// position the riser leaves the hang-off at its design top angle: the riser
+// as a multi-segment elastic catenary (weight = effective weight, bending
+// neglected — it changes the top angle by hundredths of a degree for an
+// SCR) solved for its top force on the ray H = V tan θ
+// (engine/lines/catenary_top_angle.hpp), which keeps a lazy wave's buoyant
+// section suspended; the suspended part must stay above the seabed (a sag
+// bend lying on it is a geometry error).
 
 #include <memory>
 #include <optional>
@@ -46,13 +49,21 @@ struct RiserDesign {
 
 /// Section properties, foot position and FE model of a riser. Throws
 /// engine::SolverError when no foot position gives the design top angle
-/// (riser too short to reach the seabed at that angle, or too long).
+/// (riser too short to reach the seabed at that angle, or too long or too
+/// buoyant: a buoyant section or the sag bend would lie on the seabed).
 RiserDesign riser_design(const Project& project, const Riser& riser);
 
 /// The FE environment of a line of contact diameter `diameter_m` (seabed
 /// penalty stiffness = normal_stiffness × diameter, N/m per m) and current.
 engine::FeEnvironment fe_environment(const Project& project, const std::optional<engine::CurrentProfile>& current,
                                      double contact_diameter_m);
+
+/// The FE refinement zone of a line or riser mesh: `mesh.touchdown_refinement`
+/// centred on the touchdown point of the at-rest static shape, which lies
+/// `laid_length_m` (unstretched) from end A; none when no refinement is asked
+/// for or nothing lies on the seabed at rest (there is no touchdown to refine).
+std::optional<engine::FeRefinementZone> touchdown_refinement_zone(const FeMesh& mesh,
+                                                                  double laid_length_m);
 
 std::unique_ptr<engine::FeStaticLine> riser_static_line(const Project& project, const RiserDesign& design,
                                                         const std::optional<engine::CurrentProfile>& current);
@@ -79,8 +90,11 @@ struct RiserStaticsRow {
   double min_effective_tension_arc_m = 0.0;  ///< from the foot
   double max_curvature_per_m = 0.0;
   double min_bending_radius_m = 0.0;     ///< 1 / max curvature
-  double max_von_mises_utilization = 0.0;
-  double max_von_mises_arc_m = 0.0;      ///< from the foot
+  /// Largest von Mises utilization over the steel sections and where (arc
+  /// from the foot); empty when no section has a steel wall (a flexible pipe
+  /// is checked by its bending radius and tensions instead).
+  std::optional<double> max_von_mises_utilization;
+  std::optional<double> max_von_mises_arc_m;
   std::vector<RiserCriterionCheck> checks;
   std::string governing_criterion;       ///< the check with the largest utilization
   double utilization = 0.0;              ///< of the governing check

@@ -14,6 +14,10 @@ nlohmann::json six(const engine::Vector6d& v) {
   return nlohmann::json::array({v(0), v(1), v(2), v(3), v(4), v(5)});
 }
 
+nlohmann::json optional_number(const std::optional<double>& value) {
+  return value ? nlohmann::json(*value) : nlohmann::json(nullptr);
+}
+
 nlohmann::json six_by_six(const engine::Matrix6d& m) {
   nlohmann::json rows = nlohmann::json::array();
   for (int i = 0; i < 6; ++i) rows.push_back(six(m.row(i).transpose()));
@@ -51,8 +55,8 @@ nlohmann::json static_case_to_json(const StaticCaseResult& r, const std::string&
                       {"min_effective_tension_arc_m", row.min_effective_tension_arc_m},
                       {"max_curvature_per_m", row.max_curvature_per_m},
                       {"min_bending_radius_m", row.min_bending_radius_m},
-                      {"max_von_mises_utilization", row.max_von_mises_utilization},
-                      {"max_von_mises_arc_m", row.max_von_mises_arc_m},
+                      {"max_von_mises_utilization", optional_number(row.max_von_mises_utilization)},
+                      {"max_von_mises_arc_m", optional_number(row.max_von_mises_arc_m)},
                       {"checks", checks},
                       {"governing_criterion", row.governing_criterion},
                       {"utilization", row.utilization},
@@ -121,10 +125,14 @@ std::string equilibrium_table(const StaticCaseResult& r, const std::string& proj
     out += fmt::format("{:<8} {:>10} {:>8} {:>9} {:>11} {:>9} {:>8} {:>7}  {}\n", "riser", "T_top kN", "angle°",
                        "TDP m", "Te_min kN", "R_min m", "vM util", "util", "governing");
     for (const RiserStaticsRow& row : r.risers) {
-      out += fmt::format("{:<8} {:>10.1f} {:>8.2f} {:>9.1f} {:>11.1f} {:>9.1f} {:>8.3f} {:>7.3f}  {}{}\n", row.name,
-                         row.top_tension_N / 1e3, row.top_angle_deg, row.touchdown_distance_m,
-                         row.min_effective_tension_N / 1e3, row.min_bending_radius_m, row.max_von_mises_utilization,
-                         row.utilization, row.governing_criterion, row.passes ? "" : "  FAIL");
+      const std::string von_mises = row.max_von_mises_utilization
+                                        ? fmt::format("{:.3f}", *row.max_von_mises_utilization)
+                                        : "–";
+      out += fmt::format(
+          "{:<8} {:>10.1f} {:>8.2f} {:>9.1f} {:>11.1f} {:>9.1f} {:>8} {:>7.3f}  {}{}\n", row.name,
+          row.top_tension_N / 1e3, row.top_angle_deg, row.touchdown_distance_m,
+          row.min_effective_tension_N / 1e3, row.min_bending_radius_m, von_mises, row.utilization,
+          row.governing_criterion, row.passes ? "" : "  FAIL");
     }
   }
   const engine::Vector6d& e = r.environment_force;

@@ -525,10 +525,12 @@ Section riser_section(const design::StaticStageResults& r) {
              "Utilization", "Check"},
             {}};
     for (const auto& x : c.risers) {
-      t.rows.push_back({text(x.name), num(x.top_tension_N, 1, kN), num(x.top_angle_deg, 2),
-                        num(x.touchdown_distance_m, 1), num(x.min_effective_tension_N, 1, kN),
-                        num(x.min_bending_radius_m, 1), num(x.max_von_mises_utilization, 3),
-                        text(x.governing_criterion), num(x.utilization, 3), verdict(x.passes)});
+      t.rows.push_back(
+          {text(x.name), num(x.top_tension_N, 1, kN), num(x.top_angle_deg, 2),
+           num(x.touchdown_distance_m, 1), num(x.min_effective_tension_N, 1, kN),
+           num(x.min_bending_radius_m, 1),
+           x.max_von_mises_utilization ? num(*x.max_von_mises_utilization, 3) : text("–"),
+           text(x.governing_criterion), num(x.utilization, 3), verdict(x.passes)});
     }
     s.blocks.emplace_back(t);
   }

@@ -29,22 +29,44 @@ void require(bool condition, const char* field, const std::string& expectation, 
 
 void validate(const PipeSection& s, const Seawater& water) {
   require(s.outer_diameter_m > 0.0, "pipe.outer_diameter_m", "> 0", s.outer_diameter_m, "m");
-  require(s.wall_thickness_m > 0.0 && s.wall_thickness_m < 0.5 * s.outer_diameter_m,
-          "pipe.wall_thickness_m", fmt::format("in (0, OD/2 = {})", 0.5 * s.outer_diameter_m),
-          s.wall_thickness_m, "m");
+  if (s.wall_thickness_m.has_value() == s.inner_diameter_m.has_value()) {
+    throw std::invalid_argument(
+        "pipe: give exactly one of wall_thickness_m (homogeneous steel wall) and inner_diameter_m "
+        "(layered flexible wall, its bore)");
+  }
   require(s.contents_density_kg_per_m3 >= 0.0, "pipe.contents_density_kg_per_m3", ">= 0",
           s.contents_density_kg_per_m3, "kg/m^3");
-  require(s.yield_stress_Pa > 0.0, "pipe.yield_stress_Pa", "> 0", s.yield_stress_Pa, "Pa");
-  if (!s.explicit_properties) {
-    require(s.youngs_modulus_Pa > 0.0, "pipe.youngs_modulus_Pa", "> 0", s.youngs_modulus_Pa, "Pa");
-    require(s.steel_density_kg_per_m3 > 0.0, "pipe.steel_density_kg_per_m3", "> 0",
-            s.steel_density_kg_per_m3, "kg/m^3");
+  const auto& e = s.explicit_properties;
+  if (s.wall_thickness_m) {
+    require(*s.wall_thickness_m > 0.0 && *s.wall_thickness_m < 0.5 * s.outer_diameter_m,
+            "pipe.wall_thickness_m", fmt::format("in (0, OD/2 = {})", 0.5 * s.outer_diameter_m),
+            *s.wall_thickness_m, "m");
+    require(s.yield_stress_Pa > 0.0, "pipe.yield_stress_Pa", "> 0", s.yield_stress_Pa, "Pa");
+    if (!e.EA_N || !e.EI_N_m2) {
+      require(s.youngs_modulus_Pa > 0.0, "pipe.youngs_modulus_Pa", "> 0", s.youngs_modulus_Pa,
+              "Pa");
+    }
+    if (!e.mass_per_length_kg_per_m) {
+      require(s.steel_density_kg_per_m3 > 0.0, "pipe.steel_density_kg_per_m3", "> 0",
+              s.steel_density_kg_per_m3, "kg/m^3");
+    }
   } else {
-    const auto& e = *s.explicit_properties;
-    require(e.EA_N > 0.0, "pipe.explicit_properties.EA_N", "> 0", e.EA_N, "N");
-    require(e.EI_N_m2 >= 0.0, "pipe.explicit_properties.EI_N_m2", ">= 0", e.EI_N_m2, "N*m^2");
-    require(e.mass_per_length_kg_per_m > 0.0, "pipe.explicit_properties.mass_per_length_kg_per_m",
-            "> 0", e.mass_per_length_kg_per_m, "kg/m");
+    require(*s.inner_diameter_m > 0.0 && *s.inner_diameter_m < s.outer_diameter_m,
+            "pipe.inner_diameter_m", fmt::format("in (0, OD = {})", s.outer_diameter_m),
+            *s.inner_diameter_m, "m");
+    if (!e.EA_N || !e.EI_N_m2 || !e.mass_per_length_kg_per_m) {
+      throw std::invalid_argument(
+          "pipe.explicit_properties: a layered (flexible) wall needs EA_N, EI_N_m2 and "
+          "mass_per_length_kg_per_m (there is no steel wall to derive them from)");
+    }
+  }
+  if (e.EA_N) require(*e.EA_N > 0.0, "pipe.explicit_properties.EA_N", "> 0", *e.EA_N, "N");
+  if (e.EI_N_m2) {
+    require(*e.EI_N_m2 >= 0.0, "pipe.explicit_properties.EI_N_m2", ">= 0", *e.EI_N_m2, "N*m^2");
+  }
+  if (e.mass_per_length_kg_per_m) {
+    require(*e.mass_per_length_kg_per_m > 0.0, "pipe.explicit_properties.mass_per_length_kg_per_m",
+            "> 0", *e.mass_per_length_kg_per_m, "kg/m");
   }
   if (s.coating) {
     require(s.coating->thickness_m > 0.0, "pipe.coating.thickness_m", "> 0", s.coating->thickness_m,
@@ -79,17 +101,25 @@ PipeSectionProperties pipe_section_properties(const PipeSection& section, const 
   validate(section, water);
   PipeSectionProperties p;
   const double od = section.outer_diameter_m;
-  const double id = od - 2.0 * section.wall_thickness_m;
   p.outer_diameter_m = od;
-  p.wall_thickness_m = section.wall_thickness_m;
-  p.inner_diameter_m = id;
-  p.yield_stress_Pa = section.yield_stress_Pa;
-
-  // Areas and second moment of a circular tube (reference-platforms §2.5).
   p.outer_area_m2 = circle_area(od);
-  p.inner_area_m2 = circle_area(id);
-  p.steel_area_m2 = p.outer_area_m2 - p.inner_area_m2;  // pi/4 (OD^2 - ID^2)
-  p.second_moment_m4 = kPi / 64.0 * (std::pow(od, 4) - std::pow(id, 4));
+  if (section.wall_thickness_m) {
+    // Areas and second moment of a circular tube (reference-platforms §2.5).
+    const double id = od - 2.0 * *section.wall_thickness_m;
+    p.wall = PipeWall::homogeneous;
+    p.wall_thickness_m = *section.wall_thickness_m;
+    p.inner_diameter_m = id;
+    p.yield_stress_Pa = section.yield_stress_Pa;
+    p.inner_area_m2 = circle_area(id);
+    p.steel_area_m2 = p.outer_area_m2 - p.inner_area_m2;  // pi/4 (OD^2 - ID^2)
+    p.second_moment_m4 = kPi / 64.0 * (std::pow(od, 4) - std::pow(id, 4));
+  } else {
+    // Layered flexible wall (API 17J): the bore is the pipe's identity; the
+    // layers between bore and outer sheath have no single steel area or I.
+    p.wall = PipeWall::layered;
+    p.inner_diameter_m = *section.inner_diameter_m;
+    p.inner_area_m2 = circle_area(p.inner_diameter_m);
+  }
 
   // Layers outside the wall: coating, then smeared buoyancy (each an annulus).
   p.coated_diameter_m = od + (section.coating ? 2.0 * section.coating->thickness_m : 0.0);
@@ -106,17 +136,14 @@ PipeSectionProperties pipe_section_properties(const PipeSection& section, const 
   }
   p.displaced_area_m2 = circle_area(p.hydrodynamic_diameter_m);
 
-  if (section.explicit_properties) {
-    // Flexible: manufacturer's values (a layered wall has no single E, rho).
-    p.EA_N = section.explicit_properties->EA_N;
-    p.EI_N_m2 = section.explicit_properties->EI_N_m2;
-    p.steel_mass_kg_per_m = section.explicit_properties->mass_per_length_kg_per_m;
-  } else {
-    // EA = E A_s, EI = E pi/64 (OD^4 - ID^4), m = rho_s A_s (reference-platforms §2.5).
-    p.EA_N = section.youngs_modulus_Pa * p.steel_area_m2;
-    p.EI_N_m2 = section.youngs_modulus_Pa * p.second_moment_m4;
-    p.steel_mass_kg_per_m = section.steel_density_kg_per_m3 * p.steel_area_m2;
-  }
+  // EA = E A_s, EI = E pi/64 (OD^4 - ID^4), m = rho_s A_s (reference-platforms §2.5),
+  // each replaced by the manufacturer's value where given (a layered wall
+  // has no single E, rho: validate() requires all three for it).
+  const ExplicitSectionProperties& given = section.explicit_properties;
+  p.EA_N = given.EA_N.value_or(section.youngs_modulus_Pa * p.steel_area_m2);
+  p.EI_N_m2 = given.EI_N_m2.value_or(section.youngs_modulus_Pa * p.second_moment_m4);
+  p.steel_mass_kg_per_m =
+      given.mass_per_length_kg_per_m.value_or(section.steel_density_kg_per_m3 * p.steel_area_m2);
   p.mass_per_length_kg_per_m =
       p.steel_mass_kg_per_m + p.coating_mass_kg_per_m + p.buoyancy_mass_kg_per_m;
   p.contents_mass_kg_per_m = section.contents_density_kg_per_m3 * p.inner_area_m2;
@@ -207,6 +234,11 @@ StressCheckResult check_pipe_stress(const PipeSectionProperties& p, const Stress
           "finite", in.loads.pressures.internal_Pa, "Pa");
   require(std::isfinite(in.loads.pressures.external_Pa), "stress_check.loads.pressures.external_Pa",
           "finite", in.loads.pressures.external_Pa, "Pa");
+  if (p.wall == PipeWall::layered) {
+    throw std::invalid_argument(
+        "check_pipe_stress: a layered (flexible) pipe wall has no homogeneous wall stress; check "
+        "its minimum bending radius (check_bending_radius) and tension limits instead");
+  }
   require(p.steel_area_m2 > 0.0 && p.second_moment_m4 > 0.0, "section.steel_area_m2", "> 0",
           p.steel_area_m2, "m^2");
 

@@ -20,9 +20,19 @@
 //
 // Conventions: SI; pressures are gauge (above atmospheric); tension positive;
 // z is the global elevation (z = 0 at mean water level, up positive).
-// Pipe and stress results are for a homogeneous metallic pipe wall; for a
-// flexible (explicit EA/EI/mass) only the section properties, the tension
-// conversion and the bending-radius check are meaningful.
+//
+// Two kinds of wall (PipeWall):
+//  - homogeneous: a metallic (steel) tube of wall thickness WT; every result
+//    here applies, including the von Mises check.
+//  - layered: an unbonded flexible pipe (API Spec 17J / API RP 17B): carcass,
+//    pressure sheath, armour layers and outer sheath. It has no single E or
+//    wall to take a von Mises stress; the manufacturer gives EA, EI and the
+//    mass, the pipe is identified by its bore (internal diameter), and its
+//    capacity is checked by the minimum bending radius (check_bending_radius)
+//    and tension limits (API RP 17B: MBR and allowable tension / compression
+//    per load condition). Section properties and the effective <-> true-wall
+//    tension conversion (Sparks' identity holds for any tube with a bore and
+//    an outer diameter) apply; check_pipe_stress throws.
 //
 // Every function throws std::invalid_argument naming the offending field when
 // an input is outside its stated range or not finite; none returns NaN.
@@ -50,44 +60,56 @@ struct SmearedBuoyancy {
   double density_kg_per_m3 = 0.0;  ///< smeared density, >= 0 (syntactic foam ~ 400-600)
 };
 
-/// Explicit properties (flexible pipes, umbilicals) overriding the steel formulas.
+/// Explicit properties (flexible pipes, umbilicals; or overrides on a steel
+/// pipe): each one given replaces its steel formula. A layered wall needs all three.
 struct ExplicitSectionProperties {
-  double EA_N = 0.0;                      ///< axial stiffness, > 0
-  double EI_N_m2 = 0.0;                   ///< bending stiffness, >= 0
-  double mass_per_length_kg_per_m = 0.0;  ///< structural mass in air, contents excluded, > 0
+  std::optional<double> EA_N;     ///< axial stiffness, > 0
+  std::optional<double> EI_N_m2;  ///< bending stiffness, >= 0
+  std::optional<double>
+      mass_per_length_kg_per_m;  ///< structural mass in air, contents excluded, > 0
 };
 
-/// Input of `pipe_section_properties`.
+/// What carries the loads in the pipe wall (see the top of this file).
+enum class PipeWall {
+  homogeneous,  ///< metallic tube of thickness wall_thickness_m
+  layered,      ///< unbonded flexible pipe: bore inner_diameter_m, explicit EA/EI/mass
+};
+
+/// Input of `pipe_section_properties`. Exactly one of `wall_thickness_m`
+/// (homogeneous wall) and `inner_diameter_m` (layered wall) is given.
 struct PipeSection {
-  double outer_diameter_m = 0.0;  ///< steel (structural) OD, > 0
-  double wall_thickness_m = 0.0;  ///< 0 < WT < OD/2
+  double outer_diameter_m = 0.0;           ///< steel OD, or the flexible's outer-sheath OD, > 0
+  std::optional<double> wall_thickness_m;  ///< homogeneous wall: 0 < WT < OD/2
+  /// Layered (flexible) wall: the bore, 0 < ID < OD; needs all three explicit_properties.
+  std::optional<double> inner_diameter_m;
   double youngs_modulus_Pa =
       207.0e9;  ///< steel E (conventional value, reference-platforms §2.5, U)
   double steel_density_kg_per_m3 = 7850.0;
-  double yield_stress_Pa = 448.0e6;         ///< SMYS (default: API 5L X65, 448 MPa)
+  double yield_stress_Pa = 448.0e6;  ///< SMYS (default: API 5L X65, 448 MPa); homogeneous wall
   double contents_density_kg_per_m3 = 0.0;  ///< bore fluid, >= 0 (0: empty/air-filled)
   std::optional<PipeCoating> coating;
   std::optional<SmearedBuoyancy> buoyancy;
-  /// Flexibles: EA, EI and structural mass given by the manufacturer replace the
-  /// steel formulas (OD and WT still define the bore and the outer areas).
-  std::optional<ExplicitSectionProperties> explicit_properties;
+  /// EA, EI and structural mass given by the manufacturer (flexibles) or as
+  /// overrides of the steel formulas; OD and the bore define the areas.
+  ExplicitSectionProperties explicit_properties;
 };
 
 /// Derived properties, per unit length of line where a rate.
 struct PipeSectionProperties {
+  PipeWall wall = PipeWall::homogeneous;
   double outer_diameter_m = 0.0;         ///< steel OD (copied from the input)
-  double wall_thickness_m = 0.0;         ///< steel WT (copied from the input)
-  double inner_diameter_m = 0.0;         ///< ID = OD - 2 WT
+  double wall_thickness_m = 0.0;         ///< steel WT (copied from the input); 0 for a layered wall
+  double inner_diameter_m = 0.0;         ///< ID = OD - 2 WT (homogeneous), the bore (layered)
   double coated_diameter_m = 0.0;        ///< OD + 2 t_coat (= OD without coating)
   double hydrodynamic_diameter_m = 0.0;  ///< outermost diameter: buoyancy OD, else coated OD
-  double steel_area_m2 = 0.0;            ///< A_s = pi/4 (OD^2 - ID^2)
+  double steel_area_m2 = 0.0;            ///< A_s = pi/4 (OD^2 - ID^2); 0 for a layered wall
   double inner_area_m2 = 0.0;            ///< A_i = pi/4 ID^2 (bore)
   double outer_area_m2 = 0.0;            ///< A_o = pi/4 OD^2 (steel OD: used in T_eff)
   double displaced_area_m2 = 0.0;        ///< pi/4 D_hyd^2 (buoyancy per length / (rho g))
-  double second_moment_m4 = 0.0;         ///< I = pi/64 (OD^4 - ID^4)
+  double second_moment_m4 = 0.0;         ///< I = pi/64 (OD^4 - ID^4); 0 for a layered wall
   double EA_N = 0.0;
   double EI_N_m2 = 0.0;
-  double steel_mass_kg_per_m = 0.0;  ///< rho_s A_s (explicit mass for flexibles)
+  double steel_mass_kg_per_m = 0.0;  ///< rho_s A_s, or the explicit structural mass
   double coating_mass_kg_per_m = 0.0;
   double buoyancy_mass_kg_per_m = 0.0;
   double mass_per_length_kg_per_m = 0.0;  ///< structural: steel + coating + buoyancy (no contents)
@@ -202,7 +224,8 @@ struct StressCheckResult {
 /// Wall stresses at the four extreme points of the section (tension and
 /// compression fibres of bending, inner and outer wall) and the utilization
 /// sigma_vm / (design_factor * SMYS) (API RP 2RD §4.2, §4.5).
-/// Throws std::invalid_argument for design_factor outside (0, 1] or non-finite loads.
+/// Throws std::invalid_argument for design_factor outside (0, 1], non-finite
+/// loads, or a layered (flexible) wall, which has no homogeneous wall stress.
 StressCheckResult check_pipe_stress(const PipeSectionProperties& properties,
                                     const StressCheckInput& input);
 

@@ -13,16 +13,9 @@
 namespace spiral::test {
 namespace {
 
-std::string write_project(const std::string& name, const std::string& text) {
-  std::filesystem::path path = std::filesystem::temp_directory_path();
-  path /= fmt::format("spiral-soz-{}-{}", ::getpid(), name);
-  std::ofstream(path) << text;
-  return fmt::format("'{}'", path.string());
-}
-
 TEST(CliSoz, JsonHasTheDocumentedKeys) {
-  const std::string file = write_project(
-      "two.yaml",
+  const std::string file = write_temp_project(
+      "soz-two.yaml",
       soz_project_yaml(soz_riser_yaml("A", 0.0, 20.0) + soz_riser_yaml("B", 180.0, 20.0)));
   const CommandResult r = run_spiral("soz " + file + " --step-deg 45 --json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -52,7 +45,7 @@ TEST(CliSoz, JsonHasTheDocumentedKeys) {
 
 TEST(CliSoz, CaseBringsItsCurrentHullPositionAndCondition) {
   const std::string file =
-      write_project("case-zone.yaml", soz_project_yaml(soz_riser_yaml("R", 0.0)));
+      write_temp_project("soz-case-zone.yaml", soz_project_yaml(soz_riser_yaml("R", 0.0)));
   const CommandResult r = run_spiral("soz " + file + " --case lc2 --step-deg 90 --json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json j = nlohmann::json::parse(r.out);
@@ -65,7 +58,8 @@ TEST(CliSoz, CaseBringsItsCurrentHullPositionAndCondition) {
 }
 
 TEST(CliSoz, TableAndCsv) {
-  const std::string file = write_project("one.yaml", soz_project_yaml(soz_riser_yaml("R", 0.0)));
+  const std::string file =
+      write_temp_project("soz-one.yaml", soz_project_yaml(soz_riser_yaml("R", 0.0)));
   const CommandResult table = run_spiral("soz " + file + " --step-deg 90 --no-check");
   ASSERT_EQ(table.exit_code, 0) << table.err;
   EXPECT_NE(table.out.find("Riser safe operational zones"), std::string::npos);
@@ -78,7 +72,8 @@ TEST(CliSoz, TableAndCsv) {
 }
 
 TEST(CliSoz, StepThatDoesNotDivide360IsBadInput) {
-  const std::string file = write_project("step.yaml", soz_project_yaml(soz_riser_yaml("R", 0.0)));
+  const std::string file =
+      write_temp_project("soz-step.yaml", soz_project_yaml(soz_riser_yaml("R", 0.0)));
   const CommandResult r = run_spiral("soz " + file + " --step-deg 7");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("--step-deg: the direction step must divide 360 deg, got 7 deg"),
@@ -87,8 +82,8 @@ TEST(CliSoz, StepThatDoesNotDivide360IsBadInput) {
 }
 
 TEST(CliSoz, RiserFailingAtZeroOffsetIsBadInputNamingTheCriterion) {
-  const std::string file = write_project(
-      "fail.yaml", soz_project_yaml(soz_riser_yaml("R", 0.0), "    max_top_tension: 3.0e5\n"));
+  const std::string file = write_temp_project(
+      "soz-fail.yaml", soz_project_yaml(soz_riser_yaml("R", 0.0), "    max_top_tension: 3.0e5\n"));
   const CommandResult r = run_spiral("soz " + file + " --step-deg 90 --no-check");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("riser 'R' fails its criteria at zero offset"), std::string::npos) << r.err;
@@ -99,17 +94,19 @@ TEST(CliSoz, FlexibleRiserWithoutBendingRadiusIsBadInput) {
   const std::string riser =
       "  - name: F\n    kind: flexible\n    hang_off: [0.0, 0.0, -20.0]\n    azimuth_deg: 0.0\n"
       "    top_angle_deg: 12.0\n    sections:\n"
-      "      - {length: 700.0, outer_diameter: 0.3, contents_density: 800.0, axial_stiffness: "
+      "      - {length: 700.0, outer_diameter: 0.3, inner_diameter: 0.2, contents_density: 800.0, "
+      "axial_stiffness: "
       "5.0e8,\n"
       "         bending_stiffness: 5.0e4, mass_per_length: 150.0}\n";
-  const std::string file = write_project("flex.yaml", soz_project_yaml(riser));
+  const std::string file = write_temp_project("soz-flex.yaml", soz_project_yaml(riser));
   const CommandResult r = run_spiral("soz " + file);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("min_bending_radius"), std::string::npos) << r.err;
 }
 
 TEST(CliSoz, UnknownCaseIsBadInput) {
-  const std::string file = write_project("case.yaml", soz_project_yaml(soz_riser_yaml("R", 0.0)));
+  const std::string file =
+      write_temp_project("soz-case.yaml", soz_project_yaml(soz_riser_yaml("R", 0.0)));
   const CommandResult r = run_spiral("soz " + file + " --case nope");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("no load case named \"nope\""), std::string::npos) << r.err;

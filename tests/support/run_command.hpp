@@ -3,6 +3,7 @@
 // code, standard output and standard error separately.
 
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -40,6 +41,21 @@ inline CommandResult run_spiral(const std::string& arguments) {
   result.err = read_text(dir / "err");
   std::filesystem::remove_all(dir);
   return result;
+}
+
+/// Writes `text` to a file in the temporary folder (named after `name` and
+/// this process) and returns its path quoted as one shell word.
+inline std::string write_temp_project(const std::string& name, const std::string& text) {
+  std::string file_name = "spiral-";
+  file_name += std::to_string(::getpid());
+  file_name += '-';
+  file_name += name;
+  const auto path = std::filesystem::temp_directory_path() / file_name;
+  std::ofstream(path) << text;
+  std::string quoted = "'";
+  quoted += path.string();
+  quoted += '\'';
+  return quoted;
 }
 
 inline std::string scenario(const std::string& name) {

@@ -256,8 +256,8 @@ const std::string kFlexibleRiser = R"(risers:
     azimuth_deg: 0.0
     top_angle_deg: 8.0
     sections:
-      - {length: 150.0, outer_diameter: 0.396, axial_stiffness: 5.0e8, bending_stiffness: 1.208e5,
-         mass_per_length: 165.0, contents_density: 800.0}
+      - {length: 150.0, outer_diameter: 0.396, inner_diameter: 0.2032, axial_stiffness: 5.0e8,
+         bending_stiffness: 1.208e5, mass_per_length: 165.0, contents_density: 800.0}
 )";
 
 TEST(ProjectValidation, NegativeElementLengthIsReportedAtItsKey) {
@@ -385,6 +385,19 @@ TEST(ProjectValidation, FlexibleRiserNeedsAMinimumBendingRadius) {
   EXPECT_TRUE(check(project_level + kFlexibleRiser).empty());
   // A steel riser does not need one.
   EXPECT_TRUE(check(kMinimal + kSteelRiser).empty());
+}
+
+TEST(ProjectValidation, FlexibleWithoutSteelWallNeedsItsBore) {
+  const std::string with_mbr = kFlexibleRiser + "    criteria: {min_bending_radius: 3.0}\n";
+  expect_single(check(kMinimal + replace(with_mbr, " inner_diameter: 0.2032,", "")),
+                "flexible_riser_complete", "risers[0].sections[0]");
+  expect_single(
+      check(kMinimal + replace(with_mbr, "inner_diameter: 0.2032", "inner_diameter: 0.5")),
+      "bore_inside_pipe", "risers[0].sections[0].inner_diameter");
+  // A steel section has its bore from the wall: an inner_diameter too is a conflict.
+  expect_single(check(kMinimal + replace(kSteelRiser, "wall_thickness: 0.02,",
+                                         "wall_thickness: 0.02, inner_diameter: 0.26,")),
+                "bore_defined_once", "risers[0].sections[0].inner_diameter");
 }
 
 TEST(ProjectValidation, RiserCriteriaRanges) {

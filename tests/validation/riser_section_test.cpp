@@ -166,7 +166,7 @@ TEST(RiserSection, FlexibleUsesExplicitProperties) {
   // 165 kg/m, EA 5.0e8 N, EI 120.8 kN m^2 (bore assumed 0.25 m for the areas).
   PipeSection s;
   s.outer_diameter_m = 0.396;
-  s.wall_thickness_m = 0.073;
+  s.inner_diameter_m = 0.25;
   s.explicit_properties = ExplicitSectionProperties{5.0e8, 120.8e3, 165.0};
   const auto p = pipe_section_properties(s, kWater);
   EXPECT_DOUBLE_EQ(p.EA_N, 5.0e8);
@@ -174,6 +174,63 @@ TEST(RiserSection, FlexibleUsesExplicitProperties) {
   EXPECT_DOUBLE_EQ(p.mass_per_length_kg_per_m, 165.0);
   const double we = (165.0 - 1025.0 * kPi / 4.0 * 0.396 * 0.396) * 9.80665;
   EXPECT_LE(relative_error(p.effective_weight_N_per_m, we), kIdentityRelTol);
+}
+
+TEST(RiserSection, FlexibleLayeredWallHasABoreButNoSteelWall) {
+  // An 8-inch flexible (bore 0.2032 m) with the Low & Langley outer sheath and
+  // data-sheet properties, oil-filled: the contents fill the bore, the wall
+  // carries no von Mises check (API 17J / RP 17B: MBR and tension limits).
+  PipeSection s;
+  s.outer_diameter_m = 0.396;
+  s.inner_diameter_m = 0.2032;
+  s.contents_density_kg_per_m3 = 800.0;
+  s.explicit_properties = ExplicitSectionProperties{5.0e8, 120.8e3, 165.0};
+  const auto p = pipe_section_properties(s, kWater);
+  EXPECT_EQ(p.wall, PipeWall::layered);
+  EXPECT_DOUBLE_EQ(p.inner_diameter_m, 0.2032);
+  EXPECT_DOUBLE_EQ(p.steel_area_m2, 0.0);
+  const double bore_m2 = kPi / 4.0 * 0.2032 * 0.2032;
+  EXPECT_LE(relative_error(p.contents_mass_kg_per_m, 800.0 * bore_m2), kIdentityRelTol);
+  const double we = (165.0 + 800.0 * bore_m2 - 1025.0 * kPi / 4.0 * 0.396 * 0.396) * 9.80665;
+  EXPECT_LE(relative_error(p.effective_weight_N_per_m, we), kIdentityRelTol);
+  // Sparks' identity needs only the bore and the outer area: T_w = T_e + p_i A_i - p_e A_o.
+  const PipePressures pressures{12.0e6, 1.0e6};
+  const double outer_m2 = kPi / 4.0 * 0.396 * 0.396;
+  EXPECT_LE(relative_error(wall_tension_N(5.0e5, pressures, p),
+                           5.0e5 + 12.0e6 * bore_m2 - 1.0e6 * outer_m2),
+            kIdentityRelTol);
+  try {
+    check_pipe_stress(p, StressCheckInput{});
+    FAIL() << "expected std::invalid_argument";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("check_bending_radius"), std::string::npos) << e.what();
+  }
+}
+
+TEST(RiserSection, LayeredWallNeedsEveryExplicitPropertyAndOneBore) {
+  PipeSection s;
+  s.outer_diameter_m = 0.396;
+  s.inner_diameter_m = 0.2032;
+  s.explicit_properties = ExplicitSectionProperties{5.0e8, 120.8e3, std::nullopt};
+  EXPECT_THROW(pipe_section_properties(s, kWater), std::invalid_argument);
+  s.explicit_properties.mass_per_length_kg_per_m = 165.0;
+  s.wall_thickness_m = 0.05;  // and a steel wall: two bores
+  EXPECT_THROW(pipe_section_properties(s, kWater), std::invalid_argument);
+  s.wall_thickness_m.reset();
+  s.inner_diameter_m.reset();  // no bore at all
+  EXPECT_THROW(pipe_section_properties(s, kWater), std::invalid_argument);
+}
+
+TEST(RiserSection, SingleOverrideReplacesOnlyItsSteelFormula) {
+  // An SCR with only EA given (e.g. a measured value): EI and mass stay steel.
+  PipeSection s = production_scr();
+  s.explicit_properties.EA_N = 3.5e9;
+  const auto p = pipe_section_properties(s, kWater);
+  const auto steel = pipe_section_properties(production_scr(), kWater);
+  EXPECT_DOUBLE_EQ(p.EA_N, 3.5e9);
+  EXPECT_DOUBLE_EQ(p.EI_N_m2, steel.EI_N_m2);
+  EXPECT_DOUBLE_EQ(p.steel_mass_kg_per_m, steel.steel_mass_kg_per_m);
+  EXPECT_EQ(p.wall, PipeWall::homogeneous);
 }
 
 TEST(RiserSection, BarlowHoopUnderPureInternalPressureIsPDOver2t) {
