@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -378,6 +379,56 @@ TEST(FeLineDynamics, EndReactionsCarryTheMorisonLoadOfAUniformOscillatingFlow) {
   // The beam's own motion (deflection ~ mm under 1e10 N·m² bending) changes
   // the relative velocity and adds its inertia: well under 1 %.
   EXPECT_LT(worst, 0.01 * peak);
+}
+
+// A chain lying straight on the seabed, free at end A, dragged along its axis
+// at a steady 0.1 m/s (10× the regularisation velocity): Coulomb friction
+// resists with μ N over its whole length, N = w per metre, so the pull at
+// end B is μ w L (inertia and seabed damping vanish at constant velocity;
+// the lateral coefficient must not act on an axial slide).
+TEST(FeLineDynamics, ChainDraggedAlongTheSeabedPullsMuWL) {
+  constexpr double kLength_m = 100.0, kWeight_N_per_m = 1000.0, kMuAxial = 0.5, kSpeed = 0.1, kRamp_s = 10.0;
+  FeLineSection s;
+  s.length_m = kLength_m;
+  s.EA_N = 1e9;
+  s.mass_kg_per_m = 130.0;
+  s.weight_N_per_m = kWeight_N_per_m;
+  s.element_length_m = kLength_m / 20;
+  FeLineModel model;
+  model.sections = {s};
+  FeDynamicEnvironment env;
+  env.statics.seabed_z_m = -100.0;
+  env.statics.seabed_stiffness_N_per_m2 = 1e6;
+  env.statics.seabed_axial_friction = kMuAxial;
+  env.seabed_lateral_friction = 1.0;
+  env.seabed_damping_N_s_per_m2 = 2e4;
+  // Laid with a small pretension (1e-5 strain: 10 kN) so that the static
+  // problem is well posed; freeing end A releases it in the first second.
+  const FeLineEnds ends{{0.0, 0.0, -100.0}, {kLength_m * (1.0 + 1e-5), 0.0, -100.0}};
+  const FeStaticsResult st = solve_fe_line_statics(model, env.statics, ends);
+  FeDynamicsOptions o;
+  o.end_A = FeEndCondition::free;
+  const Eigen::Vector3d rest = st.node_position_m.back();
+  o.end_B_motion = [rest](double t) {
+    // Velocity v r(t) with the cubic smooth step r, position its integral.
+    const double tau = std::clamp(t / kRamp_s, 0.0, 1.0);
+    EndKinematics k;
+    const double x = t < kRamp_s ? kSpeed * kRamp_s * (tau * tau * tau - 0.5 * tau * tau * tau * tau)
+                                 : kSpeed * (0.5 * kRamp_s + (t - kRamp_s));
+    k.position_m = rest + Eigen::Vector3d(x, 0.0, 0.0);
+    k.velocity_m_per_s = {kSpeed * (t < kRamp_s ? tau * tau * (3.0 - 2.0 * tau) : 1.0), 0.0, 0.0};
+    k.acceleration_m_per_s2 = {t < kRamp_s ? kSpeed * 6.0 * tau * (1.0 - tau) / kRamp_s : 0.0, 0.0, 0.0};
+    return k;
+  };
+  FeLineDynamics dyn(model, env, st, o);
+  dyn.advance_to(40.0);
+  const FeLineDynamicSnapshot snap = dyn.snapshot();
+  const double expected = kMuAxial * kWeight_N_per_m * kLength_m;
+  std::printf("friction: pull %.1f N, mu w L %.1f N\n", -snap.end_B_force_N.x(), expected);
+  // The line resists the pull: its force on end B points back along −x.
+  EXPECT_NEAR(-snap.end_B_force_N.x(), expected, 0.01 * expected);
+  // The whole chain slides with end B (no slack, no pile-up).
+  EXPECT_NEAR(snap.node_velocity_m_per_s.front().x(), kSpeed, 0.01 * kSpeed);
 }
 
 }  // namespace
