@@ -203,31 +203,44 @@ RiserStaticsRow riser_statics_row(const Project& project, const RiserDesign& des
   row.min_effective_tension_N = std::numeric_limits<double>::infinity();
   const std::vector<int> sections = engine::node_sections(design.fe_model, solution);
   for (std::size_t i = 0; i < solution.node_position_m.size(); ++i) {
-    const double arc = solution.node_arc_length_m[i];
-    const auto section = static_cast<std::size_t>(sections[i]);
-    const double tension = solution.node_tension_N[i];
-    if (tension < row.min_effective_tension_N) {
-      row.min_effective_tension_N = tension;
-      row.min_effective_tension_arc_m = arc;
-    }
-    row.max_curvature_per_m = std::max(row.max_curvature_per_m, std::abs(solution.node_curvature_per_m[i]));
-    const RiserSectionDesign& sd = design.sections[section];
+    RiserProfilePoint q;
+    q.position_g = solution.node_position_m[i];
+    q.arc_length_m = solution.node_arc_length_m[i];
+    const auto fe_section = static_cast<std::size_t>(sections[i]);
+    q.section = static_cast<int>(design.sections.size() - 1 - fe_section);
+    q.on_seabed = solution.touchdown && q.arc_length_m <= solution.touchdown->arc_length_m;
+    q.effective_tension_N = solution.node_tension_N[i];
+    q.curvature_per_m = std::abs(solution.node_curvature_per_m[i]);
+    q.bending_moment_N_m = std::abs(solution.node_bending_moment_Nm[i]);
+    const RiserSectionDesign& sd = design.sections[fe_section];
+    // Pressures at the node: the contents column from the hang-off down and
+    // the sea's hydrostatic head; T_w = T_e + p_i A_i − p_e A_o (Sparks 1984),
+    // for a steel wall and a flexible's layered wall alike.
+    const double z = q.position_g.z();
+    const engine::PipePressures pressures{
+        engine::internal_pressure_Pa(internal, z, water.gravity_m_per_s2),
+        engine::external_pressure_Pa(z, water)};
+    q.wall_tension_N = engine::wall_tension_N(q.effective_tension_N, pressures, sd.properties);
     if (sd.steel) {
-      const double z = solution.node_position_m[i].z();
-      const engine::PipePressures pressures{engine::internal_pressure_Pa(internal, z, water.gravity_m_per_s2),
-                                            engine::external_pressure_Pa(z, water)};
       engine::StressCheckInput input;
-      input.loads = {engine::wall_tension_N(tension, pressures, sd.properties),
-                     std::abs(solution.node_bending_moment_Nm[i]), pressures};
+      input.loads = {q.wall_tension_N, q.bending_moment_N_m, pressures};
       input.design_factor = factor;
-      const double u = engine::check_pipe_stress(sd.properties, input).utilization;
-      if (!row.max_von_mises_utilization || u > *row.max_von_mises_utilization) {
-        row.max_von_mises_utilization = u;
-        row.max_von_mises_arc_m = arc;
-      }
+      const engine::StressCheckResult stress = engine::check_pipe_stress(sd.properties, input);
+      q.von_mises_Pa = stress.max_von_mises_Pa;
+      q.von_mises_utilization = stress.utilization;
     }
-    row.profile.push_back({solution.node_position_m[i], arc, tension, static_cast<int>(section),
-                           solution.touchdown && arc <= solution.touchdown->arc_length_m});
+
+    if (q.effective_tension_N < row.min_effective_tension_N) {
+      row.min_effective_tension_N = q.effective_tension_N;
+      row.min_effective_tension_arc_m = q.arc_length_m;
+    }
+    row.max_curvature_per_m = std::max(row.max_curvature_per_m, q.curvature_per_m);
+    if (q.von_mises_utilization && (!row.max_von_mises_utilization ||
+                                    *q.von_mises_utilization > *row.max_von_mises_utilization)) {
+      row.max_von_mises_utilization = q.von_mises_utilization;
+      row.max_von_mises_arc_m = q.arc_length_m;
+    }
+    row.profile.push_back(q);
   }
   row.min_bending_radius_m = row.max_curvature_per_m > 0.0 ? 1.0 / row.max_curvature_per_m
                                                            : std::numeric_limits<double>::infinity();

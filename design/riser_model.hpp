@@ -80,6 +80,24 @@ struct RiserCriterionCheck {
   bool passes = true;
 };
 
+/// The riser results at one FE node (foot first).
+struct RiserProfilePoint {
+  Eigen::Vector3d position_g = Eigen::Vector3d::Zero();  ///< m, global
+  double arc_length_m = 0.0;                             ///< unstretched, from the foot
+  int section = 0;  ///< index into the project's Riser::sections (listed from the hang-off down)
+  bool on_seabed = false;  ///< at or before the touchdown point
+  double effective_tension_N = 0.0;
+  /// True wall tension T_w = T_e + p_i A_i − p_e A_o (Sparks 1984), with the
+  /// contents and sea pressures at the node.
+  double wall_tension_N = 0.0;
+  double bending_moment_N_m = 0.0;  ///< |EI κ|
+  double curvature_per_m = 0.0;     ///< |κ|
+  /// Steel sections only: the largest von Mises stress over the wall's four
+  /// extreme points and its utilization (design factor of the condition).
+  std::optional<double> von_mises_Pa;
+  std::optional<double> von_mises_utilization;
+};
+
 struct RiserStaticsRow {
   std::string name;
   std::string kind;
@@ -99,7 +117,7 @@ struct RiserStaticsRow {
   std::string governing_criterion;       ///< the check with the largest utilization
   double utilization = 0.0;              ///< of the governing check
   bool passes = true;
-  std::vector<engine::LineProfilePoint> profile;
+  std::vector<RiserProfilePoint> profile;  ///< every FE node, foot first
 };
 
 /// Post-processes an FE solution of the riser at hang-off position `hang_off_g`.

@@ -24,6 +24,37 @@ nlohmann::json six_by_six(const engine::Matrix6d& m) {
   return rows;
 }
 
+/// The riser's results along its length as parallel arrays, foot first.
+nlohmann::json riser_profile_json(const std::vector<RiserProfilePoint>& profile) {
+  nlohmann::json arc = nlohmann::json::array(), position = nlohmann::json::array(),
+                 section = nlohmann::json::array(), on_seabed = nlohmann::json::array(),
+                 effective = nlohmann::json::array(), wall = nlohmann::json::array(),
+                 moment = nlohmann::json::array(), curvature = nlohmann::json::array(),
+                 von_mises = nlohmann::json::array(), utilization = nlohmann::json::array();
+  for (const RiserProfilePoint& q : profile) {
+    arc.push_back(q.arc_length_m);
+    position.push_back({q.position_g.x(), q.position_g.y(), q.position_g.z()});
+    section.push_back(q.section);
+    on_seabed.push_back(q.on_seabed);
+    effective.push_back(q.effective_tension_N);
+    wall.push_back(q.wall_tension_N);
+    moment.push_back(q.bending_moment_N_m);
+    curvature.push_back(q.curvature_per_m);
+    von_mises.push_back(optional_number(q.von_mises_Pa));
+    utilization.push_back(optional_number(q.von_mises_utilization));
+  }
+  return {{"arc_length_m", arc},
+          {"position_m", position},
+          {"section", section},
+          {"on_seabed", on_seabed},
+          {"effective_tension_N", effective},
+          {"wall_tension_N", wall},
+          {"bending_moment_N_m", moment},
+          {"curvature_per_m", curvature},
+          {"von_mises_Pa", von_mises},
+          {"von_mises_utilization", utilization}};
+}
+
 std::string case_heading(const StaticCaseResult& r, const std::string& project_name) {
   return fmt::format("{} — case '{}' (environment {}, {}{})\n", project_name, r.case_name, r.environment,
                      r.condition, r.damaged_line ? fmt::format(": line {} removed", *r.damaged_line) : "");
@@ -60,7 +91,8 @@ nlohmann::json static_case_to_json(const StaticCaseResult& r, const std::string&
                       {"checks", checks},
                       {"governing_criterion", row.governing_criterion},
                       {"utilization", row.utilization},
-                      {"passes", row.passes}});
+                      {"passes", row.passes},
+                      {"profile", riser_profile_json(row.profile)}});
   }
   nlohmann::json modes = nlohmann::json::array();
   for (const NaturalMode& m : r.natural_modes) modes.push_back({{"period_s", m.period_s}, {"dominant_dof", m.dominant_dof}});

@@ -46,7 +46,7 @@ Scene stage_scene(const design::Project& project, const design::StaticCaseResult
   for (const design::RiserStaticsRow& riser : result.risers) {
     SceneLine line;
     line.name = riser.name;
-    for (const engine::LineProfilePoint& p : riser.profile) line.points_g.push_back(p.position_g);
+    for (const design::RiserProfilePoint& p : riser.profile) line.points_g.push_back(p.position_g);
     line.riser = true;
     line.color = {0.38, 0.38, 0.42};
     scene.lines.push_back(std::move(line));

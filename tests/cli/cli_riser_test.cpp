@@ -6,9 +6,11 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <numbers>
 #include <string>
 
 #include "app/exit_codes.hpp"
@@ -63,6 +65,73 @@ TEST(CliRiser, EquilibriumOfTheFormatSampleWithItsFlexibleRiser) {
   const auto& steel = riser_named(doc["risers"], "P1");
   EXPECT_TRUE(has_check(steel, "von_mises"));
   EXPECT_GT(steel["max_von_mises_utilization"].get<double>(), 0.0);
+}
+
+// Wall tension at the hang-off from Sparks' identity, written out: the
+// arithmetic of the JSON's own numbers, so only round-off remains.
+constexpr double kIdentityRelTol = 1e-12;
+
+TEST(CliRiser, EquilibriumJsonHasTheProfileAlongEachRiser) {
+  const auto r = run_spiral("equilibrium --json " + format_sample());
+  ASSERT_EQ(r.exit_code, app::kExitOk) << r.err;
+  const auto doc = nlohmann::json::parse(r.out);
+  ASSERT_EQ(doc["risers"].size(), 2u);
+  for (const auto& riser : doc["risers"]) {
+    const std::string name = riser["name"];
+    const auto& p = riser["profile"];
+    const std::size_t n = p["arc_length_m"].size();
+    ASSERT_GT(n, 10u) << name;
+    for (const char* key :
+         {"position_m", "section", "on_seabed", "effective_tension_N", "wall_tension_N",
+          "bending_moment_N_m", "curvature_per_m", "von_mises_Pa", "von_mises_utilization"}) {
+      ASSERT_EQ(p[key].size(), n) << name << " " << key;
+    }
+    for (std::size_t i = 1; i < n; ++i) {
+      EXPECT_GT(p["arc_length_m"][i].get<double>(), p["arc_length_m"][i - 1].get<double>()) << name;
+    }
+    EXPECT_NEAR(p["position_m"][n - 1][2].get<double>(), -14.0, 1.0)
+        << name;  // the hang-off, hull near rest
+    // The key values are the extremes of the profile.
+    std::size_t i_min = 0;
+    double max_curvature = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (p["effective_tension_N"][i].get<double>() < p["effective_tension_N"][i_min].get<double>())
+        i_min = i;
+      max_curvature = std::max(max_curvature, p["curvature_per_m"][i].get<double>());
+    }
+    EXPECT_EQ(p["effective_tension_N"][i_min].get<double>(),
+              riser["min_effective_tension_N"].get<double>())
+        << name;
+    EXPECT_EQ(p["arc_length_m"][i_min].get<double>(),
+              riser["min_effective_tension_arc_m"].get<double>())
+        << name;
+    EXPECT_EQ(max_curvature, riser["max_curvature_per_m"].get<double>()) << name;
+    EXPECT_DOUBLE_EQ(riser["min_bending_radius_m"].get<double>(), 1.0 / max_curvature) << name;
+    if (riser["max_von_mises_utilization"].is_null()) {
+      for (const auto& u : p["von_mises_utilization"]) EXPECT_TRUE(u.is_null()) << name;
+      continue;
+    }
+    std::size_t i_vm = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (p["von_mises_utilization"][i].get<double>() >
+          p["von_mises_utilization"][i_vm].get<double>())
+        i_vm = i;
+    }
+    EXPECT_EQ(p["von_mises_utilization"][i_vm].get<double>(),
+              riser["max_von_mises_utilization"].get<double>());
+    EXPECT_EQ(p["arc_length_m"][i_vm].get<double>(), riser["max_von_mises_arc_m"].get<double>());
+  }
+  // P1 (OD 273.1 mm, WT 25.4 mm, 10 MPa gauge at the hang-off, ≈ 14 m down):
+  // T_w = T_e + p_i A_i − p_e A_o at its top node.
+  const auto& p = riser_named(doc["risers"], "P1")["profile"];
+  const std::size_t top = p["arc_length_m"].size() - 1;
+  const double pi = std::numbers::pi;
+  const double inner_m2 = pi / 4.0 * std::pow(0.2731 - 2.0 * 0.0254, 2);
+  const double outer_m2 = pi / 4.0 * 0.2731 * 0.2731;
+  const double p_e = 1025.0 * 9.80665 * -p["position_m"][top][2].get<double>();
+  const double expected =
+      p["effective_tension_N"][top].get<double>() + 1.0e7 * inner_m2 - p_e * outer_m2;
+  EXPECT_NEAR(p["wall_tension_N"][top].get<double>(), expected, kIdentityRelTol * expected);
 }
 
 TEST(CliRiser, EquilibriumWithCurrentOnAFlexibleRiser) {
