@@ -46,9 +46,21 @@ Scene stage_scene(const design::Project& project, const design::StaticCaseResult
   for (const design::RiserStaticsRow& riser : result.risers) {
     SceneLine line;
     line.name = riser.name;
-    for (const design::RiserProfilePoint& p : riser.profile) line.points_g.push_back(p.position_g);
+    // Risers on the same colour scale as the lines, by their own utilization
+    // per node: von Mises over the steel wall (API RP 2RD design factor), or
+    // for a flexible pipe its curvature against the minimum bending radius.
+    const design::Riser* model = nullptr;
+    for (const design::Riser& r : project.risers)
+      if (r.name == riser.name) model = &r;
+    const std::optional<double> mbr =
+        model ? design::riser_criteria(project.criteria, *model).min_bending_radius_m : std::nullopt;
+    for (const design::RiserProfilePoint& p : riser.profile) {
+      line.points_g.push_back(p.position_g);
+      double u = p.von_mises_utilization.value_or(0.0);
+      if (!p.von_mises_utilization && mbr) u = p.curvature_per_m * *mbr;
+      line.values.push_back(u);
+    }
     line.riser = true;
-    line.color = {0.38, 0.38, 0.42};
     scene.lines.push_back(std::move(line));
   }
   return scene;

@@ -58,7 +58,8 @@ void color_bar(cairo_t* cr, const Scene& scene, double W, double H, double f, bo
     cairo_stroke(cr);
     draw_text(cr, x + bar_w + 10 * f, ty + 5 * f, fmt::format("{:.1f}", k / 5.0));
   }
-  // Fail swatch and riser key.
+  // Fail swatch and riser key (risers are drawn thin, on the same scale:
+  // von Mises, or curvature × MBR for flexibles).
   double ky = y + bar_h + 18 * f;
   cairo_set_source_rgb(cr, kFailColor.r, kFailColor.g, kFailColor.b);
   cairo_rectangle(cr, x, ky, bar_w, 14 * f);
@@ -71,7 +72,7 @@ void color_bar(cairo_t* cr, const Scene& scene, double W, double H, double f, bo
     cairo_rectangle(cr, x, ky + 5 * f, bar_w, 4 * f);
     cairo_fill(cr);
     cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
-    draw_text(cr, x + bar_w + 10 * f, ky + 12 * f, "riser");
+    draw_text(cr, x + bar_w + 10 * f, ky + 12 * f, "riser (thin)");
   }
   ky += 26 * f;
   cairo_set_source_rgb(cr, 0.35, 0.12, 0.10);
