@@ -132,7 +132,10 @@ StaticCaseResult run_static_case(const ValidatedProject& validated, const Static
   const engine::LineArrayResponse& array = equilibrium.lines;
   result.line_force = array.force;
   result.stiffness = array.stiffness;
-  for (const auto& contribution : array.lines) result.line_stiffness.push_back(contribution.stiffness);
+  for (const auto& contribution : array.lines) {
+    result.line_stiffness.push_back(contribution.stiffness);
+    result.line_force_6dof.push_back(contribution.force);
+  }
   result.stiffness_wall_s = seconds_since(start);
   if (request.finite_difference_check) {
     result.stiffness_finite_difference = engine::finite_difference_stiffness(lines.lines, equilibrium.pose);

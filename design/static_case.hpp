@@ -57,6 +57,10 @@ struct StaticCaseResult {
   std::optional<engine::Matrix6d> stiffness_finite_difference;    ///< central differences
   std::optional<double> stiffness_check_relative_difference;      ///< ‖K − K_fd‖ / ‖K_fd‖
   std::vector<engine::Matrix6d> line_stiffness;                   ///< per line: mooring lines, then risers
+  /// Per line, same order: its 6-DOF force on the hull (about the displaced
+  /// reference point, global axes); they sum to line_force, as the
+  /// line_stiffness sum to stiffness.
+  std::vector<engine::Vector6d> line_force_6dof;
   engine::Vector6d hydrostatic_force = engine::Vector6d::Zero();
   engine::Vector6d environment_force = engine::Vector6d::Zero();
   engine::Vector6d residual = engine::Vector6d::Zero();

@@ -68,10 +68,14 @@ nlohmann::json static_case_to_json(const StaticCaseResult& r, const std::string&
   for (std::size_t i = 0; i < statics_lines.size(); ++i) {
     nlohmann::json line = statics_lines[i];
     line["stiffness_6x6"] = six_by_six(r.line_stiffness[i]);
+    line["force_6dof"] = six(r.line_force_6dof[i]);
     lines.push_back(std::move(line));
   }
   nlohmann::json risers = nlohmann::json::array();
-  for (const RiserStaticsRow& row : r.risers) {
+  for (std::size_t k = 0; k < r.risers.size(); ++k) {
+    const RiserStaticsRow& row = r.risers[k];
+    // Contributions are listed mooring lines first, then the risers.
+    const std::size_t contribution = r.lines.size() + k;
     nlohmann::json checks = nlohmann::json::array();
     for (const RiserCriterionCheck& c : row.checks) {
       checks.push_back({{"criterion", c.criterion}, {"value", c.value}, {"limit", c.limit}, {"unit", c.unit},
@@ -92,6 +96,8 @@ nlohmann::json static_case_to_json(const StaticCaseResult& r, const std::string&
                       {"governing_criterion", row.governing_criterion},
                       {"utilization", row.utilization},
                       {"passes", row.passes},
+                      {"stiffness_6x6", six_by_six(r.line_stiffness.at(contribution))},
+                      {"force_6dof", six(r.line_force_6dof.at(contribution))},
                       {"profile", riser_profile_json(row.profile)}});
   }
   nlohmann::json modes = nlohmann::json::array();

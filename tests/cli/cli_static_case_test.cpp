@@ -1,7 +1,10 @@
 // End-to-end runs of `spiral equilibrium` and `spiral stiffness`.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "app/exit_codes.hpp"
 #include "support/run_command.hpp"
@@ -34,6 +37,53 @@ TEST(CliStaticCase, StiffnessJsonOfOc4StillWater) {
   EXPECT_EQ(doc["lines"].size(), 3u);
   EXPECT_EQ(doc["lines"][0]["stiffness_6x6"].size(), 6u);
   EXPECT_EQ(doc["natural_modes"].size(), 6u);
+}
+
+// Contributions sum to the totals up to round-off of the summation:
+// relative to the largest contribution, a few ulps per term.
+constexpr double kSumRelTol = 1e-12;
+
+TEST(CliStaticCase, PerLineAndPerRiserContributionsSumToTheArray) {
+  // Format sample: catenary and FE mooring lines, an SCR and a flexible riser.
+  const auto result = run_spiral("stiffness --json '" + std::string(SPIRAL_SOURCE_DIR) +
+                                 "/tests/data/format-sample.yaml' --case intact-operating");
+  ASSERT_EQ(result.exit_code, app::kExitOk) << result.err;
+  const auto doc = nlohmann::json::parse(result.out);
+  ASSERT_EQ(doc["lines"].size(), 3u);
+  ASSERT_EQ(doc["risers"].size(), 2u);
+  double force_sum[6] = {}, stiffness_sum[6][6] = {};
+  double force_scale = 0.0, stiffness_scale = 0.0;
+  for (const char* group : {"lines", "risers"}) {
+    for (const auto& line : doc[group]) {
+      ASSERT_EQ(line["force_6dof"].size(), 6u) << group;
+      ASSERT_EQ(line["stiffness_6x6"].size(), 6u) << group;
+      for (int i = 0; i < 6; ++i) {
+        const double f = line["force_6dof"][i].get<double>();
+        force_sum[i] += f;
+        force_scale = std::max(force_scale, std::abs(f));
+        for (int j = 0; j < 6; ++j) {
+          const double k = line["stiffness_6x6"][i][j].get<double>();
+          stiffness_sum[i][j] += k;
+          stiffness_scale = std::max(stiffness_scale, std::abs(k));
+        }
+      }
+    }
+  }
+  for (int i = 0; i < 6; ++i) {
+    EXPECT_NEAR(force_sum[i], doc["force_6dof"][i].get<double>(), kSumRelTol * force_scale) << i;
+    for (int j = 0; j < 6; ++j) {
+      EXPECT_NEAR(stiffness_sum[i][j], doc["stiffness_6x6"][i][j].get<double>(),
+                  kSumRelTol * stiffness_scale)
+          << i << "," << j;
+    }
+  }
+  // A riser contributes: it pulls the hull down and stiffens it horizontally.
+  for (const auto& riser : doc["risers"]) {
+    EXPECT_LT(riser["force_6dof"][2].get<double>(), 0.0) << riser["name"];
+    EXPECT_GT(
+        riser["stiffness_6x6"][0][0].get<double>() + riser["stiffness_6x6"][1][1].get<double>(),
+        0.0);
+  }
 }
 
 TEST(CliStaticCase, EquilibriumTableOfALoadCase) {

@@ -3,14 +3,15 @@
 // uniform current against the taut-string solution, and the touchdown
 // curvature of a steel catenary riser against the boundary-layer solution.
 
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <map>
 #include <sstream>
 #include <string>
-
-#include <gtest/gtest.h>
+#include <vector>
 
 #include "engine/lines/fe_line_statics.hpp"
 
@@ -247,6 +248,10 @@ TEST(FeStaticsRiser, ScrTouchdownCurvatureApproachesCatenaryValue) {
   constexpr double kPeakCurvatureTolerance = 0.03;
   // Mesh convergence of the peak between zone elements of 1 m and 0.5 m.
   constexpr double kRefinementAgreement = 0.005;
+  // Decay length of the boundary layer vs √(EI/H): the inner solution is the
+  // small-slope one with H and w fixed; over the fit window the slope reaches
+  // ≈ 4λ/a and the tension changes by as much, O(λ/a) ≈ 1.6 %: 2 %.
+  constexpr double kBoundaryLayerLengthTolerance = 0.02;
   const Scr p = production_scr();
   const auto coarse = solve_scr(1.0);
   const auto fine = solve_scr(0.5);
@@ -268,6 +273,43 @@ TEST(FeStaticsRiser, ScrTouchdownCurvatureApproachesCatenaryValue) {
               fine.touchdown ? fine.touchdown->arc_length_m : -1.0);
   ASSERT_TRUE(fine.touchdown.has_value());
   EXPECT_NEAR(peak(fine) / kappa_cat, 1.0, kPeakCurvatureTolerance);
+
+  // Boundary-layer length. Pesce et al. (1998), small-slope inner problem at
+  // the TDP: EI κ'' − T κ = −w, with the laid side straight (κ = 0 at the
+  // lift-off point); the solution matching the catenary outside is
+  // κ(s) = κ_c(s) (1 − e^{−s/λ}), λ = √(EI/H), s the arc from the lift-off
+  // point. So the defect δ = κ_c − κ of the FE curvature against the
+  // cable curvature at its own tension, κ_c = w H / T² (Irvine 1981: the
+  // catenary's curvature), decays as e^{−s/λ}: fit ln δ over s in
+  // [1.5 λ, 4 λ] (beyond the penalty seabed's foundation length
+  // (4 EI/k)^{1/4} ≈ 1.9 m, before δ falls to 2 % of w/H) and compare the
+  // decay length with λ.
+  std::vector<double> s_fit, log_defect;
+  for (std::size_t i = 0; i < fine.node_arc_length_m.size(); ++i) {
+    const double s_m = fine.node_arc_length_m[i] - fine.touchdown->arc_length_m;
+    if (s_m < 1.5 * lambda || s_m > 4.0 * lambda) continue;
+    const double T = fine.node_tension_N[i];
+    const double defect = p.weight_N_per_m * H / (T * T) - fine.node_curvature_per_m[i];
+    ASSERT_GT(defect, 0.0) << "s = " << s_m << " m";
+    s_fit.push_back(s_m);
+    log_defect.push_back(std::log(defect));
+  }
+  ASSERT_GE(s_fit.size(), 10u);  // 0.5 m elements over 2.5 λ ≈ 18 m
+  const double n = static_cast<double>(s_fit.size());
+  double sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
+  for (std::size_t i = 0; i < s_fit.size(); ++i) {
+    sx += s_fit[i];
+    sy += log_defect[i];
+    sxx += s_fit[i] * s_fit[i];
+    sxy += s_fit[i] * log_defect[i];
+  }
+  const double slope = (n * sxy - sx * sy) / (n * sxx - sx * sx);
+  const double decay_length_m = -1.0 / slope;
+  std::printf(
+      "SCR boundary layer: curvature defect decays over %.3f m (λ = √(EI/H) = %.3f m, ratio "
+      "%.4f)\n",
+      decay_length_m, lambda, decay_length_m / lambda);
+  EXPECT_NEAR(decay_length_m / lambda, 1.0, kBoundaryLayerLengthTolerance);
   EXPECT_NEAR(peak(coarse) / peak(fine), 1.0, kRefinementAgreement);
   EXPECT_NEAR(top_angle_deg, 12.0, 0.5);  // the geometry is what the brief asks for
 }
