@@ -124,7 +124,9 @@ FeStaticsResult solve_fe_line_statics(const FeLineModel& model, const FeEnvironm
   const double k_target = environment.seabed_stiffness_N_per_m2;
   bool done = false;
   if (options.warm_start_state) {
-    last = solve_with_current_steps(p, options, q, t, counters);
+    // No continuation from a warm state: they restart from zero current, and
+    // the cold start below (swung into the current) is cheaper and surer.
+    last = solve_with_current_steps(p, options, q, t, counters, {.continuations = false});
     if (last.converged) last = snap_touchdown(p, options, q, t, counters, kFinalSnapPasses);
     done = last.converged;
     if (!done) {

@@ -80,6 +80,10 @@
 // stretch of a linear rotation step): most cold solves under current then
 // converge without continuation (default scenario, 28 lines × 4 currents × 3
 // hull offsets: 22,458 → 4,164 Newton iterations, end forces equal to 1e-8).
+// A warm start is predicted to first order with the previous solution's
+// tangent and solved by Newton at the full current; if that fails, the
+// solve starts cold (a continuation from a warm state would restart from
+// zero current).
 // Timings (Release, one core, shared machine; tests/bench/fe_statics_bench):
 // OC4 20/80 el ≈ 5 ms; 2740 m chain–polyester–chain, 83 el: 2 ms (no
 // current), 3.5 ms (1.5 m/s at 30°), 0.8 ms warm-started after a 1 m offset;
@@ -181,7 +185,8 @@ struct FeStaticsOptions {
   /// touchdown point; optional, used with warm_start_state.
   std::vector<double> warm_start_node_arc_length_m;
   /// Factorised Jacobian of that solution (FeStaticsResult::tangent); the
-  /// warm solve steps with it while it contracts the residual (modified
+  /// warm solve predicts the first-order response to the end displacements
+  /// with it, then steps with it while it contracts the residual (modified
   /// Newton) instead of re-assembling. Optional, used with warm_start_state;
   /// ignored if it belongs to another mesh size.
   std::shared_ptr<const FeLineTangent> warm_start_tangent;
