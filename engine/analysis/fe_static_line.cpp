@@ -38,14 +38,20 @@ FeStaticLine::FeStaticLine(std::string name, Eigen::Vector3d end_A_g, Eigen::Vec
       options_(std::move(options)) {}
 
 LineEndResponse FeStaticLine::solve(const Eigen::Vector3d& attachment_g) {
-  FeStaticsOptions options = options_;
-  options.compute_end_B_stiffness = true;
-  if (last_) warm_start_from(options, *last_);
-  try {
-    last_ = solve_fe_line_statics(model_, environment_, {end_A_g_, attachment_g}, options);
-  } catch (const SolverError& error) {
+  if (!last_ || attachment_g != last_attachment_g_) {
+    // A failed trial (e.g. a hull line-search step too far) leaves the warm
+    // start at the last converged solution, not at a cold start.
+    FeStaticsOptions options = options_;
+    options.compute_end_B_stiffness = true;
+    if (warm_) warm_start_from(options, *warm_);
     last_.reset();
-    throw SolverError(fmt::format("line '{}': {}", name_, error.what()), error.diagnostics());
+    try {
+      last_ = solve_fe_line_statics(model_, environment_, {end_A_g_, attachment_g}, options);
+    } catch (const SolverError& error) {
+      throw SolverError(fmt::format("line '{}': {}", name_, error.what()), error.diagnostics());
+    }
+    last_attachment_g_ = attachment_g;
+    warm_ = std::make_shared<const FeStaticsResult>(*last_);
   }
   LineEndResponse response;
   response.force_g = last_->end_B_force_N;
