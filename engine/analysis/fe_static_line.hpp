@@ -27,6 +27,8 @@ class FeStaticLine final : public StaticLine {
   /// at the attachment of the last solve it returns that solution as is (a
   /// re-solve there would return it, to round-off).
   LineEndResponse solve(const Eigen::Vector3d& attachment_g) override;
+  /// Without the end-B stiffness (its Jacobian factorisation is most of a warm solve).
+  Eigen::Vector3d solve_force(const Eigen::Vector3d& attachment_g) override;
   /// The FE nodes are the profile (`points_per_segment` is not used: the mesh sets the resolution).
   LineState state(const Eigen::Vector3d& attachment_g, int points_per_segment) override;
   void reset() override {
@@ -46,8 +48,13 @@ class FeStaticLine final : public StaticLine {
   FeLineModel model_;
   FeEnvironment environment_;
   FeStaticsOptions options_;
+  /// Solves at attachment_g unless last_ already holds that solution (with
+  /// the stiffness if `stiffness`).
+  const FeStaticsResult& solve_at(const Eigen::Vector3d& attachment_g, bool stiffness);
+
   std::optional<FeStaticsResult> last_;  ///< of the last solve; empty after a failure
   Eigen::Vector3d last_attachment_g_ = Eigen::Vector3d::Zero();
+  bool last_has_stiffness_ = false;
   std::shared_ptr<const FeStaticsResult> warm_;  ///< last converged solve (the warm start)
 };
 
