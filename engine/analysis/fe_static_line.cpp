@@ -37,23 +37,39 @@ FeStaticLine::FeStaticLine(std::string name, Eigen::Vector3d end_A_g, Eigen::Vec
       environment_(std::move(environment)),
       options_(std::move(options)) {}
 
-LineEndResponse FeStaticLine::solve(const Eigen::Vector3d& attachment_g) {
+const FeStaticsResult& FeStaticLine::solve_at(const Eigen::Vector3d& attachment_g, bool stiffness) {
+  if (last_ && attachment_g == last_attachment_g_ && (last_has_stiffness_ || !stiffness))
+    return *last_;
+  // A failed trial (e.g. a hull line-search step too far) leaves the warm
+  // start at the last converged solution, not at a cold start.
   FeStaticsOptions options = options_;
-  options.compute_end_B_stiffness = true;
-  if (last_) warm_start_from(options, *last_);
+  options.compute_end_B_stiffness = stiffness;
+  if (warm_) warm_start_from(options, *warm_);
+  last_.reset();
   try {
     last_ = solve_fe_line_statics(model_, environment_, {end_A_g_, attachment_g}, options);
   } catch (const SolverError& error) {
-    last_.reset();
     throw SolverError(fmt::format("line '{}': {}", name_, error.what()), error.diagnostics());
   }
+  last_attachment_g_ = attachment_g;
+  last_has_stiffness_ = stiffness;
+  warm_ = std::make_shared<const FeStaticsResult>(*last_);
+  return *last_;
+}
+
+LineEndResponse FeStaticLine::solve(const Eigen::Vector3d& attachment_g) {
+  const FeStaticsResult& r = solve_at(attachment_g, true);
   LineEndResponse response;
-  response.force_g = last_->end_B_force_N;
+  response.force_g = r.end_B_force_N;
   // The FE solver gives dF_B/dx_B; the line array uses K = −dF/dx.
-  response.stiffness_g = -last_->end_B_stiffness_N_per_m;
-  response.top_tension_N = last_->end_B_force_N.norm();
-  response.iterations = last_->iterations;
+  response.stiffness_g = -r.end_B_stiffness_N_per_m;
+  response.top_tension_N = r.end_B_force_N.norm();
+  response.iterations = r.iterations;
   return response;
+}
+
+Eigen::Vector3d FeStaticLine::solve_force(const Eigen::Vector3d& attachment_g) {
+  return solve_at(attachment_g, false).end_B_force_N;
 }
 
 LineState FeStaticLine::state(const Eigen::Vector3d& attachment_g, int /*points_per_segment*/) {

@@ -3,6 +3,7 @@
 // coupled static analysis: end A fixed (anchor, riser foot), end B at the hull
 // attachment. Unlike the catenary it carries current drag and bending.
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -22,10 +23,18 @@ class FeStaticLine final : public StaticLine {
                FeEnvironment environment, FeStaticsOptions options = {});
   const std::string& name() const override { return name_; }
   const Eigen::Vector3d& attachment_b() const override { return attachment_b_; }
+  /// Warm-started from the last converged solve (kept after a failed one);
+  /// at the attachment of the last solve it returns that solution as is (a
+  /// re-solve there would return it, to round-off).
   LineEndResponse solve(const Eigen::Vector3d& attachment_g) override;
+  /// Without the end-B stiffness (its Jacobian factorisation is most of a warm solve).
+  Eigen::Vector3d solve_force(const Eigen::Vector3d& attachment_g) override;
   /// The FE nodes are the profile (`points_per_segment` is not used: the mesh sets the resolution).
   LineState state(const Eigen::Vector3d& attachment_g, int points_per_segment) override;
-  void reset() override { last_.reset(); }
+  void reset() override {
+    last_.reset();
+    warm_.reset();
+  }
   bool expensive() const override { return true; }
   /// The full FE solution of the last solve (curvature, bending moment per node).
   const std::optional<FeStaticsResult>& last_result() const { return last_; }
@@ -39,7 +48,14 @@ class FeStaticLine final : public StaticLine {
   FeLineModel model_;
   FeEnvironment environment_;
   FeStaticsOptions options_;
-  std::optional<FeStaticsResult> last_;
+  /// Solves at attachment_g unless last_ already holds that solution (with
+  /// the stiffness if `stiffness`).
+  const FeStaticsResult& solve_at(const Eigen::Vector3d& attachment_g, bool stiffness);
+
+  std::optional<FeStaticsResult> last_;  ///< of the last solve; empty after a failure
+  Eigen::Vector3d last_attachment_g_ = Eigen::Vector3d::Zero();
+  bool last_has_stiffness_ = false;
+  std::shared_ptr<const FeStaticsResult> warm_;  ///< last converged solve (the warm start)
 };
 
 }  // namespace spiral::engine

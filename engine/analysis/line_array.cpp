@@ -1,10 +1,10 @@
 #include "engine/analysis/line_array.hpp"
 
+#include <Eigen/Geometry>
 #include <algorithm>
+#include <atomic>
 #include <exception>
 #include <thread>
-
-#include <Eigen/Geometry>
 
 namespace spiral::engine {
 
@@ -29,12 +29,22 @@ HullPose perturbed(const HullPose& pose, int dof, double step) {
 
 /// Solves every line at `pose`. Lines are independent (each holds its own
 /// warm start), so when the array has expensive (FE) lines they are shared
-/// out over the hardware threads; the order of the results is the order of
-/// the lines either way, so the sums below are deterministic.
-std::vector<LineEndResponse> solve_all(std::span<const std::unique_ptr<StaticLine>> lines, const HullPose& pose) {
+/// out over the hardware threads, each taking the next unsolved line (solve
+/// times differ tenfold between a cold riser and a warm mooring line); the
+/// order of the results is the order of the lines either way, so the sums
+/// below are deterministic.
+/// force_only: only LineEndResponse::force_g is filled (StaticLine::solve_force).
+std::vector<LineEndResponse> solve_all(std::span<const std::unique_ptr<StaticLine>> lines,
+                                       const HullPose& pose, bool force_only = false) {
   std::vector<LineEndResponse> ends(lines.size());
   const auto solve_one = [&](std::size_t i) {
-    ends[i] = lines[i]->solve(pose.reference_point_g + pose.rotation * lines[i]->attachment_b());
+    const Eigen::Vector3d attachment_g =
+        pose.reference_point_g + pose.rotation * lines[i]->attachment_b();
+    if (force_only) {
+      ends[i].force_g = lines[i]->solve_force(attachment_g);
+    } else {
+      ends[i] = lines[i]->solve(attachment_g);
+    }
   };
   const bool any_expensive = std::any_of(lines.begin(), lines.end(), [](const auto& l) { return l->expensive(); });
   const std::size_t workers =
@@ -45,10 +55,11 @@ std::vector<LineEndResponse> solve_all(std::span<const std::unique_ptr<StaticLin
   }
   std::vector<std::exception_ptr> errors(workers);
   std::vector<std::thread> threads;
+  std::atomic<std::size_t> next{0};
   for (std::size_t w = 0; w < workers; ++w) {
     threads.emplace_back([&, w] {
       try {
-        for (std::size_t i = w; i < lines.size(); i += workers) solve_one(i);
+        for (std::size_t i = next++; i < lines.size(); i = next++) solve_one(i);
       } catch (...) {
         errors[w] = std::current_exception();
       }
@@ -63,7 +74,7 @@ std::vector<LineEndResponse> solve_all(std::span<const std::unique_ptr<StaticLin
 
 Vector6d array_force(std::span<const std::unique_ptr<StaticLine>> lines, const HullPose& pose) {
   Vector6d force = Vector6d::Zero();
-  const std::vector<LineEndResponse> ends = solve_all(lines, pose);
+  const std::vector<LineEndResponse> ends = solve_all(lines, pose, true);
   for (std::size_t i = 0; i < lines.size(); ++i) {
     const Eigen::Vector3d arm = pose.rotation * lines[i]->attachment_b();
     force.head<3>() += ends[i].force_g;
@@ -120,8 +131,8 @@ Matrix6d finite_difference_stiffness(std::span<const std::unique_ptr<StaticLine>
     const Vector6d minus = array_force(lines, perturbed(pose, dof, -h));
     k.col(dof) = -(plus - minus) / (2.0 * h);
   }
-  // Leave every line's warm start at the pose itself.
-  array_force(lines, pose);
+  // Leave every line's warm start at the pose itself (with its stiffness).
+  solve_all(lines, pose);
   return k;
 }
 

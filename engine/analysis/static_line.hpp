@@ -54,6 +54,11 @@ class StaticLine {
   /// Solves the line with its top end at `attachment_g` (global, m). Throws
   /// SolverError naming the line when it cannot.
   virtual LineEndResponse solve(const Eigen::Vector3d& attachment_g) = 0;
+  /// The force of the line on the hull alone (N, global), for finite
+  /// differences: a line may skip its stiffness. Default: solve().force_g.
+  virtual Eigen::Vector3d solve_force(const Eigen::Vector3d& attachment_g) {
+    return solve(attachment_g).force_g;
+  }
   /// Solves the line at `attachment_g` and returns its whole state, with
   /// `points_per_segment` + 1 profile points on each segment (ends included).
   virtual LineState state(const Eigen::Vector3d& attachment_g, int points_per_segment) = 0;

@@ -3,6 +3,7 @@
 
 #include "engine/lines/fe_line_newton.hpp"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <utility>
@@ -208,6 +209,104 @@ NewtonOutcome newton(const Problem& p, const FeStaticsOptions& o, Eigen::VectorX
   }
 }
 
+/// Swing predictor of a cold start under current: turns the suspended part
+/// of the line rigidly about its chord — from the last node resting on the
+/// seabed (or end A) to end B — to the angle where the loads have no moment
+/// about that chord, and returns the turned state (q unchanged and false if
+/// no such angle is found within ±kMaxSwingAngle).
+/// Why: a cable under a uniform load hangs in the plane of the load and its
+/// chord, so a current mostly swings the line's plane about the chord; the
+/// linear Newton step of that rotation stretches the line by ≈ θ²/2 (see
+/// solve_with_current_steps), whereas a rigid rotation keeps every strain and
+/// curvature. The angle solves G(θ) = g(q_θ) · ∂q_θ/∂θ = 0, the generalised
+/// force along the rotation (internal forces do no work in a rigid rotation:
+/// G is the moment of the weight, drag and contact loads about the chord),
+/// by a march in kSwingAngleStep to a sign change, then Illinois regula falsi.
+static bool swing_into_current(const Problem& p, Eigen::VectorXd& q) {
+  constexpr double kSwingAngleStep = 0.1;  // rad; the march that brackets the root
+  constexpr double kMaxSwingAngle = 1.5;   // rad; a line swung further is left to the continuations
+  constexpr double kSwingAngleTolerance = 1e-3;  // rad; Newton removes the rest
+  constexpr int kMaxRegulaFalsiSteps = 30;
+  // Pivot: the last node on the seabed (the laid part stays where it lies).
+  int pivot = 0;
+  if (p.load.seabed_stiffness_N_per_m2 > 0.0) {
+    const double on_seabed_m = p.load.seabed_z_m + 1e-6 * p.line_length_m;
+    for (int i = 0; i + 1 < p.n_nodes; ++i) {
+      if (q[p.r_dof[static_cast<std::size_t>(i)] + 2] <= on_seabed_m) pivot = i;
+    }
+  }
+  if (pivot + 2 >= p.n_nodes) return false;
+  const Eigen::Vector3d c = q.segment<3>(p.r_dof[static_cast<std::size_t>(pivot)]);
+  const Eigen::Vector3d chord = q.segment<3>(p.r_dof.back()) - c;
+  if (chord.norm() < 1e-6 * p.line_length_m) return false;
+  const Eigen::Vector3d u = chord.normalized();
+  const Eigen::VectorXd q0 = q;
+  Eigen::VectorXd g(p.n_dofs);
+  auto turn = [&](double theta) {
+    const Eigen::Matrix3d R = Eigen::AngleAxisd(theta, u).toRotationMatrix();
+    for (std::size_t i = static_cast<std::size_t>(pivot) + 1;
+         i + 1 < static_cast<std::size_t>(p.n_nodes); ++i) {
+      q.segment<3>(p.r_dof[i]) = c + R * (q0.segment<3>(p.r_dof[i]) - c);
+      q.segment<3>(p.t_in[i]) = R * q0.segment<3>(p.t_in[i]);
+      q.segment<3>(p.t_out[i]) = R * q0.segment<3>(p.t_out[i]);
+    }
+  };
+  auto moment = [&](double theta, double& G) {
+    turn(theta);
+    if (!assemble(p, q, g, nullptr)) return false;
+    G = 0.0;
+    for (std::size_t i = static_cast<std::size_t>(pivot) + 1;
+         i + 1 < static_cast<std::size_t>(p.n_nodes); ++i) {
+      G += g.segment<3>(p.r_dof[i]).dot(u.cross(q.segment<3>(p.r_dof[i]) - c));
+      G += g.segment<3>(p.t_in[i]).dot(u.cross(q.segment<3>(p.t_in[i])));
+      if (p.t_out[i] != p.t_in[i])
+        G += g.segment<3>(p.t_out[i]).dot(u.cross(q.segment<3>(p.t_out[i])));
+    }
+    return std::isfinite(G);
+  };
+  auto give_up = [&] {
+    q = q0;
+    return false;
+  };
+  double G0 = 0.0;
+  if (!moment(0.0, G0) || G0 == 0.0) return give_up();
+  // Angles along the direction the moment turns the line; G(lo) has G0's sign.
+  const double dir = G0 > 0.0 ? 1.0 : -1.0;
+  double lo = 0.0, G_lo = G0, hi = NAN, G_hi = NAN;
+  for (int k = 1; k * kSwingAngleStep <= kMaxSwingAngle + 1e-12; ++k) {
+    const double theta = k * kSwingAngleStep;
+    double G = 0.0;
+    if (!moment(dir * theta, G)) return give_up();
+    if ((G > 0.0) != (G0 > 0.0)) {
+      hi = theta;
+      G_hi = G;
+      break;
+    }
+    lo = theta;
+    G_lo = G;
+  }
+  if (std::isnan(hi)) return give_up();
+  int side = 0;  // Illinois: halve the retained end's value when it is kept twice
+  for (int k = 0; k < kMaxRegulaFalsiSteps && hi - lo > kSwingAngleTolerance; ++k) {
+    const double theta = (lo * G_hi - hi * G_lo) / (G_hi - G_lo);
+    double G = 0.0;
+    if (!moment(dir * theta, G)) return give_up();
+    if ((G > 0.0) == (G0 > 0.0)) {
+      lo = theta;
+      G_lo = G;
+      if (side == -1) G_hi *= 0.5;
+      side = -1;
+    } else {
+      hi = theta;
+      G_hi = G;
+      if (side == 1) G_lo *= 0.5;
+      side = 1;
+    }
+  }
+  turn(dir * 0.5 * (lo + hi));
+  return true;
+}
+
 /// Continuation on the current velocity factor λ (drag ∝ λ²) from the state
 /// converged at λ = 0: steps grow by half after a success, halve after a
 /// failure. Leaves current_factor at 1.
@@ -239,7 +338,9 @@ static NewtonOutcome current_continuation(Problem& p, const FeStaticsOptions& o,
   return last;
 }
 
-/// Newton at the full current; if it crawls or fails:
+/// Newton at the full current — with steps.swing_predictor, first from the
+/// state swung into the current (swing_into_current) —; if it crawls or
+/// fails, and steps.continuations:
 /// (1) current continuation with EA capped at kFirstAxialCap × the largest
 ///     tension, then the cap raised ×10 per stage to the model's EA at full
 ///     current. Why: a current swings the line through a large angle θ, and
@@ -249,15 +350,27 @@ static NewtonOutcome current_continuation(Problem& p, const FeStaticsOptions& o,
 ///     flexible riser). With EA ≈ 10 T a step can turn the line by ≈ 0.5 rad;
 ///     raising EA afterwards changes the shape only by the stretch.
 /// (2) if that fails, current continuation with the model's EA.
-NewtonOutcome solve_with_current_steps(Problem& p, const FeStaticsOptions& o, Eigen::VectorXd& q, Tangent& t,
-                                       Counters& counters) {
+NewtonOutcome solve_with_current_steps(Problem& p, const FeStaticsOptions& o, Eigen::VectorXd& q,
+                                       Tangent& t, Counters& counters, CurrentSteps steps) {
   const bool has_current = p.load.current != nullptr && !p.load.current->empty();
   const Eigen::VectorXd q_start = q;
   p.load.current_factor = 1.0;
+  if (has_current && steps.swing_predictor && swing_into_current(p, q)) {
+    // The swung start usually converges directly (with a larger budget than
+    // a direct attempt: it starts with the bending and contact residuals of
+    // the turn); else the unswung start and the continuations below.
+    FeStaticsOptions swung_options = o;
+    swung_options.max_iterations = std::max(o.max_iterations, kSwungAttemptIterations);
+    const NewtonOutcome swung = newton(p, swung_options, q, t, true);
+    counters.iterations += swung.iterations;
+    ++counters.load_steps;
+    if (swung.converged) return swung;
+    q = q_start;
+  }
   NewtonOutcome last = newton(p, o, q, t, has_current);
   counters.iterations += last.iterations;
   ++counters.load_steps;
-  if (last.converged || !has_current) return last;
+  if (last.converged || !has_current || !steps.continuations) return last;
 
   q = q_start;
   const double T_start = max_axial_force(p, q_start);

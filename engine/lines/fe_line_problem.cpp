@@ -310,14 +310,30 @@ Eigen::VectorXd initial_state(Problem& p, const FeLineModel& m, const FeEnvironm
     }
     q = *o.warm_start_state;
     if (!o.warm_start_node_arc_length_m.empty()) set_node_arc_lengths(p, o.warm_start_node_arc_length_m);
-    // Predictor: spread the end displacements along the line, linearly in arc
-    // length, instead of moving the end nodes alone (which would strain the
-    // end elements by the whole offset and cost Newton damped steps).
+    // Predictor: the first-order response to the end displacements, from the
+    // warm solution's factorised tangent (its prescribed rows are identity
+    // rows, so J δq = [0; δ_ends] gives δq_free = −J_ff⁻¹ J_fe δ_ends: one
+    // back-substitution; the Euler predictor of a continuation in the end
+    // positions). Without that tangent: the end displacements spread along
+    // the line, linearly in arc length, instead of moving the end nodes alone
+    // (which would strain the end elements by the whole offset and cost
+    // Newton damped steps).
     const Eigen::Vector3d dA = ends.end_A_m - q.segment<3>(p.r_dof.front());
     const Eigen::Vector3d dB = ends.end_B_m - q.segment<3>(p.r_dof.back());
-    for (std::size_t i = 0; i < static_cast<std::size_t>(p.n_nodes); ++i) {
-      const double f = p.mesh.s[i] / p.line_length_m;
-      q.segment<3>(p.r_dof[i]) += (1.0 - f) * dA + f * dB;
+    Eigen::VectorXd dq = Eigen::VectorXd::Zero(p.n_dofs);
+    const bool tangent = o.warm_start_tangent && o.warm_start_tangent->lu.size() == p.n_dofs;
+    if (tangent) {
+      dq.segment<3>(p.r_dof.front()) = dA;
+      dq.segment<3>(p.r_dof.back()) = dB;
+      o.warm_start_tangent->lu.solve_in_place(dq);
+    }
+    if (tangent && dq.allFinite()) {
+      q += dq;
+    } else {
+      for (std::size_t i = 0; i < static_cast<std::size_t>(p.n_nodes); ++i) {
+        const double f = p.mesh.s[i] / p.line_length_m;
+        q.segment<3>(p.r_dof[i]) += (1.0 - f) * dA + f * dB;
+      }
     }
   } else {
     const InitialShape catenary = default_initial_shape(m, env, ends.end_A_m, ends.end_B_m);
