@@ -113,7 +113,8 @@ inline PointLoad point_load(const ElementProperties& e, const DynamicElementProp
                             const double* rd, const double* rdd, const ElementFluid* fluid) {
   PointLoad pl;
   double* t = pl.t;
-  for (int x = 0; x < 3; ++x) t[x] = a[x] / na;
+  const double inv_na = 1.0 / na;
+  for (int x = 0; x < 3; ++x) t[x] = a[x] * inv_na;
   // Inertia and fluid inertia, in vector form: [m I + m_an P_n + m_at t tᵀ] x
   // = (m + m_an) x + (m_at − m_an)(t·x) t (p: distributed load per unstretched length).
   const double mn = d.added_mass_normal_kg_per_m, mt = d.added_mass_tangential_kg_per_m;
@@ -143,7 +144,7 @@ inline PointLoad point_load(const ElementProperties& e, const DynamicElementProp
       pl.p[x] += pl.cn * pl.nun * pl.un[x] + pl.ct * std::abs(pl.ut) * pl.ut * t[x];
   }
   // Axial damping and force offset act on r' like the tension: −dS_k (N a/|a|).
-  const double strain_rate = (a[0] * ad[0] + a[1] * ad[1] + a[2] * ad[2]) / na;
+  const double strain_rate = (a[0] * ad[0] + a[1] * ad[1] + a[2] * ad[2]) * inv_na;
   pl.n_axial = d.axial_damping_Ns * strain_rate - d.axial_force_offset_N[gp];
   return pl;
 }

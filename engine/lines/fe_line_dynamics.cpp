@@ -1,5 +1,8 @@
 // FE line dynamics: the DAE of fe_line_dynamics.hpp, its reduced Newton
-// matrix, consistent initial values and the outputs.
+// matrix, consistent initial values and the outputs. Past 600 lines because
+// the two small band-matrix classes of the Newton solve (symmetric storage,
+// banded Cholesky) live here, private to this integrator, rather than in a
+// shared header of their own.
 
 #include "engine/lines/fe_line_dynamics.hpp"
 
@@ -45,6 +48,7 @@ struct SymmetricBand {
   }
   /// Entry (i, j), i ≥ j, i − j ≤ b.
   double& lower(int i, int j) { return a[static_cast<std::size_t>(j * (b + 1) + i - j)]; }
+  double* lower_data() { return a.data(); }
   /// y += A x.
   void multiply_add(const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
     for (int j = 0; j < n; ++j) {
@@ -78,6 +82,8 @@ class NewtonMatrix {
   }
   /// Entry (i, j), i ≥ j, i − j ≤ half band.
   double& lower(int i, int j) { return l_[static_cast<std::size_t>(j * (b_ + 1) + i - j)]; }
+  /// The lower band, column-major (entry (i, j) at j (b + 1) + i − j).
+  double* lower_data() { return l_.data(); }
 
   /// Factors; false if singular (both factorisations failed).
   bool factorize() {
@@ -98,49 +104,93 @@ class NewtonMatrix {
   void solve_in_place(Eigen::VectorXd& x) const {
     if (!cholesky_) {
       lu_.solve_in_place(x);
-      return;
-    }
-    const double* l = l_.data();
-    const int ld = b_ + 1;
-    for (int j = 0; j < n_; ++j) {  // L y = x
-      const double* col = l + static_cast<std::ptrdiff_t>(j) * ld;
-      const double xj = x[j] / col[0];
-      x[j] = xj;
-      const int km = std::min(b_, n_ - 1 - j);
-      for (int r = 1; r <= km; ++r) x[j + r] -= col[r] * xj;
-    }
-    for (int j = n_ - 1; j >= 0; --j) {  // Lᵀ x = y
-      const double* col = l + static_cast<std::ptrdiff_t>(j) * ld;
-      const int km = std::min(b_, n_ - 1 - j);
-      double sum = x[j];
-      for (int r = 1; r <= km; ++r) sum -= col[r] * x[j + r];
-      x[j] = sum / col[0];
+    } else if (b_ == 11) {
+      solve_kd<11>(x.data());
+    } else if (b_ == 14) {
+      solve_kd<14>(x.data());
+    } else {
+      solve_kd<0>(x.data());
     }
   }
 
  private:
+  // The band kernels with the half bandwidth a compile-time constant for the
+  // two bandwidths of FE lines (11; 14 with a hinge joint): the interior
+  // columns' loops then have fixed lengths and unroll (KD = 0: run time).
+  template <int KD>
+  int kd() const {
+    return KD > 0 ? KD : b_;
+  }
+
+  template <int KD>
+  void solve_kd(double* x) const {
+    const int b = kd<KD>(), ld = b + 1;
+    const double* l = l_.data();
+    const double* inv = inv_diagonal_.data();
+    for (int j = 0; j < n_; ++j) {  // L y = x
+      const double* col = l + static_cast<std::ptrdiff_t>(j) * ld;
+      const double xj = x[j] * inv[j];
+      x[j] = xj;
+      double* xr = x + j;
+      if (j + b < n_) {
+        for (int r = 1; r <= b; ++r) xr[r] -= col[r] * xj;
+      } else {
+        for (int r = 1; r < n_ - j; ++r) xr[r] -= col[r] * xj;
+      }
+    }
+    for (int j = n_ - 1; j >= 0; --j) {  // Lᵀ x = y
+      const double* col = l + static_cast<std::ptrdiff_t>(j) * ld;
+      const double* xr = x + j;
+      double sum = 0.0;
+      if (j + b < n_) {
+        for (int r = 1; r <= b; ++r) sum += col[r] * xr[r];
+      } else {
+        for (int r = 1; r < n_ - j; ++r) sum += col[r] * xr[r];
+      }
+      x[j] = (x[j] - sum) * inv[j];
+    }
+  }
+
   bool cholesky() {
+    inv_diagonal_.resize(static_cast<std::size_t>(n_));
+    if (b_ == 11) return cholesky_kd<11>();
+    if (b_ == 14) return cholesky_kd<14>();
+    return cholesky_kd<0>();
+  }
+
+  template <int KD>
+  bool cholesky_kd() {
+    const int b = kd<KD>(), ld = b + 1;
     double* l = l_.data();
-    const int ld = b_ + 1;
     for (int j = 0; j < n_; ++j) {
       double* col = l + static_cast<std::ptrdiff_t>(j) * ld;
       if (!(col[0] > 0.0)) return false;
       const double d = std::sqrt(col[0]);
       col[0] = d;
-      const int km = std::min(b_, n_ - 1 - j);
       const double inv = 1.0 / d;
+      inv_diagonal_[static_cast<std::size_t>(j)] = inv;
+      const int km = std::min(b, n_ - 1 - j);
       for (int r = 1; r <= km; ++r) col[r] *= inv;
-      for (int c = 1; c <= km; ++c) {  // trailing update of column j + c
-        double* target = l + static_cast<std::ptrdiff_t>(j + c) * ld;
-        const double f = col[c];
-        for (int r = c; r <= km; ++r) target[r - c] -= col[r] * f;
+      // Trailing update of columns j + c: L(j+r, j+c) −= L(j+r, j) L(j+c, j).
+      if (km == b) {
+        for (int c = 1; c <= b; ++c) {
+          double* target = col + c * ld - c;
+          const double f = col[c];
+          for (int r = c; r <= b; ++r) target[r] -= col[r] * f;
+        }
+      } else {
+        for (int c = 1; c <= km; ++c) {
+          double* target = col + c * ld - c;
+          const double f = col[c];
+          for (int r = c; r <= km; ++r) target[r] -= col[r] * f;
+        }
       }
     }
     return true;
   }
 
   int n_ = 0, b_ = 0;
-  std::vector<double> l_, copy_;
+  std::vector<double> l_, copy_, inv_diagonal_;
   BandMatrix lu_;
   bool cholesky_ = true;
 };
@@ -168,6 +218,9 @@ struct FeLineDynamics::Impl final : ImplicitSystem {
   std::vector<int> fixed_dofs;
   SymmetricBand D;                                             // c_j M − C at the setup's c_j
   std::vector<ancf::ElementDynamicMatrices> element_matrices;  // of the last evaluation
+  // Per element: (12 i + j, position in the lower bands) of each entry
+  // with i, j free and global j ≤ global i.
+  std::vector<std::vector<std::pair<int, int>>> lower_entries;
   std::vector<double> contact_at_setup, contact_now;  // per element, fraction in seabed contact
   std::vector<char> element_stale;                    // contact changed since its evaluation
   std::unique_ptr<IdaIntegrator> ida;
@@ -299,19 +352,15 @@ struct FeLineDynamics::Impl final : ImplicitSystem {
   void combine_matrices(double cM, double cC, double cK, std::optional<double> D_cj) {
     S.reset(n, p.band);
     if (D_cj) D.reset(n, p.band);
+    double* s_lower = S.lower_data();
+    double* d_lower = D_cj ? D.lower_data() : nullptr;
+    const double cB = D_cj.value_or(0.0);
     for (std::size_t e = 0; e < p.elements.size(); ++e) {
       const ancf::ElementDynamicMatrices& em = element_matrices[e];
-      const auto& dof = element_dofs[e];
-      for (int i = 0; i < kElementDofs; ++i) {
-        const int gi = dof[static_cast<std::size_t>(i)];
-        if (fixed(gi)) continue;
-        for (int j = 0; j < kElementDofs; ++j) {
-          const int gj = dof[static_cast<std::size_t>(j)];
-          if (gj > gi || fixed(gj)) continue;
-          const auto ij = static_cast<std::size_t>(kElementDofs * i + j);
-          S.lower(gi, gj) += cM * em.M[ij] + cC * em.C[ij] + cK * em.K[ij];
-          if (D_cj) D.lower(gi, gj) += *D_cj * em.M[ij] - em.C[ij];
-        }
+      for (const auto& [ij, at] : lower_entries[e]) {
+        const auto k = static_cast<std::size_t>(ij);
+        s_lower[at] += cM * em.M[k] + cC * em.C[k] + cK * em.K[k];
+        if (d_lower != nullptr) d_lower[at] += cB * em.M[k] - em.C[k];
       }
     }
     for (int i : fixed_dofs) S.lower(i, i) = 1.0;
@@ -526,6 +575,17 @@ FeLineDynamics::FeLineDynamics(const FeLineModel& model, const FeDynamicEnvironm
     if (m.fixed(i)) m.fixed_dofs.push_back(i);
   }
   m.element_matrices.resize(m.p.elements.size());
+  m.lower_entries.resize(m.p.elements.size());
+  for (std::size_t e = 0; e < m.p.elements.size(); ++e) {
+    const auto& dof = m.element_dofs[e];
+    for (int i = 0; i < kElementDofs; ++i) {
+      for (int j = 0; j < kElementDofs; ++j) {
+        const int gi = dof[static_cast<std::size_t>(i)], gj = dof[static_cast<std::size_t>(j)];
+        if (gj > gi || m.fixed(gi) || m.fixed(gj)) continue;
+        m.lower_entries[e].emplace_back(kElementDofs * i + j, gj * (m.p.band + 1) + gi - gj);
+      }
+    }
+  }
   m.element_stale.assign(m.p.elements.size(), 0);
   m.contact_at_setup.assign(m.p.elements.size(), 0.0);
   m.contact_now.assign(m.p.elements.size(), 0.0);
