@@ -35,6 +35,21 @@ constexpr double kContactChangeForRefresh = 0.1;
 
 }  // namespace
 
+/// Σ a[r] b[r] for r in [1, len], in four partial sums: the band solves are
+/// otherwise bound by the latency of one long chain of additions.
+inline double band_dot(const double* a, const double* b, int len) {
+  double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
+  int r = 1;
+  for (; r + 3 <= len; r += 4) {
+    s0 += a[r] * b[r];
+    s1 += a[r + 1] * b[r + 1];
+    s2 += a[r + 2] * b[r + 2];
+    s3 += a[r + 3] * b[r + 3];
+  }
+  for (; r <= len; ++r) s0 += a[r] * b[r];
+  return (s0 + s1) + (s2 + s3);
+}
+
 /// A symmetric band matrix by its lower band (column-major, b + 1 entries
 /// per column), for a matrix whose products the Newton solves need but
 /// never its factors.
@@ -51,15 +66,14 @@ struct SymmetricBand {
   double* lower_data() { return a.data(); }
   /// y += A x.
   void multiply_add(const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
+    const double* xp = x.data();
+    double* yp = y.data();
     for (int j = 0; j < n; ++j) {
       const double* col = &a[static_cast<std::size_t>(j * (b + 1))];
       const int km = std::min(b, n - 1 - j);
-      double sum = col[0] * x[j];
-      for (int r = 1; r <= km; ++r) {
-        y[j + r] += col[r] * x[j];
-        sum += col[r] * x[j + r];
-      }
-      y[j] += sum;
+      const double xj = xp[j];
+      for (int r = 1; r <= km; ++r) yp[j + r] += col[r] * xj;
+      yp[j] += col[0] * xj + band_dot(col, xp + j, km);
     }
   }
 };
@@ -141,12 +155,7 @@ class NewtonMatrix {
     for (int j = n_ - 1; j >= 0; --j) {  // Lᵀ x = y
       const double* col = l + static_cast<std::ptrdiff_t>(j) * ld;
       const double* xr = x + j;
-      double sum = 0.0;
-      if (j + b < n_) {
-        for (int r = 1; r <= b; ++r) sum += col[r] * xr[r];
-      } else {
-        for (int r = 1; r < n_ - j; ++r) sum += col[r] * xr[r];
-      }
+      const double sum = j + b < n_ ? band_dot(col, xr, b) : band_dot(col, xr, n_ - 1 - j);
       x[j] = (x[j] - sum) * inv[j];
     }
   }
