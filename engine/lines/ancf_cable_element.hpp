@@ -238,6 +238,26 @@ V3<T> drag_load(const ElementProperties& e, const LoadContext& ctx, const V3<T>&
          (e.tangential_drag_N_s2_per_m3 * abs_ut * ut * na) * t;
 }
 
+/// Gradient of the strain-energy density per unstretched length at a point
+/// with r' = a, r'' = b (aa = a·a, na = |a|): fa = ∂W/∂r', fb = ∂W/∂r''.
+template <typename T>
+inline void strain_energy_gradient(const ElementProperties& e, const V3<T>& a, const V3<T>& b,
+                                   const T& aa, const T& na, V3<T>& fa, V3<T>& fb) {
+  // Axial: N δ|r'| with N = EA (|r'| − 1) (engineering strain, Irvine 1981).
+  const T axial = e.EA_N * (na - 1.0) / na;  // N / |r'|
+  fa = axial * a;
+  fb = {T(0.0), T(0.0), T(0.0)};
+  if (e.EI_Nm2 > 0.0) {
+    // U_b = EI/2 κ², κ² = (|a|²|b|² − (a·b)²) / |a|⁶ (Gerstmayr & Shabana 2006, eq. 17).
+    const T bb = dot(b, b);
+    const T ab = dot(a, b);
+    const T a6 = aa * aa * aa;
+    const T gk = aa * bb - ab * ab;
+    fa = fa + (e.EI_Nm2 / a6) * ((bb * a - ab * b) - (3.0 * gk / aa) * a);
+    fb = (e.EI_Nm2 / a6) * (aa * b - ab * a);
+  }
+}
+
 /// Generalised forces on the 12 DOFs: external minus internal (the net force
 /// the element and its loads apply to its nodes). q, g: 12 entries each.
 template <typename T>
@@ -260,19 +280,8 @@ void element_forces(const ElementProperties& e, const LoadContext& ctx, const T*
     }
     const T aa = dot(a, a);
     const T na = sqrt(aa);
-    // Axial: N δ|r'| with N = EA (|r'| − 1) (engineering strain, Irvine 1981).
-    const T axial = e.EA_N * (na - 1.0) / na;  // N / |r'|
-    V3<T> fa = axial * a;                      // ∂U/∂r' per length
-    V3<T> fb{T(0.0), T(0.0), T(0.0)};          // ∂U/∂r'' per length
-    if (e.EI_Nm2 > 0.0) {
-      // U_b = EI/2 κ², κ² = (|a|²|b|² − (a·b)²) / |a|⁶ (Gerstmayr & Shabana 2006, eq. 17).
-      const T bb = dot(b, b);
-      const T ab = dot(a, b);
-      const T a6 = aa * aa * aa;
-      const T gk = aa * bb - ab * ab;
-      fa = fa + (e.EI_Nm2 / a6) * ((bb * a - ab * b) - (3.0 * gk / aa) * a);
-      fb = (e.EI_Nm2 / a6) * (aa * b - ab * a);
-    }
+    V3<T> fa, fb;  // ∂U/∂r', ∂U/∂r'' per length
+    strain_energy_gradient(e, a, b, aa, na, fa, fb);
     // Distributed external load per unstretched length.
     V3<T> p{T(0.0), T(0.0), T(-e.weight_N_per_m)};
     if (ctx.current != nullptr && !ctx.current->empty() &&
@@ -290,6 +299,52 @@ void element_forces(const ElementProperties& e, const LoadContext& ctx, const T*
     g[3 * k] = force[k].x;
     g[3 * k + 1] = force[k].y;
     g[3 * k + 2] = force[k].z;
+  }
+}
+
+using M3 = std::array<std::array<double, 3>, 3>;
+
+/// The strain-energy gradient (fa = ∂W/∂r', fb = ∂W/∂r'') and Hessian
+/// (Haa = ∂fa/∂a, Hab = ∂fa/∂b, Hbb = ∂fb/∂b; ∂fb/∂a = Habᵀ) at a point with
+/// r' = a, r'' = b (A = a·a, na = |a|); formulas at element_forces_and_tangent.
+inline void strain_energy_hessian(const ElementProperties& e, const V3<double>& a,
+                                  const V3<double>& b, double A, double na, V3<double>& fa,
+                                  V3<double>& fb, M3& Haa, M3& Hab, M3& Hbb) {
+  const double av[3] = {a.x, a.y, a.z}, bv[3] = {b.x, b.y, b.z};
+  const double axial = e.EA_N * (na - 1.0) / na;
+  fa = axial * a;
+  fb = {0.0, 0.0, 0.0};
+  Haa = {};
+  Hab = {};
+  Hbb = {};
+  const double c_aa = e.EA_N / (A * na);
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) Haa[i][j] = c_aa * av[i] * av[j];
+    Haa[i][i] += axial;
+  }
+  if (e.EI_Nm2 > 0.0) {
+    const double B = dot(b, b), C = dot(a, b);
+    const double G = A * B - C * C;
+    const double EI = e.EI_Nm2;
+    const double iA3 = EI / (A * A * A), iA4 = iA3 / A, iA5 = iA4 / A;
+    fa = fa + iA3 * ((B * a - C * b) - (3.0 * G / A) * a);
+    fb = iA3 * (A * b - C * a);
+    double u[3], v[3];  // u = B a − C b, v = A b − C a
+    for (int i = 0; i < 3; ++i) {
+      u[i] = B * av[i] - C * bv[i];
+      v[i] = A * bv[i] - C * av[i];
+    }
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) {
+        Haa[i][j] += -iA3 * bv[i] * bv[j] - 6.0 * iA4 * u[i] * av[j] - 6.0 * iA4 * av[i] * u[j] +
+                     24.0 * G * iA5 * av[i] * av[j];
+        Hab[i][j] = iA3 * (2.0 * av[i] * bv[j] - bv[i] * av[j]) - 6.0 * iA4 * av[i] * v[j];
+        Hbb[i][j] = -iA3 * av[i] * av[j];
+      }
+      Haa[i][i] += iA3 * B - 3.0 * iA4 * G;
+      Hab[i][i] -= iA3 * C;
+      Hbb[i][i] += iA3 * A;
+    }
   }
 }
 
@@ -311,7 +366,6 @@ void element_forces(const ElementProperties& e, const LoadContext& ctx, const T*
 ///   ∂f_b/∂b = EI A⁻³ (A I − a aᵀ),  ∂f_b/∂a = (∂f_a/∂b)ᵀ.
 inline void element_forces_and_tangent(const ElementProperties& e, const LoadContext& ctx,
                                        const double* q, double* g, ElementTangent& K) {
-  using M3 = std::array<std::array<double, 3>, 3>;
   const double L = e.length_m;
   V3<double> node[4];
   for (int k = 0; k < 4; ++k) node[k] = {q[3 * k], q[3 * k + 1], q[3 * k + 2]};
@@ -320,7 +374,6 @@ inline void element_forces_and_tangent(const ElementProperties& e, const LoadCon
   K.fill(0.0);
   const bool drag = ctx.current != nullptr && !ctx.current->empty() &&
                     (e.normal_drag_N_s2_per_m3 > 0.0 || e.tangential_drag_N_s2_per_m3 > 0.0);
-  const bool bending = e.EI_Nm2 > 0.0;
 
   for (std::size_t gp = 0; gp < kGaussXi.size(); ++gp) {
     const ShapeAt sh = shape_at(kGaussXi[gp], L);
@@ -331,42 +384,11 @@ inline void element_forces_and_tangent(const ElementProperties& e, const LoadCon
       a = a + sh.dS[k] * node[k];
       b = b + sh.ddS[k] * node[k];
     }
-    const double av[3] = {a.x, a.y, a.z}, bv[3] = {b.x, b.y, b.z};
     const double A = dot(a, a);
     const double na = std::sqrt(A);
-    const double axial = e.EA_N * (na - 1.0) / na;
-    V3<double> fa = axial * a;
-    V3<double> fb{0.0, 0.0, 0.0};
-    M3 Haa{}, Hab{}, Hbb{};  // ∂f_a/∂a, ∂f_a/∂b, ∂f_b/∂b
-    const double c_aa = e.EA_N / (A * na);
-    for (int i = 0; i < 3; ++i) {
-      for (int j = 0; j < 3; ++j) Haa[i][j] = c_aa * av[i] * av[j];
-      Haa[i][i] += axial;
-    }
-    if (bending) {
-      const double B = dot(b, b), C = dot(a, b);
-      const double G = A * B - C * C;
-      const double EI = e.EI_Nm2;
-      const double iA3 = EI / (A * A * A), iA4 = iA3 / A, iA5 = iA4 / A;
-      fa = fa + iA3 * ((B * a - C * b) - (3.0 * G / A) * a);
-      fb = iA3 * (A * b - C * a);
-      double u[3], v[3];  // u = B a − C b, v = A b − C a
-      for (int i = 0; i < 3; ++i) {
-        u[i] = B * av[i] - C * bv[i];
-        v[i] = A * bv[i] - C * av[i];
-      }
-      for (int i = 0; i < 3; ++i) {
-        for (int j = 0; j < 3; ++j) {
-          Haa[i][j] += -iA3 * bv[i] * bv[j] - 6.0 * iA4 * u[i] * av[j] - 6.0 * iA4 * av[i] * u[j] +
-                       24.0 * G * iA5 * av[i] * av[j];
-          Hab[i][j] = iA3 * (2.0 * av[i] * bv[j] - bv[i] * av[j]) - 6.0 * iA4 * av[i] * v[j];
-          Hbb[i][j] = -iA3 * av[i] * av[j];
-        }
-        Haa[i][i] += iA3 * B - 3.0 * iA4 * G;
-        Hab[i][i] -= iA3 * C;
-        Hbb[i][i] += iA3 * A;
-      }
-    }
+    V3<double> fa, fb;
+    M3 Haa, Hab, Hbb;  // ∂f_a/∂a, ∂f_a/∂b, ∂f_b/∂b
+    strain_energy_hessian(e, a, b, A, na, fa, fb, Haa, Hab, Hbb);
     V3<double> p{0.0, 0.0, -e.weight_N_per_m};
     M3 Pa{};                         // ∂p/∂a
     double Pz[3] = {0.0, 0.0, 0.0};  // ∂p/∂z

@@ -30,6 +30,50 @@
 // that of the static tangent (half-bandwidth 11–14) instead of a 2n system
 // with twice the band: ≈ 14× fewer operations.
 //
+// Per step (fe_line_dynamics.cpp): one pass over each element's Gauss points
+// for the whole residual (ancf::dynamic_element_forces; shape functions
+// cached, element lengths being fixed) and one for its Newton matrices
+// (ancf::element_newton_matrices: M, C, K kept per element); S is symmetric
+// and, for a line in tension, positive definite: banded Cholesky, band LU as
+// the fallback. The Newton matrix is refreshed in full every 20 steps and
+// after a convergence failure, and updated — new c_j, re-evaluated elements
+// — when c_j changed by 25 % or an element's seabed contact by 10 % of its
+// length (the contact stiffness k L ≈ 1e7 N/m of an OC4 element dwarfs
+// c² M: a matrix factored before the change made the Newton iteration
+// diverge).
+//
+// Measured (OC4 chain, tests/bench/fe_dynamics_bench: 80 elements, 600 s,
+// surge 5 m @ 100 s + 1 m @ 10 s; tension error: largest fairlead-tension
+// difference after the ramp against a 160-element rtol-1e-8 reference, in %
+// of its peak; CPU s on the 2-core AMD EPYC under load 4–11; 2026-12-01):
+//   as first merged, rtol 1e-6:                 13.9k steps  2.4–2.5 s  0.39 %
+//   + vector operations compiled here (the
+//     Debian SUNDIALS libraries are -O0):       13.9k        1.6 s
+//   + one-pass residual, end force from the
+//     end element only:                         14.1k        1.0 s      0.28 %
+//   + IDA's convergence test with its resets
+//     (sundials_ida.hpp), contact-triggered
+//     and partial updates, Cholesky:            11.6k        0.80–0.88  0.15 %
+//   same code, rtol 2e-6 (the default):          8.8k        0.64–0.68  0.25–0.29 %
+//   rtol 3e-6: 7.3k, 0.60 s, 0.58 %; 5e-6: 6.3k, 0.49 s, 0.71 %; 1e-5: 5.6k,
+//   0.47 s, 2.5 %. 40 elements, rtol 2e-6: 9.5k steps, 0.34 s, 0.31 %.
+// What limits the step: 97 % of IDA's weighted local error sits in the
+// vertical slopes of the nodes from the touchdown point to ≈ 150 m above it
+// — a ≈ 2.5 s in-plane mode of the lower catenary (slope amplitude ≈ 2.5e-4)
+// that also carries most of the tension error; BDF2 resolves it with ≈ 50
+// steps per period at rtol 1e-6. Tried and not kept:
+//  - BDF order 3: 167k steps for the first 60 s (the lightly damped modes
+//    fall in its instability region); order 5 was worse.
+//  - tolerances along the line only (slope tolerance / |t_k| per component,
+//    position tolerance / h across): 10.9k steps at rtol 1e-6 but 0.58 %:
+//    the transverse slopes carry the 2.5 s mode — no better than a looser
+//    rtol.
+//  - a refresh at every step: 11.2k steps but 2.5 s; a c_j threshold of
+//    50 %: the mass-dominated modes' Newton iteration diverges (their matrix
+//    is off by (c/c₀)² ≈ 2.25): 35k steps, 10 % error.
+//  - the seabed law is the statics' and stays: penalty ×0.1 would take 9.6k
+//    steps, ×10 24.8k (seabed damping ×0 or ×3: ±5 %).
+//
 // Why implicit: an explicit step must resolve the highest axial frequency,
 // ω ≈ 2 √(EA/(m h²)) — for the OC4 chain with 80 elements (h = 10.4 m)
 // 494 rad/s, a step below 4–6 ms; for a steel riser with 1 m elements near
@@ -92,14 +136,14 @@ struct FeDynamicsOptions {
   std::function<Eigen::Vector3d(double arc_length_m)> initial_velocity;
   // Integrator (IDA). Local error per step: rtol |y| + atol per component.
   // Defaults measured on the OC4 line benchmark (tests/bench/fe_dynamics_bench,
-  // 80 elements, 600 s): fairlead tension within 0.25 % of a 160-element
-  // rtol-1e-8 reference. The slopes carry the strain (|r'| − 1 = T/EA ≈ 1e-3),
-  // so their error sets the tension error: rtol 1e-5 gives ≈ 1.3 %. Velocities
-  // follow from the positions; a tight velocity tolerance only makes IDA track
-  // high-frequency axial ringing (1e-3 m/s: 1.7× the steps, no gain in tension).
-  double relative_tolerance = 1e-6;
+  // 80 elements, 600 s; numbers in the header comment): fairlead tension
+  // within 0.3 % of a 160-element rtol-1e-8 reference. The slopes carry the
+  // strain (|r'| − 1 = T/EA ≈ 1e-3), so their error sets the tension error:
+  // rtol = slope tolerance 1e-5 gives 2.5 %. Velocities follow from the
+  // positions (0.01 m/s: 2 % more steps, no gain in tension).
+  double relative_tolerance = 2e-6;
   double position_tolerance_m = 1e-4;  ///< node positions
-  double slope_tolerance = 1e-6;       ///< slopes r'
+  double slope_tolerance = 2e-6;       ///< slopes r'
   double velocity_tolerance_m_per_s = 0.1;
   int max_order = 2;  ///< 1..5 (> 2 is not A-stable for undamped oscillations)
   std::optional<double> max_step_s;
