@@ -514,8 +514,9 @@ SozResult run_soz(const ValidatedProject& validated, const SozOptions& options) 
   if (options.load_case) {
     cases.push_back(run_static_case(validated, {options.load_case, std::nullopt, false}));
   } else if (options.offset_check) {
+    RestSolutionCache rest_solutions;  // cases sharing an environment solve its lines once
     for (const LoadCase& c : project.load_cases)
-      cases.push_back(run_static_case(validated, {c.name, std::nullopt, false}));
+      cases.push_back(run_static_case(validated, {c.name, std::nullopt, false}, &rest_solutions));
   }
   const double check_wall_s = seconds_since(check_start);
   if (options.load_case) {

@@ -1,17 +1,18 @@
-#include "design/command_line_reference.hpp"
 #include "design/static_case.hpp"
 
+#include <fmt/format.h>
+
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <numbers>
 
-#include <Eigen/Eigenvalues>
-#include <fmt/format.h>
-
+#include "design/command_line_reference.hpp"
 #include "design/environment_loads.hpp"
 #include "design/hull_model.hpp"
 #include "design/mooring_model.hpp"
+#include "engine/analysis/fe_static_line.hpp"
 #include "engine/analysis/line_array.hpp"
 #include "engine/analysis/static_equilibrium.hpp"
 
@@ -65,7 +66,8 @@ std::vector<NaturalMode> natural_modes(const engine::Matrix6d& stiffness, const 
 
 }  // namespace
 
-StaticCaseResult run_static_case(const ValidatedProject& validated, const StaticCaseRequest& request) {
+StaticCaseResult run_static_case(const ValidatedProject& validated,
+                                 const StaticCaseRequest& request, RestSolutionCache* cache) {
   const Project& project = validated.project;
   StaticCaseResult result;
   result.case_name = "still-water";
@@ -115,6 +117,25 @@ StaticCaseResult run_static_case(const ValidatedProject& validated, const Static
   }
 
   auto start = std::chrono::steady_clock::now();
+  if (cache) {
+    // The equilibrium's first evaluation is at the rest position: take the
+    // FE lines solved there in an earlier case with this environment, solve
+    // the others now (the equilibrium then finds them solved), keep them all.
+    const engine::HullPose rest =
+        engine::pose_from_offset(lines.reference_point_g, engine::Vector6d::Zero());
+    std::vector<engine::FeStaticLine*> fe_lines;
+    for (const auto& line : lines.lines) {
+      auto* fe = dynamic_cast<engine::FeStaticLine*>(line.get());
+      if (!fe) continue;
+      fe_lines.push_back(fe);
+      const auto it = cache->solutions.find({result.environment, fe->name()});
+      if (it != cache->solutions.end())
+        fe->adopt(rest.reference_point_g + rest.rotation * fe->attachment_b(), it->second);
+    }
+    engine::evaluate_line_array(lines.lines, rest);
+    for (engine::FeStaticLine* fe : fe_lines)
+      cache->solutions.try_emplace({result.environment, fe->name()}, *fe->last_result());
+  }
   const engine::EquilibriumResult equilibrium =
       engine::solve_static_equilibrium(hull.statics, lines.lines, environment_load);
   result.equilibrium_wall_s = seconds_since(start);

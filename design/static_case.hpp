@@ -6,14 +6,17 @@
 // with the natural periods of the moored hull.
 
 #include <array>
+#include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "design/riser_model.hpp"
 #include "design/statics_study.hpp"
 #include "design/validated_project.hpp"
 #include "engine/analysis/rigid_body.hpp"
+#include "engine/lines/fe_line_statics.hpp"
 
 namespace spiral::design {
 
@@ -78,8 +81,19 @@ struct StaticCaseResult {
   double stiffness_wall_s = 0.0;
 };
 
+/// The FE line solutions (risers, `model: fe` mooring lines) at the hull's
+/// rest position, by environment and line name, for the static cases of one
+/// project: a case whose environment was solved before (e.g. the damaged case
+/// of an intact one) starts from them instead of solving every line cold
+/// again, with identical results. Not shared between threads.
+struct RestSolutionCache {
+  std::map<std::pair<std::string, std::string>, engine::FeStaticsResult> solutions;
+};
+
 /// Throws InputError for an unknown load case or line, engine::SolverError when
 /// the equilibrium or a line cannot be solved (the message names it).
-StaticCaseResult run_static_case(const ValidatedProject& project, const StaticCaseRequest& request);
+/// `cache` (optional): rest-position solutions to take and to add to.
+StaticCaseResult run_static_case(const ValidatedProject& project, const StaticCaseRequest& request,
+                                 RestSolutionCache* cache = nullptr);
 
 }  // namespace spiral::design

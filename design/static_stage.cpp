@@ -107,10 +107,12 @@ StaticStageResults run_static_stage(const ValidatedProject& validated) {
   StaticCaseRequest still_water;
   still_water.finite_difference_check = true;
   out.cases.push_back(run_static_case(validated, still_water));
+  RestSolutionCache
+      rest_solutions;  // cases sharing an environment (intact, damaged) solve its lines once
   for (const LoadCase& load_case : project.load_cases) {
     StaticCaseRequest request;
     request.load_case = load_case.name;
-    out.cases.push_back(run_static_case(validated, request));
+    out.cases.push_back(run_static_case(validated, request, &rest_solutions));
   }
   double worst = -1.0;
   for (std::size_t i = 0; i < out.cases.size(); ++i) {

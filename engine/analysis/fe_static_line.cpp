@@ -1,8 +1,9 @@
 #include "engine/analysis/fe_static_line.hpp"
 
-#include <cmath>
-
 #include <fmt/format.h>
+
+#include <cmath>
+#include <stdexcept>
 
 namespace spiral::engine {
 
@@ -55,6 +56,18 @@ const FeStaticsResult& FeStaticLine::solve_at(const Eigen::Vector3d& attachment_
   last_has_stiffness_ = stiffness;
   warm_ = std::make_shared<const FeStaticsResult>(*last_);
   return *last_;
+}
+
+void FeStaticLine::adopt(const Eigen::Vector3d& attachment_g, FeStaticsResult solution) {
+  if (solution.node_arc_length_m.size() != fe_line_mesh(model_).size()) {
+    throw std::invalid_argument(
+        fmt::format("line '{}': adopted solution has {} nodes, the model {}", name_,
+                    solution.node_arc_length_m.size(), fe_line_mesh(model_).size()));
+  }
+  last_ = std::move(solution);
+  last_attachment_g_ = attachment_g;
+  last_has_stiffness_ = true;
+  warm_ = std::make_shared<const FeStaticsResult>(*last_);
 }
 
 LineEndResponse FeStaticLine::solve(const Eigen::Vector3d& attachment_g) {

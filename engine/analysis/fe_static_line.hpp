@@ -31,6 +31,13 @@ class FeStaticLine final : public StaticLine {
   Eigen::Vector3d solve_force(const Eigen::Vector3d& attachment_g) override;
   /// The FE nodes are the profile (`points_per_segment` is not used: the mesh sets the resolution).
   LineState state(const Eigen::Vector3d& attachment_g, int points_per_segment) override;
+  /// Takes `solution` (with its end-B stiffness) as this line's solve at
+  /// `attachment_g`, as if solved there: the next solve at that attachment
+  /// returns it, others start warm from it. It must come from a line with the
+  /// same model, environment and anchor (e.g. another case's line with the
+  /// same environment). Throws
+  /// std::invalid_argument if its mesh size differs from this model's.
+  void adopt(const Eigen::Vector3d& attachment_g, FeStaticsResult solution);
   void reset() override {
     last_.reset();
     warm_.reset();

@@ -51,6 +51,27 @@ TEST(StaticCase, SmallLoadOffsetMatchesTheStiffness) {
   EXPECT_NEAR(loaded.offset(1) - still.offset(1), predicted(1), 0.02 * predicted(1));
 }
 
+// Cases with the same environment share their FE lines' rest solutions
+// through a RestSolutionCache: a case that takes them has exactly the results
+// of one that solves them itself.
+TEST(StaticCase, RestSolutionsTakenFromTheCacheGiveIdenticalResults) {
+  auto project = oc4_with_current(0.5);
+  for (auto& line : project.project.mooring.lines) line.model = LineModel::fe;
+  const StaticCaseRequest request{"current-case", std::nullopt, false};
+  RestSolutionCache cache;
+  run_static_case(project, request, &cache);
+  ASSERT_EQ(cache.solutions.size(), project.project.mooring.lines.size());
+  const auto cached = run_static_case(project, request, &cache);
+  const auto solved = run_static_case(project, request);
+  EXPECT_EQ(cached.offset, solved.offset);
+  EXPECT_EQ(cached.stiffness, solved.stiffness);
+  ASSERT_EQ(cached.lines.size(), solved.lines.size());
+  for (std::size_t i = 0; i < solved.lines.size(); ++i) {
+    EXPECT_EQ(cached.lines[i].fairlead_tension_N, solved.lines[i].fairlead_tension_N)
+        << solved.lines[i].name;
+  }
+}
+
 TEST(StaticCase, LoadsWithoutDataAreNoted) {
   const auto result = run_static_case(oc4_with_current(0.5), {"current-case", std::nullopt, false});
   bool wind_noted = false;
