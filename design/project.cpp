@@ -41,6 +41,10 @@ const char* to_string(FrequencyColumnKind column) {
   return column == FrequencyColumnKind::period ? "period" : "angular_frequency";
 }
 
+const char* to_string(RadiationModel model) {
+  return model == RadiationModel::memory ? "memory" : "low_frequency";
+}
+
 const char* to_string(WaveSpectrum spectrum) {
   switch (spectrum) {
     case WaveSpectrum::jonswap:

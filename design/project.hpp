@@ -134,6 +134,9 @@ struct MeanDriftFile {
 };
 /// What column 1 of a WAMIT-format file holds.
 enum class FrequencyColumnKind { period, angular_frequency };
+/// How the low-frequency hull equations take the radiation forces of the .1
+/// data: A(w_LF) (no memory), or A(inf) with Cummins' retardation kernel.
+enum class RadiationModel { low_frequency, memory };
 /// Frequency-dependent hull hydrodynamics from WAMIT-format files, and the
 /// hull's viscous damping (docs/project-format.md, "Hull hydrodynamics").
 struct HullHydrodynamics {
@@ -150,6 +153,10 @@ struct HullHydrodynamics {
   /// Frequency of A(w) used for the low-frequency equations, rad/s, > 0;
   /// absent: the lowest frequency in the file.
   std::optional<double> added_mass_frequency_rad_per_s;
+  /// Radiation forces in the time-domain analyses (docs/project-format.md).
+  RadiationModel radiation = RadiationModel::low_frequency;
+  double memory_duration_s = 60.0;  ///< retardation kernel length t_max, > memory_time_step_s
+  double memory_time_step_s = 0.1;  ///< kernel and velocity-history step, > 0
 };
 
 /// Mean drift coefficients as a table: force per wave amplitude squared
@@ -415,6 +422,7 @@ const char* to_string(AttachmentKind kind);
 const char* to_string(RiserKind kind);
 const char* to_string(WaveSpectrum spectrum);
 const char* to_string(FrequencyColumnKind column);
+const char* to_string(RadiationModel model);
 const char* to_string(WindSpectrum spectrum);
 const char* to_string(MooringCode code);
 const char* to_string(LineModel model);

@@ -655,6 +655,11 @@ HullHydrodynamics read_hull_hydrodynamics(MapReader& r, const std::filesystem::p
   assign(h.linear_damping, r.vector<6>("linear_damping", "N s/m, N m s/rad", kOptional));
   assign(h.quadratic_damping, r.vector<6>("quadratic_damping", "N s^2/m^2, N m s^2/rad^2", kOptional));
   h.added_mass_frequency_rad_per_s = r.number("added_mass_frequency", "rad/s", kOptional);
+  static const EnumTable<RadiationModel> kRadiationModels = {
+      {"low_frequency", RadiationModel::low_frequency}, {"memory", RadiationModel::memory}};
+  assign(h.radiation, r.enumeration("radiation", kRadiationModels, kOptional));
+  assign(h.memory_duration_s, r.number("memory_duration", "s", kOptional));
+  assign(h.memory_time_step_s, r.number("memory_time_step", "s", kOptional));
   return h;
 }
 

@@ -509,6 +509,12 @@ void check_hull_hydrodynamics(Reporter& r, const HullHydrodynamics& h) {
   positive(r, at + ".period_scale", h.period_scale, "", "hull_value_positive");
   positive(r, at + ".added_mass_frequency", h.added_mass_frequency_rad_per_s, "rad/s",
            "hull_value_positive");
+  positive(r, at + ".memory_time_step", h.memory_time_step_s, "s", "hull_value_positive");
+  if (!(h.memory_duration_s > h.memory_time_step_s)) {
+    r.fail(at + ".memory_duration", "memory_duration_above_step",
+           fmt::format("must be above memory_time_step {} s, got {} s", h.memory_time_step_s,
+                       h.memory_duration_s));
+  }
   for (int k = 0; k < 6; ++k) {
     at_least(r, fmt::format("{}.linear_damping[{}]", at, k), h.linear_damping[k], 0.0,
              k < 3 ? "N s/m" : "N m s/rad", "hull_damping_non_negative");

@@ -26,6 +26,7 @@
 #include "engine/environment/wind_realization.hpp"
 #include "engine/hull/first_order_wave_response.hpp"
 #include "engine/hull/mean_environmental_loads.hpp"
+#include "engine/hull/radiation_memory.hpp"
 #include "engine/hull/slow_drift.hpp"
 #include "engine/hull/wamit_3.hpp"
 
@@ -375,8 +376,32 @@ DynamicModel build_dynamic_model(const ValidatedProject& validated,
   model.hull.hydrostatic_stiffness = hull.statics.hydrostatic_stiffness;
   model.hull.hydrostatic_force_at_rest = hull.statics.rest_force;
   if (project.hull.hydrodynamics) {
-    model.hull.linear_damping.diagonal() = project.hull.hydrodynamics->linear_damping;
-    model.hull.quadratic_damping = project.hull.hydrodynamics->quadratic_damping;
+    const HullHydrodynamics& hydro = *project.hull.hydrodynamics;
+    model.hull.linear_damping.diagonal() = hydro.linear_damping;
+    model.hull.quadratic_damping = hydro.quadratic_damping;
+    if (hydro.radiation == RadiationModel::memory) {
+      // Cummins' equation: A(inf) and the retardation kernel from the .1 data
+      // (engine/hull/radiation_memory.hpp); the data must reach the
+      // frequencies where B(w) has decayed, else an input error.
+      try {
+        model.radiation_memory = engine::make_radiation_memory(
+            *hull.radiation, {hydro.memory_duration_s, hydro.memory_time_step_s});
+      } catch (const engine::RadiationDataError& e) {
+        throw InputError({make_issue(project, "hull.hydrodynamics.radiation",
+                                     "radiation_memory_data", e.what())});
+      }
+      model.hull.added_mass = model.radiation_memory->added_mass_infinite;
+      model.hull.radiation_memory = model.radiation_memory->kernel;
+      model.notes.push_back(fmt::format(
+          "radiation memory: A(inf) {} and a {:g} s retardation kernel at {:g} s (Cummins 1962) "
+          "instead of A(w_LF)",
+          model.radiation_memory->added_mass_infinite_from_file
+              ? "from the file's zero-period row"
+              : fmt::format("from Ogilvie's relation over {} frequencies >= {:.3g} rad/s",
+                            model.radiation_memory->ogilvie_frequencies,
+                            model.radiation_memory->ogilvie_omega_min_rad_per_s),
+          hydro.memory_duration_s, hydro.memory_time_step_s));
+    }
   } else {
     model.notes.push_back(
         "no hull.hydrodynamics: the hull has no added mass and no wave-frequency motions");

@@ -16,7 +16,9 @@
 //                 (line_hydrodynamics.hpp; after Cruces Girón, Corrêa, Jacob
 //                 et al., Marine Structures 39, 2014, and Webster 1995).
 //
-// Hull (hull_dynamics.hpp): M + A(w_LF) (hull.hydrodynamics), B_lin and
+// Hull (hull_dynamics.hpp): M + A(w_LF) (hull.hydrodynamics), or with
+// `radiation: memory` M + A(inf) and Cummins' memory force with the kernel
+// from the .1 data (engine/hull/radiation_memory.hpp), B_lin and
 // quadratic damping from the project, C_hydro and F_hs0 from hull_model.
 // External low-frequency force, each term only where the project has the data
 // (otherwise a note says what is missing):
@@ -52,6 +54,7 @@
 #include "design/static_case.hpp"
 #include "design/validated_project.hpp"
 #include "engine/analysis/hull_dynamics.hpp"
+#include "engine/hull/radiation_memory.hpp"
 #include "engine/hull/wamit_1.hpp"
 #include "engine/hull/wamit_3.hpp"
 
@@ -88,6 +91,8 @@ struct DynamicModel {
   StaticCaseResult statics;                                           ///< the S-C static case
   std::optional<engine::Matrix6d> line_added_mass;                    ///< sc-enhanced
   std::optional<engine::Matrix6d> line_damping;                       ///< sc-enhanced
+  /// hull.hydrodynamics.radiation: memory — A(inf), the kernel and their diagnostics.
+  std::optional<engine::RadiationMemory> radiation_memory;
   engine::Vector6d mean_slow_drift_force = engine::Vector6d::Zero();  ///< sum a_k² D_k, global
   /// The slow-drift force alone, F_sd(t) (global), empty without waves or drift data.
   std::function<engine::Vector6d(double)> slow_drift;

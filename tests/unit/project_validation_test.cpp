@@ -426,5 +426,29 @@ TEST(ProjectValidation, AirDensityMustBePositive) {
   expect_single(issues, "air_density_positive", "site.air_density");
 }
 
+TEST(ProjectValidation, RadiationMemoryKeysParseAndTheDurationMustExceedTheStep) {
+  const std::string semi = std::string(SPIRAL_SHARED_DATA_DIR) + "/hydro/oc4-semi/marin_semi.1";
+  const std::string hull_line = "  waterplane_inertia: [1.0e5, 1.0e5]\n";
+  const std::string text =
+      replace(kMinimal, hull_line,
+              hull_line + "  hydrodynamics: {radiation_file: " + semi +
+                  ", radiation: memory, memory_duration: 90.0, memory_time_step: 0.05}\n");
+  const Project p = parse_project(text, "test.yaml");
+  ASSERT_TRUE(p.hull.hydrodynamics.has_value());
+  EXPECT_EQ(p.hull.hydrodynamics->radiation, RadiationModel::memory);
+  EXPECT_DOUBLE_EQ(p.hull.hydrodynamics->memory_duration_s, 90.0);
+  EXPECT_DOUBLE_EQ(p.hull.hydrodynamics->memory_time_step_s, 0.05);
+  EXPECT_TRUE(check(text).empty()) << all(check(text));
+  // Defaults: low_frequency, 60 s at 0.1 s.
+  const Project d = parse_project(
+      replace(kMinimal, hull_line, hull_line + "  hydrodynamics: {radiation_file: " + semi + "}\n"),
+      "test.yaml");
+  EXPECT_EQ(d.hull.hydrodynamics->radiation, RadiationModel::low_frequency);
+  EXPECT_DOUBLE_EQ(d.hull.hydrodynamics->memory_duration_s, 60.0);
+  EXPECT_DOUBLE_EQ(d.hull.hydrodynamics->memory_time_step_s, 0.1);
+  expect_single(check(replace(text, "memory_duration: 90.0", "memory_duration: 0.01")),
+                "memory_duration_above_step", "hull.hydrodynamics.memory_duration");
+}
+
 }  // namespace
 }  // namespace spiral::design

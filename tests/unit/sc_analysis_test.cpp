@@ -10,6 +10,7 @@
 #include <fstream>
 #include <numbers>
 
+#include "design/hull_model.hpp"
 #include "engine/analysis/statistics.hpp"
 
 namespace spiral::design {
@@ -189,6 +190,85 @@ TEST(ScAnalysis, HeadingOutsideTheDriftDatabaseIsAnInputError) {
   } catch (const InputError& e) {
     EXPECT_EQ(e.issues().at(0).condition, "heading_in_database");
     EXPECT_NE(std::string(e.what()).find("waves.heading_deg"), std::string::npos) << e.what();
+  }
+}
+
+// radiation: memory (A(inf) + Cummins' kernel from marin_semi.1) against
+// radiation: low_frequency (A(w_LF), w_LF = 0.01 rad/s). With memory the
+// hull's effective added mass at the decay frequency w_n is A(w_n) (Ogilvie's
+// relation), so the periods differ by the change of A between 0.01 rad/s and
+// w_n: at most 2.7 % of A33 (reference-platforms.md §1.5: 1.537e7 kg at 628 s,
+// 1.496e7 kg at 17.5 s), 1.4 % of M + A, 0.7 % of the heave period; surge,
+// pitch and yaw change less. 1.5 % bounds it.
+constexpr double kMemoryVsLowFrequencyPeriodTol = 0.015;
+// The heave period with memory against 2 pi sqrt((M + A33(w))/K) iterated on
+// A33(w) of the file: the kernel's Ogilvie mismatch (0.4 % of A(inf)) and
+// the radiation damping's period lengthening (zeta ~ 1e-3) are below 0.3 %.
+constexpr double kMemoryHeavePeriodTol = 0.003;
+
+TEST(ScAnalysis, Oc4RadiationMemoryKeepsTheFreeDecayPeriods) {
+  ValidatedProject low = load_validated_project(kOc4);
+  ValidatedProject memory = low;
+  memory.project.hull.hydrodynamics->radiation = RadiationModel::memory;
+  DynamicAnalysisRequest request;
+  request.load_case = "intact-still-water";
+  const DynamicModel a = build_dynamic_model(low, request);
+  const DynamicModel b = build_dynamic_model(memory, request);
+  ASSERT_FALSE(a.hull.radiation_memory.has_value());
+  ASSERT_TRUE(b.hull.radiation_memory.has_value());
+  ASSERT_TRUE(b.radiation_memory.has_value());
+  EXPECT_LT(b.hull.added_mass(0, 0), a.hull.added_mass(0, 0));  // A(inf) < A(w_LF) in surge
+  // The memory force is only piecewise smooth in t (hull_dynamics.hpp): rtol 1e-8.
+  engine::CvodeOptions options = engine::default_hull_integrator_options();
+  options.relative_tolerance = 1e-8;
+  const char* names[6] = {"surge", "sway", "heave", "roll", "pitch", "yaw"};
+  const double displacement[6] = {5.0, 5.0, 1.0, 2.0 * kDegToRad, 2.0 * kDegToRad, 2.0 * kDegToRad};
+  const double dt = 0.1;
+  double heave_period = 0.0;
+  for (const int dof : {0, 2, 4, 5}) {
+    double expected = 0.0;
+    for (const auto& m : a.statics.natural_modes)
+      if (m.dominant_dof == names[dof]) expected = m.period_s;
+    const auto da = engine::free_decay(a.hull, a.loads.lines, dof, displacement[dof],
+                                       8.0 * expected, dt, options);
+    const auto db = engine::free_decay(b.hull, b.loads.lines, dof, displacement[dof],
+                                       8.0 * expected, dt, options);
+    const double ta = decay_period_s(da, dof, a.initial_offset(dof), dt);
+    const double tb = decay_period_s(db, dof, b.initial_offset(dof), dt);
+    EXPECT_NEAR(tb, ta, kMemoryVsLowFrequencyPeriodTol * ta) << names[dof];
+    std::cout << names[dof] << ": A(w_LF) " << ta << " s, memory " << tb << " s\n";
+    if (dof == 2) heave_period = tb;
+  }
+  // Heave alone (uncoupled in this hull): T = 2 pi sqrt((M + A33(2 pi/T)) / K33).
+  const HullModel hull = build_hull_model(low.project);
+  const double K33 = a.hull.hydrostatic_stiffness(2, 2) +
+                     std::get<engine::LinearizedLines>(a.loads.lines).stiffness(2, 2);
+  double T = 17.0;
+  for (int it = 0; it < 50; ++it) {
+    T = 2.0 * std::numbers::pi *
+        std::sqrt((a.hull.mass(2, 2) +
+                   engine::added_mass_at(*hull.radiation, 2.0 * std::numbers::pi / T)(2, 2)) /
+                  K33);
+  }
+  EXPECT_NEAR(heave_period, T, kMemoryHeavePeriodTol * T);
+  std::cout << "heave with A33(w_n): " << T << " s\n";
+}
+
+TEST(ScAnalysis, RadiationMemoryWithoutDecayedDampingIsAnInputError) {
+  ValidatedProject p = load_validated_project(kOc4);
+  auto& hydro = *p.project.hull.hydrodynamics;
+  hydro.radiation = RadiationModel::memory;
+  hydro.radiation_file = std::string(SPIRAL_SHARED_DATA_DIR) + "/hydro/cylinder-buoy/Buoy.1";
+  hydro.frequency_column = FrequencyColumnKind::angular_frequency;
+  DynamicAnalysisRequest request;
+  request.load_case = "intact-still-water";
+  try {
+    build_dynamic_model(p, request);
+    FAIL() << "a .1 table stopping at the damping peak was accepted for the memory";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.issues().at(0).condition, "radiation_memory_data");
+    EXPECT_EQ(e.issues().at(0).path, "hull.hydrodynamics.radiation");
+    EXPECT_NE(std::string(e.what()).find("highest frequency"), std::string::npos) << e.what();
   }
 }
 
