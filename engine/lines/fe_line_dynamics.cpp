@@ -33,8 +33,6 @@ constexpr double kContactChangeForRefresh = 0.1;
   throw SolverError("FE line dynamics: invalid input: " + what);
 }
 
-}  // namespace
-
 /// Σ a[r] b[r] for r in [1, len], in four partial sums: the band solves are
 /// otherwise bound by the latency of one long chain of additions.
 inline double band_dot(const double* a, const double* b, int len) {
@@ -203,6 +201,8 @@ class NewtonMatrix {
   BandMatrix lu_;
   bool cholesky_ = true;
 };
+
+}  // namespace
 
 struct FeLineDynamics::Impl final : ImplicitSystem {
   Problem p;

@@ -54,16 +54,28 @@
 //   + IDA's convergence test with its resets
 //     (sundials_ida.hpp), contact-triggered
 //     and partial updates, Cholesky:            11.6k        0.80–0.88  0.15 %
-//   same code, rtol 2e-6 (the default):          8.8k        0.64–0.68  0.25–0.29 %
-//   rtol 3e-6: 7.3k, 0.60 s, 0.58 %; 5e-6: 6.3k, 0.49 s, 0.71 %; 1e-5: 5.6k,
-//   0.47 s, 2.5 %. 40 elements, rtol 2e-6: 9.5k steps, 0.34 s, 0.31 %.
+//   + band kernels with a compile-time band and
+//     four partial sums in the band products:
+//     rtol 1e-6                                 11.7k        0.76 s     0.15 %
+//     rtol 2e-6 (the default)                    8.8k        0.60–0.64  0.21–0.32 %
+//   rtol 3.2e-6: 7.3k, 0.52 s, 0.40–0.78 %; 1e-5: 5.4k, 0.43 s, 2.1–2.5 %.
+//   40 elements, rtol 1e-6: 12.3k steps, 0.40 s, 0.17–0.26 %. (The spread is
+//   the error's sensitivity to round-off: runs that differ only in the order
+//   of floating-point sums differ by that much.)
+//   ARKODE ARKStep (an experiment outside the repository: ODE form with the
+//   mass of the static state, the same reduced Newton solve, matrix-embedded):
+//   ARK436L2SA_DIRK_6_3_4 at rtol 2e-6 took 4.8k steps and 90k right-hand sides for the first 200 s
+//   (IDA: 2.5k steps, 2.9k residuals), 4.7 s against 0.17 s; the ESDIRK tables (ESDIRK324L2SA,
+//   ESDIRK436L2SA, ESDIRK547L2SA2) and Kvaerno 4-2-3 / 5-3-4 took 800–1200 steps for the first 60 s
+//   against IDA's 390, their error estimates limiting the step while the lightly damped modes ring.
+//   Not pursued (nor was its large tension error, 2–55 %, investigated).
 // What limits the step: 97 % of IDA's weighted local error sits in the
 // vertical slopes of the nodes from the touchdown point to ≈ 150 m above it
 // — a ≈ 2.5 s in-plane mode of the lower catenary (slope amplitude ≈ 2.5e-4)
 // that also carries most of the tension error; BDF2 resolves it with ≈ 50
 // steps per period at rtol 1e-6. Tried and not kept:
 //  - BDF order 3: 167k steps for the first 60 s (the lightly damped modes
-//    fall in its instability region); order 5 was worse.
+//    fall in its instability region); order 5: 300k steps for 600 s.
 //  - tolerances along the line only (slope tolerance / |t_k| per component,
 //    position tolerance / h across): 10.9k steps at rtol 1e-6 but 0.58 %:
 //    the transverse slopes carry the 2.5 s mode — no better than a looser
@@ -139,7 +151,7 @@ struct FeDynamicsOptions {
   // 80 elements, 600 s; numbers in the header comment): fairlead tension
   // within 0.3 % of a 160-element rtol-1e-8 reference. The slopes carry the
   // strain (|r'| − 1 = T/EA ≈ 1e-3), so their error sets the tension error:
-  // rtol = slope tolerance 1e-5 gives 2.5 %. Velocities follow from the
+  // rtol = slope tolerance 1e-5 gives 2–2.5 %. Velocities follow from the
   // positions (0.01 m/s: 2 % more steps, no gain in tension).
   double relative_tolerance = 2e-6;
   double position_tolerance_m = 1e-4;  ///< node positions
