@@ -17,6 +17,38 @@ engine::WamitReadOptions wamit_options_of(const Project& project, const HullHydr
   return options;
 }
 
+engine::MorisonHull morison_hull_of(const Project& project) {
+  const Hull& hull = project.hull;
+  if (!hull.geometry) {
+    throw std::invalid_argument("hull.geometry is needed for the Morison member model");
+  }
+  engine::MorisonHullInput input;
+  input.reference_point_at_rest_g = hull.reference_point_g;
+  if (hull.hydrodynamics) input.strip_length_m = hull.hydrodynamics->strip_length_m;
+  for (const HullColumn& c : hull.geometry->columns) {
+    engine::MorisonMember m;
+    m.end_a_b = {c.center_b.x(), c.center_b.y(), c.z_bottom_m};
+    m.end_b_b = {c.center_b.x(), c.center_b.y(), c.z_top_m};
+    m.diameter_m = c.diameter_m;
+    m.drag_coefficient = c.coefficients.drag;
+    m.added_mass_coefficient = c.coefficients.added_mass;
+    m.end_faces = true;
+    m.end_added_mass_coefficient = c.end_added_mass;
+    m.end_drag_coefficient = c.end_drag;
+    input.members.push_back(m);
+  }
+  for (const HullPontoon& p : hull.geometry->pontoons) {
+    engine::MorisonMember m;
+    m.end_a_b = p.from_b;
+    m.end_b_b = p.to_b;
+    m.diameter_m = p.diameter_m;
+    m.drag_coefficient = p.coefficients.drag;
+    m.added_mass_coefficient = p.coefficients.added_mass;
+    input.members.push_back(m);
+  }
+  return engine::make_morison_hull(input);
+}
+
 HullModel build_hull_model(const Project& project) {
   const Hull& hull = project.hull;
   const engine::Seawater water{project.site.water_density_kg_per_m3, project.site.gravity_m_per_s2};
@@ -54,7 +86,11 @@ HullModel build_hull_model(const Project& project) {
     inertia.diagonal() = hull.mass_kg * hull.radii_of_gyration_m->cwiseProduct(*hull.radii_of_gyration_m);
   }
   model.mass_matrix = engine::rigid_body_mass_matrix(hull.mass_kg, hull.center_of_gravity_b, inertia);
-  if (hull.hydrodynamics) {
+  if (hull.hydrodynamics && hull.hydrodynamics->model == HullHydrodynamicsModel::morison) {
+    model.morison = morison_hull_of(project);
+    model.low_frequency_added_mass =
+        engine::morison_added_mass(*model.morison, project.site.water_density_kg_per_m3);
+  } else if (hull.hydrodynamics) {
     model.radiation = engine::read_wamit_1(hull.hydrodynamics->radiation_file,
                                            wamit_options_of(project, *hull.hydrodynamics));
     model.added_mass_frequency_rad_per_s = hull.hydrodynamics->added_mass_frequency_rad_per_s.value_or(

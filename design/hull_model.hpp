@@ -3,12 +3,14 @@
 // gravity restoring about the reference point, the force at rest (buoyancy
 // excess the lines must take), and the rigid-body mass matrix.
 
+#include <optional>
+
 #include "design/project.hpp"
 #include "engine/analysis/rigid_body.hpp"
 #include "engine/analysis/static_equilibrium.hpp"
 #include "engine/hull/hydrostatics.hpp"
+#include "engine/hull/morison_hull.hpp"
 #include "engine/hull/wamit_1.hpp"
-#include <optional>
 
 namespace spiral::design {
 
@@ -22,7 +24,15 @@ struct HullModel {
   /// radiation data), and the w_LF it was taken at (rad/s).
   engine::Matrix6d low_frequency_added_mass = engine::Matrix6d::Zero();
   double added_mass_frequency_rad_per_s = 0.0;
+  /// hydrodynamics.model: morison — the member strips of hull.geometry; their
+  /// added mass is then low_frequency_added_mass (frequency independent).
+  std::optional<engine::MorisonHull> morison;
 };
+
+/// The Morison members of hull.geometry: each column a vertical member with
+/// end faces, each pontoon a member without (closed by the columns it joins),
+/// strips of hydrodynamics.strip_length (1 m without hydrodynamics).
+engine::MorisonHull morison_hull_of(const Project& project);
 
 /// The WAMIT read options of the project's hydrodynamics (water, ULEN,
 /// frequency column, period scale).
@@ -35,7 +45,8 @@ engine::WamitReadOptions wamit_options_of(const Project& project, const HullHydr
 /// std::invalid_argument when the displaced volume is missing. With
 /// hull.hydrodynamics the .1 file is read (FileFormatError with file and
 /// line) and A is taken at added_mass_frequency (default: the lowest
-/// frequency in the file, the low-frequency limit the file offers).
+/// frequency in the file, the low-frequency limit the file offers); with
+/// model: morison A is the members' strip-theory added mass.
 HullModel build_hull_model(const Project& project);
 
 }  // namespace spiral::design

@@ -45,6 +45,10 @@ const char* to_string(RadiationModel model) {
   return model == RadiationModel::memory ? "memory" : "low_frequency";
 }
 
+const char* to_string(HullHydrodynamicsModel model) {
+  return model == HullHydrodynamicsModel::morison ? "morison" : "bem";
+}
+
 const char* to_string(WaveSpectrum spectrum) {
   switch (spectrum) {
     case WaveSpectrum::jonswap:

@@ -137,10 +137,14 @@ enum class FrequencyColumnKind { period, angular_frequency };
 /// How the low-frequency hull equations take the radiation forces of the .1
 /// data: A(w_LF) (no memory), or A(inf) with Cummins' retardation kernel.
 enum class RadiationModel { low_frequency, memory };
+/// Where the hull's hydrodynamic loads come from: WAMIT-format files of a BEM
+/// code, or a Morison member model built from hull.geometry.
+enum class HullHydrodynamicsModel { bem, morison };
 /// Frequency-dependent hull hydrodynamics from WAMIT-format files, and the
 /// hull's viscous damping (docs/project-format.md, "Hull hydrodynamics").
 struct HullHydrodynamics {
-  std::filesystem::path radiation_file;  ///< WAMIT .1 (added mass, radiation damping)
+  HullHydrodynamicsModel model = HullHydrodynamicsModel::bem;
+  std::filesystem::path radiation_file;  ///< WAMIT .1 (added mass, radiation damping); bem only
   FrequencyColumnKind frequency_column = FrequencyColumnKind::period;
   double ulen_m = 1.0;        ///< WAMIT ULEN, > 0
   double period_scale = 1.0;  ///< periods multiplied by this (frequencies divided), > 0
@@ -157,6 +161,8 @@ struct HullHydrodynamics {
   RadiationModel radiation = RadiationModel::low_frequency;
   double memory_duration_s = 60.0;  ///< retardation kernel length t_max, > memory_time_step_s
   double memory_time_step_s = 0.1;  ///< kernel and velocity-history step, > 0
+  /// morison: target strip length along the members, m, > 0.
+  double strip_length_m = 1.0;
 };
 
 /// Mean drift coefficients as a table: force per wave amplitude squared
@@ -174,12 +180,24 @@ struct MeanDriftTable {
 
 using MeanDrift = std::variant<MeanDriftFile, MeanDriftTable>;
 
+/// Morison coefficients of a member (hydrodynamics.model: morison), on its
+/// diameter, normal to its axis (DNV-RP-C205 §6.2; defaults: engine/hull/morison_hull.hpp).
+struct MemberCoefficients {
+  double drag = 1.05;       ///< Cd, >= 0 (DNV-RP-C205 §6.7.2: rough, post-critical)
+  double added_mass = 1.0;  ///< Ca, >= 0 (DNV-RP-C205 App. D: circle)
+};
+
 /// A vertical circular column (body frame).
 struct HullColumn {
   Eigen::Vector2d center_b = Eigen::Vector2d::Zero();  ///< axis position [x, y], m
   double z_bottom_m = 0.0;                             ///< body z of the bottom, < z_top_m
   double z_top_m = 0.0;                                ///< body z of the top
   double diameter_m = 0.0;                             ///< > 0
+  MemberCoefficients coefficients;
+  /// Ca_end of each flat end face below water, on (2/3) pi R^3 (2/pi: one
+  /// wetted side of a disc, DNV-RP-C205 App. D), >= 0.
+  double end_added_mass = 2.0 / 3.141592653589793;
+  double end_drag = 0.0;  ///< Cd_end of each end face on pi R^2 (axial drag), >= 0
 };
 
 /// A circular pontoon or brace between two points (body frame).
@@ -187,6 +205,7 @@ struct HullPontoon {
   Eigen::Vector3d from_b = Eigen::Vector3d::Zero();  ///< m
   Eigen::Vector3d to_b = Eigen::Vector3d::Zero();    ///< m, distinct from from_b
   double diameter_m = 0.0;                           ///< > 0
+  MemberCoefficients coefficients;
 };
 
 /// Simple member geometry of the hull, for rendering and Morison members.
@@ -423,6 +442,7 @@ const char* to_string(RiserKind kind);
 const char* to_string(WaveSpectrum spectrum);
 const char* to_string(FrequencyColumnKind column);
 const char* to_string(RadiationModel model);
+const char* to_string(HullHydrodynamicsModel model);
 const char* to_string(WindSpectrum spectrum);
 const char* to_string(MooringCode code);
 const char* to_string(LineModel model);

@@ -18,6 +18,7 @@
 #include <cmath>
 #include <fstream>
 #include <numbers>
+#include <span>
 #include <sstream>
 #include <utility>
 
@@ -645,22 +646,52 @@ HullHydrodynamics read_hull_hydrodynamics(MapReader& r, const std::filesystem::p
   static const EnumTable<FrequencyColumnKind> kColumns = {
       {"period", FrequencyColumnKind::period},
       {"angular_frequency", FrequencyColumnKind::angular_frequency}};
-  HullHydrodynamics h;
-  if (const auto file = r.text("radiation_file", kRequired)) h.radiation_file = resolve(*file, base_folder);
-  assign(h.frequency_column, r.enumeration("frequency_column", kColumns, kOptional));
-  assign(h.ulen_m, r.number("ulen", "m", kOptional));
-  assign(h.period_scale, r.number("period_scale", "-", kOptional));
-  if (const auto file = r.text("excitation_file", kOptional)) h.excitation_file = resolve(*file, base_folder);
-  if (const auto file = r.text("rao_file", kOptional)) h.rao_file = resolve(*file, base_folder);
-  assign(h.linear_damping, r.vector<6>("linear_damping", "N s/m, N m s/rad", kOptional));
-  assign(h.quadratic_damping, r.vector<6>("quadratic_damping", "N s^2/m^2, N m s^2/rad^2", kOptional));
-  h.added_mass_frequency_rad_per_s = r.number("added_mass_frequency", "rad/s", kOptional);
+  static const EnumTable<HullHydrodynamicsModel> kModels = {
+      {"bem", HullHydrodynamicsModel::bem}, {"morison", HullHydrodynamicsModel::morison}};
   static const EnumTable<RadiationModel> kRadiationModels = {
       {"low_frequency", RadiationModel::low_frequency}, {"memory", RadiationModel::memory}};
-  assign(h.radiation, r.enumeration("radiation", kRadiationModels, kOptional));
-  assign(h.memory_duration_s, r.number("memory_duration", "s", kOptional));
-  assign(h.memory_time_step_s, r.number("memory_time_step", "s", kOptional));
+  // Keys of one model only: given with the other, key_not_applicable.
+  static constexpr std::string_view kBemKeys[] = {
+      "radiation_file", "frequency_column",     "ulen",      "period_scale",    "excitation_file",
+      "rao_file",       "added_mass_frequency", "radiation", "memory_duration", "memory_time_step"};
+  static constexpr std::string_view kMorisonKeys[] = {"strip_length"};
+  HullHydrodynamics h;
+  assign(h.model, r.enumeration("model", kModels, kOptional));
+  const bool morison = h.model == HullHydrodynamicsModel::morison;
+  for (const auto key : morison ? std::span<const std::string_view>(kBemKeys)
+                                : std::span<const std::string_view>(kMorisonKeys)) {
+    if (const auto node = r.child(key, kOptional)) {
+      r.context().add(node->Mark(), r.path_of(key),
+                      fmt::format("applies to model: {} only, got model: {}",
+                                  morison ? "bem" : "morison", to_string(h.model)),
+                      "key_not_applicable");
+    }
+  }
+  if (morison) {
+    assign(h.strip_length_m, r.number("strip_length", "m", kOptional));
+  } else {
+    if (const auto file = r.text("radiation_file", kRequired))
+      h.radiation_file = resolve(*file, base_folder);
+    assign(h.frequency_column, r.enumeration("frequency_column", kColumns, kOptional));
+    assign(h.ulen_m, r.number("ulen", "m", kOptional));
+    assign(h.period_scale, r.number("period_scale", "-", kOptional));
+    if (const auto file = r.text("excitation_file", kOptional))
+      h.excitation_file = resolve(*file, base_folder);
+    if (const auto file = r.text("rao_file", kOptional)) h.rao_file = resolve(*file, base_folder);
+    h.added_mass_frequency_rad_per_s = r.number("added_mass_frequency", "rad/s", kOptional);
+    assign(h.radiation, r.enumeration("radiation", kRadiationModels, kOptional));
+    assign(h.memory_duration_s, r.number("memory_duration", "s", kOptional));
+    assign(h.memory_time_step_s, r.number("memory_time_step", "s", kOptional));
+  }
+  assign(h.linear_damping, r.vector<6>("linear_damping", "N s/m, N m s/rad", kOptional));
+  assign(h.quadratic_damping,
+         r.vector<6>("quadratic_damping", "N s^2/m^2, N m s^2/rad^2", kOptional));
   return h;
+}
+
+void read_member_coefficients(MapReader& r, MemberCoefficients& c) {
+  assign(c.drag, r.number("drag", "-", kOptional));
+  assign(c.added_mass, r.number("added_mass", "-", kOptional));
 }
 
 HullGeometry read_hull_geometry(MapReader& r) {
@@ -671,6 +702,9 @@ HullGeometry read_hull_geometry(MapReader& r) {
     assign(column.z_bottom_m, c.number("z_bottom", "m", kRequired));
     assign(column.z_top_m, c.number("z_top", "m", kRequired));
     assign(column.diameter_m, c.number("diameter", "m", kRequired));
+    read_member_coefficients(c, column.coefficients);
+    assign(column.end_added_mass, c.number("end_added_mass", "-", kOptional));
+    assign(column.end_drag, c.number("end_drag", "-", kOptional));
     g.columns.push_back(column);
   });
   r.list_of_maps("pontoons", kOptional, [&](MapReader& p) {
@@ -678,6 +712,7 @@ HullGeometry read_hull_geometry(MapReader& r) {
     assign(pontoon.from_b, p.position("from", kRequired));
     assign(pontoon.to_b, p.position("to", kRequired));
     assign(pontoon.diameter_m, p.number("diameter", "m", kRequired));
+    read_member_coefficients(p, pontoon.coefficients);
     g.pontoons.push_back(pontoon);
   });
   return g;

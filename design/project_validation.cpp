@@ -201,6 +201,11 @@ void check_mean_drift_table(Reporter& r, const std::string& at, const MeanDriftT
   }
 }
 
+void check_member_coefficients(Reporter& r, const std::string& at, const MemberCoefficients& c) {
+  at_least(r, at + ".drag", c.drag, 0.0, "", "coefficient_non_negative");
+  at_least(r, at + ".added_mass", c.added_mass, 0.0, "", "coefficient_non_negative");
+}
+
 void check_hull_geometry(Reporter& r, const HullGeometry& g) {
   if (g.columns.empty() && g.pontoons.empty()) {
     r.fail("hull.geometry", "hull_geometry_members", "needs at least one column or pontoon");
@@ -213,11 +218,15 @@ void check_hull_geometry(Reporter& r, const HullGeometry& g) {
       r.fail(at + ".z_top", "column_top_above_bottom",
              fmt::format("must be above z_bottom {} m, got {} m", c.z_bottom_m, c.z_top_m));
     }
+    check_member_coefficients(r, at, c.coefficients);
+    at_least(r, at + ".end_added_mass", c.end_added_mass, 0.0, "", "coefficient_non_negative");
+    at_least(r, at + ".end_drag", c.end_drag, 0.0, "", "coefficient_non_negative");
   }
   for (std::size_t i = 0; i < g.pontoons.size(); ++i) {
     const HullPontoon& p = g.pontoons[i];
     const std::string at = fmt::format("hull.geometry.pontoons[{}]", i);
     positive(r, at + ".diameter", p.diameter_m, "m", "hull_value_positive");
+    check_member_coefficients(r, at, p.coefficients);
     if (!((p.to_b - p.from_b).norm() > 0.0)) {
       r.fail(at + ".to", "pontoon_length_positive",
              fmt::format("must differ from `from`, got both at [{}, {}, {}] m", p.to_b.x(),
@@ -500,9 +509,18 @@ void check_file(Reporter& r, const std::string& at, const std::filesystem::path&
   }
 }
 
-void check_hull_hydrodynamics(Reporter& r, const HullHydrodynamics& h) {
+void check_hull_hydrodynamics(Reporter& r, const Hull& hull) {
+  const HullHydrodynamics& h = *hull.hydrodynamics;
   const std::string at = "hull.hydrodynamics";
-  check_file(r, at + ".radiation_file", h.radiation_file);
+  if (h.model == HullHydrodynamicsModel::morison) {
+    positive(r, at + ".strip_length", h.strip_length_m, "m", "hull_value_positive");
+    if (!hull.geometry) {
+      r.fail(at + ".model", "morison_needs_geometry",
+             "model: morison builds the members from hull.geometry, which is absent");
+    }
+  } else {
+    check_file(r, at + ".radiation_file", h.radiation_file);
+  }
   if (h.excitation_file) check_file(r, at + ".excitation_file", *h.excitation_file);
   if (h.rao_file) check_file(r, at + ".rao_file", *h.rao_file);
   positive(r, at + ".ulen", h.ulen_m, "m", "hull_value_positive");
@@ -577,7 +595,7 @@ void check_hull(const Project& p, Reporter& r) {
       check_mean_drift_table(r, "hull.mean_drift", std::get<MeanDriftTable>(*h.mean_drift));
     }
   }
-  if (h.hydrodynamics) check_hull_hydrodynamics(r, *h.hydrodynamics);
+  if (h.hydrodynamics) check_hull_hydrodynamics(r, h);
   if (h.geometry) check_hull_geometry(r, *h.geometry);
 }
 

@@ -21,11 +21,13 @@
 #include "design/mooring_model.hpp"
 #include "design/project_validation.hpp"
 #include "engine/analysis/line_array.hpp"
+#include "engine/analysis/statistics.hpp"
 #include "engine/environment/wave_realization.hpp"
 #include "engine/environment/wind.hpp"
 #include "engine/environment/wind_realization.hpp"
 #include "engine/hull/first_order_wave_response.hpp"
 #include "engine/hull/mean_environmental_loads.hpp"
+#include "engine/hull/morison_hull.hpp"
 #include "engine/hull/radiation_memory.hpp"
 #include "engine/hull/slow_drift.hpp"
 #include "engine/hull/wamit_3.hpp"
@@ -53,6 +55,23 @@ constexpr double kForcedRunRelTol = 1e-7;
 /// 1 Hz end of the wind gust and the wave-frequency end of the drift force.
 constexpr double kForcedRunAbsTolTranslation = 1e-6;
 constexpr double kForcedRunAbsTolRotation = 1e-8;
+
+/// Morison hull in waves: LF and WF motions come out of one integration and
+/// are split by a zero-phase low-pass at this fraction of the realization's
+/// lowest wave frequency (0.5 w_p by default, so the cut is at 0.25 w_p):
+/// the wave band is then wholly WF, the moored surge/sway/yaw modes (periods
+/// of minutes) wholly LF.
+constexpr double kMorisonSplitFraction = 0.5;
+
+/// The Morison load of the members with what it points to (the flow holds
+/// raw pointers into this struct; it lives behind a shared_ptr, never moved).
+struct MorisonForcing {
+  engine::MorisonHull hull;
+  std::shared_ptr<const engine::WaveRealization> sea;
+  std::optional<engine::CurrentProfile> current;
+  engine::MorisonFlow flow;
+  engine::HullPose pose;
+};
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -447,14 +466,17 @@ DynamicModel build_dynamic_model(const ValidatedProject& validated,
 
   // External force.
   const auto forcing_start = std::chrono::steady_clock::now();
+  std::shared_ptr<const engine::WaveRealization> sea;
+  if (environment.waves && (project.hull.mean_drift || hull.morison)) {
+    sea = std::make_shared<const engine::WaveRealization>(
+        realize_sea(project, *environment.waves, request.duration_s, request.seed));
+  }
   std::shared_ptr<const engine::SlowDriftSeries> drift;
   if (environment.waves && project.hull.mean_drift) {
-    const engine::WaveRealization sea =
-        realize_sea(project, *environment.waves, request.duration_s, request.seed);
     const engine::MeanDriftTable table = drift_table_of(project, *project.hull.mean_drift);
     try {
       drift = std::make_shared<const engine::SlowDriftSeries>(engine::prepare_slow_drift(
-          sea, table,
+          *sea, table,
           {reference_point.x() + model.statics.offset(0),
            reference_point.y() + model.statics.offset(1), model.statics.offset(5)}));
     } catch (const std::invalid_argument& e) {
@@ -469,8 +491,34 @@ DynamicModel build_dynamic_model(const ValidatedProject& validated,
   }
   std::optional<engine::CoefficientTable> current_table;
   Eigen::Vector3d current_velocity = Eigen::Vector3d::Zero();
+  // Morison members: inertia, pressure and drag on the relative velocity
+  // (current + waves with Wheeler stretching − hull), the strips at the static
+  // equilibrium (engine/hull/morison_hull.hpp); they carry the current load on
+  // the hull, so the current coefficients are not added again.
+  std::shared_ptr<const MorisonForcing> members;
+  if (hull.morison) {
+    auto m = std::make_shared<MorisonForcing>();
+    m->hull = *hull.morison;
+    m->sea = sea;
+    if (environment.current && !environment.current->profile.empty())
+      m->current = current_profile_of(*environment.current);
+    m->flow.sea = m->sea.get();
+    m->flow.current = m->current ? &*m->current : nullptr;
+    m->flow.water_density_kg_per_m3 = project.site.water_density_kg_per_m3;
+    if (sea) {
+      for (const auto& c : sea->components) m->flow.highest_crest_m += c.amplitude_m;
+      model.wave_split_frequency_rad_per_s = kMorisonSplitFraction * sea->omega_min_rad_per_s;
+    }
+    m->pose = engine::pose_from_offset(reference_point, model.statics.offset);
+    members = m;
+    if (project.hull.current_coefficients && m->current) {
+      model.notes.push_back(
+          "Morison hull: the members carry the current load in the dynamics; "
+          "hull.current_coefficients act in the static equilibrium only");
+    }
+  }
   if (environment.current && !environment.current->profile.empty() &&
-      project.hull.current_coefficients) {
+      project.hull.current_coefficients && !hull.morison) {
     current_table = table_of(*project.hull.current_coefficients);
     current_velocity = engine::current_velocity_g(current_profile_of(*environment.current), 0.0);
   }
@@ -500,7 +548,7 @@ DynamicModel build_dynamic_model(const ValidatedProject& validated,
   }
   const double rho_w = project.site.water_density_kg_per_m3;
   const double rho_a = project.site.air_density_kg_per_m3;
-  if (drift || current_table || wind_table) {
+  if (drift || current_table || wind_table || members) {
     std::shared_ptr<const ForcingTable> forcing;
     if (drift || gust)
       forcing = std::make_shared<const ForcingTable>(drift.get(), gust.get(), request.duration_s);
@@ -520,6 +568,11 @@ DynamicModel build_dynamic_model(const ValidatedProject& validated,
         f +=
             engine::coefficient_load(*wind_table, {rho_a, u * wind_direction - hull_velocity, q(5)})
                 .load_g;
+      }
+      if (members) {
+        f += engine::morison_load(members->hull, members->flow, members->pose.reference_point_g,
+                                  members->pose.rotation, t, qd)
+                 .force;
       }
       return f;
     };
@@ -609,7 +662,24 @@ DynamicAnalysisResult run_dynamic_analysis(const ValidatedProject& validated,
   // Wave-frequency motions.
   auto start = std::chrono::steady_clock::now();
   result.wave_frequency.setZero(6, lf.times_s.size());
-  if (auto wf = wave_frequency_motion(project, environment, model, request, lf.times_s)) {
+  if (model.wave_split_frequency_rad_per_s > 0.0 && lf.times_s.size() >= 2) {
+    // Morison hull: the integration carried LF and WF together.
+    for (int d = 0; d < 6; ++d) {
+      const Eigen::VectorXd total = lf.position.row(d).transpose();
+      const std::vector<double> low = engine::low_pass_dft(
+          std::span<const double>(total.data(), static_cast<std::size_t>(total.size())),
+          request.output_step_s, model.wave_split_frequency_rad_per_s);
+      for (Eigen::Index k = 0; k < total.size(); ++k) {
+        result.low_frequency(d, k) = low[static_cast<std::size_t>(k)];
+        result.wave_frequency(d, k) = total(k) - low[static_cast<std::size_t>(k)];
+      }
+    }
+    result.wave_frequency_computed = true;
+    result.notes.push_back(fmt::format(
+        "Morison hull: low- and wave-frequency motions integrated together with the member "
+        "loads; split by a zero-phase low-pass at {:.3g} rad/s ({:g} x the lowest wave frequency)",
+        model.wave_split_frequency_rad_per_s, kMorisonSplitFraction));
+  } else if (auto wf = wave_frequency_motion(project, environment, model, request, lf.times_s)) {
     result.wave_frequency = std::move(*wf);
     result.wave_frequency_computed = true;
   } else if (environment.waves) {

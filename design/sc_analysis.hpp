@@ -38,6 +38,13 @@
 // + WF) from the .4 RAOs, or RAOs computed from .1 + .3 as
 //   xi(w) = [−w² (M + A(w)) + i w (B(w) + B_lin) + C_hydro + K_lines]^-1 X(w)
 // (WAMIT e^{iwt} convention); without .3/.4 there are none (a note says so).
+// Morison hull (hull.hydrodynamics.model: morison, engine/hull/morison_hull.hpp):
+// M + the members' strip added mass; the member loads (wave inertia and
+// pressure, drag on the relative velocity current + waves − hull) join the
+// external force, so the one integration carries LF and WF motions together
+// (the strips sit at the static equilibrium); the two are split by a
+// zero-phase low-pass at half the lowest wave frequency of the realization;
+// the members replace hull.current_coefficients in the dynamics.
 // Fairlead tensions: quasi-static catenary of every intact mooring line at the
 // instantaneous (total) fairlead position, at every output step.
 //
@@ -93,6 +100,9 @@ struct DynamicModel {
   std::optional<engine::Matrix6d> line_damping;                       ///< sc-enhanced
   /// hull.hydrodynamics.radiation: memory — A(inf), the kernel and their diagnostics.
   std::optional<engine::RadiationMemory> radiation_memory;
+  /// Morison hull in waves: the LF/WF split frequency of the integrated
+  /// motion, rad/s (0: the WF motions come from RAOs, or there are none).
+  double wave_split_frequency_rad_per_s = 0.0;
   engine::Vector6d mean_slow_drift_force = engine::Vector6d::Zero();  ///< sum a_k² D_k, global
   /// The slow-drift force alone, F_sd(t) (global), empty without waves or drift data.
   std::function<engine::Vector6d(double)> slow_drift;

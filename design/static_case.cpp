@@ -180,8 +180,9 @@ StaticCaseResult run_static_case(const ValidatedProject& validated,
   }
 
   // With a radiation file the modes use M + A(w_LF) (the hull's added mass at
-  // the low frequency of the moored modes); without it, M alone (flagged).
-  result.added_mass_included = hull.radiation.has_value();
+  // the low frequency of the moored modes), with Morison members their strip
+  // added mass; without either, M alone (flagged).
+  result.added_mass_included = hull.radiation.has_value() || hull.morison.has_value();
   result.natural_modes = natural_modes(hull.statics.hydrostatic_stiffness + result.stiffness,
                                        hull.mass_matrix + hull.low_frequency_added_mass);
   return result;

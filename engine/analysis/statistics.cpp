@@ -115,6 +115,32 @@ Spectrum welch_spectrum(std::span<const double> x, double dt_s, std::size_t L) {
   return out;
 }
 
+std::vector<double> low_pass_dft(std::span<const double> x, double dt_s, double cutoff_rad_s) {
+  if (x.size() < 2 || !(dt_s > 0.0) || !(cutoff_rad_s > 0.0)) {
+    throw std::invalid_argument(fmt::format(
+        "low_pass_dft: need >= 2 samples, dt > 0 s and a cut-off > 0 rad/s; got {}, {} s, {} "
+        "rad/s",
+        x.size(), dt_s, cutoff_rad_s));
+  }
+  const std::size_t n = x.size();
+  const double slope = (x.back() - x.front()) / static_cast<double>(n - 1);
+  std::vector<double> detrended(n);
+  for (std::size_t i = 0; i < n; ++i)
+    detrended[i] = x[i] - x.front() - slope * static_cast<double>(i);
+  Eigen::FFT<double> fft;
+  fft.SetFlag(Eigen::FFT<double>::HalfSpectrum);
+  std::vector<std::complex<double>> spectrum;
+  fft.fwd(spectrum, detrended);
+  const double dw = 2.0 * std::numbers::pi / (static_cast<double>(n) * dt_s);
+  for (std::size_t k = 0; k < spectrum.size(); ++k) {
+    if (static_cast<double>(k) * dw > cutoff_rad_s) spectrum[k] = 0.0;
+  }
+  std::vector<double> out;
+  fft.inv(out, spectrum, n);
+  for (std::size_t i = 0; i < n; ++i) out[i] += x.front() + slope * static_cast<double>(i);
+  return out;
+}
+
 double spectrum_variance(const Spectrum& s) {
   return s.density.sum() * s.frequency_step_rad_s;
 }

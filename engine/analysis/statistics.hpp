@@ -79,6 +79,14 @@ struct Spectrum {
 /// standard error is about 1/sqrt(segments·~1.9) (Hann, 50 % overlap).
 Spectrum welch_spectrum(std::span<const double> x, double dt_s, std::size_t segment_length);
 
+/// Zero-phase low-pass of a uniformly sampled record by the DFT: the straight
+/// line through the first and last samples is removed (the periodic extension
+/// then has no jump), every bin above cutoff_rad_s is zeroed, the line is
+/// added back. A brick wall rings near the cut (Gibbs): put the cut well away
+/// from the band to remove. x.size() >= 2, dt_s > 0, cutoff_rad_s > 0 (else
+/// std::invalid_argument).
+std::vector<double> low_pass_dft(std::span<const double> x, double dt_s, double cutoff_rad_s);
+
 /// Variance from a spectrum: sum S(w_k) dw (rectangle rule over the bins).
 double spectrum_variance(const Spectrum& s);
 

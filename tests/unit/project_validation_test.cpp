@@ -450,5 +450,49 @@ TEST(ProjectValidation, RadiationMemoryKeysParseAndTheDurationMustExceedTheStep)
                 "memory_duration_above_step", "hull.hydrodynamics.memory_duration");
 }
 
+TEST(ProjectValidation, MorisonHullNeedsGeometryAndTakesNoBemKeys) {
+  const std::string hull_line = "  waterplane_inertia: [1.0e5, 1.0e5]\n";
+  const std::string geometry =
+      "  geometry:\n"
+      "    columns: [{center: [0, 0], z_bottom: -25, z_top: 10, diameter: 22.6, drag: 0.7,\n"
+      "               added_mass: 0.9, end_added_mass: 0.5, end_drag: 2.0}]\n"
+      "    pontoons: [{from: [0, 0, -20], to: [30, 0, -20], diameter: 2.0, drag: 0.8}]\n";
+  const std::string text =
+      replace(kMinimal, hull_line,
+              hull_line + "  hydrodynamics: {model: morison, strip_length: 0.5}\n" + geometry);
+  const Project p = parse_project(text, "test.yaml");
+  ASSERT_TRUE(p.hull.hydrodynamics && p.hull.geometry);
+  EXPECT_EQ(p.hull.hydrodynamics->model, HullHydrodynamicsModel::morison);
+  EXPECT_DOUBLE_EQ(p.hull.hydrodynamics->strip_length_m, 0.5);
+  const HullColumn& c = p.hull.geometry->columns[0];
+  EXPECT_DOUBLE_EQ(c.coefficients.drag, 0.7);
+  EXPECT_DOUBLE_EQ(c.coefficients.added_mass, 0.9);
+  EXPECT_DOUBLE_EQ(c.end_added_mass, 0.5);
+  EXPECT_DOUBLE_EQ(c.end_drag, 2.0);
+  EXPECT_DOUBLE_EQ(p.hull.geometry->pontoons[0].coefficients.drag, 0.8);
+  EXPECT_DOUBLE_EQ(p.hull.geometry->pontoons[0].coefficients.added_mass, 1.0);  // default
+  EXPECT_TRUE(check(text).empty()) << all(check(text));
+  // Without geometry.
+  expect_single(
+      check(replace(kMinimal, hull_line, hull_line + "  hydrodynamics: {model: morison}\n")),
+      "morison_needs_geometry", "hull.hydrodynamics.model");
+  // A BEM key with model: morison, and strip_length with bem.
+  EXPECT_THROW(parse_project(replace(text, "strip_length: 0.5", "radiation_file: x.1"), "t.yaml"),
+               InputError);
+  try {
+    parse_project(replace(text, "model: morison, ", ""), "t.yaml");
+    FAIL() << "strip_length accepted with model: bem";
+  } catch (const InputError& e) {
+    bool found = false;
+    for (const auto& i : e.issues())
+      found = found ||
+              (i.condition == "key_not_applicable" && i.path == "hull.hydrodynamics.strip_length");
+    EXPECT_TRUE(found) << e.what();
+  }
+  // Negative coefficients.
+  const auto issues = check(replace(text, "drag: 0.8", "drag: -0.8"));
+  expect_single(issues, "coefficient_non_negative", "hull.geometry.pontoons[0].drag");
+}
+
 }  // namespace
 }  // namespace spiral::design

@@ -212,5 +212,37 @@ TEST(Statistics, ShortOrInvalidRecordsThrow) {
   EXPECT_THROW(channel_moments(nan_record), std::invalid_argument);
 }
 
+// Low-pass by the DFT: a slow cosine + a trend pass unchanged, a fast cosine
+// is removed. Both cosines sit on DFT bins (whole cycles over n dt) and are
+// centred on the record, so they take equal values at both ends: the line
+// through the end samples is then the trend plus a constant (DC, kept), and
+// the split is exact to round-off.
+TEST(LowPassDft, KeepsTheSlowPartAndTheTrendAndRemovesTheFastPart) {
+  constexpr std::size_t n = 4000;
+  constexpr double dt = 0.5;
+  const double duration = n * dt;
+  const double t_mid = 0.5 * (n - 1) * dt;
+  const double w_slow = 2.0 * std::numbers::pi * 3.0 / duration;    // 3 cycles
+  const double w_fast = 2.0 * std::numbers::pi * 150.0 / duration;  // 150 cycles
+  std::vector<double> x(n), slow(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double t = static_cast<double>(i) * dt;
+    slow[i] = 2.0 + 0.001 * static_cast<double>(i) + 1.5 * std::cos(w_slow * (t - t_mid));
+    x[i] = slow[i] + 0.7 * std::cos(w_fast * (t - t_mid));
+  }
+  const auto low = low_pass_dft(x, dt, 0.5 * (w_slow + w_fast));
+  double worst = 0.0;
+  for (std::size_t i = 0; i < n; ++i) worst = std::max(worst, std::abs(low[i] - slow[i]));
+  EXPECT_LT(worst, 1e-10);
+  // A cut below the slow cosine removes it too: the trend alone is left
+  // (whole cycles have no DC).
+  const auto trend = low_pass_dft(x, dt, 0.5 * w_slow);
+  worst = 0.0;
+  for (std::size_t i = 0; i < n; ++i)
+    worst = std::max(worst, std::abs(trend[i] - (2.0 + 0.001 * static_cast<double>(i))));
+  EXPECT_LT(worst, 1e-10);
+  EXPECT_THROW(low_pass_dft(std::vector<double>{1.0}, dt, 1.0), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace spiral::engine
