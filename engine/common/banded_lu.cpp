@@ -58,11 +58,15 @@ bool BandMatrix::factorize() {
     }
     if (km > 0) {
       const double inv = 1.0 / at(j, j);
-      for (int i = 1; i <= km; ++i) at(j + i, j) *= inv;
+      // Column j below the diagonal, and each column c to its right from row
+      // j on, are contiguous in the band storage (distinct columns: no alias).
+      double* const l = &at(j, j);
+      for (int i = 1; i <= km; ++i) l[i] *= inv;
       for (int c = j + 1; c <= ju; ++c) {
-        const double u = at(j, c);
+        double* const a = &at(j, c);
+        const double u = a[0];
         if (u == 0.0) continue;
-        for (int i = 1; i <= km; ++i) at(j + i, c) -= at(j + i, j) * u;
+        for (int i = 1; i <= km; ++i) a[i] -= l[i] * u;
       }
     }
   }

@@ -355,40 +355,48 @@ NewtonOutcome solve_with_current_steps(Problem& p, const FeStaticsOptions& o, Ei
   const bool has_current = p.load.current != nullptr && !p.load.current->empty();
   const Eigen::VectorXd q_start = q;
   p.load.current_factor = 1.0;
+  const double T_start = max_axial_force(p, q_start);
+  const double T_ref = T_start > 0.0 ? T_start : p.load_scale_N;
+  const double EA_max = *std::max_element(p.EA_true_N.begin(), p.EA_true_N.end());
+  FeStaticsOptions loose = o;
+  loose.relative_force_tolerance = std::max(o.relative_force_tolerance, 1e-6);
+  auto count = [&counters](const NewtonOutcome& outcome) {
+    counters.iterations += outcome.iterations;
+    ++counters.load_steps;
+    return outcome;
+  };
+  // From a state converged with EA capped at kFirstAxialCap × T_ref: the cap
+  // raised ×10 per stage to the model's EA.
+  auto restore_axial_stiffness = [&](NewtonOutcome last) {
+    for (double cap = 10.0 * kFirstAxialCap * T_ref; last.converged; cap *= 10.0) {
+      const bool final_stage = cap >= EA_max;
+      cap_axial_stiffness(p, final_stage ? INFINITY : cap);
+      last = count(newton(p, final_stage ? o : loose, q, t, true));
+      if (final_stage) break;
+    }
+    cap_axial_stiffness(p, INFINITY);
+    return last;
+  };
+  NewtonOutcome last;
   if (has_current && steps.swing_predictor && swing_into_current(p, q)) {
     // The swung start usually converges directly (with a larger budget than
     // a direct attempt: it starts with the bending and contact residuals of
     // the turn); else the unswung start and the continuations below.
     FeStaticsOptions swung_options = o;
     swung_options.max_iterations = std::max(o.max_iterations, kSwungAttemptIterations);
-    const NewtonOutcome swung = newton(p, swung_options, q, t, true);
-    counters.iterations += swung.iterations;
-    ++counters.load_steps;
-    if (swung.converged) return swung;
+    last = count(newton(p, swung_options, q, t, true));
+    if (last.converged) return last;
     q = q_start;
   }
-  NewtonOutcome last = newton(p, o, q, t, has_current);
-  counters.iterations += last.iterations;
-  ++counters.load_steps;
-  if (last.converged || !has_current || !steps.continuations) return last;
-
-  q = q_start;
-  const double T_start = max_axial_force(p, q_start);
-  const double T_ref = T_start > 0.0 ? T_start : p.load_scale_N;
-  const double EA_max = *std::max_element(p.EA_true_N.begin(), p.EA_true_N.end());
-  FeStaticsOptions loose = o;
-  loose.relative_force_tolerance = std::max(o.relative_force_tolerance, 1e-6);
-  cap_axial_stiffness(p, kFirstAxialCap * T_ref);
-  last = current_continuation(p, loose, q, t, counters);
-  for (double cap = 10.0 * kFirstAxialCap * T_ref; last.converged; cap *= 10.0) {
-    const bool final_stage = cap >= EA_max;
-    cap_axial_stiffness(p, final_stage ? INFINITY : cap);
-    last = newton(p, final_stage ? o : loose, q, t, true);
-    counters.iterations += last.iterations;
-    ++counters.load_steps;
-    if (final_stage) break;
+  if (steps.direct || !has_current) {
+    last = count(newton(p, o, q, t, has_current));
+    if (last.converged || !has_current || !steps.continuations) return last;
+    q = q_start;
   }
-  cap_axial_stiffness(p, INFINITY);
+  if (!steps.continuations) return last;
+
+  cap_axial_stiffness(p, kFirstAxialCap * T_ref);
+  last = restore_axial_stiffness(current_continuation(p, loose, q, t, counters));
   if (last.converged) return last;
 
   q = q_start;

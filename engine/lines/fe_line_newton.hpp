@@ -43,6 +43,8 @@ struct CurrentSteps {
   /// Cold starts: first try Newton from the start swung into the current
   /// about its chord (a rigid rotation, see fe_line_newton.cpp).
   bool swing_predictor = false;
+  /// Newton at the full current from the start (off: the caller just tried it).
+  bool direct = true;
   /// Current / axial-stiffness continuations when Newton at the full current fails.
   bool continuations = true;
 };

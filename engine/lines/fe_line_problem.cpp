@@ -403,17 +403,23 @@ std::optional<FeTouchdown> find_touchdown(const Problem& p, const Eigen::VectorX
   if (p.load.seabed_stiffness_N_per_m2 <= 0.0) return std::nullopt;
   const double zs = p.load.seabed_z_m;
   constexpr int kSamples = 64;  // per element, then bisection
+  const double z_contact = zs - kContactRoundOff * p.line_length_m;
   for (int e = static_cast<int>(p.elements.size()) - 1; e >= 0; --e) {
     const double L = p.elements[static_cast<std::size_t>(e)].length_m;
     const ElementState qe = gather(p, q, static_cast<std::size_t>(e));
+    // The cubic lies in the convex hull of its Bézier points r_a, r_a + L/3
+    // r'_a, r_b − L/3 r'_b, r_b: none below the seabed, no sample can be.
+    const double z_min =
+        std::min({qe[2], qe[2] + L / 3.0 * qe[5], qe[8] - L / 3.0 * qe[11], qe[8]});
+    if (z_min >= z_contact) continue;
     for (int j = kSamples; j >= 0; --j) {
       const double xi = static_cast<double>(j) / kSamples;
-      if (position(ancf::shape_at(xi, L), qe).z() < zs - kContactRoundOff * p.line_length_m) {
+      if (position(ancf::shape_at(xi, L), qe).z() < z_contact) {
         double lo = xi, hi = std::min(1.0, xi + 1.0 / kSamples);
         if (j == kSamples) hi = lo;
         for (int it = 0; it < 60 && hi - lo > 1e-12; ++it) {
           const double mid = 0.5 * (lo + hi);
-          (position(ancf::shape_at(mid, L), qe).z() < zs - kContactRoundOff * p.line_length_m ? lo : hi) = mid;
+          (position(ancf::shape_at(mid, L), qe).z() < z_contact ? lo : hi) = mid;
         }
         FeTouchdown td;
         td.arc_length_m = p.mesh.s[static_cast<std::size_t>(e)] + lo * L;

@@ -187,8 +187,11 @@ FeStaticsResult solve_fe_line_statics(const FeLineModel& model, const FeEnvironm
     for (bool first_stage = true;; first_stage = false) {
       p.load.seabed_stiffness_N_per_m2 = k;
       const bool final_stage = k >= k_target;
-      last = solve_with_current_steps(p, final_stage ? options : stage_options, q, t, counters,
-                                      {.swing_predictor = first_stage && !swing_direct});
+      // The first stage repeats no attempt the direct one just made.
+      const bool repeat = first_stage && final_stage && k_target > 0.0;
+      last = solve_with_current_steps(
+          p, final_stage ? options : stage_options, q, t, counters,
+          {.swing_predictor = first_stage && !swing_direct, .direct = !repeat});
       if (!last.converged) break;
       if (final_stage) {
         last = snap_touchdown(p, options, q, t, counters, kFinalSnapPasses);
