@@ -91,9 +91,9 @@
 // Timings (Release, one core, shared machine; tests/bench/fe_statics_bench):
 // OC4 20/80 el ≈ 5 ms; 2740 m chain–polyester–chain, 83 el: 2 ms (no
 // current), 3.5 ms (1.5 m/s at 30°), 0.8 ms warm-started after a 1 m offset;
-// SCR 225 el 8–12 ms cold, 3.5–5 ms warm after a 0.5 m hang-off move (with
-// or without a 1.5 m/s current); with that current cold 0.2–0.3 s
-// (continuations).
+// SCR 225 el 8–12 ms cold, 2.5–3.5 ms warm after a 0.5 m hang-off move (with
+// or without a 1.5 m/s current); with that current cold ≈ 30 ms (swung
+// start, seabed continuation; 0.2–0.3 s before the swing).
 // Frames and units: global frame, z up, SI. End A is the anchor / riser
 // bottom, end B the fairlead / hang-off.
 
