@@ -22,15 +22,6 @@ namespace {
 constexpr double kSeabedDamping_Pa_s_per_m = 1.0e5;
 constexpr double kFrictionVelocity_m_per_s = 0.01;
 
-const LineTypeProperties& type_named(const std::vector<LineTypeProperties>& types,
-                                     const std::string& name) {
-  for (const LineTypeProperties& t : types) {
-    if (t.name == name) return t;
-  }
-  throw std::logic_error("line type not resolved: " +
-                         name);  // validated projects resolve every type
-}
-
 LineDynamicsSeries run_one(const Project& project, const MooringLine& line,
                            const std::vector<LineTypeProperties>& types,
                            const LineDynamicsInput& input) {
@@ -59,7 +50,7 @@ LineDynamicsSeries run_one(const Project& project, const MooringLine& line,
   // Polyester: the dynamic EA at each section's mean static tension.
   const std::vector<int> node_section = engine::node_sections(model, statics);
   for (std::size_t s = 0; s < model.sections.size(); ++s) {
-    const LineTypeProperties& type = type_named(types, line.segments[s].type);
+    const LineTypeProperties& type = find_type(types, line.segments[s].type);
     if (type.kind != LineKind::polyester) continue;
     double sum = 0.0;
     int count = 0;

@@ -10,8 +10,6 @@
 
 namespace spiral::design {
 
-namespace {
-
 const LineTypeProperties& find_type(const std::vector<LineTypeProperties>& types,
                                     const std::string& name) {
   const auto it = std::find_if(types.begin(), types.end(),
@@ -19,8 +17,6 @@ const LineTypeProperties& find_type(const std::vector<LineTypeProperties>& types
   if (it == types.end()) throw std::invalid_argument(fmt::format("unknown line type '{}'", name));
   return *it;
 }
-
-}  // namespace
 
 std::vector<LineTypeProperties> resolve_line_types(const Project& project) {
   std::vector<LineTypeProperties> resolved;

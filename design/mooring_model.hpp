@@ -38,6 +38,9 @@ struct LineArrayOptions {
   bool include_risers = true;
 };
 
+/// The resolved type named `name`; std::invalid_argument if there is none.
+const LineTypeProperties& find_type(const std::vector<LineTypeProperties>& types, const std::string& name);
+
 /// Resolves every line type of the project (by name).
 std::vector<LineTypeProperties> resolve_line_types(const Project& project);
 

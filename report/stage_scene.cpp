@@ -52,12 +52,13 @@ Scene stage_scene(const design::Project& project, const design::StaticCaseResult
     const design::Riser* model = nullptr;
     for (const design::Riser& r : project.risers)
       if (r.name == riser.name) model = &r;
-    const std::optional<double> mbr =
-        model ? design::riser_criteria(project.criteria, *model).min_bending_radius_m : std::nullopt;
+    // MBR > 0 when given (validated); 0 stands for none.
+    const double mbr_m =
+        model ? design::riser_criteria(project.criteria, *model).min_bending_radius_m.value_or(0.0) : 0.0;
     for (const design::RiserProfilePoint& p : riser.profile) {
       line.points_g.push_back(p.position_g);
       double u = p.von_mises_utilization.value_or(0.0);
-      if (!p.von_mises_utilization && mbr) u = p.curvature_per_m * *mbr;
+      if (!p.von_mises_utilization && mbr_m > 0.0) u = p.curvature_per_m * mbr_m;
       line.values.push_back(u);
     }
     line.riser = true;

@@ -59,8 +59,11 @@ struct SymmetricBand {
     b = half_band;
     a.assign(static_cast<std::size_t>(n) * static_cast<std::size_t>(b + 1), 0.0);
   }
-  /// Entry (i, j), i ≥ j, i − j ≤ b.
-  double& lower(int i, int j) { return a[static_cast<std::size_t>(j * (b + 1) + i - j)]; }
+  /// Where entry (i, j), i ≥ j, i − j ≤ half_band, sits in the lower band.
+  static std::size_t offset(int i, int j, int half_band) {
+    return static_cast<std::size_t>(j * (half_band + 1) + i - j);
+  }
+  double& lower(int i, int j) { return a[offset(i, j, b)]; }
   double* lower_data() { return a.data(); }
   /// y += A x.
   void multiply_add(const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
@@ -90,22 +93,22 @@ class NewtonMatrix {
   void reset(int size, int half_band) {
     n_ = size;
     b_ = half_band;
-    l_.assign(static_cast<std::size_t>(n_) * static_cast<std::size_t>(b_ + 1), 0.0);
+    band_.reset(size, half_band);
   }
   /// Entry (i, j), i ≥ j, i − j ≤ half band.
-  double& lower(int i, int j) { return l_[static_cast<std::size_t>(j * (b_ + 1) + i - j)]; }
-  /// The lower band, column-major (entry (i, j) at j (b + 1) + i − j).
-  double* lower_data() { return l_.data(); }
+  double& lower(int i, int j) { return band_.lower(i, j); }
+  /// The lower band, column-major (SymmetricBand::offset).
+  double* lower_data() { return band_.lower_data(); }
 
   /// Factors; false if singular (both factorisations failed).
   bool factorize() {
-    copy_ = l_;
+    copy_ = band_.a;
     cholesky_ = cholesky();
     if (cholesky_) return true;
     lu_.reset(n_, b_, b_);
     for (int j = 0; j < n_; ++j) {
       for (int i = j; i <= std::min(n_ - 1, j + b_); ++i) {
-        const double v = copy_[static_cast<std::size_t>(j * (b_ + 1) + i - j)];
+        const double v = copy_[SymmetricBand::offset(i, j, b_)];
         lu_.at(i, j) = v;
         lu_.at(j, i) = v;
       }
@@ -137,7 +140,7 @@ class NewtonMatrix {
   template <int KD>
   void solve_kd(double* x) const {
     const int b = kd<KD>(), ld = b + 1;
-    const double* l = l_.data();
+    const double* l = band_.a.data();
     const double* inv = inv_diagonal_.data();
     for (int j = 0; j < n_; ++j) {  // L y = x
       const double* col = l + static_cast<std::ptrdiff_t>(j) * ld;
@@ -168,7 +171,7 @@ class NewtonMatrix {
   template <int KD>
   bool cholesky_kd() {
     const int b = kd<KD>(), ld = b + 1;
-    double* l = l_.data();
+    double* l = band_.a.data();
     for (int j = 0; j < n_; ++j) {
       double* col = l + static_cast<std::ptrdiff_t>(j) * ld;
       if (!(col[0] > 0.0)) return false;
@@ -197,7 +200,8 @@ class NewtonMatrix {
   }
 
   int n_ = 0, b_ = 0;
-  std::vector<double> l_, copy_, inv_diagonal_;
+  SymmetricBand band_;  // the lower band; Cholesky factors in place
+  std::vector<double> copy_, inv_diagonal_;
   BandMatrix lu_;
   bool cholesky_ = true;
 };
@@ -591,7 +595,8 @@ FeLineDynamics::FeLineDynamics(const FeLineModel& model, const FeDynamicEnvironm
       for (int j = 0; j < kElementDofs; ++j) {
         const int gi = dof[static_cast<std::size_t>(i)], gj = dof[static_cast<std::size_t>(j)];
         if (gj > gi || m.fixed(gi) || m.fixed(gj)) continue;
-        m.lower_entries[e].emplace_back(kElementDofs * i + j, gj * (m.p.band + 1) + gi - gj);
+        m.lower_entries[e].emplace_back(kElementDofs * i + j,
+                                        static_cast<int>(SymmetricBand::offset(gi, gj, m.p.band)));
       }
     }
   }
@@ -736,7 +741,7 @@ FeLineEnergy FeLineDynamics::energy() const {
     const fe_detail::ElementState qe = fe_detail::gather(m.p, m.qw, e);
     const fe_detail::ElementState ve = fe_detail::gather(m.p, m.vw, e);
     for (std::size_t gp = 0; gp < ancf::kGaussXi.size(); ++gp) {
-      const ancf::ShapeAt sh = ancf::shape_at(ancf::kGaussXi[gp], ep.length_m);
+      const ancf::ShapeAt& sh = m.shapes[e][gp];
       const double wds = ancf::kGaussW[gp] * ep.length_m;
       const Eigen::Vector3d r = fe_detail::position(sh, qe), a = fe_detail::slope(sh, qe);
       const Eigen::Vector3d rd = fe_detail::position(sh, ve);
@@ -750,24 +755,11 @@ FeLineEnergy FeLineDynamics::energy() const {
       en.strain_J += density * wds;
       en.gravity_J += ep.weight_N_per_m * r.z() * wds;
     }
-    if (m.static_ctx.seabed_stiffness_N_per_m2 > 0.0) {
-      std::array<std::array<double, 2>, 4> pieces;
-      const int np = ancf::seabed_contact_pieces(ep, m.static_ctx.seabed_z_m,
-                                                 {qe[2], qe[5], qe[8], qe[11]}, pieces);
-      for (int c = 0; c < np; ++c) {
-        const double pa = pieces[static_cast<std::size_t>(c)][0],
-                     pb = pieces[static_cast<std::size_t>(c)][1];
-        for (int gp = 0; gp < 4; ++gp) {
-          const double xi = pa + (pb - pa) * ancf::kContactGaussXi[gp];
-          const double pen = m.static_ctx.seabed_z_m -
-                             fe_detail::position(ancf::shape_at(xi, ep.length_m), qe).z();
-          if (pen > 0.0) {
-            en.seabed_J += 0.5 * m.static_ctx.seabed_stiffness_N_per_m2 * pen * pen *
-                           ancf::kContactGaussW[gp] * (pb - pa) * ep.length_m;
-          }
-        }
-      }
-    }
+    ancf::detail::for_each_contact_point(
+        ep, m.static_ctx, qe.data(), ve.data(),
+        [&](const ancf::ShapeAt&, double w, double pen, const double*, const double*) {
+          en.seabed_J += 0.5 * m.static_ctx.seabed_stiffness_N_per_m2 * pen * pen * w;
+        });
   }
   for (const auto& [node, f] : m.p.mesh.point_loads)
     en.gravity_J += f * m.qw[m.p.r_dof[static_cast<std::size_t>(node)] + 2];
