@@ -62,6 +62,11 @@ engine::WaveSpectrum wave_spectrum_of(const Waves& waves) {
   return engine::make_jonswap_spectrum({waves.hs_m, waves.tp_s, waves.gamma});
 }
 
+std::optional<engine::CurrentProfile> current_profile_of(const Environment& environment) {
+  if (!environment.current || environment.current->profile.empty()) return std::nullopt;
+  return current_profile_of(*environment.current);
+}
+
 MeanEnvironmentLoad mean_environment_load(const Project& project, const Environment& environment) {
   MeanEnvironmentLoad result;
   const Hull& hull = project.hull;
@@ -85,9 +90,8 @@ MeanEnvironmentLoad mean_environment_load(const Project& project, const Environm
   }
 
   std::optional<engine::CoefficientTable> current_table;
-  std::optional<engine::CurrentProfile> current;
-  if (environment.current && !environment.current->profile.empty()) {
-    current = current_profile_of(*environment.current);
+  const std::optional<engine::CurrentProfile> current = current_profile_of(environment);
+  if (current) {
     if (hull.current_coefficients) {
       current_table = table_of(*hull.current_coefficients);
     } else {

@@ -5,6 +5,7 @@
 // Loads that the environment asks for but the project gives no data for are
 // not invented: they are listed in `notes` so the engineer sees what is missing.
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,8 @@ struct MeanEnvironmentLoad {
 
 /// The environment's current as an engine profile (global, direction of propagation).
 engine::CurrentProfile current_profile_of(const Current& current);
+/// The environment's current profile; none when it has no current (or an empty profile).
+std::optional<engine::CurrentProfile> current_profile_of(const Environment& environment);
 
 /// The environment's sea spectrum.
 engine::WaveSpectrum wave_spectrum_of(const Waves& waves);

@@ -500,8 +500,7 @@ DynamicModel build_dynamic_model(const ValidatedProject& validated,
     auto m = std::make_shared<MorisonForcing>();
     m->hull = *hull.morison;
     m->sea = sea;
-    if (environment.current && !environment.current->profile.empty())
-      m->current = current_profile_of(*environment.current);
+    m->current = current_profile_of(environment);
     m->flow.sea = m->sea.get();
     m->flow.current = m->current ? &*m->current : nullptr;
     m->flow.water_density_kg_per_m3 = project.site.water_density_kg_per_m3;
@@ -517,10 +516,10 @@ DynamicModel build_dynamic_model(const ValidatedProject& validated,
           "hull.current_coefficients act in the static equilibrium only");
     }
   }
-  if (environment.current && !environment.current->profile.empty() &&
-      project.hull.current_coefficients && !hull.morison) {
+  if (const auto profile = current_profile_of(environment);
+      profile && project.hull.current_coefficients && !hull.morison) {
     current_table = table_of(*project.hull.current_coefficients);
-    current_velocity = engine::current_velocity_g(current_profile_of(*environment.current), 0.0);
+    current_velocity = engine::current_velocity_g(*profile, 0.0);
   }
   std::optional<engine::CoefficientTable> wind_table;
   double wind_speed = 0.0;
@@ -715,8 +714,7 @@ DynamicAnalysisResult run_dynamic_analysis(const ValidatedProject& validated,
     start = std::chrono::steady_clock::now();
     LineDynamicsInput lines;
     lines.damaged_line = load_case.damaged_line.value_or("");
-    if (environment.current && !environment.current->profile.empty())
-      lines.current = current_profile_of(*environment.current);
+    lines.current = current_profile_of(environment);
     lines.static_offset = model.initial_offset;
     lines.t0_s = result.times_s(0);
     lines.dt_s = result.times_s(1) - result.times_s(0);

@@ -531,8 +531,7 @@ SozResult run_soz(const ValidatedProject& validated, const SozOptions& options) 
     conditions.heave_m = c.offset(2);
     conditions.rotation_rad = c.offset.tail<3>();
     conditions.condition = lc.condition;
-    if (env.current && !env.current->profile.empty())
-      conditions.current = current_profile_of(*env.current);
+    conditions.current = current_profile_of(env);
   }
 
   std::vector<RiserDesign> designs;

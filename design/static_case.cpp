@@ -98,8 +98,8 @@ StaticCaseResult run_static_case(const ValidatedProject& validated,
     MeanEnvironmentLoad mean = mean_environment_load(project, *environment);
     environment_load = std::move(mean.load);
     result.notes = std::move(mean.notes);
-    if (environment->current && !environment->current->profile.empty()) {
-      line_options.current = current_profile_of(*environment->current);
+    line_options.current = current_profile_of(*environment);
+    if (line_options.current) {
       if (std::any_of(project.mooring.lines.begin(), project.mooring.lines.end(),
                       [](const MooringLine& l) { return l.model == LineModel::catenary; })) {
         result.notes.push_back(
