@@ -63,8 +63,10 @@ Figure view_figure(const design::Project& project, const design::StaticStageResu
   f.caption = fmt::format(
       "{}, case {}: hull at its static equilibrium (offset {:.2f} m towards {:.1f}°), mooring "
       "lines coloured by "
-      "code utilization T·SF/MBL along the line (SF {:.2f}), risers (grey) as solved by FE "
-      "statics in the same case. Line "
+      "code utilization T·SF/MBL along the line (SF {:.2f}), risers (thin) as solved by FE "
+      "statics in the same case, on the same scale by their own utilization (von Mises over the "
+      "steel wall with the condition's design factor; curvature × minimum bending radius for "
+      "flexible pipes). Line "
       "thickness is exaggerated for visibility.",
       kind_title, case_label(result), result.offset_summary.horizontal_m,
       result.offset_summary.direction_deg, r.checks[case_index].safety_factor);
