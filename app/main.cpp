@@ -216,6 +216,14 @@ int run_analyze(const std::string& project_file, const AnalyzeOptions& o) {
              "tensions {:.3f} s\n",
              result.equilibrium_wall_s, result.reduction_wall_s, result.forcing_wall_s, result.dynamics_wall_s,
              result.wave_frequency_wall_s, result.tensions_wall_s);
+  if (result.coupled_solver) {
+    const engine::IdaStatistics& s = *result.coupled_solver;
+    fmt::print("  coupled: {} lines, {} states; {} steps, {} Newton-matrix setups ({} partial), {} residuals; "
+               "{:.1f}x real time\n",
+               result.coupled_lines, result.coupled_state_size, s.steps, s.newton_matrix_setups,
+               s.newton_matrix_updates, s.residual_evaluations,
+               result.dynamics_wall_s > 0.0 ? o.duration_s / result.dynamics_wall_s : 0.0);
+  }
   if (!result.dynamic_tensions.empty()) {
     fmt::print("  line dynamics {:.3f} s; max fairlead tension, quasi-static vs dynamic:\n", result.line_dynamics_wall_s);
     for (std::size_t l = 0; l < result.dynamic_tensions.size() && l < result.tensions.size(); ++l) {
@@ -224,6 +232,11 @@ int run_analyze(const std::string& project_file, const AnalyzeOptions& o) {
       fmt::print("    {:<12} {:10.1f} kN  {:10.1f} kN  ({} steps)\n", result.dynamic_tensions[l].line,
                  *std::max_element(qs.begin(), qs.end()) / 1e3, *std::max_element(dy.begin(), dy.end()) / 1e3,
                  result.dynamic_tensions[l].solver.steps);
+    }
+    for (std::size_t l = result.tensions.size(); l < result.dynamic_tensions.size(); ++l) {
+      const auto& dy = result.dynamic_tensions[l].tension_N;
+      fmt::print("    {:<12} {:>13}  {:10.1f} kN  (riser top)\n", result.dynamic_tensions[l].line, "",
+                 *std::max_element(dy.begin(), dy.end()) / 1e3);
     }
   }
   for (const auto& note : result.notes) fmt::print("  note: {}\n", note);
@@ -309,10 +322,10 @@ int main(int argc, char** argv) {
 
   AnalyzeOptions analyze_options;
   CLI::App* analyze = cli.add_subcommand(
-      "analyze", "Time-domain hull analysis of a load case (uncoupled | sc | sc-enhanced): CSV + JSON");
+      "analyze", "Time-domain analysis of a load case (uncoupled | sc | sc-enhanced | coupled): CSV + JSON");
   analyze->add_option("PROJECT", project_file, "Project YAML file")->required();
   analyze->add_option("--case", analyze_options.case_name, "Load case name")->required();
-  analyze->add_option("--level", analyze_options.level, "uncoupled | sc | sc-enhanced (default: sc)");
+  analyze->add_option("--level", analyze_options.level, "uncoupled | sc | sc-enhanced | coupled (default: sc)");
   analyze->add_option("--duration", analyze_options.duration_s, "Simulated time, s (default: 10800)");
   analyze->add_option("--step", analyze_options.step_s, "Output step, s (default: 0.5)");
   analyze->add_option("--seed", analyze_options.seed, "Random seed of the wave and wind realizations (default: 1)");

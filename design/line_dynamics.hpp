@@ -29,10 +29,13 @@
 #include <string>
 #include <vector>
 
+#include "design/line_properties.hpp"
 #include "design/project.hpp"
+#include "design/riser_model.hpp"
 #include "engine/analysis/sundials_ida.hpp"
 #include "engine/common/eigen_types.hpp"
 #include "engine/environment/current_profile.hpp"
+#include "engine/lines/fe_line_dynamics.hpp"
 
 namespace spiral::design {
 
@@ -54,6 +57,25 @@ struct LineDynamicsSeries {
   engine::IdaStatistics solver;
   double wall_s = 0.0;
 };
+
+/// A line ready for the dynamics: its FE model (polyester sections at their
+/// dynamic EA), dynamic environment (seabed damping and friction as above)
+/// and static solution with its top end at `top_g`.
+struct DynamicLineSetup {
+  engine::FeLineModel model;
+  engine::FeDynamicEnvironment environment;
+  engine::FeStaticsResult statics;
+};
+
+/// Throws engine::SolverError naming the line when its statics fail.
+DynamicLineSetup dynamic_mooring_line(const Project& project, const MooringLine& line,
+                                      const std::vector<LineTypeProperties>& types,
+                                      const std::optional<engine::CurrentProfile>& current,
+                                      const Eigen::Vector3d& top_g);
+/// A riser (FE with bending, from its foot to the hang-off at `top_g`).
+DynamicLineSetup dynamic_riser(const Project& project, const RiserDesign& design,
+                               const std::optional<engine::CurrentProfile>& current,
+                               const Eigen::Vector3d& top_g);
 
 std::vector<LineDynamicsSeries> run_mooring_line_dynamics(const Project& project,
                                                           const LineDynamicsInput& input);

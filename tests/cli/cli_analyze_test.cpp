@@ -88,10 +88,32 @@ TEST(CliAnalyze, LineDynamicsWritesDynamicTensions) {
   std::filesystem::remove_all(out);
 }
 
+// The coupled level end to end: hull + the three FE chains in one system,
+// its integrator statistics in the summary and the coupled tensions as
+// channels.
+TEST(CliAnalyze, CoupledLevelWritesItsSolverAndTensions) {
+  const auto out =
+      std::filesystem::temp_directory_path() / ("spiral-coupled-" + std::to_string(::getpid()));
+  const auto result = run_spiral("analyze " + scenario("oc4-semisubmersible.yaml") +
+                                 " --case intact-raft-jonswap --level coupled --duration 120 --out " +
+                                 out.string());
+  ASSERT_EQ(result.exit_code, app::kExitOk) << result.err;
+  EXPECT_NE(result.out.find("coupled: 3 lines"), std::string::npos) << result.out;
+  const nlohmann::json j = nlohmann::json::parse(read_text((out / "summary.json").string()));
+  EXPECT_EQ(j["level"], "coupled");
+  EXPECT_EQ(j["coupled_solver"]["lines"], 3);
+  EXPECT_GT(j["coupled_solver"]["steps"].get<long>(), 0);
+  int dynamic = 0;
+  for (const auto& c : j["channels"])
+    if (c["name"].get<std::string>().rfind("dynamic_tension_", 0) == 0) ++dynamic;
+  EXPECT_EQ(dynamic, 3);
+  std::filesystem::remove_all(out);
+}
+
 TEST(CliAnalyze, UnknownLevelIsBadInput) {
   const auto result =
       run_spiral("analyze " + scenario("oc4-semisubmersible.yaml") +
-                 " --case intact-raft-jonswap --level coupled --out /tmp/spiral-never");
+                 " --case intact-raft-jonswap --level fully-coupled --out /tmp/spiral-never");
   EXPECT_EQ(result.exit_code, app::kExitBadInput);
   EXPECT_NE(result.err.find("--level"), std::string::npos) << result.err;
 }
