@@ -110,6 +110,34 @@ TEST(CliAnalyze, CoupledLevelWritesItsSolverAndTensions) {
   std::filesystem::remove_all(out);
 }
 
+// `spiral compare`: the four levels on one realization, a table on the
+// terminal and comparison.json with the keys the issue names.
+TEST(CliCompare, FourLevelsSideBySide) {
+  const auto out =
+      std::filesystem::temp_directory_path() / ("spiral-compare-" + std::to_string(::getpid()));
+  const auto result = run_spiral("compare " + scenario("oc4-semisubmersible.yaml") +
+                                 " --case intact-raft-jonswap --duration 300 --out " + out.string());
+  ASSERT_EQ(result.exit_code, app::kExitOk) << result.err;
+  EXPECT_NE(result.out.find("speed-up vs coupled"), std::string::npos) << result.out;
+  const nlohmann::json j = nlohmann::json::parse(read_text((out / "comparison.json").string()));
+  for (const char* level : {"uncoupled", "sc", "sc-enhanced", "coupled"}) {
+    ASSERT_TRUE(j["levels"].contains(level)) << level;
+    EXPECT_GT(j["levels"][level]["wall_s"].get<double>(), 0.0) << level;
+    EXPECT_GT(j["levels"][level]["max_offset_m"].get<double>(), 0.0) << level;
+  }
+  EXPECT_GT(j["levels"]["sc"]["speedup_vs_coupled"].get<double>(), 1.0);
+  EXPECT_TRUE(j["levels"]["sc"]["channels"]["offset_m"].contains("diff_pct_vs_coupled"));
+  EXPECT_TRUE(j["levels"]["coupled"]["channels"].contains("tension_L2_N"));
+  std::filesystem::remove_all(out);
+}
+
+TEST(CliCompare, UnknownCaseIsBadInput) {
+  const auto result = run_spiral("compare " + scenario("oc4-semisubmersible.yaml") +
+                                 " --case nosuch --duration 100 --out /tmp/spiral-never");
+  EXPECT_EQ(result.exit_code, app::kExitBadInput);
+  EXPECT_NE(result.err.find("nosuch"), std::string::npos) << result.err;
+}
+
 TEST(CliAnalyze, UnknownLevelIsBadInput) {
   const auto result =
       run_spiral("analyze " + scenario("oc4-semisubmersible.yaml") +
