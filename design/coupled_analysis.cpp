@@ -205,6 +205,16 @@ DynamicAnalysisResult run_coupled_analysis(const ValidatedProject& validated,
   if (request.compute_tensions)
     result.tensions = quasi_static_fairlead_tensions(project, damaged, result.total);
   result.tensions_wall_s = seconds_since(start);
+  {
+    std::size_t worst = 0;
+    for (std::size_t i = 1; i < series.step_limiting_outputs.size(); ++i) {
+      if (series.step_limiting_outputs[i] > series.step_limiting_outputs[worst]) worst = i;
+    }
+    const std::string part = worst < lines.size() ? "line " + lines[worst].name : "the hull";
+    result.notes.push_back(fmt::format(
+        "coupled: {} had the largest local error at {} of {} outputs (it sets the step)", part,
+        series.step_limiting_outputs[worst], series.times_s.size() - 1));
+  }
   result.notes.push_back(fmt::format(
       "coupled: hull and {} dynamic FE lines ({} mooring lines, {} risers) in one IDA system of "
       "{} states; wave-frequency motion built up over the first {:g} s; current on the lines, "

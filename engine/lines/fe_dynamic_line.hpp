@@ -316,13 +316,22 @@ struct DynamicLine final : ImplicitSystem {
   }
   int end_dof(int k) const { return element_dofs.back()[static_cast<std::size_t>(k)]; }
 
-  /// After a setup or update at c_j: X and Σ_B (three back-solves).
-  void prepare_end_B_coupling(double cj) {
+  /// After a setup or update at c_j: the last element's S and D, which the
+  /// split solve applies at end B (they must match the factored S and D).
+  void prepare_end_B_matrices(double cj) {
     const ancf::ElementDynamicMatrices& em = element_matrices.back();
     for (std::size_t k = 0; k < end_S.size(); ++k) {
       end_S[k] = cj * cj * em.M[k] - cj * em.C[k] - em.K[k];
       end_D[k] = cj * em.M[k] - em.C[k];
     }
+  }
+
+  /// X and Σ_B from the factored S (three back-solves). A partial update
+  /// may keep them from the last full setup: X is the line's response to a
+  /// unit end motion, which a few elements changing their seabed contact
+  /// far from end B hardly alter, and Σ_B enters only the hull's Newton
+  /// matrix (both only change how fast the Newton iteration converges).
+  void condense_end_B() {
     end_B_influence.setZero(n, 3);
     for (int c = 0; c < 3; ++c) {
       rhs.setZero(n);
