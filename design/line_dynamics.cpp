@@ -86,17 +86,21 @@ DynamicLineSetup dynamic_riser(const Project& project, const RiserDesign& design
 
 namespace {
 
-LineDynamicsSeries run_one(const Project& project, const MooringLine& line,
-                           const std::vector<LineTypeProperties>& types,
+/// One line or riser (`kind` names it in errors) whose top end sits at
+/// `attachment_b` on the hull; `make_setup` builds it with the top at a
+/// global position.
+template <class MakeSetup>
+LineDynamicsSeries run_one(const Project& project, const std::string& name, const char* kind,
+                           const Eigen::Vector3d& attachment_b, const MakeSetup& make_setup,
                            const LineDynamicsInput& input) {
   const auto start = std::chrono::steady_clock::now();
   const Eigen::Vector3d& ref = project.hull.reference_point_g;
   auto fairlead_at = [&](const engine::Vector6d& offset) {
     const engine::HullPose pose = engine::pose_from_offset(ref, offset);
-    return Eigen::Vector3d(pose.reference_point_g + pose.rotation * line.fairlead_b);
+    return Eigen::Vector3d(pose.reference_point_g + pose.rotation * attachment_b);
   };
   const Eigen::Vector3d rest = fairlead_at(input.static_offset);
-  const DynamicLineSetup setup = dynamic_mooring_line(project, line, types, input.current, rest);
+  const DynamicLineSetup setup = make_setup(rest);
   const engine::FeLineModel& model = setup.model;
   const engine::FeDynamicEnvironment& env = setup.environment;
   const engine::FeStaticsResult& statics = setup.statics;
@@ -124,7 +128,7 @@ LineDynamicsSeries run_one(const Project& project, const MooringLine& line,
   };
 
   LineDynamicsSeries series;
-  series.line = line.name;
+  series.line = name;
   const auto n = static_cast<std::size_t>(input.motion.cols());
   series.tension_N.resize(n);
   try {
@@ -136,7 +140,7 @@ LineDynamicsSeries run_one(const Project& project, const MooringLine& line,
     }
     series.solver = dynamics.statistics();
   } catch (const engine::SolverError& e) {
-    throw engine::SolverError(fmt::format("line {}: FE dynamics failed: {}", line.name, e.what()));
+    throw engine::SolverError(fmt::format("{} {}: FE dynamics failed: {}", kind, name, e.what()));
   }
   series.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return series;
@@ -144,8 +148,8 @@ LineDynamicsSeries run_one(const Project& project, const MooringLine& line,
 
 }  // namespace
 
-std::vector<LineDynamicsSeries> run_mooring_line_dynamics(const Project& project,
-                                                          const LineDynamicsInput& input) {
+std::vector<LineDynamicsSeries> run_line_dynamics(const Project& project,
+                                                  const LineDynamicsInput& input) {
   if (!(input.dt_s > 0.0) || input.motion.cols() < 2 || !(input.ramp_s >= 0.0)) {
     throw std::invalid_argument(
         fmt::format("line dynamics: needs dt > 0 s, >= 2 motion samples and ramp >= 0 s, "
@@ -159,11 +163,27 @@ std::vector<LineDynamicsSeries> run_mooring_line_dynamics(const Project& project
   for (const MooringLine& l : project.mooring.lines) {
     if (l.name != input.damaged_line) lines.push_back(&l);
   }
-  std::vector<LineDynamicsSeries> out(lines.size());
-  const int count = static_cast<int>(lines.size());
+  const std::size_t risers = input.include_risers ? project.risers.size() : 0;
+  std::vector<LineDynamicsSeries> out(lines.size() + risers);
+  const int count = static_cast<int>(out.size());
   engine::parallel_for(count, engine::worker_count(count), [&](int i) {
-    out[static_cast<std::size_t>(i)] =
-        run_one(project, *lines[static_cast<std::size_t>(i)], types, input);
+    const auto k = static_cast<std::size_t>(i);
+    if (k < lines.size()) {
+      const MooringLine& line = *lines[k];
+      out[k] = run_one(project, line.name, "line", line.fairlead_b,
+                       [&](const Eigen::Vector3d& top) {
+                         return dynamic_mooring_line(project, line, types, input.current, top);
+                       },
+                       input);
+    } else {
+      const Riser& riser = project.risers[k - lines.size()];
+      const RiserDesign design = riser_design(project, riser);
+      out[k] = run_one(project, riser.name, "riser", design.hang_off_b,
+                       [&](const Eigen::Vector3d& top) {
+                         return dynamic_riser(project, design, input.current, top);
+                       },
+                       input);
+    }
   });
   return out;
 }

@@ -741,11 +741,11 @@ DynamicAnalysisResult run_dynamic_analysis(const ValidatedProject& validated,
     lines.dt_s = result.times_s(1) - result.times_s(0);
     lines.motion = result.total;
     lines.ramp_s = request.line_dynamics_ramp_s;
-    result.dynamic_tensions = run_mooring_line_dynamics(project, lines);
+    result.dynamic_tensions = run_line_dynamics(project, lines);
     result.line_dynamics_wall_s = seconds_since(start);
     result.notes.push_back(
-        fmt::format("dynamic tensions: FE lines with the total hull motion prescribed at the "
-                    "fairleads, built up over the "
+        fmt::format("dynamic tensions: FE mooring lines and risers with the total hull motion "
+                    "prescribed at the fairleads and hang-offs, built up over the "
                     "first {:g} s; current on the lines, no wave kinematics on the lines",
                     request.line_dynamics_ramp_s));
   }
