@@ -627,20 +627,20 @@ std::vector<TensionSeries> quasi_static_fairlead_tensions(
     const Project& project, const std::string& damaged_line,
     const Eigen::Matrix<double, 6, Eigen::Dynamic>& total) {
   std::vector<TensionSeries> tensions;
-    LineArrayModel mooring = build_mooring_model(project, damaged_line);
-    const Eigen::Index n = total.cols();
-    for (const auto& line : mooring.lines)
-      tensions.push_back({line->name(), std::vector<double>(n), std::vector<Eigen::Vector3d>(n)});
-    for (Eigen::Index k = 0; k < n; ++k) {
-      const engine::HullPose pose =
-          engine::pose_from_offset(project.hull.reference_point_g, total.col(k));
-      for (std::size_t l = 0; l < mooring.lines.size(); ++l) {
-        const auto& line = mooring.lines[l];
-        const Eigen::Vector3d fairlead = pose.reference_point_g + pose.rotation * line->attachment_b();
-        tensions[l].fairlead_g_m[static_cast<std::size_t>(k)] = fairlead;
-        tensions[l].tension_N[static_cast<std::size_t>(k)] = line->solve(fairlead).top_tension_N;
-      }
+  LineArrayModel mooring = build_mooring_model(project, damaged_line);
+  const Eigen::Index n = total.cols();
+  for (const auto& line : mooring.lines)
+    tensions.push_back({line->name(), std::vector<double>(n), std::vector<Eigen::Vector3d>(n)});
+  for (Eigen::Index k = 0; k < n; ++k) {
+    const engine::HullPose pose =
+        engine::pose_from_offset(project.hull.reference_point_g, total.col(k));
+    for (std::size_t l = 0; l < mooring.lines.size(); ++l) {
+      const auto& line = mooring.lines[l];
+      const Eigen::Vector3d fairlead = pose.reference_point_g + pose.rotation * line->attachment_b();
+      tensions[l].fairlead_g_m[static_cast<std::size_t>(k)] = fairlead;
+      tensions[l].tension_N[static_cast<std::size_t>(k)] = line->solve(fairlead).top_tension_N;
     }
+  }
   return tensions;
 }
 
