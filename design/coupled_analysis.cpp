@@ -122,6 +122,8 @@ DynamicAnalysisResult run_coupled_analysis(const ValidatedProject& validated,
     }
     out.model = std::move(setup.model);
     out.environment = std::move(setup.environment);
+    out.environment.sea = model.sea;
+    out.environment.sea_ramp_s = request.line_dynamics_ramp_s;
     out.initial = std::move(setup.statics);
   });
   result.reduction_wall_s = seconds_since(start);
@@ -217,10 +219,10 @@ DynamicAnalysisResult run_coupled_analysis(const ValidatedProject& validated,
   }
   result.notes.push_back(fmt::format(
       "coupled: hull and {} dynamic FE lines ({} mooring lines, {} risers) in one IDA system of "
-      "{} states; wave-frequency motion built up over the first {:g} s; current on the lines, "
-      "no wave kinematics on the lines",
+      "{} states; wave-frequency motion built up over the first {:g} s; current on the lines{}",
       count, moorings.size(), project.risers.size(), series.state_size,
-      request.line_dynamics_ramp_s));
+      request.line_dynamics_ramp_s,
+      model.sea ? ", linear wave kinematics at each element's static midpoint" : ""));
   return result;
 }
 

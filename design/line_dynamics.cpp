@@ -100,7 +100,9 @@ LineDynamicsSeries run_one(const Project& project, const std::string& name, cons
     return Eigen::Vector3d(pose.reference_point_g + pose.rotation * attachment_b);
   };
   const Eigen::Vector3d rest = fairlead_at(input.static_offset);
-  const DynamicLineSetup setup = make_setup(rest);
+  DynamicLineSetup setup = make_setup(rest);
+  setup.environment.sea = input.sea;
+  setup.environment.sea_ramp_s = input.ramp_s;
   const engine::FeLineModel& model = setup.model;
   const engine::FeDynamicEnvironment& env = setup.environment;
   const engine::FeStaticsResult& statics = setup.statics;

@@ -17,7 +17,8 @@
 // build-up transient.
 //
 // Per line: Morison drag and added mass on the velocity relative to the
-// current (waves on the lines are not modelled yet: a note says so),
+// current and the waves (input.sea: linear kinematics held at each element's
+// static midpoint — fixed_point_wave_kinematics.hpp says why and what it costs),
 // polyester with its dynamic EA at the section's mean static tension
 // (design/line_properties.hpp), seabed penalty from site.seabed with contact
 // damping c = c_bot · d (c_bot = 1e5 Pa·s/m, MoorDyn's default) and Coulomb
@@ -28,6 +29,7 @@
 // line or riser, the time reached and the cause.
 
 #include <Eigen/Core>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -53,6 +55,9 @@ struct LineDynamicsInput {
   double ramp_s = 20.0;                             ///< build-up ramp, >= 0
   long max_steps_between_samples = 500000;          ///< integrator work limit per sample
   bool include_risers = true;  ///< risers too (FE with bending, hang-off moving with the hull)
+  /// Waves on the lines (linear kinematics at each element's static
+  /// midpoint, engine/environment/fixed_point_wave_kinematics.hpp); null: none.
+  std::shared_ptr<const engine::WaveRealization> sea;
 };
 
 struct LineDynamicsSeries {

@@ -478,10 +478,11 @@ DynamicModel build_dynamic_model(const ValidatedProject& validated,
   // External force.
   const auto forcing_start = std::chrono::steady_clock::now();
   std::shared_ptr<const engine::WaveRealization> sea;
-  if (environment.waves && (project.hull.mean_drift || hull.morison)) {
+  if (environment.waves) {
     sea = std::make_shared<const engine::WaveRealization>(
         realize_sea(project, *environment.waves, request.duration_s, request.seed));
   }
+  model.sea = sea;
   std::shared_ptr<const engine::SlowDriftSeries> drift;
   if (environment.waves && project.hull.mean_drift) {
     const engine::MeanDriftTable table = drift_table_of(project, *project.hull.mean_drift);
@@ -741,13 +742,15 @@ DynamicAnalysisResult run_dynamic_analysis(const ValidatedProject& validated,
     lines.dt_s = result.times_s(1) - result.times_s(0);
     lines.motion = result.total;
     lines.ramp_s = request.line_dynamics_ramp_s;
+    lines.sea = model.sea;
     result.dynamic_tensions = run_line_dynamics(project, lines);
     result.line_dynamics_wall_s = seconds_since(start);
     result.notes.push_back(
         fmt::format("dynamic tensions: FE mooring lines and risers with the total hull motion "
                     "prescribed at the fairleads and hang-offs, built up over the "
-                    "first {:g} s; current on the lines, no wave kinematics on the lines",
-                    request.line_dynamics_ramp_s));
+                    "first {:g} s; current on the lines{}",
+                    request.line_dynamics_ramp_s,
+                    model.sea ? " and linear wave kinematics at each element's static midpoint" : ""));
   }
   return result;
 }

@@ -64,6 +64,7 @@
 #include "engine/hull/radiation_memory.hpp"
 #include "engine/hull/wamit_1.hpp"
 #include "engine/hull/wamit_3.hpp"
+#include "engine/environment/wave_realization.hpp"
 
 namespace spiral::design {
 
@@ -107,6 +108,9 @@ struct DynamicModel {
   engine::Vector6d mean_slow_drift_force = engine::Vector6d::Zero();  ///< sum a_k² D_k, global
   /// The slow-drift force alone, F_sd(t) (global), empty without waves or drift data.
   std::function<engine::Vector6d(double)> slow_drift;
+  /// The case's seeded wave realization (empty without waves): the slow
+  /// drift, the Morison hull and the dynamic lines all see this one sea.
+  std::shared_ptr<const engine::WaveRealization> sea;
   std::vector<std::string> notes;
   double equilibrium_wall_s = 0.0;  ///< static case (equilibrium)
   double reduction_wall_s = 0.0;    ///< K reduction (+ line hydrodynamics for sc-enhanced)

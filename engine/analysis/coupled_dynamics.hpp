@@ -37,8 +37,8 @@
 // the result does not depend on the thread count).
 //
 // Not modelled: the hull's radiation memory (Cummins) — the hull takes
-// A(ω_LF) and B_lin (a model with a kernel is rejected); waves on the lines
-// come from the lines' environments (FeDynamicEnvironment::waves).
+// A(ω_LF) and B_lin (a model with a kernel is rejected). Waves on the lines
+// come from the lines' environments (FeDynamicEnvironment::sea / waves).
 
 #include <Eigen/Core>
 #include <functional>

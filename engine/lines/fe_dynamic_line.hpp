@@ -9,13 +9,16 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "engine/analysis/sampled_trajectory.hpp"
 #include "engine/analysis/sundials_ida.hpp"
+#include "engine/environment/fixed_point_wave_kinematics.hpp"
 #include "engine/lines/ancf_dynamic_loads.hpp"
 #include "engine/lines/fe_band_matrices.hpp"
 #include "engine/lines/fe_line_dynamics.hpp"
@@ -96,8 +99,19 @@ struct DynamicLine final : ImplicitSystem {
     }
   }
 
+  // The sea's kinematics at the elements' static midpoints, evaluated once
+  // per time (the Newton iterations of a step share it).
+  std::unique_ptr<FixedPointWaveKinematics> element_waves;
+  double sea_ramp_s = 0.0;
+  mutable double element_waves_time = std::numeric_limits<double>::quiet_NaN();
+  mutable std::vector<Eigen::Vector3d> element_wave_velocity, element_wave_acceleration;
+
   /// Fluid velocity and acceleration at the element's Gauss points.
   void fluid_at(double t, std::size_t e, const double* qe, ancf::ElementFluid& fluid) const {
+    if (element_waves && t != element_waves_time) {
+      element_waves->evaluate(t, element_wave_velocity, element_wave_acceleration);
+      element_waves_time = t;
+    }
     for (std::size_t gp = 0; gp < ancf::kGaussXi.size(); ++gp) {
       const ancf::ShapeAt& sh = shapes[e][gp];
       Eigen::Vector3d r = Eigen::Vector3d::Zero();
@@ -113,6 +127,11 @@ struct DynamicLine final : ImplicitSystem {
         waves(r, t, uw, aw_);
         u += uw;
         a += aw_;
+      }
+      if (element_waves) {
+        const RampValue ramp = smooth_ramp(t - options.start_time_s, sea_ramp_s);
+        u += ramp.value * element_wave_velocity[e];
+        a += ramp.value * element_wave_acceleration[e] + ramp.rate_per_s * element_wave_velocity[e];
       }
       for (int x = 0; x < 3; ++x) {
         fluid.velocity[gp][static_cast<std::size_t>(x)] = u[x];

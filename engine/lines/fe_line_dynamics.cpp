@@ -48,6 +48,7 @@ void validate_dynamics(const FeLineModel& model, const FeDynamicEnvironment& env
             env.seabed_damping_N_s_per_m2 >= 0.0, ">= 0 N s/m2");
   check_env("friction_velocity_m_per_s", env.friction_velocity_m_per_s,
             env.friction_velocity_m_per_s > 0.0, "> 0 m/s");
+  check_env("sea_ramp_s", env.sea_ramp_s, env.sea_ramp_s >= 0.0, ">= 0 s");
   if (o.end_B == FeEndCondition::prescribed && !o.end_B_motion)
     invalid_dynamics("end_B_motion: required when end B is prescribed");
   if (o.end_A == FeEndCondition::prescribed)
@@ -100,7 +101,7 @@ DynamicLine::Start DynamicLine::initialize(const FeLineModel& model,
   m.bed.lateral_friction = environment.seabed_lateral_friction;
   m.bed.friction_velocity_m_per_s = environment.friction_velocity_m_per_s;
   m.waves = environment.waves;
-  m.still_water = m.current.empty() && !m.waves;
+  m.still_water = m.current.empty() && !m.waves && !environment.sea;
 
   // Element dynamic properties; a dynamic EA takes over from the static one
   // with the force offset that keeps the static state in equilibrium.
@@ -130,6 +131,16 @@ DynamicLine::Start DynamicLine::initialize(const FeLineModel& model,
     }
   }
 
+  if (environment.sea) {
+    std::vector<Eigen::Vector3d> midpoints;
+    for (std::size_t e = 0; e < m.p.elements.size(); ++e) {
+      const fe_detail::ElementState qe = fe_detail::gather(m.p, q0, e);
+      midpoints.push_back(
+          fe_detail::position(ancf::shape_at(0.5, m.p.elements[e].length_m), qe));
+    }
+    m.element_waves = std::make_unique<FixedPointWaveKinematics>(environment.sea, midpoints);
+    m.sea_ramp_s = environment.sea_ramp_s;
+  }
   m.element_dofs.resize(m.p.elements.size());
   m.shapes.resize(m.p.elements.size());
   for (std::size_t e = 0; e < m.p.elements.size(); ++e) {
