@@ -302,6 +302,9 @@ int run_compare(const std::string& project_file, const CompareOptions& o) {
   fmt::print("levels of '{}', case {} (seed {}, {:.0f} s): {}\n", loaded.project.name, o.case_name, o.seed,
              o.duration_s, folder.string());
   fmt::print("{}", table);
+  for (const auto& level : comparison.levels) {
+    if (level.error) return app::kExitSolverFailure;  // the other levels are written above
+  }
   return app::kExitOk;
 }
 

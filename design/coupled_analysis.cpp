@@ -151,6 +151,7 @@ DynamicAnalysisResult run_coupled_analysis(const ValidatedProject& validated,
   for (long k = 1; k <= n_out; ++k)
     options.output_times_s.push_back(static_cast<double>(k) * request.output_step_s);
   options.threads = engine::worker_count(count);
+  options.max_steps_between_outputs = request.coupled_max_steps_between_outputs;
   engine::HullLoads loads;
   loads.lines = engine::LinearizedLines{};
   loads.external = model.loads.external;

@@ -45,7 +45,7 @@ const ChannelSummary* find_channel(const LevelSummary& level, const std::string&
 
 const LevelSummary* find_level(const LevelComparison& c, AnalysisLevel level) {
   for (const LevelSummary& l : c.levels) {
-    if (l.level == level) return &l;
+    if (l.level == level && !l.error) return &l;
   }
   return nullptr;
 }
@@ -97,13 +97,21 @@ LevelComparison compare_levels(const ValidatedProject& project, const Comparison
     r.output_step_s = request.output_step_s;
     r.seed = request.seed;
     r.line_dynamics = level != AnalysisLevel::coupled;
+    r.coupled_max_steps_between_outputs = request.coupled_max_steps_between_outputs;
     if (request.progress) {
       const std::string name = to_string(level);
       r.progress = [p = request.progress, name](double f) { p(name, f); };
     }
-    const DynamicAnalysisResult result = run_dynamic_analysis(project, r);
     LevelSummary s;
     s.level = level;
+    DynamicAnalysisResult result;
+    try {
+      result = run_dynamic_analysis(project, r);
+    } catch (const engine::SolverError& e) {
+      s.error = e.what();
+      c.levels.push_back(std::move(s));
+      continue;
+    }
     s.wall_s = total_wall_s(result);
     s.line_dynamics_wall_s = result.line_dynamics_wall_s;
     s.channels = summarize_channels(result);
@@ -125,6 +133,11 @@ nlohmann::json comparison_to_json(const LevelComparison& c) {
   nlohmann::json levels;
   for (const LevelSummary& l : c.levels) {
     nlohmann::json lj;
+    if (l.error) {
+      lj["error"] = *l.error;
+      levels[to_string(l.level)] = lj;
+      continue;
+    }
     lj["wall_s"] = l.wall_s;
     lj["line_dynamics_wall_s"] = l.line_dynamics_wall_s;
     lj["real_time_factor"] = l.wall_s > 0.0 ? c.duration_s / l.wall_s : 0.0;
@@ -214,6 +227,9 @@ std::string comparison_table(const LevelComparison& c) {
                                           : std::string("-"));
   }
   out += cost + "\n" + speed + "\n";
+  for (const LevelSummary& l : c.levels) {
+    if (l.error) out += fmt::format("{} failed: {}\n", to_string(l.level), *l.error);
+  }
   return out;
 }
 

@@ -46,6 +46,9 @@ struct LevelSummary {
   std::vector<ChannelSummary> channels;
   std::vector<std::string> notes;
   std::optional<engine::IdaStatistics> coupled_solver;
+  /// The solver failure that stopped this level (its channels are then
+  /// empty); the other levels still run.
+  std::optional<std::string> error;
 };
 
 struct LevelComparison {
@@ -60,12 +63,14 @@ struct ComparisonRequest {
   double duration_s = 10800.0;
   double output_step_s = 0.5;
   std::uint64_t seed = 1;
+  long coupled_max_steps_between_outputs = 500000;  ///< DynamicAnalysisRequest's
   /// Called with (level name, fraction done of that level); may be empty.
   std::function<void(const std::string&, double)> progress;
 };
 
-/// Runs the four levels. Errors as run_dynamic_analysis (a level that
-/// fails stops the comparison with its message).
+/// Runs the four levels. A level whose solver fails (engine::SolverError)
+/// keeps its message in LevelSummary::error and the others still run; input
+/// and file errors throw as run_dynamic_analysis.
 LevelComparison compare_levels(const ValidatedProject& project, const ComparisonRequest& request);
 
 /// The summary channels of one analysis result (offsets, dynamic and

@@ -87,6 +87,9 @@ struct DynamicAnalysisRequest {
   /// the hull motion prescribed at its fairlead (design/line_dynamics.hpp).
   bool line_dynamics = false;
   double line_dynamics_ramp_s = 20.0;  ///< build-up ramp of the prescribed motion, >= 0
+  /// Coupled level: the integrator's work limit per output step (IDA
+  /// gives up beyond it: a step-size collapse stops the case, not the machine).
+  long coupled_max_steps_between_outputs = 500000;
   /// Called with the fraction done (0..1) during the dynamics; may be empty.
   std::function<void(double)> progress;
 };

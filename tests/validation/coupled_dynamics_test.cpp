@@ -19,6 +19,7 @@
 #include <numbers>
 
 #include "design/coupled_analysis.hpp"
+#include "design/level_comparison.hpp"
 #include "design/environment_loads.hpp"
 #include "design/line_dynamics.hpp"
 #include "design/mooring_model.hpp"
@@ -307,6 +308,37 @@ TEST(CoupledDynamics, ANonFiniteLineIsNamed) {
     const std::string what = e.what();
     EXPECT_NE(what.find("line L2: non-finite forces at t = 5"), std::string::npos) << what;
   }
+}
+
+}  // namespace
+}  // namespace spiral::design
+
+namespace spiral::design {
+namespace {
+
+// A level whose solver fails does not take the others with it: the coupled
+// run stopped by a work limit is reported with its message, the three
+// other levels finish and carry their statistics.
+TEST(LevelComparison, AFailingLevelLeavesTheOthersFinished) {
+  const ValidatedProject p = load_validated_project(kOc4);
+  ComparisonRequest request;
+  request.load_case = "intact-raft-jonswap";
+  request.duration_s = 100.0;
+  request.coupled_max_steps_between_outputs = 2;
+  const LevelComparison c = compare_levels(p, request);
+  ASSERT_EQ(c.levels.size(), 4u);
+  for (const LevelSummary& l : c.levels) {
+    if (l.level == AnalysisLevel::coupled) {
+      ASSERT_TRUE(l.error.has_value());
+      EXPECT_NE(l.error->find("coupled analysis failed at t = "), std::string::npos) << *l.error;
+    } else {
+      EXPECT_FALSE(l.error.has_value()) << to_string(l.level);
+      EXPECT_FALSE(l.channels.empty()) << to_string(l.level);
+    }
+  }
+  const nlohmann::json j = comparison_to_json(c);
+  EXPECT_TRUE(j["levels"]["coupled"].contains("error"));
+  EXPECT_TRUE(j["levels"]["sc"].contains("max_offset_m"));
 }
 
 }  // namespace
