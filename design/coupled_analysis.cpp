@@ -72,16 +72,8 @@ DynamicAnalysisResult run_coupled_analysis(const ValidatedProject& validated,
     throw std::logic_error("validated load case without its environment");
   }();
 
-  DynamicAnalysisResult result;
-  result.case_name = load_case.name;
-  result.environment = environment.name;
-  result.level = AnalysisLevel::coupled;
-  result.seed = request.seed;
-  result.static_offset = model.statics.offset;
-  result.mean_slow_drift_force = model.mean_slow_drift_force;
-  result.notes = model.notes;
-  result.equilibrium_wall_s = model.equilibrium_wall_s;
-  result.forcing_wall_s = model.forcing_wall_s;
+  DynamicAnalysisResult result = result_of_model(model, request, load_case.name, environment.name);
+  result.reduction_wall_s = 0.0;  // set below: the FE lines' statics
   if (model.hull.radiation_memory) {
     model.hull.radiation_memory.reset();
     model.hull.added_mass = build_hull_model(project).low_frequency_added_mass;

@@ -624,6 +624,26 @@ DynamicModel build_dynamic_model(const ValidatedProject& validated,
   return model;
 }
 
+DynamicAnalysisResult result_of_model(const DynamicModel& model,
+                                      const DynamicAnalysisRequest& request,
+                                      const std::string& case_name,
+                                      const std::string& environment_name) {
+  DynamicAnalysisResult result;
+  result.case_name = case_name;
+  result.environment = environment_name;
+  result.level = request.level;
+  result.seed = request.seed;
+  result.static_offset = model.statics.offset;
+  result.mean_slow_drift_force = model.mean_slow_drift_force;
+  result.line_added_mass = model.line_added_mass;
+  result.line_damping = model.line_damping;
+  result.notes = model.notes;
+  result.equilibrium_wall_s = model.equilibrium_wall_s;
+  result.reduction_wall_s = model.reduction_wall_s;
+  result.forcing_wall_s = model.forcing_wall_s;
+  return result;
+}
+
 std::vector<TensionSeries> quasi_static_fairlead_tensions(
     const Project& project, const std::string& damaged_line,
     const Eigen::Matrix<double, 6, Eigen::Dynamic>& total) {
@@ -653,19 +673,7 @@ DynamicAnalysisResult run_dynamic_analysis(const ValidatedProject& validated,
   const LoadCase& load_case = find_load_case(project, request.load_case);
   const Environment& environment = find_environment(project, load_case.environment);
 
-  DynamicAnalysisResult result;
-  result.case_name = load_case.name;
-  result.environment = environment.name;
-  result.level = request.level;
-  result.seed = request.seed;
-  result.static_offset = model.statics.offset;
-  result.mean_slow_drift_force = model.mean_slow_drift_force;
-  result.line_added_mass = model.line_added_mass;
-  result.line_damping = model.line_damping;
-  result.notes = model.notes;
-  result.equilibrium_wall_s = model.equilibrium_wall_s;
-  result.reduction_wall_s = model.reduction_wall_s;
-  result.forcing_wall_s = model.forcing_wall_s;
+  DynamicAnalysisResult result = result_of_model(model, request, load_case.name, environment.name);
 
   // Low-frequency dynamics from the static equilibrium, at rest.
   const engine::HullSimulationOptions options = forced_run_options(request);

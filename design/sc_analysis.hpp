@@ -181,6 +181,13 @@ std::optional<Eigen::Matrix<double, 6, Eigen::Dynamic>> wave_frequency_motions(
     const ValidatedProject& project, const DynamicModel& model,
     const DynamicAnalysisRequest& request, const Eigen::VectorXd& times_s);
 
+/// A result that carries the model's case data, notes and set-up timings
+/// (no series yet) at `request.level`.
+DynamicAnalysisResult result_of_model(const DynamicModel& model,
+                                      const DynamicAnalysisRequest& request,
+                                      const std::string& case_name,
+                                      const std::string& environment_name);
+
 /// Quasi-static fairlead tension of every intact mooring line (catenary) at
 /// each column of `total` (hull offsets, m, rad).
 std::vector<TensionSeries> quasi_static_fairlead_tensions(

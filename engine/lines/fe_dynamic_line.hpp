@@ -304,8 +304,12 @@ struct DynamicLine final : ImplicitSystem {
     D.multiply_add(w, rhs);  // D has no prescribed rows
     for (int i : fixed_dofs) rhs[i] = 0.0;
     S.solve_in_place(rhs);
-    // Free DOFs: δq = rhs, δv = c δq − b_q (w holds b_q there); prescribed
-    // ones: δq = b_q, δv = b_v (identity rows), set after.
+    write_corrections(cj, b);
+  }
+
+  /// Free DOFs: δq = rhs, δv = c δq − b_q (w holds b_q there); prescribed
+  /// ones: δq = b_q, δv = b_v (identity rows).
+  void write_corrections(double cj, Eigen::Ref<Eigen::VectorXd> b) {
     for (int i : fixed_dofs) {
       rhs[i] = b[i];
       w[i] = b[n + i];
@@ -401,14 +405,8 @@ struct DynamicLine final : ImplicitSystem {
   void finish_solve(double cj, Eigen::Ref<Eigen::VectorXd> b, const Eigen::Vector3d& dq_B,
                     const Eigen::Vector3d& beta_B) {
     rhs.noalias() -= end_B_influence * dq_B;
+    write_corrections(cj, b);
     const int rb = p.r_dof.back();
-    for (int i : fixed_dofs) {
-      rhs[i] = b[i];
-      w[i] = b[n + i];
-    }
-    b.tail(n) = cj * rhs - w;
-    b.head(n) = rhs;
-    for (int i : fixed_dofs) b[n + i] = w[i];
     b.segment<3>(rb) = dq_B;
     b.segment<3>(n + rb) = cj * dq_B - beta_B;
   }
