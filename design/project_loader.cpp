@@ -474,6 +474,8 @@ const EnumTable<LineModel> kLineModels = {{"catenary", LineModel::catenary}, {"f
 const EnumTable<DesignCondition> kDesignConditions = {{"normal", DesignCondition::normal},
                                                       {"extreme", DesignCondition::extreme},
                                                       {"survival", DesignCondition::survival}};
+const EnumTable<StageSozModel> kStageSozModels = {{"catenary", StageSozModel::catenary},
+                                                  {"fe", StageSozModel::fe}};
 const EnumTable<MooringCode> kMooringCodes = {{"api_rp_2sk", MooringCode::api_rp_2sk},
                                               {"dnv_os_e301", MooringCode::dnv_os_e301}};
 
@@ -939,11 +941,15 @@ void read_project(MapReader& r, Project& p, const std::filesystem::path& base_fo
     r.list_of_maps("stages", kOptional, [&](MapReader& s) {
       Stage stage;
       assign(stage.name, s.text("name", kRequired));
+      s.map("soz", kOptional, [&](MapReader& z) {
+        assign(stage.soz.model, z.enumeration("model", kStageSozModels, kOptional));
+        assign(stage.soz.step_deg, z.number("step_deg", "deg", kOptional));
+      });
       p.stages.push_back(stage);
     });
   } else {
     r.child("stages", kOptional);  // known key, for suggestions
-    p.stages = {{"preliminary"}, {"intermediate"}, {"advanced"}};
+    p.stages = {{"preliminary", {}}, {"intermediate", {}}, {"advanced", {}}};
   }
 }
 

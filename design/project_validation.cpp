@@ -814,6 +814,15 @@ std::vector<InputIssue> check_project(const Project& project, const LineCheckTab
   check_load_cases(project, r);
   check_criteria(project, r);
   unique_names(r, project.stages, "stages", "stage", "stage_name_unique");
+  for (std::size_t i = 0; i < project.stages.size(); ++i) {
+    // The zone is a polar polygon on a uniform grid closed at 360°.
+    const double step = project.stages[i].soz.step_deg;
+    const double count = 360.0 / step;
+    if (!(step > 0.0) || std::abs(count - std::round(count)) > 1e-9 * count) {
+      r.fail(fmt::format("stages[{}].soz.step_deg", i), "soz_step_divides_360",
+             fmt::format("must be > 0 and divide 360, got {} deg", step));
+    }
+  }
   std::stable_sort(issues.begin(), issues.end(), [](const InputIssue& a, const InputIssue& b) {
     return std::pair(a.line.value_or(0), a.column.value_or(0)) <
            std::pair(b.line.value_or(0), b.column.value_or(0));

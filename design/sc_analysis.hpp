@@ -85,6 +85,10 @@ struct DynamicAnalysisRequest {
   /// the hull motion prescribed at its fairlead (design/line_dynamics.hpp).
   bool line_dynamics = false;
   double line_dynamics_ramp_s = 20.0;  ///< build-up ramp of the prescribed motion, >= 0
+  /// The S-C static case of this load case when the caller has it already
+  /// (a stage runs every case's statics first); null: solved here. It must be
+  /// run_static_case of `load_case` with its own damaged line.
+  const StaticCaseResult* statics = nullptr;
   /// Called with the fraction done (0..1) during the dynamics; may be empty.
   std::function<void(double)> progress;
 };
