@@ -43,8 +43,8 @@ std::string model_text(const design::SozResult& z) {
                      z.options.search_limit_pct_depth, z.options.search_limit_pct_depth / 100.0 * z.depth_m);
 }
 
-Figure plan_figure(const design::StaticStageResults& r, std::optional<double> offset_limit_m) {
-  const design::SozResult& z = *r.soz;
+Figure plan_figure(const design::SozResult& z, const std::vector<design::OffsetCheck>& extremes,
+                   std::optional<double> offset_limit_m) {
   Plot plot;
   plot.title = "Riser safe operational zones (plan view)";
   plot.x_label = "Hull offset x (m)";
@@ -98,13 +98,18 @@ Figure plan_figure(const design::StaticStageResults& r, std::optional<double> of
   }
   for (Series* s : {&intact, &damaged})
     if (!s->x.empty()) plot.series.push_back(*s);
-  if (r.dynamics && r.dynamics->extreme_offset) {
-    const design::OffsetCheck& e = *r.dynamics->extreme_offset;
+  if (!extremes.empty()) {
     Series s;
-    s.label = fmt::format("MPM offset (3 h), {}", e.case_name);
+    s.label = "MPM offset (3-h S-C storm)";
     s.line_width = 0, s.markers = true, s.marker = Marker::diamond, s.color = kExtremeColor;
-    s.x = {e.offset_m * std::cos(e.direction_deg * kDegToRad)};
-    s.y = {e.offset_m * std::sin(e.direction_deg * kDegToRad)};
+    for (const design::OffsetCheck& e : extremes) {
+      s.x.push_back(e.offset_m * std::cos(e.direction_deg * kDegToRad));
+      s.y.push_back(e.offset_m * std::sin(e.direction_deg * kDegToRad));
+      // Numbered like the static offsets of the same case.
+      for (std::size_t i = 0; i < z.offset_checks.size(); ++i)
+        if (z.offset_checks[i].case_name == e.case_name)
+          plot.labels.push_back({s.x.back(), s.y.back(), std::to_string(i + 1)});
+    }
     plot.series.push_back(std::move(s));
   }
   if (offset_limit_m) {
@@ -120,8 +125,7 @@ Figure plan_figure(const design::StaticStageResults& r, std::optional<double> of
                        "found no failure within it. Markers: static offsets of the load cases ({}), "
                        "circles intact, triangles damaged{}.",
                        model_text(z), key,
-                       r.dynamics && r.dynamics->extreme_offset ? ", the diamond the MPM offset of the storm"
-                                                                : ""),
+                       extremes.empty() ? "" : ", diamonds the MPM offsets of the S-C storms"),
            1.2, std::nullopt, nullptr};
   f.draw = [plot](cairo_t* cr, double w, double h) { draw_plot(cr, plot, w, h); };
   return f;
@@ -129,8 +133,8 @@ Figure plan_figure(const design::StaticStageResults& r, std::optional<double> of
 
 }  // namespace
 
-Section soz_section(const design::StaticStageResults& r, std::optional<double> offset_limit_m) {
-  const design::SozResult& z = *r.soz;
+Section soz_section(const design::SozResult& z, const std::vector<design::OffsetCheck>& extremes,
+                    std::optional<double> offset_limit_m) {
   Section s{"Riser safe operational zones", {}, true};
   s.blocks.emplace_back(Paragraph{fmt::format(
       "For each riser, the largest horizontal hull offset per direction for which every riser "
@@ -146,7 +150,7 @@ Section soz_section(const design::StaticStageResults& r, std::optional<double> o
         "from the boundary-layer estimate). The static-case riser checks above use FE risers with "
         "each case's current; set stages[].soz.model: fe for the FE zones."});
   }
-  s.blocks.emplace_back(plan_figure(r, offset_limit_m));
+  s.blocks.emplace_back(plan_figure(z, extremes, offset_limit_m));
 
   Table groups{"soz-riser-directions",
                "Allowable offset of each riser at its near (towards its azimuth), far and cross "
@@ -179,12 +183,12 @@ Section soz_section(const design::StaticStageResults& r, std::optional<double> o
 
   Table check{"soz-offset-check",
               "Offset check against the platform zone: static (mean) offsets of every load case"
-              " and the MPM offset of the S-C storm where it ran.",
+              " and the MPM offsets of the S-C storms where they ran.",
               {"Case", "Condition", "Kind", "Offset (m)", "Dir (°)", "Allowable (m)", "Margin (m)",
                "Ratio", "Governing riser", "Check"},
               {}};
   std::vector<design::OffsetCheck> rows = z.offset_checks;
-  if (r.dynamics && r.dynamics->extreme_offset) rows.push_back(*r.dynamics->extreme_offset);
+  rows.insert(rows.end(), extremes.begin(), extremes.end());
   for (const auto& c : rows) {
     check.rows.push_back({text(c.case_name), text(c.condition), text(c.kind), num(c.offset_m, 2),
                           num(c.direction_deg, 1), num(c.allowable_m, 1), num(c.margin_m, 1), num(c.ratio, 3),

@@ -5,12 +5,17 @@
 // (intact / damaged, static / extreme), the near/far/cross table per riser,
 // the platform zone per direction and the offset check. Reads results only.
 
-#include "design/static_stage.hpp"
+#include <optional>
+#include <vector>
+
+#include "design/soz.hpp"
 #include "report/document.hpp"
 
 namespace spiral::report {
 
-/// Requires results.soz. `offset_limit_m`: the project's offset limit circle, if any.
-Section soz_section(const design::StaticStageResults& results, std::optional<double> offset_limit_m);
+/// `zone` with its static offset checks; `extremes`: MPM offsets of storms
+/// (kind "extreme"); `offset_limit_m`: the project's offset limit circle, if any.
+Section soz_section(const design::SozResult& zone, const std::vector<design::OffsetCheck>& extremes,
+                    std::optional<double> offset_limit_m);
 
 }  // namespace spiral::report

@@ -60,7 +60,9 @@ Figure view_figure(const design::Project& project, const design::StaticStageResu
   return f;
 }
 
-Section model_summary(const design::ValidatedProject& vp, const design::StaticStageResults& r) {
+}  // namespace
+
+Section model_summary_section(const design::ValidatedProject& vp, const std::string& code) {
   const design::Project& p = vp.project;
   Section s{"Model summary", {}, true};
   KeyValues kv;
@@ -87,7 +89,7 @@ Section model_summary(const design::ValidatedProject& vp, const design::StaticSt
   kv.items.emplace_back(
       "Mooring", fmt::format("{} lines, {} risers", p.mooring.lines.size(), p.risers.size()));
   kv.items.emplace_back("Mooring code",
-                        fmt::format("{}: SF intact {:.2f}, damaged {:.2f} (quasi-static)", r.code,
+                        fmt::format("{}: SF intact {:.2f}, damaged {:.2f} (quasi-static)", code,
                                     design::mooring_safety_factor(p.criteria.mooring, false),
                                     design::mooring_safety_factor(p.criteria.mooring, true)));
   if (p.criteria.max_offset_pct_depth) {
@@ -150,7 +152,7 @@ Section model_summary(const design::ValidatedProject& vp, const design::StaticSt
   return s;
 }
 
-Section load_cases(const design::Project& p) {
+Section load_cases_section(const design::Project& p) {
   Section s{"Load cases", {}, true};
   s.blocks.emplace_back(
       Paragraph{"Headings are directions of propagation, degrees counter-clockwise from global +x. "
@@ -179,6 +181,8 @@ Section load_cases(const design::Project& p) {
   s.blocks.emplace_back(t);
   return s;
 }
+
+namespace {
 
 Figure profile_figure(const design::StaticsResult& pre, const design::StaticStageResults& r,
                       const design::Project& p) {
@@ -583,31 +587,42 @@ Section stiffness_section(const design::StaticStageResults& r, const design::Pro
 
 }  // namespace
 
-ReportDocument static_stage_report(const design::ValidatedProject& vp,
-                                   const design::StaticStageResults& r, const ReportInfo& info,
-                                   const StaticStageReportOptions& options) {
-  const design::Project& p = vp.project;
+ReportDocument stage_document(const design::Project& p, const ReportInfo& info, const std::string& stage,
+                              const std::string& code, const std::string& wall_time,
+                              const design::SozResult* soz) {
   ReportDocument doc;
-  std::string stage = r.stage;
-  if (!stage.empty())
-    stage[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(stage[0])));
-  doc.title.title = stage + " stage report";
-  doc.title.subtitle = r.dynamics ? "Static cases, mooring code check, riser SOZ, S-C storm"
-                                  : "Static analyses: pretensions, static cases, mooring code check";
   doc.title.project = p.name;
   doc.title.description = p.description.value_or("");
   doc.title.facts = {{"Project file", info.project_file},
                      {"Date", info.date},
                      {"spiral version", info.version},
                      {"Model hash", info.model_hash + " (FNV-1a 64 of the project file)"},
-                     {"Stage", r.stage},
-                     {"Mooring code", r.code},
-                     {"Analysis wall time", fmt::format("{:.3f} s", r.wall_time_s)}};
-  if (r.soz) {
+                     {"Stage", stage},
+                     {"Mooring code", code},
+                     {"Analysis wall time", wall_time}};
+  if (soz) {
     doc.title.facts.emplace_back("Riser SOZ", fmt::format("{} model, {:g}° step, still water",
-                                                          design::to_string(r.soz->options.model),
-                                                          r.soz->options.step_deg));
+                                                          design::to_string(soz->options.model),
+                                                          soz->options.step_deg));
   }
+  doc.running_header = fmt::format("spiral — {}", p.name);
+  doc.running_footer =
+      fmt::format("{} · model {} · spiral {} · {}", info.project_file, info.model_hash, info.version, info.date);
+  return doc;
+}
+
+ReportDocument static_stage_report(const design::ValidatedProject& vp,
+                                   const design::StaticStageResults& r, const ReportInfo& info,
+                                   const StaticStageReportOptions& options) {
+  const design::Project& p = vp.project;
+  ReportDocument doc = stage_document(p, info, r.stage, r.code, fmt::format("{:.3f} s", r.wall_time_s),
+                                      r.soz ? &*r.soz : nullptr);
+  std::string stage = r.stage;
+  if (!stage.empty())
+    stage[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(stage[0])));
+  doc.title.title = stage + " stage report";
+  doc.title.subtitle = r.dynamics ? "Static cases, mooring code check, riser SOZ, S-C storm"
+                                  : "Static analyses: pretensions, static cases, mooring code check";
   if (r.dynamics) {
     doc.title.facts.emplace_back("S-C storm", fmt::format("{}, {} ({:.0f} s, {:.2f} s wall)",
                                                           design::to_string(r.dynamics->level),
@@ -642,18 +657,17 @@ ReportDocument static_stage_report(const design::ValidatedProject& vp,
                            "{}{}){}; governing failing check: {}",
                            failed, r.checks.size(), failed_lines, failed_offset, failed_risers,
                            r.soz ? fmt::format(", riser SOZ: {}", failed_soz) : std::string(), storm, governing);
-  doc.running_header = fmt::format("spiral — {}", p.name);
-  doc.running_footer = fmt::format("{} · model {} · spiral {} · {}", info.project_file,
-                                   info.model_hash, info.version, info.date);
-  doc.sections.push_back(model_summary(vp, r));
-  doc.sections.push_back(load_cases(p));
+  doc.sections.push_back(model_summary_section(vp, r.code));
+  doc.sections.push_back(load_cases_section(p));
   doc.sections.push_back(pretension_section(vp, r, options));
   doc.sections.push_back(results_section(vp, r, options));
   if (!p.risers.empty()) doc.sections.push_back(riser_section(r));
   if (r.soz) {
     std::optional<double> limit;
     if (p.criteria.max_offset_pct_depth) limit = *p.criteria.max_offset_pct_depth / 100.0 * p.site.depth_m;
-    doc.sections.push_back(soz_section(r, limit));
+    std::vector<design::OffsetCheck> extremes;
+    if (r.dynamics && r.dynamics->extreme_offset) extremes.push_back(*r.dynamics->extreme_offset);
+    doc.sections.push_back(soz_section(*r.soz, extremes, limit));
   }
   if (r.dynamics) doc.sections.push_back(dynamics_section(*r.dynamics, r.code));
   doc.sections.push_back(stiffness_section(r, p));

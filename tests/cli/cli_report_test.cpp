@@ -4,11 +4,15 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
 
 #include "app/exit_codes.hpp"
 #include "support/run_command.hpp"
@@ -138,6 +142,65 @@ TEST(CliReportErrors, UnwritableOutputFolderExitsFourNamingItAndLeavesNothing) {
   for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir)) ++entries;
   EXPECT_EQ(entries, 1);  // only a-file
   fs::remove_all(dir);
+}
+
+/// Rows of a CSV written by the report (no quoted commas in these tables).
+std::vector<std::vector<std::string>> read_csv(const fs::path& file) {
+  std::vector<std::vector<std::string>> rows;
+  std::istringstream in(read_text(file));
+  for (std::string line; std::getline(in, line);) {
+    std::vector<std::string> cells;
+    std::istringstream cell(line);
+    for (std::string c; std::getline(cell, c, ',');) cells.push_back(c);
+    rows.push_back(cells);
+  }
+  return rows;
+}
+
+// The intermediate stage: every load case gets an enhanced S-C storm; the
+// ranking is sorted by score, the score is the largest measure, the critical
+// cases are the top three plus the failing ones, and the riser measure is the
+// case's riser utilization as `spiral equilibrium` computes it.
+TEST(CliReportStages, IntermediateRanksEveryLoadCase) {
+  const fs::path dir = fresh_dir("spiral-cli-report-intermediate");
+  const auto result = run_spiral("report " + scenario("deepwater-fps.yaml") + " --stage intermediate --out '" +
+                                 (dir / "report").string() + "'");
+  ASSERT_EQ(result.exit_code, app::kExitOk) << result.err;
+  const auto rows = read_csv(dir / "report" / "tables" / "ranking.csv");
+  ASSERT_EQ(rows.size(), 6u);  // header + the scenario's five load cases
+  ASSERT_EQ(rows[0][8], "Score");
+  double previous = 1e300;
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    const auto& r = rows[i];
+    const double tension = std::stod(r[3]), offset = std::stod(r[5]), riser = std::stod(r[6]), score = std::stod(r[8]);
+    EXPECT_EQ(std::stoi(r[0]), static_cast<int>(i));
+    EXPECT_DOUBLE_EQ(score, std::max({tension, offset, riser})) << r[1];
+    EXPECT_LE(score, previous) << r[1];
+    previous = score;
+    EXPECT_EQ(r[10] == "yes", i <= 3 || r[11] == "FAIL") << r[1];
+    EXPECT_GT(tension, 0.0) << r[1];
+  }
+  // The top case's riser measure against the equilibrium's own riser rows.
+  const auto eq = nlohmann::json::parse(
+      run_spiral("equilibrium --json --case " + rows[1][1] + " " + scenario("deepwater-fps.yaml")).out);
+  double worst = 0.0;
+  for (const auto& riser : eq["risers"]) worst = std::max(worst, riser["utilization"].get<double>());
+  EXPECT_NEAR(std::stod(rows[1][6]), worst, 1e-8 * worst);
+  const fs::path txt = dir / "report.txt";
+  ASSERT_EQ(std::system(fmt::format("pdftotext -layout '{}' '{}'", (dir / "report" / "report.pdf").string(),
+                                    txt.string())
+                            .c_str()),
+            0);
+  EXPECT_NE(read_text(txt).find("Critical case #1: " + rows[1][1]), std::string::npos);
+  fs::remove_all(dir);
+}
+
+TEST(CliReportStages, AdvancedIsRejectedNamingWhatIsMissing) {
+  const auto result =
+      run_spiral("report " + scenario("deepwater-fps.yaml") + " --stage advanced --out /tmp/spiral-never-written");
+  EXPECT_EQ(result.exit_code, app::kExitBadInput);
+  EXPECT_NE(result.err.find("fully coupled"), std::string::npos) << result.err;
+  EXPECT_FALSE(fs::exists("/tmp/spiral-never-written"));
 }
 
 TEST(CliReportErrors, UnknownStageIsBadInput) {
