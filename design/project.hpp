@@ -212,6 +212,11 @@ struct HullPontoon {
 struct HullGeometry {
   std::vector<HullColumn> columns;
   std::vector<HullPontoon> pontoons;
+  /// A WAMIT low-order panel mesh (.gdf) of the hull, body frame, resolved
+  /// relative to the project file's folder: the 3D views draw it instead of
+  /// the members (engine/hull/wamit_gdf.hpp). The members still feed the
+  /// Morison model.
+  std::optional<std::filesystem::path> panel_mesh;
 };
 
 struct Hull {

@@ -696,8 +696,9 @@ void read_member_coefficients(MapReader& r, MemberCoefficients& c) {
   assign(c.added_mass, r.number("added_mass", "-", kOptional));
 }
 
-HullGeometry read_hull_geometry(MapReader& r) {
+HullGeometry read_hull_geometry(MapReader& r, const std::filesystem::path& base_folder) {
   HullGeometry g;
+  if (const auto file = r.text("panel_mesh", kOptional)) g.panel_mesh = resolve(*file, base_folder);
   r.list_of_maps("columns", kOptional, [&](MapReader& c) {
     HullColumn column;
     assign(column.center_b, c.vector<2>("center", "m", kRequired));
@@ -767,7 +768,7 @@ Hull read_hull(MapReader& r, const std::filesystem::path& base_folder) {
         [&](MapReader& d) { hull.mean_drift = read_mean_drift(d, base_folder); });
   r.map("hydrodynamics", kOptional,
         [&](MapReader& d) { hull.hydrodynamics = read_hull_hydrodynamics(d, base_folder); });
-  r.map("geometry", kOptional, [&](MapReader& g) { hull.geometry = read_hull_geometry(g); });
+  r.map("geometry", kOptional, [&](MapReader& g) { hull.geometry = read_hull_geometry(g, base_folder); });
   return hull;
 }
 

@@ -206,10 +206,13 @@ void check_member_coefficients(Reporter& r, const std::string& at, const MemberC
   at_least(r, at + ".added_mass", c.added_mass, 0.0, "", "coefficient_non_negative");
 }
 
+void check_file(Reporter& r, const std::string& at, const std::filesystem::path& file);
+
 void check_hull_geometry(Reporter& r, const HullGeometry& g) {
-  if (g.columns.empty() && g.pontoons.empty()) {
-    r.fail("hull.geometry", "hull_geometry_members", "needs at least one column or pontoon");
+  if (g.columns.empty() && g.pontoons.empty() && !g.panel_mesh) {
+    r.fail("hull.geometry", "hull_geometry_members", "needs at least one column, pontoon or a panel_mesh");
   }
+  if (g.panel_mesh) check_file(r, "hull.geometry.panel_mesh", *g.panel_mesh);
   for (std::size_t i = 0; i < g.columns.size(); ++i) {
     const HullColumn& c = g.columns[i];
     const std::string at = fmt::format("hull.geometry.columns[{}]", i);
@@ -514,9 +517,9 @@ void check_hull_hydrodynamics(Reporter& r, const Hull& hull) {
   const std::string at = "hull.hydrodynamics";
   if (h.model == HullHydrodynamicsModel::morison) {
     positive(r, at + ".strip_length", h.strip_length_m, "m", "hull_value_positive");
-    if (!hull.geometry) {
+    if (!hull.geometry || (hull.geometry->columns.empty() && hull.geometry->pontoons.empty())) {
       r.fail(at + ".model", "morison_needs_geometry",
-             "model: morison builds the members from hull.geometry, which is absent");
+             "model: morison builds the members from hull.geometry, which has none");
     }
   } else {
     check_file(r, at + ".radiation_file", h.radiation_file);

@@ -155,6 +155,9 @@ StaticStageResults run_static_stage(const ValidatedProject& validated,
   const Project& project = validated.project;
   StaticStageResults out;
   out.code = to_string(project.criteria.mooring.code);
+  // Read first: a bad mesh file fails the stage before its analyses run.
+  if (project.hull.geometry && project.hull.geometry->panel_mesh)
+    out.hull_panels_b = engine::full_surface(engine::read_gdf(*project.hull.geometry->panel_mesh));
 
   LineArrayModel model = build_mooring_model(project);
   out.pretension = run_statics(model, engine::Vector6d::Zero());

@@ -31,6 +31,7 @@
 #include "design/static_case.hpp"
 #include "design/statics_study.hpp"
 #include "design/validated_project.hpp"
+#include "engine/hull/wamit_gdf.hpp"
 
 namespace spiral::design {
 
@@ -109,6 +110,8 @@ struct StaticStageResults {
   std::optional<SozResult> soz;
   std::optional<StageDynamics> dynamics;  ///< the S-C storm of the governing load case
   std::vector<std::string> notes;         ///< what the stage left out and why
+  /// The hull's panel mesh (hull.geometry.panel_mesh), full surface, body frame; empty without one.
+  std::vector<engine::Panel> hull_panels_b;
   GoverningCheck governing;
   bool pass = true;    ///< every case passes, and the dynamic checks
   double wall_time_s = 0.0;
@@ -122,7 +125,8 @@ inline constexpr int kRestoringSteps = 20;
 double mooring_safety_factor(const MooringCriteria& criteria, bool damaged);
 
 /// Runs the static stage. Throws InputError / engine::SolverError as
-/// run_static_case does (the message names the case and line).
+/// run_static_case does (the message names the case and line), and
+/// engine::FileFormatError for a malformed panel mesh (before any analysis).
 StaticStageResults run_static_stage(const ValidatedProject& project,
                                     const StaticStageOptions& options = {});
 

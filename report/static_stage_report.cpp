@@ -30,7 +30,7 @@ Figure view_figure(const design::Project& project, const design::StaticStageResu
                    std::size_t case_index, ViewKind kind, const StaticStageReportOptions& options) {
   const design::StaticCaseResult& result = r.cases[case_index];
   const Scene scene =
-      stage_scene(project, result, r.strengths, r.checks[case_index].safety_factor);
+      stage_scene(project, result, r.strengths, r.checks[case_index].safety_factor, r.hull_panels_b);
   ViewOptions view;
   view.width = options.view_width;
   view.height = options.view_height;
@@ -86,6 +86,10 @@ Section model_summary_section(const design::ValidatedProject& vp, const std::str
                                                            p.hull.geometry->columns.size(),
                                                            p.hull.geometry->pontoons.size())
                                              : std::string("none given (drawn as a box)"));
+  if (p.hull.geometry && p.hull.geometry->panel_mesh) {
+    kv.items.emplace_back("Hull panel mesh", fmt::format("{} (drawn as the hull in the 3D views)",
+                                                         p.hull.geometry->panel_mesh->filename().string()));
+  }
   kv.items.emplace_back(
       "Mooring", fmt::format("{} lines, {} risers", p.mooring.lines.size(), p.risers.size()));
   kv.items.emplace_back("Mooring code",

@@ -203,6 +203,44 @@ TEST(CliReportStages, AdvancedIsRejectedNamingWhatIsMissing) {
   EXPECT_FALSE(fs::exists("/tmp/spiral-never-written"));
 }
 
+/// The OC4 scenario with hull.geometry.panel_mesh set to `mesh`, written into
+/// `dir` (its data paths made absolute so that it runs from there).
+fs::path oc4_with_panel_mesh(const fs::path& dir, const std::string& mesh) {
+  std::string yaml = read_text(fs::path(SPIRAL_SOURCE_DIR) / "scenarios" / "oc4-semisubmersible.yaml");
+  for (std::size_t at; (at = yaml.find("../../shared/data")) != std::string::npos;)
+    yaml.replace(at, std::string("../../shared/data").size(), SPIRAL_SHARED_DATA_DIR);
+  const std::string key = "\n  geometry:\n";
+  const std::size_t at = yaml.find(key);
+  EXPECT_NE(at, std::string::npos);
+  yaml.insert(at + key.size(), "    panel_mesh: " + std::string(SPIRAL_SOURCE_DIR) + "/tests/data/panel-mesh/" + mesh + "\n");
+  const fs::path file = dir / "oc4-mesh.yaml";
+  std::ofstream(file) << yaml;
+  return file;
+}
+
+TEST(CliReportPanelMesh, ReportRunsWithTheMeshNamedInTheModelSummary) {
+  const fs::path dir = fresh_dir("spiral-cli-report-mesh");
+  const auto result = run_spiral("report '" + oc4_with_panel_mesh(dir, "oc4-columns.gdf").string() + "' --out '" +
+                                 (dir / "report").string() + "'");
+  ASSERT_EQ(result.exit_code, app::kExitOk) << result.err;
+  ASSERT_EQ(std::system(fmt::format("pdftotext '{}' '{}'", (dir / "report" / "report.pdf").string(),
+                                    (dir / "report.txt").string())
+                            .c_str()),
+            0);
+  EXPECT_NE(read_text(dir / "report.txt").find("oc4-columns.gdf (drawn as the hull"), std::string::npos);
+  fs::remove_all(dir);
+}
+
+TEST(CliReportPanelMesh, MalformedMeshExitsTwoNamingFileAndLine) {
+  const fs::path dir = fresh_dir("spiral-cli-report-bad-mesh");
+  const auto result = run_spiral("report '" + oc4_with_panel_mesh(dir, "malformed_line7.gdf").string() +
+                                 "' --out '" + (dir / "report").string() + "'");
+  EXPECT_EQ(result.exit_code, app::kExitBadInput) << result.err;
+  EXPECT_NE(result.err.find("malformed_line7.gdf:7:"), std::string::npos) << result.err;
+  EXPECT_FALSE(fs::exists(dir / "report"));
+  fs::remove_all(dir);
+}
+
 TEST(CliReportErrors, UnknownStageIsBadInput) {
   const auto result =
       run_spiral("report " + scenario("oc4-semisubmersible.yaml") + " --stage nosuch --out /tmp/x");
