@@ -67,9 +67,10 @@
 
 namespace spiral::design {
 
-enum class AnalysisLevel { uncoupled, semi_coupled, semi_coupled_enhanced };
+/// coupled: hull and every dynamic FE line integrated together (coupled_analysis.hpp).
+enum class AnalysisLevel { uncoupled, semi_coupled, semi_coupled_enhanced, coupled };
 
-/// "uncoupled", "sc", "sc-enhanced" (the CLI names).
+/// "uncoupled", "sc", "sc-enhanced", "coupled" (the CLI names).
 const char* to_string(AnalysisLevel level);
 /// Parses the CLI name; throws InputError (path `--level`) for anything else.
 AnalysisLevel parse_analysis_level(const std::string& name, const Project& project);
@@ -139,12 +140,18 @@ struct DynamicAnalysisResult {
   Eigen::Matrix<double, 6, Eigen::Dynamic> total;           ///< LF + WF
   bool wave_frequency_computed = false;
   std::vector<TensionSeries> tensions;               ///< quasi-static
-  std::vector<LineDynamicsSeries> dynamic_tensions;  ///< with request.line_dynamics
+  /// With request.line_dynamics (mooring lines), or from the coupled run
+  /// (mooring lines, then risers: their top tension).
+  std::vector<LineDynamicsSeries> dynamic_tensions;
   engine::Vector6d static_offset = engine::Vector6d::Zero();
   engine::Vector6d mean_slow_drift_force = engine::Vector6d::Zero();
   std::optional<engine::Matrix6d> line_added_mass;
   std::optional<engine::Matrix6d> line_damping;
-  engine::CvodeStatistics solver;
+  engine::CvodeStatistics solver;  ///< hull integrator (not the coupled level)
+  /// Coupled level: the one IDA integration of hull + lines, and its size.
+  std::optional<engine::IdaStatistics> coupled_solver;
+  long coupled_state_size = 0;
+  int coupled_lines = 0;
   std::vector<std::string> notes;
   double equilibrium_wall_s = 0.0;
   double reduction_wall_s = 0.0;
@@ -165,6 +172,19 @@ engine::MotionRaoTable motion_raos_from_excitation(const engine::ExcitationTable
                                                    const engine::Matrix6d& linear_damping,
                                                    const engine::Matrix6d& stiffness);
 
+/// Wave-frequency hull motions (global, m, rad) of the request's case at
+/// `times_s`, from the .4 RAOs or .1 + .3; empty without them or without waves.
+std::optional<Eigen::Matrix<double, 6, Eigen::Dynamic>> wave_frequency_motions(
+    const ValidatedProject& project, const DynamicModel& model,
+    const DynamicAnalysisRequest& request, const Eigen::VectorXd& times_s);
+
+/// Quasi-static fairlead tension of every intact mooring line (catenary) at
+/// each column of `total` (hull offsets, m, rad).
+std::vector<TensionSeries> quasi_static_fairlead_tensions(
+    const Project& project, const std::string& damaged_line,
+    const Eigen::Matrix<double, 6, Eigen::Dynamic>& total);
+
+/// Any level; coupled goes to run_coupled_analysis (coupled_analysis.hpp).
 DynamicAnalysisResult run_dynamic_analysis(const ValidatedProject& project,
                                            const DynamicAnalysisRequest& request);
 

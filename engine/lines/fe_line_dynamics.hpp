@@ -134,7 +134,9 @@ struct EndKinematics {
 };
 using EndMotionFn = std::function<EndKinematics(double t_s)>;
 
-enum class FeEndCondition { fixed, prescribed, free };
+/// attached: end B follows a body whose equations are integrated with the
+/// line (the coupled hull + lines system, engine/analysis/coupled_dynamics.hpp).
+enum class FeEndCondition { fixed, prescribed, free, attached };
 
 struct FeDynamicsOptions {
   FeEndCondition end_A = FeEndCondition::fixed;

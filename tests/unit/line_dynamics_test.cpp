@@ -35,11 +35,27 @@ LineDynamicsInput surge_motion(double amplitude_m, double period_s, double durat
 TEST(LineDynamics, HullAtRestKeepsTheStaticTension) {
   const ValidatedProject p = load_validated_project(kOc4);
   const std::vector<LineDynamicsSeries> lines =
-      run_mooring_line_dynamics(p.project, surge_motion(0.0, 100.0, 120.0));
+      run_line_dynamics(p.project, surge_motion(0.0, 100.0, 120.0));
   ASSERT_EQ(lines.size(), 3u);
   for (const LineDynamicsSeries& l : lines) {
     for (double t : l.tension_N)
       EXPECT_NEAR(t, l.tension_N.front(), 1e-6 * l.tension_N.front()) << l.line;
+  }
+}
+
+// Risers run with the lines: at rest each keeps its static top tension (the
+// equilibrium's, from the same FE model) — the deep-water scenario's 12 SCRs.
+TEST(LineDynamics, RisersAtRestKeepTheirStaticTopTension) {
+  const ValidatedProject p = load_validated_project(std::string(SPIRAL_SOURCE_DIR) +
+                                                    "/scenarios/deepwater-fps.yaml");
+  LineDynamicsInput in = surge_motion(0.0, 100.0, 10.0);
+  const std::vector<LineDynamicsSeries> series = run_line_dynamics(p.project, in);
+  ASSERT_EQ(series.size(), p.project.mooring.lines.size() + p.project.risers.size());
+  for (std::size_t i = p.project.mooring.lines.size(); i < series.size(); ++i) {
+    const LineDynamicsSeries& r = series[i];
+    EXPECT_EQ(r.line, p.project.risers[i - p.project.mooring.lines.size()].name);
+    EXPECT_GT(r.tension_N.front(), 1e6) << r.line;  // an SCR in 1800 m: MN
+    for (double t : r.tension_N) EXPECT_NEAR(t, r.tension_N.front(), 1e-6 * t) << r.line;
   }
 }
 
@@ -51,7 +67,7 @@ TEST(LineDynamics, SlowSurgeFollowsTheQuasiStaticCatenary) {
   const ValidatedProject p = load_validated_project(kOc4);
   LineDynamicsInput in = surge_motion(5.0, 200.0, 400.0);
   in.ramp_s = 50.0;
-  const std::vector<LineDynamicsSeries> lines = run_mooring_line_dynamics(p.project, in);
+  const std::vector<LineDynamicsSeries> lines = run_line_dynamics(p.project, in);
   LineArrayModel catenaries = build_mooring_model(p.project);
   double worst = 0.0;
   for (std::size_t l = 0; l < lines.size(); ++l) {
@@ -82,7 +98,7 @@ TEST(LineDynamics, AFailingLineIsNamedWithTheTimeReached) {
   LineDynamicsInput in = surge_motion(1.0, 20.0, 40.0);
   in.max_steps_between_samples = 3;
   try {
-    run_mooring_line_dynamics(p.project, in);
+    run_line_dynamics(p.project, in);
     FAIL() << "the work limit must stop the integration";
   } catch (const engine::SolverError& e) {
     const std::string what = e.what();
@@ -96,7 +112,7 @@ TEST(LineDynamics, NonFiniteMotionIsRejected) {
   const ValidatedProject p = load_validated_project(kOc4);
   LineDynamicsInput in = surge_motion(1.0, 20.0, 40.0);
   in.motion(0, 40) = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_THROW(run_mooring_line_dynamics(p.project, in), std::invalid_argument);
+  EXPECT_THROW(run_line_dynamics(p.project, in), std::invalid_argument);
 }
 
 }  // namespace
