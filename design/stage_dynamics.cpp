@@ -39,9 +39,9 @@ double fairlead_segment_mbl(const ValidatedProject& vp, const std::string& line_
 
 }  // namespace
 
-ChannelSummary summarize_channel(std::string name, std::string unit, std::vector<double> values,
+StormChannel summarize_storm_channel(std::string name, std::string unit, std::vector<double> values,
                                  double dt_s) {
-  ChannelSummary c;
+  StormChannel c;
   c.name = std::move(name);
   c.unit = std::move(unit);
   const engine::ChannelMoments m = engine::channel_moments(values);
@@ -124,9 +124,9 @@ StageDynamics run_stage_dynamics(const ValidatedProject& vp, const StaticCaseRes
   out.solver_steps = static_cast<int>(r.solver.steps);
   const double dt = request.output_step_s;
 
-  out.channels.push_back(summarize_channel("surge", "m", row(r.total, 0, 1.0), dt));
-  out.channels.push_back(summarize_channel("sway", "m", row(r.total, 1, 1.0), dt));
-  out.channels.push_back(summarize_channel("yaw", "deg", row(r.total, 5, kRadToDeg), dt));
+  out.channels.push_back(summarize_storm_channel("surge", "m", row(r.total, 0, 1.0), dt));
+  out.channels.push_back(summarize_storm_channel("sway", "m", row(r.total, 1, 1.0), dt));
+  out.channels.push_back(summarize_storm_channel("yaw", "deg", row(r.total, 5, kRadToDeg), dt));
   std::vector<double> offset(static_cast<std::size_t>(r.total.cols()));
   std::size_t largest = 0;
   for (Eigen::Index k = 0; k < r.total.cols(); ++k) {
@@ -138,7 +138,7 @@ StageDynamics run_stage_dynamics(const ValidatedProject& vp, const StaticCaseRes
                      : std::atan2(r.total(1, static_cast<Eigen::Index>(largest)),
                                   r.total(0, static_cast<Eigen::Index>(largest))) *
                            kRadToDeg;
-  out.channels.push_back(summarize_channel("offset", "m", std::move(offset), dt));
+  out.channels.push_back(summarize_storm_channel("offset", "m", std::move(offset), dt));
 
   // The most loaded line: the largest sampled fairlead tension.
   const TensionSeries* loaded = nullptr;
@@ -149,8 +149,8 @@ StageDynamics run_stage_dynamics(const ValidatedProject& vp, const StaticCaseRes
   }
   if (loaded) {
     out.most_loaded_line = loaded->line;
-    out.channels.push_back(summarize_channel("tension " + loaded->line, "N", loaded->tension_N, dt));
-    const ChannelSummary& t = out.channels.back();
+    out.channels.push_back(summarize_storm_channel("tension " + loaded->line, "N", loaded->tension_N, dt));
+    const StormChannel& t = out.channels.back();
     out.fairlead_mbl_N = fairlead_segment_mbl(vp, loaded->line);
     const DynamicTensionCheck check =
         dynamic_tension_check(vp.project.criteria.mooring, statics.condition == "damaged", t.mean,
@@ -161,7 +161,7 @@ StageDynamics run_stage_dynamics(const ValidatedProject& vp, const StaticCaseRes
   }
 
   if (zone && !zone->risers.empty()) {
-    const ChannelSummary& o = out.channels[3];
+    const StormChannel& o = out.channels[3];
     StaticCaseResult extreme;  // the MPM offset in the direction of the largest sample
     extreme.case_name = out.case_name;
     extreme.condition = out.condition;

@@ -28,7 +28,7 @@
 namespace spiral::design {
 
 /// One channel of a stage's dynamic analysis and its statistics.
-struct ChannelSummary {
+struct StormChannel {
   std::string name;          ///< surge, sway, yaw, offset, or "tension <line>"
   std::string unit;          ///< m, deg or N (the values below are in it)
   std::vector<double> values;  ///< per output time
@@ -54,7 +54,7 @@ struct StageDynamics {
   std::uint64_t seed = 1;
   std::vector<double> times_s;
   /// surge (m), sway (m), yaw (deg), offset (m, horizontal), tension of the most loaded line (N).
-  std::vector<ChannelSummary> channels;
+  std::vector<StormChannel> channels;
   std::string most_loaded_line;  ///< by its largest sampled fairlead tension
   double fairlead_mbl_N = 0.0;   ///< MBL of that line's fairlead segment
   double dynamic_safety_factor = 0.0;  ///< API SF_dyn, or γ_dyn for DNV
@@ -70,7 +70,7 @@ struct StageDynamics {
 };
 
 /// Channel statistics of a uniformly sampled record (dt_s > 0).
-ChannelSummary summarize_channel(std::string name, std::string unit, std::vector<double> values,
+StormChannel summarize_storm_channel(std::string name, std::string unit, std::vector<double> values,
                                  double dt_s);
 
 /// Dynamic factor and utilization of the code check in the file comment.

@@ -20,10 +20,10 @@ constexpr std::size_t kEnvelopeBins = 1500;
 constexpr double kShownVarianceFraction = 0.999;
 
 /// Display scale of a channel: tensions in kN, the rest as stored.
-double display_scale(const design::ChannelSummary& c) {
+double display_scale(const design::StormChannel& c) {
   return c.unit == "N" ? 1e-3 : 1.0;
 }
-std::string display_unit(const design::ChannelSummary& c) {
+std::string display_unit(const design::StormChannel& c) {
   return c.unit == "N" ? "kN" : c.unit;
 }
 
@@ -49,7 +49,7 @@ Series envelope(const std::vector<double>& t, const std::vector<double>& v, doub
   return s;
 }
 
-Plot time_plot(const design::StageDynamics& d, const design::ChannelSummary& c, std::size_t color) {
+Plot time_plot(const design::StageDynamics& d, const design::StormChannel& c, std::size_t color) {
   Plot p;
   p.title = c.name;
   p.x_label = "Time (s)";
@@ -71,7 +71,7 @@ Plot time_plot(const design::StageDynamics& d, const design::ChannelSummary& c, 
   return p;
 }
 
-Plot spectrum_plot(const design::ChannelSummary& c, std::size_t color) {
+Plot spectrum_plot(const design::StormChannel& c, std::size_t color) {
   Plot p;
   p.title = fmt::format("{} spectrum", c.name);
   p.x_label = "Angular frequency ω (rad/s)";
@@ -148,7 +148,7 @@ std::vector<Block> storm_blocks(const design::StageDynamics& d, const std::strin
                           "the frequency beyond which less than 1e-6 of the variance lies.",
                           1.3, std::move(spectra), 2));
   if (d.channels.size() > 4) {
-    const design::ChannelSummary& t = d.channels[4];
+    const design::StormChannel& t = d.channels[4];
     Plot series = time_plot(d, t, 3);
     series.title = fmt::format("Quasi-static fairlead tension, {}", d.most_loaded_line);
     Plot spectrum = spectrum_plot(t, 3);

@@ -69,13 +69,13 @@ TEST(StaticStage, DefaultScenarioCasesChecksAndCurves) {
   EXPECT_EQ(d.times_s.size(), 21601u);
   ASSERT_EQ(d.channels.size(), 5u);
   EXPECT_EQ(d.channels[4].name, "tension " + d.most_loaded_line);
-  for (const ChannelSummary& c : d.channels) {
+  for (const StormChannel& c : d.channels) {
     EXPECT_EQ(c.values.size(), d.times_s.size()) << c.name;
     ASSERT_TRUE(c.mpm_max.has_value()) << c.name << ": " << c.extremes_note;
     EXPECT_GT(*c.mpm_max, c.mean) << c.name;
     EXPECT_FALSE(c.spectrum_density.empty()) << c.name;
   }
-  const ChannelSummary& t = d.channels[4];
+  const StormChannel& t = d.channels[4];
   const double sf_dynamic = d.condition == "damaged" ? 1.25 : 1.67;  // the scenario's API RP 2SK factors
   EXPECT_NEAR(d.tension_utilization, *t.mpm_max * sf_dynamic / d.fairlead_mbl_N, 1e-12);
   ASSERT_TRUE(d.extreme_offset.has_value());
