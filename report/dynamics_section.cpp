@@ -142,16 +142,16 @@ std::vector<Block> storm_blocks(const design::StageDynamics& d, const std::strin
                   "MPM of the 3-h maximum (red, Gumbel). Each plotted point pair is the min and max of {} s.",
                   d.case_name, design::to_string(d.level), d.duration_s, d.seed,
                   d.output_step_s * std::max<std::size_t>(1, (d.times_s.size() + kEnvelopeBins - 1) / kEnvelopeBins)),
-      0.75, std::move(motion), 1));
+      1.25, std::move(motion), 2));
   out.emplace_back(panels(id + "-spectra",
                           "One-sided Welch spectra of the same channels (Hann window, 50 % overlap), up to "
                           "the frequency beyond which less than 1e-6 of the variance lies.",
                           1.3, std::move(spectra), 2));
   if (d.channels.size() > 4) {
     const design::StormChannel& t = d.channels[4];
-    Plot series = time_plot(d, t, 3);
+    Plot series = time_plot(d, t, 4);  // not red: the MPM line is
     series.title = fmt::format("Quasi-static fairlead tension, {}", d.most_loaded_line);
-    Plot spectrum = spectrum_plot(t, 3);
+    Plot spectrum = spectrum_plot(t, 4);
     out.emplace_back(panels(
         id + "-tension",
         fmt::format("Quasi-static fairlead tension of the most loaded line, {} (elastic catenary at the "
