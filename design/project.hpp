@@ -212,6 +212,11 @@ struct HullPontoon {
 struct HullGeometry {
   std::vector<HullColumn> columns;
   std::vector<HullPontoon> pontoons;
+  /// A WAMIT low-order panel mesh (.gdf) of the hull, body frame, resolved
+  /// relative to the project file's folder: the 3D views draw it instead of
+  /// the members (engine/hull/wamit_gdf.hpp). The members still feed the
+  /// Morison model.
+  std::optional<std::filesystem::path> panel_mesh;
 };
 
 struct Hull {
@@ -405,8 +410,21 @@ struct Criteria {
   std::optional<double> max_offset_pct_depth;  ///< %, of water depth, > 0
 };
 
+/// Riser model of a stage's safe operational zones (`stages[i].soz.model`):
+/// the catenary screening model or the FE reference (design/soz.hpp, SozModel).
+enum class StageSozModel { catenary, fe };
+
+/// How a stage computes the riser safe operational zones (`stages[i].soz`).
+/// The screening default keeps the stage report cheap (12 SCRs at 15°:
+/// 0.4 s; the FE model at 5° costs tens of seconds).
+struct StageSoz {
+  StageSozModel model = StageSozModel::catenary;
+  double step_deg = 15.0;  ///< direction step, > 0, divides 360
+};
+
 struct Stage {
   std::string name;  ///< preliminary, intermediate, advanced (DESIGN.md §2) or a user name
+  StageSoz soz;
 };
 
 /// Position of a YAML node in its file (1-based).

@@ -474,6 +474,8 @@ const EnumTable<LineModel> kLineModels = {{"catenary", LineModel::catenary}, {"f
 const EnumTable<DesignCondition> kDesignConditions = {{"normal", DesignCondition::normal},
                                                       {"extreme", DesignCondition::extreme},
                                                       {"survival", DesignCondition::survival}};
+const EnumTable<StageSozModel> kStageSozModels = {{"catenary", StageSozModel::catenary},
+                                                  {"fe", StageSozModel::fe}};
 const EnumTable<MooringCode> kMooringCodes = {{"api_rp_2sk", MooringCode::api_rp_2sk},
                                               {"dnv_os_e301", MooringCode::dnv_os_e301}};
 
@@ -694,8 +696,9 @@ void read_member_coefficients(MapReader& r, MemberCoefficients& c) {
   assign(c.added_mass, r.number("added_mass", "-", kOptional));
 }
 
-HullGeometry read_hull_geometry(MapReader& r) {
+HullGeometry read_hull_geometry(MapReader& r, const std::filesystem::path& base_folder) {
   HullGeometry g;
+  if (const auto file = r.text("panel_mesh", kOptional)) g.panel_mesh = resolve(*file, base_folder);
   r.list_of_maps("columns", kOptional, [&](MapReader& c) {
     HullColumn column;
     assign(column.center_b, c.vector<2>("center", "m", kRequired));
@@ -765,7 +768,7 @@ Hull read_hull(MapReader& r, const std::filesystem::path& base_folder) {
         [&](MapReader& d) { hull.mean_drift = read_mean_drift(d, base_folder); });
   r.map("hydrodynamics", kOptional,
         [&](MapReader& d) { hull.hydrodynamics = read_hull_hydrodynamics(d, base_folder); });
-  r.map("geometry", kOptional, [&](MapReader& g) { hull.geometry = read_hull_geometry(g); });
+  r.map("geometry", kOptional, [&](MapReader& g) { hull.geometry = read_hull_geometry(g, base_folder); });
   return hull;
 }
 
@@ -939,11 +942,15 @@ void read_project(MapReader& r, Project& p, const std::filesystem::path& base_fo
     r.list_of_maps("stages", kOptional, [&](MapReader& s) {
       Stage stage;
       assign(stage.name, s.text("name", kRequired));
+      s.map("soz", kOptional, [&](MapReader& z) {
+        assign(stage.soz.model, z.enumeration("model", kStageSozModels, kOptional));
+        assign(stage.soz.step_deg, z.number("step_deg", "deg", kOptional));
+      });
       p.stages.push_back(stage);
     });
   } else {
     r.child("stages", kOptional);  // known key, for suggestions
-    p.stages = {{"preliminary"}, {"intermediate"}, {"advanced"}};
+    p.stages = {{"preliminary", {}}, {"intermediate", {}}, {"advanced", {}}};
   }
 }
 

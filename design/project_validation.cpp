@@ -206,10 +206,13 @@ void check_member_coefficients(Reporter& r, const std::string& at, const MemberC
   at_least(r, at + ".added_mass", c.added_mass, 0.0, "", "coefficient_non_negative");
 }
 
+void check_file(Reporter& r, const std::string& at, const std::filesystem::path& file);
+
 void check_hull_geometry(Reporter& r, const HullGeometry& g) {
-  if (g.columns.empty() && g.pontoons.empty()) {
-    r.fail("hull.geometry", "hull_geometry_members", "needs at least one column or pontoon");
+  if (g.columns.empty() && g.pontoons.empty() && !g.panel_mesh) {
+    r.fail("hull.geometry", "hull_geometry_members", "needs at least one column, pontoon or a panel_mesh");
   }
+  if (g.panel_mesh) check_file(r, "hull.geometry.panel_mesh", *g.panel_mesh);
   for (std::size_t i = 0; i < g.columns.size(); ++i) {
     const HullColumn& c = g.columns[i];
     const std::string at = fmt::format("hull.geometry.columns[{}]", i);
@@ -514,9 +517,9 @@ void check_hull_hydrodynamics(Reporter& r, const Hull& hull) {
   const std::string at = "hull.hydrodynamics";
   if (h.model == HullHydrodynamicsModel::morison) {
     positive(r, at + ".strip_length", h.strip_length_m, "m", "hull_value_positive");
-    if (!hull.geometry) {
+    if (!hull.geometry || (hull.geometry->columns.empty() && hull.geometry->pontoons.empty())) {
       r.fail(at + ".model", "morison_needs_geometry",
-             "model: morison builds the members from hull.geometry, which is absent");
+             "model: morison builds the members from hull.geometry, which has none");
     }
   } else {
     check_file(r, at + ".radiation_file", h.radiation_file);
@@ -814,6 +817,15 @@ std::vector<InputIssue> check_project(const Project& project, const LineCheckTab
   check_load_cases(project, r);
   check_criteria(project, r);
   unique_names(r, project.stages, "stages", "stage", "stage_name_unique");
+  for (std::size_t i = 0; i < project.stages.size(); ++i) {
+    // The zone is a polar polygon on a uniform grid closed at 360°.
+    const double step = project.stages[i].soz.step_deg;
+    const double count = 360.0 / step;
+    if (!(step > 0.0) || std::abs(count - std::round(count)) > 1e-9 * count) {
+      r.fail(fmt::format("stages[{}].soz.step_deg", i), "soz_step_divides_360",
+             fmt::format("must be > 0 and divide 360, got {} deg", step));
+    }
+  }
   std::stable_sort(issues.begin(), issues.end(), [](const InputIssue& a, const InputIssue& b) {
     return std::pair(a.line.value_or(0), a.column.value_or(0)) <
            std::pair(b.line.value_or(0), b.column.value_or(0));

@@ -387,7 +387,8 @@ DynamicModel build_dynamic_model(const ValidatedProject& validated,
 
   DynamicModel model;
   try {
-    model.statics = run_static_case(validated, {request.load_case, std::nullopt, false});
+    model.statics = request.statics ? *request.statics
+                                    : run_static_case(validated, {request.load_case, std::nullopt, false});
   } catch (const std::invalid_argument& e) {
     if (std::string(e.what()).find("heading") != std::string::npos && environment.waves) {
       heading_error(project, environment.name, "mean drift (hull.mean_drift)", e);

@@ -90,6 +90,10 @@ struct DynamicAnalysisRequest {
   /// Coupled level: the integrator's work limit per output step (IDA
   /// gives up beyond it: a step-size collapse stops the case, not the machine).
   long coupled_max_steps_between_outputs = 500000;
+  /// The S-C static case of this load case when the caller has it already
+  /// (a stage runs every case's statics first); null: solved here. It must be
+  /// run_static_case of `load_case` with its own damaged line.
+  const StaticCaseResult* statics = nullptr;
   /// Called with the fraction done (0..1) during the dynamics; may be empty.
   std::function<void(double)> progress;
 };

@@ -500,6 +500,31 @@ SozResult compute_soz(const Project& project, const std::vector<RiserDesign>& ri
   return result;
 }
 
+OffsetCheck check_offset(const SozResult& zone, const StaticCaseResult& c, const std::string& zone_name) {
+  OffsetCheck check;
+  check.case_name = c.case_name;
+  check.condition = c.condition;
+  check.damaged_line = c.damaged_line;
+  check.offset_m = c.offset_summary.horizontal_m;
+  check.direction_deg = c.offset_summary.direction_deg;
+  check.zone = zone_name;
+  check.allowable_m = std::numeric_limits<double>::infinity();
+  for (const RiserSoz& z : zone.risers) {
+    std::vector<double> allowable;
+    for (const SozDirection& d : z.directions) allowable.push_back(d.allowable_offset_m);
+    const double a = polygon_allowable(zone.directions_deg, allowable, check.direction_deg);
+    if (a < check.allowable_m) {
+      check.allowable_m = a;
+      check.governing_riser = z.name;
+    }
+  }
+  check.margin_m = check.allowable_m - check.offset_m;
+  check.ratio = check.allowable_m > 0.0 ? check.offset_m / check.allowable_m
+                                        : std::numeric_limits<double>::infinity();
+  check.passes = check.offset_m <= check.allowable_m;
+  return check;
+}
+
 SozResult run_soz(const ValidatedProject& validated, const SozOptions& options) {
   const Project& project = validated.project;
   validate_soz_options(project, options);
@@ -558,30 +583,8 @@ SozResult run_soz(const ValidatedProject& validated, const SozOptions& options) 
   }
 
   if (!designs.empty()) {
-    for (const StaticCaseResult& c : cases) {
-      OffsetCheck check;
-      check.case_name = c.case_name;
-      check.condition = c.condition;
-      check.damaged_line = c.damaged_line;
-      check.offset_m = c.offset_summary.horizontal_m;
-      check.direction_deg = c.offset_summary.direction_deg;
-      check.zone = options.load_case ? "case" : "still-water";
-      check.allowable_m = std::numeric_limits<double>::infinity();
-      for (const RiserSoz& z : result.risers) {
-        std::vector<double> allowable;
-        for (const SozDirection& d : z.directions) allowable.push_back(d.allowable_offset_m);
-        const double a = polygon_allowable(result.directions_deg, allowable, check.direction_deg);
-        if (a < check.allowable_m) {
-          check.allowable_m = a;
-          check.governing_riser = z.name;
-        }
-      }
-      check.margin_m = check.allowable_m - check.offset_m;
-      check.ratio = check.allowable_m > 0.0 ? check.offset_m / check.allowable_m
-                                            : std::numeric_limits<double>::infinity();
-      check.passes = check.offset_m <= check.allowable_m;
-      result.offset_checks.push_back(check);
-    }
+    for (const StaticCaseResult& c : cases)
+      result.offset_checks.push_back(check_offset(result, c, options.load_case ? "case" : "still-water"));
     if (!options.load_case && !cases.empty()) {
       result.notes.push_back(
           "offset check against the still-water zone (no current on the risers, no mean "

@@ -47,6 +47,7 @@
 #include <vector>
 
 #include "design/riser_model.hpp"
+#include "design/static_case.hpp"
 #include "design/validated_project.hpp"
 #include "engine/environment/current_profile.hpp"
 
@@ -177,6 +178,12 @@ SozResult compute_soz(const Project& project, const std::vector<RiserDesign>& ri
 
 /// Zones of the project's risers, platform intersection and offset check.
 SozResult run_soz(const ValidatedProject& project, const SozOptions& options);
+
+/// One static case's horizontal offset against the platform zone of `zone`
+/// (`zone_name` says which zone it is: "still-water" or "case"). Used by
+/// run_soz and by stages that already hold their static cases.
+OffsetCheck check_offset(const SozResult& zone, const StaticCaseResult& static_case,
+                         const std::string& zone_name);
 
 /// Allowable offset of a polar polygon (grid `directions_deg`, uniform step)
 /// in `direction_deg`, by linear interpolation in angle.

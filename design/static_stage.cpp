@@ -5,6 +5,8 @@
 #include <cmath>
 #include <numbers>
 
+#include <fmt/format.h>
+
 #include "design/mooring_model.hpp"
 #include "engine/analysis/line_array.hpp"
 #include "engine/common/solver_error.hpp"
@@ -74,7 +76,69 @@ RestoringCurve restoring_curve(LineArrayModel& model, double direction_deg, doub
   return curve;
 }
 
+/// Still-water zones of every riser with the stage's model and step: no
+/// current, no mean heave or rotations, the normal design condition (the
+/// strictest design factor), as `spiral soz` without --case.
+SozResult stage_soz(const Project& project, const StageSoz& settings) {
+  SozOptions options;
+  options.step_deg = settings.step_deg;
+  options.model = settings.model == StageSozModel::fe ? SozModel::fe : SozModel::catenary;
+  options.offset_check = false;  // the stage holds its static cases already
+  std::vector<RiserDesign> designs;
+  for (const Riser& riser : project.risers) designs.push_back(riser_design(project, riser));
+  return compute_soz(project, designs, SozConditions{}, options);
+}
+
+/// Keeps the failing check of largest utilization (or the largest overall
+/// while nothing fails).
+void consider(GoverningCheck& governing, bool& any, GoverningCheck candidate) {
+  const bool better = !any || (governing.pass && !candidate.pass) ||
+                      (governing.pass == candidate.pass && candidate.utilization > governing.utilization);
+  if (better) governing = std::move(candidate);
+  any = true;
+}
+
+GoverningCheck governing_check(const StaticStageResults& r) {
+  GoverningCheck g;
+  bool any = false;
+  for (std::size_t i = 0; i < r.checks.size(); ++i) {
+    const CaseCheck& c = r.checks[i];
+    if (c.governing_line >= 0) {
+      const LineCodeCheck& l = c.lines[static_cast<std::size_t>(c.governing_line)];
+      consider(g, any, {c.case_name, "mooring code", l.line, "T·SF/MBL", l.utilization, l.pass});
+    }
+    if (c.offset_limit_m) {
+      consider(g, any, {c.case_name, "offset limit", "", "offset/limit", c.offset_m / *c.offset_limit_m,
+                        c.offset_pass});
+    }
+    for (const RiserStaticsRow& riser : r.cases[i].risers) {
+      consider(g, any, {c.case_name, "riser criteria", riser.name, riser.governing_criterion,
+                        riser.utilization, riser.passes});
+    }
+    if (c.soz) {
+      consider(g, any, {c.case_name, "riser SOZ", c.soz->governing_riser, "static offset/allowable",
+                        c.soz->ratio, c.soz->passes});
+    }
+  }
+  if (r.dynamics && !r.dynamics->most_loaded_line.empty()) {
+    const StageDynamics& d = *r.dynamics;
+    consider(g, any, {d.case_name, "dynamic tension", d.most_loaded_line, "MPM tension·SF/MBL",
+                      d.tension_utilization, d.tension_pass});
+    if (d.extreme_offset) {
+      consider(g, any, {d.case_name, "extreme offset (SOZ)", d.extreme_offset->governing_riser,
+                        "MPM offset/allowable", d.extreme_offset->ratio, d.extreme_offset->passes});
+    }
+  }
+  return g;
+}
+
 }  // namespace
+
+StageSoz preliminary_soz_settings(const Project& project) {
+  for (const Stage& stage : project.stages)
+    if (stage.name == "preliminary") return stage.soz;
+  return StageSoz{};
+}
 
 double mooring_safety_factor(const MooringCriteria& criteria, bool damaged) {
   if (criteria.code == MooringCode::dnv_os_e301) {
@@ -85,11 +149,15 @@ double mooring_safety_factor(const MooringCriteria& criteria, bool damaged) {
   return damaged ? f.damaged_quasi_static : f.intact_quasi_static;
 }
 
-StaticStageResults run_static_stage(const ValidatedProject& validated) {
+StaticStageResults run_static_stage(const ValidatedProject& validated,
+                                    const StaticStageOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   const Project& project = validated.project;
   StaticStageResults out;
   out.code = to_string(project.criteria.mooring.code);
+  // Read first: a bad mesh file fails the stage before its analyses run.
+  if (project.hull.geometry && project.hull.geometry->panel_mesh)
+    out.hull_panels_b = engine::full_surface(engine::read_gdf(*project.hull.geometry->panel_mesh));
 
   LineArrayModel model = build_mooring_model(project);
   out.pretension = run_statics(model, engine::Vector6d::Zero());
@@ -114,10 +182,17 @@ StaticStageResults run_static_stage(const ValidatedProject& validated) {
     request.load_case = load_case.name;
     out.cases.push_back(run_static_case(validated, request, &rest_solutions));
   }
+  if (options.soz && !project.risers.empty()) out.soz = stage_soz(project, preliminary_soz_settings(project));
   double worst = -1.0;
   for (std::size_t i = 0; i < out.cases.size(); ++i) {
     out.checks.push_back(check_case(project, out.cases[i]));
-    const CaseCheck& check = out.checks.back();
+    CaseCheck& check = out.checks.back();
+    if (out.soz && i > 0) {  // still water sits at zero offset: inside any zone
+      check.soz = check_offset(*out.soz, out.cases[i], "still-water");
+      out.soz->offset_checks.push_back(*check.soz);
+      check.soz_pass = check.soz->passes;
+      check.pass = check.pass && check.soz_pass;
+    }
     out.pass = out.pass && check.pass;
     if (check.governing_line >= 0 &&
         check.lines[static_cast<std::size_t>(check.governing_line)].utilization > worst) {
@@ -129,6 +204,25 @@ StaticStageResults run_static_stage(const ValidatedProject& validated) {
   for (const double direction_deg : {0.0, 90.0}) {
     out.restoring.push_back(restoring_curve(model, direction_deg, project.site.depth_m));
   }
+
+  // The storm of the governing load case (still water governs only when the
+  // environment adds little: then the first load case).
+  if (options.dynamics && !project.load_cases.empty()) {
+    if (project.hull.hydrodynamics) {
+      const std::size_t index = out.worst_case > 0 ? static_cast<std::size_t>(out.worst_case) : 1;
+      const std::string why =
+          out.worst_case > 0
+              ? fmt::format("the governing load case of the static code check (utilization {:.3f})", worst)
+              : std::string("the first load case (still water governs the static code check)");
+      out.dynamics = run_stage_dynamics(validated, out.cases[index], AnalysisLevel::semi_coupled_enhanced,
+                                        out.soz ? &*out.soz : nullptr, why);
+      out.pass = out.pass && out.dynamics->tension_pass &&
+                 (!out.dynamics->extreme_offset || out.dynamics->extreme_offset->passes);
+    } else {
+      out.notes.push_back("no S-C storm: the project gives no hull.hydrodynamics for the hull's dynamics");
+    }
+  }
+  out.governing = governing_check(out);
   out.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
 }

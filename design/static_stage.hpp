@@ -7,6 +7,13 @@
 //  - restoring-force curves of the line array along 0° and 90°;
 //  - the mooring code check per line and case, and the offset limit check.
 //
+// With risers, the stage also computes the riser safe operational zones
+// (soz.hpp) in still water with the stage's model and step (stages[i].soz:
+// catenary screening at 15° unless the project asks otherwise) and checks
+// every load case's static offset against the platform zone. With hull
+// hydrodynamics, it runs the enhanced S-C 3-h storm of the governing load
+// case (stage_dynamics.hpp: dynamic tension and extreme offset checks).
+//
 // Code check (DESIGN.md §6). API RP 2SK, quasi-static: a line passes when
 // T_max · SF ≤ MBL, SF = intact_quasi_static (intact) or damaged_quasi_static
 // (one line removed), i.e. code utilization T_max · SF / MBL ≤ 1. DNV-OS-E301
@@ -19,9 +26,12 @@
 #include <string>
 #include <vector>
 
+#include "design/soz.hpp"
+#include "design/stage_dynamics.hpp"
 #include "design/static_case.hpp"
 #include "design/statics_study.hpp"
 #include "design/validated_project.hpp"
+#include "engine/hull/wamit_gdf.hpp"
 
 namespace spiral::design {
 
@@ -54,6 +64,9 @@ struct CaseCheck {
   bool offset_pass = true;
   bool lines_pass = true;
   bool risers_pass = true;  ///< every riser meets its criteria (StaticCaseResult::risers)
+  /// Static offset against the platform SOZ (load cases, when a zone exists).
+  std::optional<OffsetCheck> soz;
+  bool soz_pass = true;
   bool pass = true;
   /// Index into `lines` of the most utilized line (-1 when there is none).
   int governing_line = -1;
@@ -67,6 +80,23 @@ struct LineStrength {
   std::vector<std::string> segment_types;
 };
 
+/// The check that decides the verdict: the failing check of largest
+/// utilization, or the largest utilization overall when every check passes.
+struct GoverningCheck {
+  std::string case_name;
+  std::string check;      ///< "mooring code", "offset limit", "riser criteria", "riser SOZ",
+                          ///< "dynamic tension", "extreme offset (SOZ)"
+  std::string item;       ///< line or riser name; empty for the offset limit
+  std::string criterion;  ///< riser criterion, or what the utilization measures
+  double utilization = 0.0;
+  bool pass = true;
+};
+
+struct StaticStageOptions {
+  bool soz = true;       ///< the SOZ and offset check (projects with risers)
+  bool dynamics = true;  ///< the S-C storm (projects with hull hydrodynamics)
+};
+
 struct StaticStageResults {
   std::string stage = "preliminary";
   std::string code;                     ///< mooring code name (to_string(MooringCode))
@@ -76,7 +106,14 @@ struct StaticStageResults {
   std::vector<RestoringCurve> restoring;  ///< 0° and 90°
   std::vector<LineStrength> strengths;    ///< project line order
   int worst_case = 0;  ///< index into `cases` of the largest code utilization
-  bool pass = true;    ///< every case passes
+  /// Still-water zones and the load cases' static offsets (offset_checks) against them.
+  std::optional<SozResult> soz;
+  std::optional<StageDynamics> dynamics;  ///< the S-C storm of the governing load case
+  std::vector<std::string> notes;         ///< what the stage left out and why
+  /// The hull's panel mesh (hull.geometry.panel_mesh), full surface, body frame; empty without one.
+  std::vector<engine::Panel> hull_panels_b;
+  GoverningCheck governing;
+  bool pass = true;    ///< every case passes, and the dynamic checks
   double wall_time_s = 0.0;
 };
 
@@ -88,7 +125,12 @@ inline constexpr int kRestoringSteps = 20;
 double mooring_safety_factor(const MooringCriteria& criteria, bool damaged);
 
 /// Runs the static stage. Throws InputError / engine::SolverError as
-/// run_static_case does (the message names the case and line).
-StaticStageResults run_static_stage(const ValidatedProject& project);
+/// run_static_case does (the message names the case and line), and
+/// engine::FileFormatError for a malformed panel mesh (before any analysis).
+StaticStageResults run_static_stage(const ValidatedProject& project,
+                                    const StaticStageOptions& options = {});
+
+/// The SOZ settings of the project's preliminary stage (defaults when it lists none).
+StageSoz preliminary_soz_settings(const Project& project);
 
 }  // namespace spiral::design

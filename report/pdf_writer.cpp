@@ -234,7 +234,7 @@ class Layout {
     const double font = kTableFont * scale;  // a wide table shrinks its type to fit the column
 
     // Caption, header, rows; the header repeats on a new page.
-    set_font(cr_, 8.5, false);
+    set_font(cr_, 8.5, true);  // measured in the bold face it is drawn in
     const auto caption =
         wrap(cr_, fmt::format("Table {}. {}", table_number_, t.caption), kContentW);
     ensure(caption.size() * 11.0 + 2 * kRowH + 8);

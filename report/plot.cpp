@@ -91,6 +91,32 @@ void axes(cairo_t* cr, const Frame& f, const std::vector<double>& xt, const std:
   draw_text_vertical(cr, f.x0 - widest - 8 - font * 0.3, f.y0 + f.h / 2, yl);
 }
 
+/// A filled marker of radius r (pt) centred on (x, y).
+void draw_marker(cairo_t* cr, Marker m, double x, double y, double r) {
+  switch (m) {
+    case Marker::circle:
+      cairo_arc(cr, x, y, r, 0, 2 * M_PI);
+      break;
+    case Marker::square:
+      cairo_rectangle(cr, x - r * 0.9, y - r * 0.9, 1.8 * r, 1.8 * r);
+      break;
+    case Marker::triangle:
+      cairo_move_to(cr, x, y - 1.25 * r);
+      cairo_line_to(cr, x + 1.1 * r, y + 0.8 * r);
+      cairo_line_to(cr, x - 1.1 * r, y + 0.8 * r);
+      cairo_close_path(cr);
+      break;
+    case Marker::diamond:
+      cairo_move_to(cr, x, y - 1.3 * r);
+      cairo_line_to(cr, x + 1.1 * r, y);
+      cairo_line_to(cr, x, y + 1.3 * r);
+      cairo_line_to(cr, x - 1.1 * r, y);
+      cairo_close_path(cr);
+      break;
+  }
+  cairo_fill(cr);
+}
+
 void path_series(cairo_t* cr, const Frame& f, const Series& s) {
   for (std::size_t i = 0; i < s.x.size(); ++i) {
     const double X = f.px(s.x[i]), Y = f.py(s.y[i]);
@@ -140,10 +166,7 @@ void legend(cairo_t* cr, const Frame& f,
         cairo_stroke(cr);
         dash(cr, false, 1.0);
       }
-      if (s.markers) {
-        cairo_arc(cr, ix + 9, iy, 2.2, 0, 2 * M_PI);
-        cairo_fill(cr);
-      }
+      if (s.markers) draw_marker(cr, s.marker, ix + 9, iy, 2.2);
       set_color(cr, {0.1, 0.1, 0.12});
       draw_text(cr, ix + 22, iy + font * 0.32, entries[i].first);
     } else {
@@ -287,10 +310,7 @@ void draw_plot(cairo_t* cr, const Plot& plot, double width, double height, const
       dash(cr, false, 1.0);
     }
     if (s.markers) {
-      for (std::size_t i = 0; i < s.x.size(); ++i) {
-        cairo_arc(cr, f.px(s.x[i]), f.py(s.y[i]), 2.4, 0, 2 * M_PI);
-        cairo_fill(cr);
-      }
+      for (std::size_t i = 0; i < s.x.size(); ++i) draw_marker(cr, s.marker, f.px(s.x[i]), f.py(s.y[i]), 2.4);
     }
   }
   set_font(cr, font * 0.85, false);

@@ -16,6 +16,8 @@
 
 namespace spiral::report {
 
+enum class Marker { circle, square, triangle, diamond };
+
 struct Series {
   std::string label;  ///< empty: not in the legend
   std::vector<double> x, y;
@@ -24,6 +26,7 @@ struct Series {
   bool dashed = false;
   bool markers = false;
   bool step = false;  ///< piecewise constant: y[i] holds from x[i] to x[i+1]
+  Marker marker = Marker::circle;
 };
 
 /// A circle in data units (with equal axes: an allowable-offset circle).

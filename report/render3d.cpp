@@ -112,7 +112,9 @@ struct Bounds {
 
 std::vector<Vector3d> hull_points_g(const SceneHull& hull) {
   std::vector<Vector3d> body;
-  if (hull.geometry) {
+  for (const engine::Panel& panel : hull.panels_b)
+    for (const Vector3d& v : panel) body.push_back(v);
+  if (body.empty() && hull.geometry) {
     for (const auto& c : hull.geometry->columns) {
       const double r = c.diameter_m / 2;
       for (const double z : {c.z_bottom_m, c.z_top_m}) {
@@ -188,6 +190,20 @@ void draw_hull(const SceneHull& hull) {
   auto g = [&](const Vector3d& b) -> Vector3d {
     return hull.reference_point_g + hull.rotation * b;
   };
+  if (!hull.panels_b.empty()) {
+    // Flat shading per panel; the normal from the diagonals also holds for a
+    // triangle written with a repeated vertex (two-sided lighting is on, so
+    // the mesh's normal convention does not matter).
+    glBegin(GL_QUADS);
+    for (const engine::Panel& p : hull.panels_b) {
+      const Vector3d n = (p[2] - p[0]).cross(p[3] - p[1]);
+      if (n.norm() < 1e-12) continue;  // a degenerate panel has no face to draw
+      normal(hull.rotation * n.normalized());
+      for (const Vector3d& v : p) vertex(g(v));
+    }
+    glEnd();
+    return;
+  }
   if (hull.geometry && (!hull.geometry->columns.empty() || !hull.geometry->pontoons.empty())) {
     for (const auto& c : hull.geometry->columns) {
       draw_cylinder(g({c.center_b.x(), c.center_b.y(), c.z_bottom_m}),

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "design/project.hpp"
+#include "engine/hull/wamit_gdf.hpp"
 #include "report/image.hpp"
 
 namespace spiral::report {
@@ -27,6 +28,9 @@ struct SceneLine {
 /// The hull: member geometry in the body frame and the body pose.
 struct SceneHull {
   std::optional<design::HullGeometry> geometry;  ///< absent: a box (below)
+  /// Panels of the project's panel mesh (body frame, full surface): drawn as
+  /// the hull instead of the members or the box when not empty.
+  std::vector<engine::Panel> panels_b;
   Eigen::Vector3d box_size_m{60.0, 60.0, 40.0};  ///< box when no geometry: x, y, z extent
   double box_bottom_b_m = -25.0;                 ///< body z of the box bottom
   Eigen::Vector3d reference_point_g = Eigen::Vector3d::Zero();

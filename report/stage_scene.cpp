@@ -7,7 +7,8 @@
 namespace spiral::report {
 
 Scene stage_scene(const design::Project& project, const design::StaticCaseResult& result,
-                  const std::vector<design::LineStrength>& strengths, double safety_factor) {
+                  const std::vector<design::LineStrength>& strengths, double safety_factor,
+                  const std::vector<engine::Panel>& hull_panels_b) {
   Scene scene;
   scene.depth_m = project.site.depth_m;
   scene.value_label = "Utilization";
@@ -16,6 +17,7 @@ Scene stage_scene(const design::Project& project, const design::StaticCaseResult
   scene.hull.reference_point_g = pose.reference_point_g;
   scene.hull.rotation = pose.rotation;
   scene.hull.geometry = project.hull.geometry;
+  scene.hull.panels_b = hull_panels_b;
   if (!project.hull.geometry) {
     // A box of the waterplane area and the draft V / A_wp, with a freeboard of half the draft.
     const double area = project.hull.waterplane_area_m2.value_or(2500.0);

@@ -13,8 +13,10 @@
 
 namespace spiral::report {
 
-/// `safety_factor` is the case's mooring safety factor (design::CaseCheck).
+/// `safety_factor` is the case's mooring safety factor (design::CaseCheck);
+/// `hull_panels_b`: the hull's panel mesh (StaticStageResults::hull_panels_b), drawn when not empty.
 Scene stage_scene(const design::Project& project, const design::StaticCaseResult& result,
-                  const std::vector<design::LineStrength>& strengths, double safety_factor);
+                  const std::vector<design::LineStrength>& strengths, double safety_factor,
+                  const std::vector<engine::Panel>& hull_panels_b = {});
 
 }  // namespace spiral::report

@@ -10,6 +10,9 @@
 #include "report/plot.hpp"
 #include "report/render3d.hpp"
 #include "report/stage_scene.hpp"
+#include "report/table_cells.hpp"
+#include "report/soz_section.hpp"
+#include "report/dynamics_section.hpp"
 
 namespace spiral::report {
 
@@ -17,22 +20,6 @@ namespace {
 
 constexpr double kRadToDeg = 180.0 / std::numbers::pi;
 constexpr double kN = 1e-3;  // N -> kN
-
-TableCell num(double value, int decimals, double scale = 1.0) {
-  return {fmt::format("{:.{}f}", value * scale, decimals), value * scale, CellStatus::none};
-}
-TableCell text(std::string s) {
-  return {std::move(s), std::nullopt, CellStatus::none};
-}
-TableCell verdict(bool pass) {
-  return {pass ? "PASS" : "FAIL", std::nullopt, pass ? CellStatus::pass : CellStatus::fail};
-}
-
-std::string slug(std::string s) {
-  for (char& c : s)
-    c = std::isalnum(static_cast<unsigned char>(c)) ? static_cast<char>(std::tolower(c)) : '-';
-  return s;
-}
 
 std::string case_label(const design::StaticCaseResult& c) {
   return c.damaged_line ? fmt::format("{} (damaged: {})", c.case_name, *c.damaged_line)
@@ -43,7 +30,7 @@ Figure view_figure(const design::Project& project, const design::StaticStageResu
                    std::size_t case_index, ViewKind kind, const StaticStageReportOptions& options) {
   const design::StaticCaseResult& result = r.cases[case_index];
   const Scene scene =
-      stage_scene(project, result, r.strengths, r.checks[case_index].safety_factor);
+      stage_scene(project, result, r.strengths, r.checks[case_index].safety_factor, r.hull_panels_b);
   ViewOptions view;
   view.width = options.view_width;
   view.height = options.view_height;
@@ -73,7 +60,9 @@ Figure view_figure(const design::Project& project, const design::StaticStageResu
   return f;
 }
 
-Section model_summary(const design::ValidatedProject& vp, const design::StaticStageResults& r) {
+}  // namespace
+
+Section model_summary_section(const design::ValidatedProject& vp, const std::string& code) {
   const design::Project& p = vp.project;
   Section s{"Model summary", {}, true};
   KeyValues kv;
@@ -97,10 +86,14 @@ Section model_summary(const design::ValidatedProject& vp, const design::StaticSt
                                                            p.hull.geometry->columns.size(),
                                                            p.hull.geometry->pontoons.size())
                                              : std::string("none given (drawn as a box)"));
+  if (p.hull.geometry && p.hull.geometry->panel_mesh) {
+    kv.items.emplace_back("Hull panel mesh", fmt::format("{} (drawn as the hull in the 3D views)",
+                                                         p.hull.geometry->panel_mesh->filename().string()));
+  }
   kv.items.emplace_back(
       "Mooring", fmt::format("{} lines, {} risers", p.mooring.lines.size(), p.risers.size()));
   kv.items.emplace_back("Mooring code",
-                        fmt::format("{}: SF intact {:.2f}, damaged {:.2f} (quasi-static)", r.code,
+                        fmt::format("{}: SF intact {:.2f}, damaged {:.2f} (quasi-static)", code,
                                     design::mooring_safety_factor(p.criteria.mooring, false),
                                     design::mooring_safety_factor(p.criteria.mooring, true)));
   if (p.criteria.max_offset_pct_depth) {
@@ -163,7 +156,7 @@ Section model_summary(const design::ValidatedProject& vp, const design::StaticSt
   return s;
 }
 
-Section load_cases(const design::Project& p) {
+Section load_cases_section(const design::Project& p) {
   Section s{"Load cases", {}, true};
   s.blocks.emplace_back(
       Paragraph{"Headings are directions of propagation, degrees counter-clockwise from global +x. "
@@ -192,6 +185,8 @@ Section load_cases(const design::Project& p) {
   s.blocks.emplace_back(t);
   return s;
 }
+
+namespace {
 
 Figure profile_figure(const design::StaticsResult& pre, const design::StaticStageResults& r,
                       const design::Project& p) {
@@ -596,58 +591,89 @@ Section stiffness_section(const design::StaticStageResults& r, const design::Pro
 
 }  // namespace
 
-ReportDocument static_stage_report(const design::ValidatedProject& vp,
-                                   const design::StaticStageResults& r, const ReportInfo& info,
-                                   const StaticStageReportOptions& options) {
-  const design::Project& p = vp.project;
+ReportDocument stage_document(const design::Project& p, const ReportInfo& info, const std::string& stage,
+                              const std::string& code, const std::string& wall_time,
+                              const design::SozResult* soz) {
   ReportDocument doc;
-  std::string stage = r.stage;
-  if (!stage.empty())
-    stage[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(stage[0])));
-  doc.title.title = stage + " stage report";
-  doc.title.subtitle = "Static analyses: pretensions, static cases, mooring code check";
   doc.title.project = p.name;
   doc.title.description = p.description.value_or("");
   doc.title.facts = {{"Project file", info.project_file},
                      {"Date", info.date},
                      {"spiral version", info.version},
                      {"Model hash", info.model_hash + " (FNV-1a 64 of the project file)"},
-                     {"Stage", r.stage},
-                     {"Mooring code", r.code},
-                     {"Analysis wall time", fmt::format("{:.3f} s", r.wall_time_s)}};
-  const auto& wc = r.checks[static_cast<std::size_t>(r.worst_case)];
-  const double worst_util = wc.governing_line >= 0
-                                ? wc.lines[static_cast<std::size_t>(wc.governing_line)].utilization
-                                : 0.0;
-  int failed = 0, failed_lines = 0, failed_offset = 0, failed_risers = 0;
+                     {"Stage", stage},
+                     {"Mooring code", code},
+                     {"Analysis wall time", wall_time}};
+  if (soz) {
+    doc.title.facts.emplace_back("Riser SOZ", fmt::format("{} model, {:g}° step, still water",
+                                                          design::to_string(soz->options.model),
+                                                          soz->options.step_deg));
+  }
+  doc.running_header = fmt::format("spiral — {}", p.name);
+  doc.running_footer =
+      fmt::format("{} · model {} · spiral {} · {}", info.project_file, info.model_hash, info.version, info.date);
+  return doc;
+}
+
+ReportDocument static_stage_report(const design::ValidatedProject& vp,
+                                   const design::StaticStageResults& r, const ReportInfo& info,
+                                   const StaticStageReportOptions& options) {
+  const design::Project& p = vp.project;
+  ReportDocument doc = stage_document(p, info, r.stage, r.code, fmt::format("{:.3f} s", r.wall_time_s),
+                                      r.soz ? &*r.soz : nullptr);
+  std::string stage = r.stage;
+  if (!stage.empty())
+    stage[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(stage[0])));
+  doc.title.title = stage + " stage report";
+  doc.title.subtitle = r.dynamics ? "Static cases, mooring code check, riser SOZ, S-C storm"
+                                  : "Static analyses: pretensions, static cases, mooring code check";
+  if (r.dynamics) {
+    doc.title.facts.emplace_back("S-C storm", fmt::format("{}, {} ({:.0f} s, {:.2f} s wall)",
+                                                          design::to_string(r.dynamics->level),
+                                                          r.dynamics->case_name, r.dynamics->duration_s,
+                                                          r.dynamics->wall_s));
+  }
+  for (const std::string& note : r.notes) doc.title.facts.emplace_back("Note", note);
+  int failed = 0, failed_lines = 0, failed_offset = 0, failed_risers = 0, failed_soz = 0;
   for (const auto& c : r.checks) {
     failed += c.pass ? 0 : 1;
     failed_lines += c.lines_pass ? 0 : 1;
     failed_offset += c.offset_pass ? 0 : 1;
     failed_risers += c.risers_pass ? 0 : 1;
+    failed_soz += c.soz_pass ? 0 : 1;
+  }
+  const design::GoverningCheck& g = r.governing;
+  const std::string governing =
+      fmt::format("{}{}{}, utilization {:.3f} in {}", g.check, g.item.empty() ? "" : " " + g.item,
+                  g.criterion.empty() ? "" : " " + g.criterion, g.utilization, g.case_name);
+  std::string storm;
+  if (r.dynamics) {
+    const bool storm_pass = r.dynamics->tension_pass &&
+                            (!r.dynamics->extreme_offset || r.dynamics->extreme_offset->passes);
+    storm = fmt::format("; S-C storm of {}: {}", r.dynamics->case_name, storm_pass ? "PASS" : "FAIL");
   }
   doc.title.pass = r.pass;
   doc.title.verdict =
-      r.pass
-          ? fmt::format(
-                "PASS — all {} cases meet {}, the offset limit and the riser criteria; largest "
-                "mooring utilization {:.3f} ({}, {})",
-                r.checks.size(), r.code, worst_util,
-                wc.governing_line >= 0 ? wc.lines[static_cast<std::size_t>(wc.governing_line)].line
-                                       : "–",
-                wc.case_name)
-          : fmt::format("FAIL — {} of {} cases fail (mooring code: {}, offset limit: {}, riser "
-                        "criteria: {}); largest mooring utilization {:.3f} ({})",
-                        failed, r.checks.size(), failed_lines, failed_offset, failed_risers, worst_util,
-                        wc.case_name);
-  doc.running_header = fmt::format("spiral — {}", p.name);
-  doc.running_footer = fmt::format("{} · model {} · spiral {} · {}", info.project_file,
-                                   info.model_hash, info.version, info.date);
-  doc.sections.push_back(model_summary(vp, r));
-  doc.sections.push_back(load_cases(p));
+      r.pass ? fmt::format("PASS — all {} cases meet {}, the offset limit, the riser criteria{}{}; largest "
+                           "utilization: {}",
+                           r.checks.size(), r.code, r.soz ? " and the riser SOZ" : "", storm, governing)
+             : fmt::format("FAIL — {} of {} cases fail (mooring code: {}, offset limit: {}, riser criteria: "
+                           "{}{}){}; governing failing check: {}",
+                           failed, r.checks.size(), failed_lines, failed_offset, failed_risers,
+                           r.soz ? fmt::format(", riser SOZ: {}", failed_soz) : std::string(), storm, governing);
+  doc.sections.push_back(model_summary_section(vp, r.code));
+  doc.sections.push_back(load_cases_section(p));
   doc.sections.push_back(pretension_section(vp, r, options));
   doc.sections.push_back(results_section(vp, r, options));
   if (!p.risers.empty()) doc.sections.push_back(riser_section(r));
+  if (r.soz) {
+    std::optional<double> limit;
+    if (p.criteria.max_offset_pct_depth) limit = *p.criteria.max_offset_pct_depth / 100.0 * p.site.depth_m;
+    std::vector<design::OffsetCheck> extremes;
+    if (r.dynamics && r.dynamics->extreme_offset) extremes.push_back(*r.dynamics->extreme_offset);
+    doc.sections.push_back(soz_section(*r.soz, extremes, limit));
+  }
+  if (r.dynamics) doc.sections.push_back(dynamics_section(*r.dynamics, r.code));
   doc.sections.push_back(stiffness_section(r, p));
   return doc;
 }

@@ -25,6 +25,18 @@ struct StaticStageReportOptions {
   int view_height = 1200;
 };
 
+/// Site, hull, line types, lines and risers (`code`: the mooring code's name).
+Section model_summary_section(const design::ValidatedProject& project, const std::string& code);
+/// The load cases and their environments.
+Section load_cases_section(const design::Project& project);
+
+/// A stage report's frame: the title page's facts (project file, date,
+/// version, model hash, stage, code, wall time, SOZ model), running header and
+/// footer; the caller adds the title, verdict and sections.
+ReportDocument stage_document(const design::Project& project, const ReportInfo& info, const std::string& stage,
+                              const std::string& code, const std::string& wall_time,
+                              const design::SozResult* soz);
+
 /// Builds the document (renders the 3D views). Throws std::runtime_error
 /// when a view cannot be rendered.
 ReportDocument static_stage_report(const design::ValidatedProject& project,

@@ -102,6 +102,33 @@ TEST(Render3d, SameInputRendersByteIdenticalImages) {
   }
 }
 
+// A panel-mesh hull (SceneHull::panels_b) is drawn where its panels project,
+// in the hull's warm colour, and nothing is there without it.
+TEST(Render3d, PanelMeshHullIsDrawnWhereItProjects) {
+  const Eigen::Vector3d c(500.0, 250.0, -50.0);  // a 100 m cube, far from the default box at the origin
+  const double h = 50.0;
+  const auto v = [&](double sx, double sy, double sz) { return Eigen::Vector3d(c + h * Eigen::Vector3d(sx, sy, sz)); };
+  Scene with = known_scene();
+  with.hull.panels_b = {{v(-1, -1, 1), v(1, -1, 1), v(1, 1, 1), v(-1, 1, 1)},      // top
+                        {v(-1, -1, -1), v(-1, 1, -1), v(1, 1, -1), v(1, -1, -1)},  // bottom
+                        {v(-1, -1, -1), v(1, -1, -1), v(1, -1, 1), v(-1, -1, 1)},
+                        {v(1, -1, -1), v(1, 1, -1), v(1, 1, 1), v(1, -1, 1)},
+                        {v(1, 1, -1), v(-1, 1, -1), v(-1, 1, 1), v(1, 1, 1)},
+                        {v(-1, 1, -1), v(-1, -1, -1), v(-1, -1, 1), v(-1, 1, 1)}};
+  const double m_per_px = 2.0 * kHalfWidth_m / kWidth;
+  const int px = static_cast<int>(std::floor(kWidth / 2.0 + c.x() / m_per_px));
+  const int py = static_cast<int>(std::floor(kHeight / 2.0 - c.y() / m_per_px));
+  const Image drawn = render_view(with, plan_camera(), options());
+  const Image bare = render_view(known_scene(), plan_camera(), options());
+  const std::uint8_t* hull = drawn.at(px, py);
+  const std::uint8_t* background = bare.at(px, py);
+  // Warm (red > green > blue, by a margin lighting cannot close) where the
+  // cube is; the sea/seabed background there is cool (blue >= red).
+  EXPECT_GT(hull[0], hull[1] + 20) << int(hull[0]) << "," << int(hull[1]) << "," << int(hull[2]);
+  EXPECT_GT(hull[1], hull[2] + 40) << int(hull[1]) << "," << int(hull[2]);
+  EXPECT_GE(background[2], background[0]) << int(background[0]) << "," << int(background[2]);
+}
+
 TEST(Render3d, RejectsImpossibleSizes) {
   ViewOptions o = options();
   o.width = 5;
