@@ -399,6 +399,18 @@ void validate_soz_options(const Project& project, const SozOptions& o) {
     }
   }
   if (o.load_case) find_load_case(project, *o.load_case);
+  if (o.extreme) {
+    if (!(o.extreme->duration_s > 0.0)) {
+      throw command_line_error(project, "--duration",
+                               fmt::format("must be > 0 s, got {} s", o.extreme->duration_s),
+                               "soz_duration_positive");
+    }
+    if (!o.offset_check && !o.load_case) {
+      throw command_line_error(project, "--extreme",
+                               "the extreme offsets are part of the offset check: drop --no-check",
+                               "soz_extreme_needs_check");
+    }
+  }
 }
 
 SozResult compute_soz(const Project& project, const std::vector<RiserDesign>& risers,
@@ -497,102 +509,6 @@ SozResult compute_soz(const Project& project, const std::vector<RiserDesign>& ri
   }
   if (risers.empty()) result.notes.push_back("the project has no risers: no SOZ");
   result.zone_wall_s = seconds_since(start);
-  return result;
-}
-
-SozResult run_soz(const ValidatedProject& validated, const SozOptions& options) {
-  const Project& project = validated.project;
-  validate_soz_options(project, options);
-  SozConditions conditions;
-  conditions.condition = options.condition;
-  std::vector<OffsetCheck> checks;
-  std::vector<std::string> notes;
-  const auto check_start = std::chrono::steady_clock::now();
-  // Static equilibria of the load cases: the offsets to check, and (with
-  // --case) the mean heave/rotations the zone is computed at.
-  std::vector<StaticCaseResult> cases;
-  if (options.load_case) {
-    cases.push_back(run_static_case(validated, {options.load_case, std::nullopt, false}));
-  } else if (options.offset_check) {
-    RestSolutionCache rest_solutions;  // cases sharing an environment solve its lines once
-    for (const LoadCase& c : project.load_cases)
-      cases.push_back(run_static_case(validated, {c.name, std::nullopt, false}, &rest_solutions));
-  }
-  const double check_wall_s = seconds_since(check_start);
-  if (options.load_case) {
-    const StaticCaseResult& c = cases.front();
-    const LoadCase& lc =
-        *std::find_if(project.load_cases.begin(), project.load_cases.end(),
-                      [&](const LoadCase& l) { return l.name == *options.load_case; });
-    const Environment& env =
-        *std::find_if(project.environments.begin(), project.environments.end(),
-                      [&](const Environment& e) { return e.name == lc.environment; });
-    conditions.name = c.case_name;
-    conditions.heave_m = c.offset(2);
-    conditions.rotation_rad = c.offset.tail<3>();
-    conditions.condition = lc.condition;
-    conditions.current = current_profile_of(env);
-  }
-
-  std::vector<RiserDesign> designs;
-  for (const Riser& riser : project.risers) {
-    if (std::find(options.exclude_risers.begin(), options.exclude_risers.end(), riser.name) !=
-        options.exclude_risers.end()) {
-      continue;
-    }
-    designs.push_back(riser_design(project, riser));
-  }
-  SozResult result = compute_soz(project, designs, conditions, options);
-  if (options.model == SozModel::catenary && conditions.current) {
-    result.notes.push_back(
-        "the catenary screening model carries no current: this zone ignores the case's current on "
-        "the risers "
-        "(use --model fe)");
-  }
-  result.check_wall_s = check_wall_s;
-  for (const std::string& n : notes) result.notes.push_back(n);
-  if (!options.exclude_risers.empty()) {
-    std::string names;
-    for (const std::string& n : options.exclude_risers) names += (names.empty() ? "" : ", ") + n;
-    result.notes.push_back("risers left out of the platform zone: " + names);
-  }
-
-  if (!designs.empty()) {
-    for (const StaticCaseResult& c : cases) {
-      OffsetCheck check;
-      check.case_name = c.case_name;
-      check.condition = c.condition;
-      check.damaged_line = c.damaged_line;
-      check.offset_m = c.offset_summary.horizontal_m;
-      check.direction_deg = c.offset_summary.direction_deg;
-      check.zone = options.load_case ? "case" : "still-water";
-      check.allowable_m = std::numeric_limits<double>::infinity();
-      for (const RiserSoz& z : result.risers) {
-        std::vector<double> allowable;
-        for (const SozDirection& d : z.directions) allowable.push_back(d.allowable_offset_m);
-        const double a = polygon_allowable(result.directions_deg, allowable, check.direction_deg);
-        if (a < check.allowable_m) {
-          check.allowable_m = a;
-          check.governing_riser = z.name;
-        }
-      }
-      check.margin_m = check.allowable_m - check.offset_m;
-      check.ratio = check.allowable_m > 0.0 ? check.offset_m / check.allowable_m
-                                            : std::numeric_limits<double>::infinity();
-      check.passes = check.offset_m <= check.allowable_m;
-      result.offset_checks.push_back(check);
-    }
-    if (!options.load_case && !cases.empty()) {
-      result.notes.push_back(
-          "offset check against the still-water zone (no current on the risers, no mean "
-          "heave/rotations); "
-          "use --case NAME for a case's own zone");
-    }
-    if (!cases.empty()) {
-      result.notes.push_back(
-          "offsets are static (mean); extreme offsets need the dynamic analyses (not yet run)");
-    }
-  }
   return result;
 }
 

@@ -41,6 +41,7 @@
 // the solver's message is kept.
 
 #include <Eigen/Core>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -51,6 +52,13 @@
 #include "engine/environment/current_profile.hpp"
 
 namespace spiral::design {
+
+/// The dynamic analysis behind the extreme offset check (sc_analysis.hpp,
+/// level sc-enhanced, tensions off).
+struct SozExtremeOptions {
+  double duration_s = 10800.0;  ///< > 0; the MPM is always scaled to a 3-h sea state
+  std::uint64_t seed = 1;       ///< of the wave and wind realizations
+};
 
 /// The riser model the zone is computed with.
 /// fe: the reference (riser_static_line: FE with bending, current drag, seabed).
@@ -76,6 +84,9 @@ struct SozOptions {
   std::optional<std::string> load_case;
   DesignCondition condition = DesignCondition::normal;  ///< without load_case
   bool offset_check = true;  ///< run the load cases' static equilibria and check them
+  /// Also the extreme offsets: the enhanced S-C time-domain analysis of every
+  /// checked load case (soz_check.cpp). None: static (mean) offsets only.
+  std::optional<SozExtremeOptions> extreme;
   std::vector<std::string> exclude_risers;  ///< left out of the analysis (e.g. sensitivity)
   SozModel model = SozModel::fe;
   int threads = 0;  ///< 0: std::thread::hardware_concurrency()
@@ -132,12 +143,29 @@ struct PlatformSoz {
   std::vector<std::string> governing_criterion;  ///< that riser's criterion there
 };
 
-/// One load case's static offset against the platform SOZ.
+/// How the extreme offset of a check was found (kind "extreme").
+struct OffsetExtreme {
+  double duration_s = 0.0;  ///< simulated record
+  std::uint64_t seed = 1;
+  /// 3-h MPM of the utilization channel r(t) = |d(t)| / allowable(θ(t)) by
+  /// the three estimators of engine::most_probable_maximum; the check uses
+  /// Weibull (soz_check.cpp says why).
+  double ratio_mpm_gumbel = 0.0, ratio_mpm_weibull = 0.0, ratio_mpm_rayleigh = 0.0;
+  double record_max_ratio = 0.0;  ///< largest r(t) of the record
+  double record_max_ratio_time_s = 0.0;
+  double mean_offset_m = 0.0;     ///< mean |d(t)| of the record
+  double offset_mpm_m = 0.0;      ///< 3-h MPM (Weibull) of |d(t)| itself, for reference
+};
+
+/// One load case's offset (static mean, or extreme) against the platform SOZ.
 struct OffsetCheck {
   std::string case_name;
   std::string condition;  ///< intact | damaged
   std::optional<std::string> damaged_line;
-  std::string kind = "static";  ///< static (mean); extreme offsets need dynamic results (not yet)
+  /// static: the mean (static equilibrium) offset. extreme: ratio = 3-h MPM
+  /// of r(t) (OffsetExtreme), direction the one of the record's largest r(t),
+  /// offset_m = ratio × allowable_m there.
+  std::string kind = "static";
   double offset_m = 0.0;        ///< horizontal offset of the reference point
   double direction_deg = 0.0;
   double allowable_m = 0.0;  ///< platform SOZ in that direction (interpolated)
@@ -147,6 +175,7 @@ struct OffsetCheck {
   std::string governing_riser;
   /// The zone it was checked against: the case's own (with its current) or still-water.
   std::string zone;
+  std::optional<OffsetExtreme> extreme;  ///< kind extreme only
 };
 
 struct SozResult {

@@ -86,20 +86,37 @@ nlohmann::json soz_to_json(const SozResult& r) {
   for (double a : r.platform.allowable_offset_m) platform_pct.push_back(pct(a, r.depth_m));
   nlohmann::json checks = nlohmann::json::array();
   for (const OffsetCheck& c : r.offset_checks) {
+    nlohmann::json extreme(nullptr);
+    if (c.extreme) {
+      const OffsetExtreme& e = *c.extreme;
+      extreme = {{"level", "sc-enhanced"},
+                 {"duration_s", e.duration_s},
+                 {"seed", e.seed},
+                 {"estimator", "weibull"},
+                 {"ratio_mpm_3h",
+                  {{"gumbel", number(e.ratio_mpm_gumbel)},
+                   {"weibull", number(e.ratio_mpm_weibull)},
+                   {"rayleigh", number(e.ratio_mpm_rayleigh)}}},
+                 {"record_max_ratio", number(e.record_max_ratio)},
+                 {"record_max_ratio_time_s", e.record_max_ratio_time_s},
+                 {"mean_offset_m", e.mean_offset_m},
+                 {"offset_mpm_3h_m", e.offset_mpm_m}};
+    }
     checks.push_back({{"case", c.case_name},
                       {"condition", c.condition},
                       {"damaged_line",
                        c.damaged_line ? nlohmann::json(*c.damaged_line) : nlohmann::json(nullptr)},
                       {"kind", c.kind},
                       {"zone", c.zone},
-                      {"offset_m", c.offset_m},
-                      {"offset_pct_depth", pct(c.offset_m, r.depth_m)},
+                      {"offset_m", number(c.offset_m)},
+                      {"offset_pct_depth", number(pct(c.offset_m, r.depth_m))},
                       {"direction_deg", c.direction_deg},
                       {"allowable_m", number(c.allowable_m)},
                       {"margin_m", number(c.margin_m)},
                       {"ratio", number(c.ratio)},
                       {"passes", c.passes},
-                      {"governing_riser", c.governing_riser}});
+                      {"governing_riser", c.governing_riser},
+                      {"extreme", extreme}});
   }
   const SozConditions& k = r.conditions;
   return {{"format", "spiral.soz"},
@@ -218,12 +235,12 @@ std::string soz_table(const SozResult& r) {
 
   if (!r.offset_checks.empty()) {
     out += "\nOffset check against the platform SOZ (ratio = offset / allowable, ≤ 1 passes):\n";
-    out += fmt::format("{:<32} {:<8} {:<6} {:>9} {:>7} {:>11} {:>9} {:>7} {:<5} {:<6}\n", "case",
+    out += fmt::format("{:<32} {:<8} {:<7} {:>9} {:>7} {:>11} {:>9} {:>7} {:<5} {:<6}\n", "case",
                        "cond.", "kind", "offset m", "dir°", "allowable m", "margin m", "ratio", "",
                        "riser");
     for (const OffsetCheck& c : r.offset_checks) {
       out += fmt::format(
-          "{:<32} {:<8} {:<6} {:>9.2f} {:>7.1f} {:>11.2f} {:>9.2f} {:>7.3f} {:<5} {:<6}\n",
+          "{:<32} {:<8} {:<7} {:>9.2f} {:>7.1f} {:>11.2f} {:>9.2f} {:>7.3f} {:<5} {:<6}\n",
           c.case_name, c.condition, c.kind, c.offset_m, c.direction_deg, c.allowable_m, c.margin_m,
           c.ratio, c.passes ? "PASS" : "FAIL", c.governing_riser);
     }
@@ -243,7 +260,10 @@ std::string soz_table(const SozResult& r) {
   out += fmt::format(
       "\n{} riser static solves in {:.2f} s on {} threads ({:.2f} ms per solve per thread)",
       r.solves, r.zone_wall_s, r.threads, 1e3 * time_per_solve_s(r));
-  if (r.check_wall_s > 0.0) out += fmt::format("; load-case equilibria {:.2f} s", r.check_wall_s);
+  if (r.check_wall_s > 0.0) {
+    out += fmt::format("; load-case equilibria{} {:.2f} s",
+                       r.options.extreme ? " and S-C storms" : "", r.check_wall_s);
+  }
   out += "\n";
   return out;
 }

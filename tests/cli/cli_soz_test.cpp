@@ -104,6 +104,19 @@ TEST(CliSoz, FlexibleRiserWithoutBendingRadiusIsBadInput) {
   EXPECT_NE(r.err.find("min_bending_radius"), std::string::npos) << r.err;
 }
 
+TEST(CliSoz, ExtremeOptionsAreCheckedAsBadInput) {
+  const std::string file =
+      write_temp_project("soz-extreme.yaml", soz_project_yaml(soz_riser_yaml("R", 0.0)));
+  const CommandResult zero = run_spiral("soz " + file + " --step-deg 90 --extreme --duration 0");
+  EXPECT_EQ(zero.exit_code, 2);
+  EXPECT_NE(zero.err.find("--duration: must be > 0 s, got 0 s"), std::string::npos) << zero.err;
+  const CommandResult unchecked = run_spiral("soz " + file + " --step-deg 90 --extreme --no-check");
+  EXPECT_EQ(unchecked.exit_code, 2);
+  EXPECT_NE(unchecked.err.find("--extreme"), std::string::npos) << unchecked.err;
+  // --duration without --extreme is a usage error (CLI11 "needs").
+  EXPECT_EQ(run_spiral("soz " + file + " --step-deg 90 --duration 600").exit_code, 2);
+}
+
 TEST(CliSoz, UnknownCaseIsBadInput) {
   const std::string file =
       write_temp_project("soz-case.yaml", soz_project_yaml(soz_riser_yaml("R", 0.0)));
