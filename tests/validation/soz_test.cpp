@@ -219,6 +219,63 @@ TEST(Soz, TouchdownExcursionLimitsTheZoneWhereGiven) {
   EXPECT_GT(check->value, 5.0 - 2.0 * kTolerance_m);  // TDP moves ≈ as far as the hang-off
 }
 
+/// The riser evaluated at `d_m` along `unit`, reached by warm-started steps
+/// of `step_m` from zero offset (a cold solve 400 m out need not converge).
+RiserOffsetEvaluator::Evaluation evaluate_along(const RiserOffsetEvaluator& evaluator,
+                                                const Eigen::Vector2d& unit, double d_m,
+                                                double step_m) {
+  std::shared_ptr<const engine::FeStaticsResult> warm = evaluator.zero_offset().solution;
+  for (double s = std::min(step_m, d_m);; s = std::min(s + step_m, d_m)) {
+    auto e = evaluator.evaluate(s * unit, warm.get());
+    if (s >= d_m || !e.solution) return e;
+    warm = e.solution;
+  }
+}
+
+TEST(Soz, ZoneThatIsNotStarShapedKeepsItsFirstBoundaryAndReportsTheBand) {
+  // A physical band that re-opens: the hull moves along a ray 60° off the
+  // riser's azimuth (riser at 300°, ray at 0°). The hang-off first closes on
+  // the riser's foot — the span shrinks, the riser slackens and the TDP
+  // curvature fails (von Mises) — passes its closest approach at
+  // d* = L cos 60° (L: horizontal hang-off–foot distance, ≈ 460 m), and then
+  // draws away again: the span grows back, the TDP curvature drops below its
+  // limit and the riser passes again, until the growing span fails the top
+  // angle. The search limit is raised to 130 % of depth (520 m) to see it.
+  const Project p = project(test::soz_riser_yaml("R", 300.0));
+  const std::vector<RiserDesign> d = designs(p);
+  SozOptions o = options(180.0);
+  o.search_limit_pct_depth = 130.0;
+  o.march_step_pct_depth = 5.0;
+  const SozResult r = compute_soz(p, d, {}, o);
+  const RiserSoz& z = r.risers[0];
+  const SozDirection& ray = z.directions[0];
+  EXPECT_FALSE(z.star_shaped);
+  ASSERT_EQ(ray.reopened_bands.size(), 1u);
+  const SozBand& band = ray.reopened_bands.front();
+  EXPECT_EQ(ray.governing_criterion, "von_mises");
+  // The allowable offset is the first boundary, not the band's far edge.
+  EXPECT_LT(ray.allowable_offset_m, band.from_m);
+  EXPECT_LT(band.from_m, band.to_m);
+  EXPECT_LT(band.to_m, o.search_limit_pct_depth * p.site.depth_m / 100.0);
+  EXPECT_DOUBLE_EQ(r.platform.allowable_offset_m[0], ray.allowable_offset_m);
+  // The closest approach to the foot lies in the failing gap.
+  const Eigen::Vector2d unit(1.0, 0.0);
+  const Eigen::Vector3d hang_off0 = p.hull.reference_point_g + d[0].hang_off_b;
+  const Eigen::Vector2d to_foot = (d[0].foot_g - hang_off0).head<2>();
+  const double closest_m = to_foot.dot(unit);
+  EXPECT_GT(closest_m, ray.allowable_offset_m);
+  EXPECT_LT(closest_m, band.from_m);
+  // The riser itself confirms each stretch: pass / fail / pass / fail.
+  const RiserOffsetEvaluator evaluator(p, d[0], {}, SozModel::fe);
+  const double step_m = o.march_step_pct_depth * p.site.depth_m / 100.0;
+  EXPECT_TRUE(evaluate_along(evaluator, unit, ray.allowable_offset_m, step_m).passes());
+  EXPECT_FALSE(evaluate_along(evaluator, unit, closest_m, step_m).passes());
+  EXPECT_TRUE(evaluate_along(evaluator, unit, 0.5 * (band.from_m + band.to_m), step_m).passes());
+  const auto beyond = evaluate_along(evaluator, unit, band.to_m + 2.0 * kTolerance_m, step_m);
+  EXPECT_FALSE(beyond.passes());
+  EXPECT_EQ(beyond.row.governing_criterion, "max_top_angle");
+}
+
 TEST(Soz, ResultsDoNotDependOnTheThreadCount) {
   const Project p = project(test::soz_riser_yaml("A", 0.0, 20.0) + test::soz_riser_yaml("B", 180.0, 20.0));
   const std::vector<RiserDesign> d = designs(p);
