@@ -144,7 +144,8 @@ RiserOffsetEvaluator::Evaluation RiserOffsetEvaluator::solve_fe(
   try {
     auto solution = std::make_shared<engine::FeStaticsResult>(engine::solve_fe_line_statics(
         design_.fe_model, environment_, {design_.foot_g, top}, options));
-    e.row = riser_statics_row(project_, design_, *solution, conditions_.condition);
+    e.row = riser_statics_row(project_, design_, *solution, conditions_.condition,
+                              engine::rotation_matrix(conditions_.rotation_rad));
     if (solution->touchdown) e.touchdown_g = solution->touchdown->position_m;
     e.solution = std::move(solution);
   } catch (const engine::SolverError& error) {
@@ -200,7 +201,8 @@ RiserOffsetEvaluator::Evaluation RiserOffsetEvaluator::solve_catenary(
       tdp.head<2>() += c.touchdown_x_m * along;
       r.touchdown = engine::FeTouchdown{c.laid_length_m, tdp};
     }
-    e.row = riser_statics_row(project_, design_, r, conditions_.condition);
+    e.row = riser_statics_row(project_, design_, r, conditions_.condition,
+                              engine::rotation_matrix(conditions_.rotation_rad));
     if (r.touchdown) e.touchdown_g = r.touchdown->position_m;
   } catch (const engine::SolverError& error) {
     e = failed(fmt::format("riser '{}' (catenary screening) at hang-off ({:.2f}, {:.2f}, {:.2f}) m: {}",

@@ -240,7 +240,7 @@ TEST(Soz, ZoneThatIsNotStarShapedKeepsItsFirstBoundaryAndReportsTheBand) {
   // d* = L cos 60° (L: horizontal hang-off–foot distance, ≈ 460 m), and then
   // draws away again: the span grows back, the TDP curvature drops below its
   // limit and the riser passes again, until the growing span fails the top
-  // angle. The search limit is raised to 130 % of depth (520 m) to see it.
+  // angle or the flex joint. The search limit is raised to 130 % of depth (520 m) to see it.
   const Project p = project(test::soz_riser_yaml("R", 300.0));
   const std::vector<RiserDesign> d = designs(p);
   SozOptions o = options(180.0);
@@ -273,7 +273,11 @@ TEST(Soz, ZoneThatIsNotStarShapedKeepsItsFirstBoundaryAndReportsTheBand) {
   EXPECT_TRUE(evaluate_along(evaluator, unit, 0.5 * (band.from_m + band.to_m), step_m).passes());
   const auto beyond = evaluate_along(evaluator, unit, band.to_m + 2.0 * kTolerance_m, step_m);
   EXPECT_FALSE(beyond.passes());
-  EXPECT_EQ(beyond.row.governing_criterion, "max_top_angle");
+  // Closed by the growing span: the top angle, or the flex joint, which sees
+  // the riser plane swung ≈ 60° about the foot besides the larger top angle.
+  EXPECT_TRUE(beyond.row.governing_criterion == "max_top_angle" ||
+              beyond.row.governing_criterion == "flex_joint_rotation")
+      << beyond.row.governing_criterion;
 }
 
 TEST(Soz, ResultsDoNotDependOnTheThreadCount) {
