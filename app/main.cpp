@@ -303,6 +303,9 @@ int main(int argc, char** argv) {
   soz_cmd->add_option("--threads", soz_options.threads, "Threads (default: all cores)");
   bool no_check = false;
   soz_cmd->add_flag("--no-check", no_check, "Skip the load cases' equilibria and the offset check");
+  bool still_water_only = false;
+  soz_cmd->add_flag("--still-water-only", still_water_only,
+                    "Without --case: check every case against the still-water zone (no zone per current)");
   bool soz_extreme = false;
   design::SozExtremeOptions soz_extreme_options;
   CLI::Option* extreme_flag = soz_cmd->add_flag("--extreme", soz_extreme,
@@ -349,6 +352,7 @@ int main(int argc, char** argv) {
       soz_options.model = soz_model == "catenary" ? design::SozModel::catenary : design::SozModel::fe;
       soz_options.offset_check = !no_check;
       if (soz_extreme) soz_options.extreme = soz_extreme_options;
+      soz_options.zone_per_current = !still_water_only;
       return run_soz_command(project_file, soz_options, json ? SozView::json : csv ? SozView::csv : SozView::table);
     }
     if (report_cmd->parsed()) return run_report(project_file, stage_name, out_dir);

@@ -83,6 +83,10 @@ struct SozOptions {
   /// the offset check covers every load case of the project.
   std::optional<std::string> load_case;
   DesignCondition condition = DesignCondition::normal;  ///< without load_case
+  /// Without load_case: check each case against the zone of its own current
+  /// and design condition (run_soz computes one per distinct pair, besides
+  /// the still-water zone). False: every case against the still-water zone.
+  bool zone_per_current = true;
   bool offset_check = true;  ///< run the load cases' static equilibria and check them
   /// Also the extreme offsets: the enhanced S-C time-domain analysis of every
   /// checked load case (soz_check.cpp). None: static (mean) offsets only.
@@ -178,6 +182,19 @@ struct OffsetCheck {
   std::optional<OffsetExtreme> extreme;  ///< kind extreme only
 };
 
+/// A zone the offset check used besides the result's own (run_soz without
+/// load_case): the risers under one current and design condition of the
+/// load cases, at zero mean heave/rotations.
+struct SozZone {
+  std::string name;  ///< "<environment>/<condition>": the first environment with that current
+  SozConditions conditions;
+  std::vector<std::string> cases;  ///< the load cases checked against it
+  std::vector<RiserSoz> risers;
+  PlatformSoz platform;
+  int solves = 0;
+  double zone_wall_s = 0.0;
+};
+
 struct SozResult {
   std::string project;
   double depth_m = 0.0;
@@ -187,9 +204,10 @@ struct SozResult {
   std::vector<RiserSoz> risers;
   PlatformSoz platform;
   std::vector<OffsetCheck> offset_checks;
+  std::vector<SozZone> zones;  ///< the zones per current (run_soz), besides this one
   std::vector<std::string> notes;
-  int solves = 0;  ///< riser static solves of the zone computation
-  double zone_wall_s = 0.0;
+  int solves = 0;  ///< riser static solves of the zone computation (all zones)
+  double zone_wall_s = 0.0;  ///< all zones
   double check_wall_s = 0.0;
   int threads = 1;
 };
@@ -205,6 +223,9 @@ SozResult compute_soz(const Project& project, const std::vector<RiserDesign>& ri
                       const SozConditions& conditions, const SozOptions& options);
 
 /// Zones of the project's risers, platform intersection and offset check.
+/// Without options.load_case (and with zone_per_current) also one zone per
+/// distinct current and design condition of the checked cases (zones), each
+/// case checked against its own; with options.extreme the extreme offsets too.
 SozResult run_soz(const ValidatedProject& project, const SozOptions& options);
 
 /// Allowable offset of a polar polygon (grid `directions_deg`, uniform step)

@@ -23,6 +23,13 @@
 // zone's edge), so ratio = offset / allowable holds as for the static check.
 // The MPM of |d(t)| itself is reported beside it, for reference.
 //
+// Zones per current. Without --case the current on the risers moves the
+// zone (soz_test: a current towards the foot shrinks the far limit), and the
+// design factor of the case's condition scales the von Mises limit, so a case
+// is checked against the zone of its own current and condition; the cases
+// that share both share one zone, computed once. Each zone is at zero mean
+// heave/rotations (--case gives the one case's exact zone).
+//
 // The zone stays a quasi-static one: the risers are checked at the mean hull
 // heave and rotations of the case (or none), not at the instantaneous ones.
 
@@ -198,6 +205,54 @@ OffsetCheck extreme_check(const Project& project, const StaticCaseResult& c,
   return check;
 }
 
+bool same_current(const std::optional<Current>& a, const std::optional<Current>& b) {
+  if (!a || !b) return !a && !b;
+  if (a->heading_rad != b->heading_rad || a->profile.size() != b->profile.size()) return false;
+  for (std::size_t i = 0; i < a->profile.size(); ++i) {
+    if (a->profile[i].z_m != b->profile[i].z_m || a->profile[i].speed_m_per_s != b->profile[i].speed_m_per_s)
+      return false;
+  }
+  return true;
+}
+
+/// The zones of the cases' currents: per checked case the index of its zone
+/// in `zones`, or −1 for the still-water zone (no current and the still-water
+/// design condition). Cases with the same current (the same values, whatever
+/// the environment's name) and design condition share a zone.
+std::vector<int> zones_of_cases(const Project& project, const std::vector<std::string>& case_names,
+                                DesignCondition still_water_condition, std::vector<SozZone>& zones) {
+  std::vector<int> index;
+  std::vector<std::optional<Current>> currents;  // of `zones`
+  for (const std::string& name : case_names) {
+    const LoadCase& lc = find_load_case(project, name);
+    const Environment& env =
+        *std::find_if(project.environments.begin(), project.environments.end(),
+                      [&](const Environment& e) { return e.name == lc.environment; });
+    if (!env.current && lc.condition == still_water_condition) {
+      index.push_back(-1);
+      continue;
+    }
+    int k = 0;
+    while (k < static_cast<int>(zones.size()) &&
+           !(same_current(currents[static_cast<std::size_t>(k)], env.current) &&
+             zones[static_cast<std::size_t>(k)].conditions.condition == lc.condition)) {
+      ++k;
+    }
+    if (k == static_cast<int>(zones.size())) {
+      SozZone zone;
+      zone.name = fmt::format("{}/{}", env.current ? env.name : "no-current", to_string(lc.condition));
+      zone.conditions.name = zone.name;
+      zone.conditions.current = current_profile_of(env);
+      zone.conditions.condition = lc.condition;
+      zones.push_back(std::move(zone));
+      currents.push_back(env.current);
+    }
+    zones[static_cast<std::size_t>(k)].cases.push_back(name);
+    index.push_back(k);
+  }
+  return index;
+}
+
 /// The project's load cases checked by `options` (one with --case).
 std::vector<std::string> checked_case_names(const Project& project, const SozOptions& options) {
   std::vector<std::string> names;
@@ -278,9 +333,38 @@ SozResult run_soz(const ValidatedProject& validated, const SozOptions& options) 
   }
   if (designs.empty()) return result;
 
-  const PlatformPolygon zone(result.directions_deg, result.risers);
-  const std::string zone_name = options.load_case ? "case" : "still-water";
+  // Without --case: a zone per current (and design condition) of the cases,
+  // each computed once and shared by the cases that have it.
+  std::vector<int> zone_of_case(cases.size(), -1);
+  if (!options.load_case && options.zone_per_current) {
+    zone_of_case = zones_of_cases(project, case_names, options.condition, result.zones);
+    for (SozZone& zone : result.zones) {
+      SozResult z = compute_soz(project, designs, zone.conditions, options);
+      zone.risers = std::move(z.risers);
+      zone.platform = std::move(z.platform);
+      zone.solves = z.solves;
+      zone.zone_wall_s = z.zone_wall_s;
+      result.solves += z.solves;
+      result.zone_wall_s += z.zone_wall_s;
+      if (options.model == SozModel::catenary && zone.conditions.current) {
+        result.notes.push_back(fmt::format(
+            "zone {}: the catenary screening model carries no current (use --model fe)", zone.name));
+      }
+      for (const RiserSoz& r : zone.risers) {
+        if (r.fails_at_zero_offset) {
+          result.notes.push_back(fmt::format("zone {}: riser {} fails {} already at zero offset: no zone", zone.name,
+                                             r.name, r.zero_offset_governing_criterion));
+        }
+      }
+    }
+  }
+  std::vector<PlatformPolygon> polygons{PlatformPolygon(result.directions_deg, result.risers)};
+  for (const SozZone& zone : result.zones) polygons.emplace_back(result.directions_deg, zone.risers);
   for (std::size_t i = 0; i < cases.size(); ++i) {
+    const int k = zone_of_case[i];
+    const PlatformPolygon& zone = polygons[static_cast<std::size_t>(k + 1)];
+    const std::string zone_name =
+        k >= 0 ? result.zones[static_cast<std::size_t>(k)].name : options.load_case ? "case" : "still-water";
     result.offset_checks.push_back(static_check(cases[i], zone, zone_name));
     if (options.extreme) {
       result.offset_checks.push_back(
@@ -289,8 +373,11 @@ SozResult run_soz(const ValidatedProject& validated, const SozOptions& options) 
   }
   if (!options.load_case && !cases.empty()) {
     result.notes.push_back(
-        "offset check against the still-water zone (no current on the risers, no mean "
-        "heave/rotations); use --case NAME for a case's own zone");
+        options.zone_per_current
+            ? "each case is checked against the zone of its own current and design condition (`zone`), at zero "
+              "mean heave/rotations; use --case NAME for a case's exact zone"
+            : "offset check against the still-water zone (no current on the risers, no mean heave/rotations); "
+              "use --case NAME for a case's own zone");
   }
   if (!cases.empty() && !options.extreme) {
     result.notes.push_back(

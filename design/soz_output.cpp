@@ -118,6 +118,35 @@ nlohmann::json soz_to_json(const SozResult& r) {
                       {"governing_riser", c.governing_riser},
                       {"extreme", extreme}});
   }
+  nlohmann::json zones = nlohmann::json::array();
+  for (const SozZone& zone : r.zones) {
+    nlohmann::json zone_risers = nlohmann::json::array();
+    for (const RiserSoz& z : zone.risers) {
+      nlohmann::json allowable = nlohmann::json::array(), governing = nlohmann::json::array();
+      for (const SozDirection& d : z.directions) {
+        allowable.push_back(d.allowable_offset_m);
+        governing.push_back(d.governing_criterion);
+      }
+      zone_risers.push_back({{"name", z.name},
+                             {"fails_at_zero_offset", z.fails_at_zero_offset},
+                             {"allowable_offset_m", allowable},
+                             {"governing_criterion", governing},
+                             {"star_shaped", z.star_shaped},
+                             {"near_m", z.near_m},
+                             {"far_m", z.far_m}});
+    }
+    zones.push_back({{"name", zone.name},
+                     {"design_condition", to_string(zone.conditions.condition)},
+                     {"current", zone.conditions.current.has_value()},
+                     {"cases", zone.cases},
+                     {"risers", zone_risers},
+                     {"platform",
+                      {{"allowable_offset_m", zone.platform.allowable_offset_m},
+                       {"governing_riser", zone.platform.governing_riser},
+                       {"governing_criterion", zone.platform.governing_criterion}}},
+                     {"solves", zone.solves},
+                     {"zone_wall_s", zone.zone_wall_s}});
+  }
   const SozConditions& k = r.conditions;
   return {{"format", "spiral.soz"},
           {"format_version", 1},
@@ -144,6 +173,7 @@ nlohmann::json soz_to_json(const SozResult& r) {
             {"governing_riser", r.platform.governing_riser},
             {"governing_criterion", r.platform.governing_criterion}}},
           {"offset_checks", checks},
+          {"zones", zones},
           {"notes", r.notes},
           {"solves", r.solves},
           {"threads", r.threads},
@@ -170,6 +200,14 @@ std::string soz_to_csv(const SozResult& r) {
     out +=
         fmt::format("{},platform,{:.3f},{:.4f},{},,,\n", r.directions_deg[k], a, pct(a, r.depth_m),
                     r.platform.governing_riser[k] + ":" + r.platform.governing_criterion[k]);
+  }
+  for (const SozZone& zone : r.zones) {
+    for (std::size_t k = 0; k < r.directions_deg.size(); ++k) {
+      const double a = zone.platform.allowable_offset_m[k];
+      out += fmt::format("{},platform@{},{:.3f},{:.4f},{},,,\n", r.directions_deg[k], zone.name, a,
+                         pct(a, r.depth_m),
+                         zone.platform.governing_riser[k] + ":" + zone.platform.governing_criterion[k]);
+    }
   }
   return out;
 }
@@ -233,16 +271,37 @@ std::string soz_table(const SozResult& r) {
                        r.platform.governing_riser[k]);
   }
 
+  if (!r.zones.empty()) {
+    out += "\nPlatform allowable offset per direction, m, in the zones of the cases' currents (zone: cases):\n";
+    for (std::size_t z = 0; z < r.zones.size(); ++z) {
+      std::string cases;
+      for (const std::string& c : r.zones[z].cases) cases += (cases.empty() ? "" : ", ") + c;
+      out += fmt::format("  Z{} {}: {}\n", z + 1, r.zones[z].name, cases);
+    }
+    out += fmt::format("{:>5} {:>12}", "dir°", "still-water");
+    for (std::size_t z = 0; z < r.zones.size(); ++z) out += fmt::format(" {:>12}", fmt::format("Z{}", z + 1));
+    out += "\n";
+    for (std::size_t k = 0; k < r.directions_deg.size(); ++k) {
+      out += fmt::format("{:>5g} {:>11.1f}{}", r.directions_deg[k], r.platform.allowable_offset_m[k],
+                         criterion_letter(r.platform.governing_criterion[k]));
+      for (const SozZone& zone : r.zones) {
+        out += fmt::format(" {:>11.1f}{}", zone.platform.allowable_offset_m[k],
+                           criterion_letter(zone.platform.governing_criterion[k]));
+      }
+      out += "\n";
+    }
+  }
+
   if (!r.offset_checks.empty()) {
     out += "\nOffset check against the platform SOZ (ratio = offset / allowable, ≤ 1 passes):\n";
-    out += fmt::format("{:<32} {:<8} {:<7} {:>9} {:>7} {:>11} {:>9} {:>7} {:<5} {:<6}\n", "case",
+    out += fmt::format("{:<32} {:<8} {:<7} {:>9} {:>7} {:>11} {:>9} {:>7} {:<5} {:<6} {}\n", "case",
                        "cond.", "kind", "offset m", "dir°", "allowable m", "margin m", "ratio", "",
-                       "riser");
+                       "riser", "zone");
     for (const OffsetCheck& c : r.offset_checks) {
       out += fmt::format(
-          "{:<32} {:<8} {:<7} {:>9.2f} {:>7.1f} {:>11.2f} {:>9.2f} {:>7.3f} {:<5} {:<6}\n",
+          "{:<32} {:<8} {:<7} {:>9.2f} {:>7.1f} {:>11.2f} {:>9.2f} {:>7.3f} {:<5} {:<6} {}\n",
           c.case_name, c.condition, c.kind, c.offset_m, c.direction_deg, c.allowable_m, c.margin_m,
-          c.ratio, c.passes ? "PASS" : "FAIL", c.governing_riser);
+          c.ratio, c.passes ? "PASS" : "FAIL", c.governing_riser, c.zone);
     }
   }
   for (const std::string& note : r.notes) out += "Note: " + note + "\n";

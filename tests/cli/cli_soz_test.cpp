@@ -40,6 +40,12 @@ TEST(CliSoz, JsonHasTheDocumentedKeys) {
   EXPECT_NEAR(check["margin_m"].get<double>(),
               check["allowable_m"].get<double>() - check["offset_m"].get<double>(), 1e-9);
   EXPECT_EQ(check["passes"].get<bool>(), check["ratio"].get<double>() <= 1.0);
+  // lc2 has a current: its own zone, named in its check.
+  EXPECT_EQ(check["zone"], "still-water");
+  ASSERT_EQ(j["zones"].size(), 1u);
+  EXPECT_EQ(j["offset_checks"][1]["zone"], j["zones"][0]["name"]);
+  EXPECT_EQ(j["zones"][0]["platform"]["allowable_offset_m"].size(), 8u);
+  EXPECT_EQ(j["zones"][0]["cases"][0], "lc2");
   EXPECT_GT(j["solves"].get<int>(), 0);
 }
 

@@ -1,15 +1,22 @@
-// The offset check of run_soz (design/soz_check.cpp) on the default
-// deep-water scenario: the extreme offsets of the enhanced S-C analysis
-// against the platform zone.
+// The offset check of run_soz (design/soz_check.cpp): the extreme offsets of
+// the enhanced S-C analysis against the platform zone (default deep-water
+// scenario), and the zone per current condition (SOZ test project).
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <limits>
 #include <map>
+#include <numeric>
 
+#include "design/environment_loads.hpp"
 #include "design/soz.hpp"
+#include "support/soz_project.hpp"
 
 namespace spiral::design {
 namespace {
@@ -66,6 +73,67 @@ TEST(SozCheck, ExtremeOffsetOfEveryCaseFromTheEnhancedScAnalysis) {
     EXPECT_EQ(e.passes, e.ratio <= 1.0);
     EXPECT_FALSE(e.governing_riser.empty());
   }
+}
+
+/// The SOZ test project (risers A at 0°, B at 180°) with a third case whose
+/// environment has another name but the same current as lc2.
+ValidatedProject two_risers_three_cases() {
+  std::string text = test::soz_project_yaml(test::soz_riser_yaml("A", 0.0, 20.0) +
+                                            test::soz_riser_yaml("B", 180.0, 20.0));
+  const std::string env = "  - name: current-east\n    current:\n      heading_deg: 0.0\n"
+                          "      profile: [[0.0, 1.0], [-400.0, 0.5]]\n";
+  const auto at = text.find(env);
+  EXPECT_NE(at, std::string::npos);
+  text.insert(at + env.size(), "  - name: same-current\n    current:\n      heading_deg: 0.0\n"
+                               "      profile: [[0.0, 1.0], [-400.0, 0.5]]\n");
+  const std::string lc2 = "  - {name: lc2, environment: current-east, condition: extreme}\n";
+  text.insert(text.find(lc2) + lc2.size(), "  - {name: lc3, environment: same-current, condition: extreme}\n");
+  const std::filesystem::path file =
+      std::filesystem::temp_directory_path() / fmt::format("spiral-{}-soz-zones.yaml", ::getpid());
+  std::ofstream(file) << text;
+  ValidatedProject p = load_validated_project(file);
+  std::filesystem::remove(file);
+  return p;
+}
+
+TEST(SozCheck, EachCaseIsCheckedAgainstTheZoneOfItsOwnCurrent) {
+  const ValidatedProject p = two_risers_three_cases();
+  ASSERT_EQ(p.project.load_cases.size(), 3u);
+  SozOptions o;
+  o.step_deg = 45.0;
+  const SozResult r = run_soz(p, o);
+  // lc1 (calm, normal = the still-water condition) uses the still-water
+  // zone; lc2 and lc3 share one zone: the same current and condition.
+  ASSERT_EQ(r.zones.size(), 1u);
+  const SozZone& zone = r.zones.front();
+  EXPECT_EQ(zone.cases, (std::vector<std::string>{"lc2", "lc3"}));
+  EXPECT_EQ(zone.conditions.condition, DesignCondition::extreme);
+  ASSERT_TRUE(zone.conditions.current.has_value());
+  ASSERT_EQ(r.offset_checks.size(), 3u);
+  EXPECT_EQ(r.offset_checks[0].zone, "still-water");
+  EXPECT_EQ(r.offset_checks[1].zone, zone.name);
+  EXPECT_EQ(r.offset_checks[2].zone, zone.name);
+  // The zone is the one compute_soz gives for that current and condition
+  // (bit for bit: same chunks, same warm starts), and the check reads it.
+  std::vector<RiserDesign> designs;
+  for (const Riser& riser : p.project.risers) designs.push_back(riser_design(p.project, riser));
+  SozConditions conditions;
+  conditions.current = current_profile_of(*p.project.environments[1].current);
+  conditions.condition = DesignCondition::extreme;
+  const SozResult own = compute_soz(p.project, designs, conditions, o);
+  EXPECT_EQ(zone.platform.allowable_offset_m, own.platform.allowable_offset_m);
+  EXPECT_NE(zone.platform.allowable_offset_m, r.platform.allowable_offset_m);  // current + factor differ
+  const OffsetCheck& c = r.offset_checks[1];
+  EXPECT_NEAR(c.allowable_m, platform_at(own, c.direction_deg), kSameArithmetic * c.allowable_m);
+  // Solves add up over the zones.
+  EXPECT_EQ(r.solves, std::accumulate(r.risers.begin(), r.risers.end(), 0,
+                                      [](int n, const RiserSoz& z) { return n + z.solves; }) +
+                          zone.solves);
+  // --still-water-only: every case against the still-water zone.
+  o.zone_per_current = false;
+  const SozResult still = run_soz(p, o);
+  EXPECT_TRUE(still.zones.empty());
+  for (const OffsetCheck& check : still.offset_checks) EXPECT_EQ(check.zone, "still-water");
 }
 
 }  // namespace
