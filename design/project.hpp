@@ -78,12 +78,14 @@ inline constexpr double kDefaultRiserElementLength_m = 5.0;
 struct TouchdownRefinement {
   double length_m = 0.0;          ///< arc length of the refined zone, centred on the TDP, > 0
   double element_length_m = 0.0;  ///< element length inside it, > 0, <= FeMesh::element_length_m
+  bool operator==(const TouchdownRefinement&) const = default;
 };
 
 /// Discretization of a line or riser into finite elements (unstretched lengths).
 struct FeMesh {
   double element_length_m = kDefaultLineElementLength_m;  ///< target element length, > 0
   std::optional<TouchdownRefinement> touchdown_refinement;
+  bool operator==(const FeMesh&) const = default;
 };
 
 struct MooringLine {
@@ -270,6 +272,7 @@ struct RiserSection {
   double drag_axial = 0.0;
   double added_mass_normal = 1.0;
   double added_mass_axial = 0.0;
+  bool operator==(const RiserSection&) const = default;
 };
 
 /// The design condition of a load case (API RP 2RD): it selects the riser
@@ -284,6 +287,7 @@ struct RiserDesignFactors {
   double normal = 0.67;
   double extreme = 0.80;
   double survival = 1.00;
+  bool operator==(const RiserDesignFactors&) const = default;
 };
 
 /// Riser acceptance criteria (DESIGN.md §6) of one riser: its kind's
@@ -299,6 +303,7 @@ struct RiserCriteria {
   std::optional<double> max_flex_joint_rotation_rad;
   std::optional<double> min_bending_radius_m;         ///< > 0; required for flexible risers
   std::optional<double> max_touchdown_excursion_m;    ///< TDP horizontal travel from rest, > 0
+  bool operator==(const RiserCriteria&) const = default;
 };
 
 /// Riser criteria as written (`criteria.risers`, `risers[i].criteria`):

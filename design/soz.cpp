@@ -35,6 +35,8 @@ constexpr double kFalsiInset = 0.4;
 // Refinement iterations per bracket: bisection of a 20 %-of-depth bracket to
 // 1 mm takes < 25; this only stops a pathological case.
 constexpr int kMaxRefineIterations = 60;
+// Newton tolerance of the march samples (RiserOffsetEvaluator::Precision).
+constexpr double kMarchForceTolerance = 1e-6;
 // Directions per parallel task: 72 directions × 12 risers give 144 tasks on
 // any core count, fine enough to balance 2–64 threads.
 constexpr int kDirectionsPerTask = 6;
@@ -62,6 +64,50 @@ double normalize_deg(double deg) {
   return deg < 0.0 ? deg + 360.0 : deg;
 }
 
+const Riser* project_riser(const Project& project, const std::string& name) {
+  const auto it = std::find_if(project.risers.begin(), project.risers.end(),
+                               [&](const Riser& r) { return r.name == name; });
+  return it == project.risers.end() ? nullptr : &*it;
+}
+
+/// Per riser, the earlier riser whose zone is its zone turned about the
+/// vertical by `shift` grid steps (soz.hpp says when), or −1.
+std::vector<int> rotation_sources(const Project& project, const std::vector<RiserDesign>& risers,
+                                  const SozConditions& conditions, double step_deg, int n_directions,
+                                  std::vector<int>& shift) {
+  std::vector<int> source(risers.size(), -1);
+  shift.assign(risers.size(), 0);
+  if (conditions.current || !conditions.rotation_rad.isZero(0.0)) return source;
+  for (std::size_t r = 0; r < risers.size(); ++r) {
+    const RiserDesign& a = risers[r];
+    const Riser* pa = project_riser(project, a.name);
+    for (std::size_t q = 0; q < r && pa; ++q) {
+      const RiserDesign& b = risers[q];
+      const Riser* pb = project_riser(project, b.name);
+      if (source[q] >= 0 || !pb) continue;
+      const bool same_design = a.kind == b.kind && pa->sections == pb->sections &&
+                               pa->top_angle_rad == pb->top_angle_rad &&
+                               pa->internal_pressure_Pa == pb->internal_pressure_Pa && pa->fe == pb->fe &&
+                               a.hang_off_b.z() == b.hang_off_b.z() && a.criteria == b.criteria &&
+                               a.fe_model == b.fe_model && a.design_top_angle_rad == b.design_top_angle_rad;
+      if (!same_design) continue;
+      const double steps = (a.azimuth_rad - b.azimuth_rad) * kRadToDeg / step_deg;
+      if (std::abs(steps - std::round(steps)) > kStepDivisionTolerance * std::max(1.0, std::abs(steps))) continue;
+      // The foot relative to the hang-off, turned: same placement (it is
+      // derived from the same design, so this holds to round-off).
+      const double turn = a.azimuth_rad - b.azimuth_rad;
+      const Eigen::Vector2d fa = (a.foot_g - a.hang_off_b).head<2>(), fb = (b.foot_g - b.hang_off_b).head<2>();
+      const Eigen::Vector2d fb_turned(std::cos(turn) * fb.x() - std::sin(turn) * fb.y(),
+                                      std::sin(turn) * fb.x() + std::cos(turn) * fb.y());
+      if ((fa - fb_turned).norm() > 1e-6 * fa.norm() || a.foot_g.z() != b.foot_g.z()) continue;
+      source[r] = static_cast<int>(q);
+      shift[r] = static_cast<int>(((std::lround(steps) % n_directions) + n_directions) % n_directions);
+      break;
+    }
+  }
+  return source;
+}
+
 }  // namespace
 
 const char* to_string(SozModel model) {
@@ -79,7 +125,7 @@ RiserOffsetEvaluator::RiserOffsetEvaluator(const Project& project, const RiserDe
       model_(model),
       environment_(fe_environment(project, conditions.current,
                                   design.sections.front().properties.hydrodynamic_diameter_m)) {
-  zero_ = model_ == SozModel::fe ? solve_fe(hang_off_g({0.0, 0.0}), nullptr)
+  zero_ = model_ == SozModel::fe ? solve_fe(hang_off_g({0.0, 0.0}), nullptr, Precision::final)
                                  : solve_catenary(hang_off_g({0.0, 0.0}));
   if (!zero_.error.empty()) throw engine::SolverError(zero_.error);
   if (zero_.touchdown_g) {
@@ -96,14 +142,15 @@ Eigen::Vector3d RiserOffsetEvaluator::hang_off_g(const Eigen::Vector2d& offset_x
   return engine::body_point_to_global(project_.hull.reference_point_g, offset, design_.hang_off_b);
 }
 
-RiserOffsetEvaluator::Evaluation RiserOffsetEvaluator::evaluate(
-    const Eigen::Vector2d& offset_xy_m, const engine::FeStaticsResult* warm) const {
+RiserOffsetEvaluator::Evaluation RiserOffsetEvaluator::evaluate(const Eigen::Vector2d& offset_xy_m,
+                                                                const engine::FeStaticsResult* warm,
+                                                                Precision precision) const {
   const Eigen::Vector3d top = hang_off_g(offset_xy_m);
   Evaluation e;
   if (model_ == SozModel::catenary) {
     e = solve_catenary(top);
   } else {
-    e = solve_fe(top, warm ? warm : zero_.solution.get());
+    e = solve_fe(top, warm ? warm : zero_.solution.get(), precision);
   }
   if (!e.error.empty()) return e;
   add_touchdown_check(e, e.touchdown_g);
@@ -136,8 +183,9 @@ RiserOffsetEvaluator::Evaluation RiserOffsetEvaluator::failed(std::string messag
 }
 
 RiserOffsetEvaluator::Evaluation RiserOffsetEvaluator::solve_fe(
-    const Eigen::Vector3d& top, const engine::FeStaticsResult* warm) const {
+    const Eigen::Vector3d& top, const engine::FeStaticsResult* warm, Precision precision) const {
   engine::FeStaticsOptions options;
+  if (precision == Precision::march) options.relative_force_tolerance = kMarchForceTolerance;
   options.compute_end_B_stiffness = false;  // the zone needs forces and stresses only
   if (warm) engine::warm_start_from(options, *warm);
   Evaluation e;
@@ -228,13 +276,18 @@ struct Sample {
 
 class DirectionSearch {
  public:
-  /// `previous`: the search of the neighbouring direction in the same task
-  /// (or null); its solutions are warm starts too — at offset d the two
-  /// hang-offs are only d·step apart, closer than the march step.
+  /// `chunk`: the searches of the earlier directions of the same task, in
+  /// order (the direction before this one last); `index`: this direction's
+  /// place in the task. Their samples are warm starts too — at offset d two
+  /// neighbouring hang-offs are only d·step apart, closer than the march
+  /// step — and cover the march where they are closer than one march step.
   DirectionSearch(const RiserOffsetEvaluator& evaluator, double direction_rad,
-                  const SozOptions& options, double depth_m, const DirectionSearch* previous)
+                  const SozOptions& options, double depth_m,
+                  const std::vector<std::unique_ptr<DirectionSearch>>& chunk, int index)
       : evaluator_(evaluator),
-        previous_(previous),
+        chunk_(chunk),
+        index_(index),
+        step_rad_(options.step_deg * kDegToRad),
         unit_(std::cos(direction_rad), std::sin(direction_rad)),
         tolerance_m_(options.tolerance_m),
         step_m_(options.march_step_pct_depth * depth_m / 100.0),
@@ -248,10 +301,14 @@ class DirectionSearch {
     const Sample* pass = &samples_.front();
     const Sample* fail = nullptr;
     double d = 0.0;
-    // 1. Coarse march to the first failure.
+    // 1. Coarse march to the first failure. A march point is solved unless
+    // the covering direction of the task (covering_index) passed at the same
+    // offset: the march resolves the zone to one march step radially, and
+    // that direction is within one march step of the point along the arc.
     while (d < limit_m_ - 1e-9) {
       d = std::min(d + step_m_, limit_m_);
-      const Sample& s = evaluate(d);
+      if (covered(d)) continue;
+      const Sample& s = evaluate(d, RiserOffsetEvaluator::Precision::march);
       if (s.g() > 0.0) {
         fail = &s;
         break;
@@ -259,6 +316,7 @@ class DirectionSearch {
       pass = &s;
     }
     if (!fail) {
+      // Passes to the limit; the utilization is that of its last solved point.
       result.allowable_offset_m = limit_m_;
       result.governing_criterion = "search_limit";
       result.governing_utilization = pass->evaluation.row.utilization;
@@ -266,18 +324,30 @@ class DirectionSearch {
       result.solves = solves_;
       return result;
     }
+    // The bracket's passing end must be a solve of this direction: march
+    // points skipped below the failure are solved now, downwards, until one
+    // passes (the failure moves down with them).
+    for (double below = fail->d_m - step_m_; below > pass->d_m + 1e-9; below -= step_m_) {
+      const Sample& s = evaluate(below, RiserOffsetEvaluator::Precision::march);
+      if (s.g() <= 0.0) {
+        pass = &s;
+        break;
+      }
+      fail = &s;
+    }
     // 2. Refine the first boundary.
     const auto [edge_pass, edge_fail] = refine(*pass, *fail);
     result.allowable_offset_m = edge_pass.d_m;
     result.governing_criterion = edge_fail.evaluation.row.governing_criterion;
     result.governing_utilization = edge_fail.evaluation.row.utilization;
     result.solver_message = edge_fail.evaluation.error;
-    // 3. Continue the coarse march: does the riser pass again farther out?
+    // 3. Continue the coarse march (every point solved): does the riser pass
+    // again farther out?
     const Sample* previous = fail;
     std::optional<SozBand> open;
     while (d < limit_m_ - 1e-9) {
       d = std::min(d + step_m_, limit_m_);
-      const Sample& s = evaluate(d);
+      const Sample& s = evaluate(d, RiserOffsetEvaluator::Precision::march);
       const bool passes = s.g() <= 0.0;
       const bool previous_passes = previous->g() <= 0.0;
       if (passes && !previous_passes) {
@@ -295,9 +365,33 @@ class DirectionSearch {
   }
 
  private:
+  /// The earlier direction of the task that covers this one's march point at
+  /// offset d, or −1: directions are grouped in blocks of m (m divides
+  /// kDirectionsPerTask) spanning at most one march step of arc at d, (m − 1)
+  /// d Δθ ≤ step; a block's first direction covers the rest.
+  int covering_index(double d) const {
+    int m = 1;
+    for (const int candidate : {2, 3, 6}) {
+      if (kDirectionsPerTask % candidate == 0 && (candidate - 1) * d * step_rad_ <= step_m_) m = candidate;
+    }
+    const int first = index_ - index_ % m;
+    return first == index_ ? -1 : first;
+  }
+
+  /// Whether the march point at d is covered by a passing solve of the
+  /// covering direction at the same offset.
+  bool covered(double d) const {
+    const int k = covering_index(d);
+    if (k < 0 || k >= static_cast<int>(chunk_.size())) return false;
+    for (const Sample& s : chunk_[static_cast<std::size_t>(k)]->samples_) {
+      if (std::abs(s.d_m - d) <= 1e-9 * std::max(1.0, d)) return s.g() <= 0.0;
+    }
+    return false;
+  }
+
   /// Solves at offset d along the direction, warm-started from the sample
-  /// (of this direction or the previous one) whose hull offset is nearest.
-  const Sample& evaluate(double d) {
+  /// (of this direction or an earlier one of the task) whose hull offset is nearest.
+  const Sample& evaluate(double d, RiserOffsetEvaluator::Precision precision) {
     const Eigen::Vector2d x = d * unit_;
     const engine::FeStaticsResult* warm = nullptr;
     double nearest_m = std::numeric_limits<double>::infinity();
@@ -311,17 +405,12 @@ class DirectionSearch {
       }
     };
     consider(*this);
-    if (previous_) consider(*previous_);
+    for (const auto& search : chunk_) consider(*search);
     ++solves_;
-    samples_.push_back({d, evaluator_.evaluate(x, warm)});
+    samples_.push_back({d, evaluator_.evaluate(x, warm, precision)});
     return samples_.back();
   }
 
- public:
-  /// Forgets the previous direction (before it is destroyed).
-  void detach() { previous_ = nullptr; }
-
- private:
   /// Shrinks [pass, fail] (either order along d) to the tolerance by
   /// safeguarded regula falsi (Illinois): returns the final passing and
   /// failing samples.
@@ -336,7 +425,7 @@ class DirectionSearch {
       }
       const double inset = kFalsiInset * tolerance_m_;
       x = std::clamp(x, lo + inset, hi - inset);
-      const Sample s = evaluate(x);
+      const Sample s = evaluate(x, RiserOffsetEvaluator::Precision::final);
       if (s.g() <= 0.0) {
         pass = s;
         g_pass = s.g();
@@ -353,7 +442,9 @@ class DirectionSearch {
   }
 
   const RiserOffsetEvaluator& evaluator_;
-  const DirectionSearch* previous_;
+  const std::vector<std::unique_ptr<DirectionSearch>>& chunk_;
+  int index_;
+  double step_rad_;
   Eigen::Vector2d unit_;
   double tolerance_m_;
   double step_m_;
@@ -429,20 +520,30 @@ SozResult compute_soz(const Project& project, const std::vector<RiserDesign>& ri
   const int hardware = static_cast<int>(std::thread::hardware_concurrency());
   result.threads = options.threads > 0 ? options.threads : std::max(1, hardware);
 
+  // Risers whose zone is another's turned about the vertical are not solved.
+  std::vector<int> shift;
+  const std::vector<int> source =
+      rotation_sources(project, risers, conditions, options.step_deg, n_directions, shift);
+  std::vector<int> solved;  // riser indices that are solved
+  for (std::size_t r = 0; r < risers.size(); ++r) {
+    if (source[r] < 0) solved.push_back(static_cast<int>(r));
+  }
+
   // Zero-offset solves (cold), one riser per task.
-  const int n_risers = static_cast<int>(risers.size());
+  const int n_solved = static_cast<int>(solved.size());
   std::vector<std::unique_ptr<RiserOffsetEvaluator>> evaluators(risers.size());
-  engine::parallel_for(n_risers, result.threads, [&](int r) {
-    evaluators[static_cast<std::size_t>(r)] = std::make_unique<RiserOffsetEvaluator>(
-        project, risers[static_cast<std::size_t>(r)], conditions, options.model);
+  engine::parallel_for(n_solved, result.threads, [&](int i) {
+    const auto r = static_cast<std::size_t>(solved[static_cast<std::size_t>(i)]);
+    evaluators[r] = std::make_unique<RiserOffsetEvaluator>(project, risers[r], conditions, options.model);
   });
   result.risers.resize(risers.size());
   for (std::size_t r = 0; r < risers.size(); ++r) {
     RiserSoz& z = result.risers[r];
-    const RiserStaticsRow& zero = evaluators[r]->zero_offset().row;
     z.name = risers[r].name;
     z.kind = to_string(risers[r].kind);
     z.azimuth_deg = normalize_deg(risers[r].azimuth_rad * kRadToDeg);
+    if (source[r] >= 0) continue;  // filled from its source below
+    const RiserStaticsRow& zero = evaluators[r]->zero_offset().row;
     z.zero_offset_governing_criterion = zero.governing_criterion;
     z.zero_offset_utilization = zero.utilization;
     z.fails_at_zero_offset = !zero.passes;
@@ -452,14 +553,14 @@ SozResult compute_soz(const Project& project, const std::vector<RiserDesign>& ri
 
   // Directions: tasks of kDirectionsPerTask directions of one riser.
   const int chunks = (n_directions + kDirectionsPerTask - 1) / kDirectionsPerTask;
-  engine::parallel_for(n_risers * chunks, result.threads, [&](int task) {
-    const std::size_t r = static_cast<std::size_t>(task / chunks);
+  engine::parallel_for(n_solved * chunks, result.threads, [&](int task) {
+    const auto r = static_cast<std::size_t>(solved[static_cast<std::size_t>(task / chunks)]);
     RiserSoz& z = result.risers[r];
     const int first = (task % chunks) * kDirectionsPerTask;
     // Directions of a task run in order, each warm-started from its
     // predecessor in the task; the chunks are fixed, so the result does not
     // depend on the thread count.
-    std::unique_ptr<DirectionSearch> previous;
+    std::vector<std::unique_ptr<DirectionSearch>> chunk;
     for (int k = first; k < std::min(first + kDirectionsPerTask, n_directions); ++k) {
       SozDirection& out = z.directions[static_cast<std::size_t>(k)];
       const double direction_deg = result.directions_deg[static_cast<std::size_t>(k)];
@@ -469,13 +570,38 @@ SozResult compute_soz(const Project& project, const std::vector<RiserDesign>& ri
         out.governing_utilization = z.zero_offset_utilization;
         continue;
       }
-      auto search = std::make_unique<DirectionSearch>(
-          *evaluators[r], direction_deg * kDegToRad, options, project.site.depth_m, previous.get());
+      auto search = std::make_unique<DirectionSearch>(*evaluators[r], direction_deg * kDegToRad, options,
+                                                      project.site.depth_m, chunk, k - first);
       out = search->run(direction_deg);
-      search->detach();
-      previous = std::move(search);
+      chunk.push_back(std::move(search));
     }
   });
+
+  // Rotated copies: direction k of the riser is direction k − shift of its source.
+  for (std::size_t r = 0; r < risers.size(); ++r) {
+    if (source[r] < 0) continue;
+    const RiserSoz& from = result.risers[static_cast<std::size_t>(source[r])];
+    RiserSoz& z = result.risers[r];
+    z.zero_offset_governing_criterion = from.zero_offset_governing_criterion;
+    z.zero_offset_utilization = from.zero_offset_utilization;
+    z.fails_at_zero_offset = from.fails_at_zero_offset;
+    z.zone_rotated_from = from.name;
+    z.directions.resize(from.directions.size());
+    for (int k = 0; k < n_directions; ++k) {
+      SozDirection d = from.directions[static_cast<std::size_t>((k - shift[r] + n_directions) % n_directions)];
+      d.direction_deg = result.directions_deg[static_cast<std::size_t>(k)];
+      d.solves = 0;
+      z.directions[static_cast<std::size_t>(k)] = std::move(d);
+    }
+  }
+  std::string rotated;
+  for (const RiserSoz& z : result.risers) {
+    if (!z.zone_rotated_from.empty()) rotated += fmt::format("{}{} = {}", rotated.empty() ? "" : ", ", z.name, z.zone_rotated_from);
+  }
+  if (!rotated.empty()) {
+    result.notes.push_back("zones turned about the vertical from an identical riser (same design and criteria, no "
+                           "current, no hull rotations: exact by symmetry): " + rotated);
+  }
 
   // Per-riser summaries and the platform intersection.
   result.platform.allowable_offset_m.assign(static_cast<std::size_t>(n_directions),

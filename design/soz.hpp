@@ -16,7 +16,15 @@
 // rotations of a load case when one is given):
 //  1. march outwards from d = 0 in steps of `march_step_pct_depth` up to
 //     `search_limit_pct_depth` until a point fails (each solve warm-started
-//     from the nearest converged offset of that direction);
+//     from the nearest converged offset of that direction or an earlier one
+//     of its task, and converged to 1e-6 of the force scale — 1e-10 in the
+//     refinement). The march resolves the zone to one step radially; near
+//     the centre the directions are closer than that along the arc, so a
+//     march point within one step of arc of a passing point of an earlier
+//     direction of the task at the same offset is not solved (blocks of 2, 3
+//     or 6 directions, the block's first solved; deterministic: tasks are
+//     fixed). The bracket's passing end is always solved: skipped points
+//     below a failure are solved downwards until one passes;
 //  2. refine the bracket [last pass, first fail] to `tolerance_m` with a
 //     safeguarded regula falsi (Illinois) on the governing utilization − 1,
 //     kept at least 0.4 tolerance inside the bracket so it closes from both
@@ -33,6 +41,16 @@
 // The platform SOZ is the intersection: per direction the smallest riser
 // allowable offset and the riser that sets it. Between grid directions the
 // allowable offset is interpolated linearly in angle (the polygon's edges).
+//
+// Risers that differ only by a rotation about the vertical share a zone:
+// with no current and no hull roll/pitch/yaw the problem — FE riser, flat
+// isotropic seabed (axial friction only), gravity, criteria incl. the
+// flex-joint axis that turns with the azimuth — is invariant under that
+// rotation, so a riser of the same design, criteria and hang-off depth whose
+// azimuth is a whole number of grid steps from another's has that riser's
+// zone turned by those steps (exact up to round-off; the default scenario's
+// risers pair up 180° apart). Any current or hull rotation breaks the
+// symmetry and every riser is solved.
 //
 // Parallel: risers × direction chunks on all cores (std::thread); each task
 // owns its FE state; results go to pre-sized slots, so the output does not
@@ -139,6 +157,10 @@ struct RiserSoz {
   std::string near_governing, far_governing;
   bool star_shaped = true;
   int solves = 0;
+  /// Set when the zone is another riser's zone turned about the vertical
+  /// (compute_soz: identical design and criteria, no current, no hull
+  /// rotations, azimuths a whole number of grid steps apart); then solves = 0.
+  std::string zone_rotated_from;
 };
 
 struct PlatformSoz {
@@ -254,10 +276,15 @@ class RiserOffsetEvaluator {
   /// Throws engine::SolverError when it cannot.
   RiserOffsetEvaluator(const Project& project, const RiserDesign& design,
                        const SozConditions& conditions, SozModel model);
+  /// Newton tolerance of a solve. final: the engine's default (1e-10 of the
+  /// force scale). march: 1e-6 — the criteria move by ~1e-6 of themselves,
+  /// far below what the pass/fail of a march sample or a 0.1 m tolerance
+  /// can see, and the chord iterations of the warm start stop earlier.
+  enum class Precision { march, final };
   /// The row at hull offset `offset_xy_m` (m, global x, y), warm-started from
   /// `warm` (a solution of this evaluator) or, when null, from the zero-offset one.
-  Evaluation evaluate(const Eigen::Vector2d& offset_xy_m,
-                      const engine::FeStaticsResult* warm) const;
+  Evaluation evaluate(const Eigen::Vector2d& offset_xy_m, const engine::FeStaticsResult* warm,
+                      Precision precision = Precision::final) const;
   const Evaluation& zero_offset() const { return zero_; }
   const RiserDesign& design() const { return design_; }
 
@@ -265,7 +292,8 @@ class RiserOffsetEvaluator {
   Eigen::Vector3d hang_off_g(const Eigen::Vector2d& offset_xy_m) const;
   /// The evaluation of a solve that failed with `message` (fails "no_static_solution").
   Evaluation failed(std::string message) const;
-  Evaluation solve_fe(const Eigen::Vector3d& hang_off_g, const engine::FeStaticsResult* warm) const;
+  Evaluation solve_fe(const Eigen::Vector3d& hang_off_g, const engine::FeStaticsResult* warm,
+                      Precision precision) const;
   Evaluation solve_catenary(const Eigen::Vector3d& hang_off_g) const;
   void add_touchdown_check(Evaluation& e, const std::optional<Eigen::Vector3d>& touchdown_g) const;
 

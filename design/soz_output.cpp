@@ -80,7 +80,9 @@ nlohmann::json soz_to_json(const SozResult& r) {
                       {"cross_right_m", z.cross_right_m},
                       {"near_governing", z.near_governing},
                       {"far_governing", z.far_governing},
-                      {"solves", z.solves}});
+                      {"solves", z.solves},
+                      {"zone_rotated_from", z.zone_rotated_from.empty() ? nlohmann::json(nullptr)
+                                                                        : nlohmann::json(z.zone_rotated_from)}});
   }
   nlohmann::json platform_pct = nlohmann::json::array();
   for (double a : r.platform.allowable_offset_m) platform_pct.push_back(pct(a, r.depth_m));
