@@ -279,7 +279,8 @@ class RiserOffsetEvaluator {
   /// Newton tolerance of a solve. final: the engine's default (1e-10 of the
   /// force scale). march: 1e-6 — the criteria move by ~1e-6 of themselves,
   /// far below what the pass/fail of a march sample or a 0.1 m tolerance
-  /// can see, and the chord iterations of the warm start stop earlier.
+  /// can see, and the chord iterations of the warm start stop earlier; no
+  /// touchdown node move (the final solves keep it for the TDP curvature).
   enum class Precision { march, final };
   /// The row at hull offset `offset_xy_m` (m, global x, y), warm-started from
   /// `warm` (a solution of this evaluator) or, when null, from the zero-offset one.

@@ -125,6 +125,31 @@ TEST(Soz, SearchAgreesWithABruteForceSweep) {
   EXPECT_LT(fine.solves, 72 * coarse.solves / 4);  // the covered points are not solved
 }
 
+TEST(Soz, CoveredMarchPointsDoNotChangeTheZone) {
+  // The 5° zone skips march points covered by a neighbouring direction. The
+  // reference solves every point: with 90° steps no point is covered, and 18
+  // copies of the riser turned by 0°, 5°, …, 85° put every 5° direction
+  // relative to the riser on that 90° grid (none is a whole number of 90°
+  // steps from another, so each is solved).
+  std::string risers;
+  for (int i = 0; i < 18; ++i) risers += test::soz_riser_yaml("R" + std::to_string(i), 5.0 * i);
+  const Project p = project(risers);
+  const std::vector<RiserDesign> d = designs(p);
+  const SozResult fine = compute_soz(p, {d[0]}, {}, options(5.0));
+  const SozResult reference = compute_soz(p, d, {}, options(90.0));
+  for (int i = 0; i < 18; ++i) {
+    ASSERT_TRUE(reference.risers[static_cast<std::size_t>(i)].zone_rotated_from.empty());
+    for (int q = 0; q < 4; ++q) {
+      // Riser i at azimuth 5i°, grid direction 90q°: relative direction 90q − 5i.
+      const double relative_deg = std::fmod(90.0 * q - 5.0 * i + 360.0, 360.0);
+      const SozDirection& ref = reference.risers[static_cast<std::size_t>(i)].directions[static_cast<std::size_t>(q)];
+      const SozDirection& got = fine.risers[0].directions[static_cast<std::size_t>(std::lround(relative_deg / 5.0))];
+      EXPECT_NEAR(got.allowable_offset_m, ref.allowable_offset_m, kSymmetry_m) << relative_deg << "°";
+      EXPECT_EQ(got.governing_criterion, ref.governing_criterion) << relative_deg << "°";
+    }
+  }
+}
+
 TEST(Soz, IdenticalRiserTurnedAboutTheVerticalSharesTheZone) {
   // A and B differ only in azimuth (0° and 90°, three 30° steps): without
   // current or hull rotations B's zone is A's turned by 90°.
