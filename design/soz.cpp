@@ -73,11 +73,14 @@ const Riser* project_riser(const Project& project, const std::string& name) {
 /// Per riser, the earlier riser whose zone is its zone turned about the
 /// vertical by `shift` grid steps (soz.hpp says when), or −1.
 std::vector<int> rotation_sources(const Project& project, const std::vector<RiserDesign>& risers,
-                                  const SozConditions& conditions, double step_deg, int n_directions,
+                                  const SozConditions& conditions, const SozOptions& options, int n_directions,
                                   std::vector<int>& shift) {
   std::vector<int> source(risers.size(), -1);
   shift.assign(risers.size(), 0);
-  if (conditions.current || !conditions.rotation_rad.isZero(0.0)) return source;
+  const double step_deg = options.step_deg;
+  // The catenary screening model carries no current: it stays symmetric.
+  const bool current = conditions.current && options.model == SozModel::fe;
+  if (current || !conditions.rotation_rad.isZero(0.0)) return source;
   for (std::size_t r = 0; r < risers.size(); ++r) {
     const RiserDesign& a = risers[r];
     const Riser* pa = project_riser(project, a.name);
@@ -534,7 +537,7 @@ SozResult compute_soz(const Project& project, const std::vector<RiserDesign>& ri
   // Risers whose zone is another's turned about the vertical are not solved.
   std::vector<int> shift;
   const std::vector<int> source =
-      rotation_sources(project, risers, conditions, options.step_deg, n_directions, shift);
+      rotation_sources(project, risers, conditions, options, n_directions, shift);
   std::vector<int> solved;  // riser indices that are solved
   for (std::size_t r = 0; r < risers.size(); ++r) {
     if (source[r] < 0) solved.push_back(static_cast<int>(r));

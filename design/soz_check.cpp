@@ -220,7 +220,8 @@ bool same_current(const std::optional<Current>& a, const std::optional<Current>&
 /// design condition). Cases with the same current (the same values, whatever
 /// the environment's name) and design condition share a zone.
 std::vector<int> zones_of_cases(const Project& project, const std::vector<std::string>& case_names,
-                                DesignCondition still_water_condition, std::vector<SozZone>& zones) {
+                                DesignCondition still_water_condition, bool ignore_current,
+                                std::vector<SozZone>& zones) {
   std::vector<int> index;
   std::vector<std::optional<Current>> currents;  // of `zones`
   for (const std::string& name : case_names) {
@@ -228,24 +229,25 @@ std::vector<int> zones_of_cases(const Project& project, const std::vector<std::s
     const Environment& env =
         *std::find_if(project.environments.begin(), project.environments.end(),
                       [&](const Environment& e) { return e.name == lc.environment; });
-    if (!env.current && lc.condition == still_water_condition) {
+    const std::optional<Current> current = ignore_current ? std::nullopt : env.current;
+    if (!current && lc.condition == still_water_condition) {
       index.push_back(-1);
       continue;
     }
     int k = 0;
     while (k < static_cast<int>(zones.size()) &&
-           !(same_current(currents[static_cast<std::size_t>(k)], env.current) &&
+           !(same_current(currents[static_cast<std::size_t>(k)], current) &&
              zones[static_cast<std::size_t>(k)].conditions.condition == lc.condition)) {
       ++k;
     }
     if (k == static_cast<int>(zones.size())) {
       SozZone zone;
-      zone.name = fmt::format("{}/{}", env.current ? env.name : "no-current", to_string(lc.condition));
+      zone.name = fmt::format("{}/{}", current ? env.name : "no-current", to_string(lc.condition));
       zone.conditions.name = zone.name;
-      zone.conditions.current = current_profile_of(env);
+      if (current) zone.conditions.current = current_profile_of(env);
       zone.conditions.condition = lc.condition;
       zones.push_back(std::move(zone));
-      currents.push_back(env.current);
+      currents.push_back(current);
     }
     zones[static_cast<std::size_t>(k)].cases.push_back(name);
     index.push_back(k);
@@ -337,7 +339,19 @@ SozResult run_soz(const ValidatedProject& validated, const SozOptions& options) 
   // each computed once and shared by the cases that have it.
   std::vector<int> zone_of_case(cases.size(), -1);
   if (!options.load_case && options.zone_per_current) {
-    zone_of_case = zones_of_cases(project, case_names, options.condition, result.zones);
+    // The catenary screening model carries no current: its zones differ by
+    // the design condition only.
+    const bool ignore_current = options.model == SozModel::catenary;
+    zone_of_case = zones_of_cases(project, case_names, options.condition, ignore_current, result.zones);
+    if (ignore_current && std::any_of(case_names.begin(), case_names.end(), [&](const std::string& name) {
+          const LoadCase& lc = find_load_case(project, name);
+          return std::any_of(project.environments.begin(), project.environments.end(),
+                             [&](const Environment& e) { return e.name == lc.environment && e.current; });
+        })) {
+      result.notes.push_back(
+          "the catenary screening model carries no current: the zones per case differ by design condition "
+          "only (use --model fe)");
+    }
     for (SozZone& zone : result.zones) {
       SozResult z = compute_soz(project, designs, zone.conditions, options);
       zone.risers = std::move(z.risers);
@@ -346,10 +360,6 @@ SozResult run_soz(const ValidatedProject& validated, const SozOptions& options) 
       zone.zone_wall_s = z.zone_wall_s;
       result.solves += z.solves;
       result.zone_wall_s += z.zone_wall_s;
-      if (options.model == SozModel::catenary && zone.conditions.current) {
-        result.notes.push_back(fmt::format(
-            "zone {}: the catenary screening model carries no current (use --model fe)", zone.name));
-      }
       for (const RiserSoz& r : zone.risers) {
         if (r.fails_at_zero_offset) {
           result.notes.push_back(fmt::format("zone {}: riser {} fails {} already at zero offset: no zone", zone.name,

@@ -47,6 +47,10 @@ TEST(SozCheck, ExtremeOffsetOfEveryCaseFromTheEnhancedScAnalysis) {
   o.step_deg = 30.0;
   o.extreme = SozExtremeOptions{3600.0, 7};  // 1 h record, MPM scaled to 3 h
   const SozResult r = run_soz(p, o);
+  // The screening model carries no current: the cases' zones differ by design
+  // condition only — extreme and survival (normal is the still-water one).
+  ASSERT_EQ(r.zones.size(), 2u);
+  EXPECT_FALSE(r.zones[0].conditions.current || r.zones[1].conditions.current);
   std::map<std::string, const OffsetCheck*> statics, extremes;
   for (const OffsetCheck& c : r.offset_checks) (c.kind == "static" ? statics : extremes)[c.case_name] = &c;
   ASSERT_EQ(statics.size(), p.project.load_cases.size());
