@@ -14,6 +14,7 @@
 
 #include "design/environment_loads.hpp"
 #include "design/input_error.hpp"
+#include "design/soz_symmetry.hpp"
 #include "design/static_case.hpp"
 #include "engine/analysis/rigid_body.hpp"
 #include "engine/common/parallel_for.hpp"
@@ -62,53 +63,6 @@ void regovern(RiserStaticsRow& row) {
 double normalize_deg(double deg) {
   deg = std::fmod(deg, 360.0);
   return deg < 0.0 ? deg + 360.0 : deg;
-}
-
-const Riser* project_riser(const Project& project, const std::string& name) {
-  const auto it = std::find_if(project.risers.begin(), project.risers.end(),
-                               [&](const Riser& r) { return r.name == name; });
-  return it == project.risers.end() ? nullptr : &*it;
-}
-
-/// Per riser, the earlier riser whose zone is its zone turned about the
-/// vertical by `shift` grid steps (soz.hpp says when), or −1.
-std::vector<int> rotation_sources(const Project& project, const std::vector<RiserDesign>& risers,
-                                  const SozConditions& conditions, const SozOptions& options, int n_directions,
-                                  std::vector<int>& shift) {
-  std::vector<int> source(risers.size(), -1);
-  shift.assign(risers.size(), 0);
-  const double step_deg = options.step_deg;
-  // The catenary screening model carries no current: it stays symmetric.
-  const bool current = conditions.current && options.model == SozModel::fe;
-  if (current || !conditions.rotation_rad.isZero(0.0)) return source;
-  for (std::size_t r = 0; r < risers.size(); ++r) {
-    const RiserDesign& a = risers[r];
-    const Riser* pa = project_riser(project, a.name);
-    for (std::size_t q = 0; q < r && pa; ++q) {
-      const RiserDesign& b = risers[q];
-      const Riser* pb = project_riser(project, b.name);
-      if (source[q] >= 0 || !pb) continue;
-      const bool same_design = a.kind == b.kind && pa->sections == pb->sections &&
-                               pa->top_angle_rad == pb->top_angle_rad &&
-                               pa->internal_pressure_Pa == pb->internal_pressure_Pa && pa->fe == pb->fe &&
-                               a.hang_off_b.z() == b.hang_off_b.z() && a.criteria == b.criteria &&
-                               a.fe_model == b.fe_model && a.design_top_angle_rad == b.design_top_angle_rad;
-      if (!same_design) continue;
-      const double steps = (a.azimuth_rad - b.azimuth_rad) * kRadToDeg / step_deg;
-      if (std::abs(steps - std::round(steps)) > kStepDivisionTolerance * std::max(1.0, std::abs(steps))) continue;
-      // The foot relative to the hang-off, turned: same placement (it is
-      // derived from the same design, so this holds to round-off).
-      const double turn = a.azimuth_rad - b.azimuth_rad;
-      const Eigen::Vector2d fa = (a.foot_g - a.hang_off_b).head<2>(), fb = (b.foot_g - b.hang_off_b).head<2>();
-      const Eigen::Vector2d fb_turned(std::cos(turn) * fb.x() - std::sin(turn) * fb.y(),
-                                      std::sin(turn) * fb.x() + std::cos(turn) * fb.y());
-      if ((fa - fb_turned).norm() > 1e-6 * fa.norm() || a.foot_g.z() != b.foot_g.z()) continue;
-      source[r] = static_cast<int>(q);
-      shift[r] = static_cast<int>(((std::lround(steps) % n_directions) + n_directions) % n_directions);
-      break;
-    }
-  }
-  return source;
 }
 
 }  // namespace
@@ -537,7 +491,7 @@ SozResult compute_soz(const Project& project, const std::vector<RiserDesign>& ri
   // Risers whose zone is another's turned about the vertical are not solved.
   std::vector<int> shift;
   const std::vector<int> source =
-      rotation_sources(project, risers, conditions, options, n_directions, shift);
+      soz_rotation_sources(project, risers, conditions, options, n_directions, shift);
   std::vector<int> solved;  // riser indices that are solved
   for (std::size_t r = 0; r < risers.size(); ++r) {
     if (source[r] < 0) solved.push_back(static_cast<int>(r));
