@@ -17,7 +17,9 @@
 #include <fmt/format.h>
 
 #include "app/exit_codes.hpp"
+#include "design/command_line_reference.hpp"
 #include "design/input_error.hpp"
+#include "design/level_comparison.hpp"
 #include "design/model_hash.hpp"
 #include "design/mooring_model.hpp"
 #include "design/project_summary.hpp"
@@ -216,6 +218,14 @@ int run_analyze(const std::string& project_file, const AnalyzeOptions& o) {
              "tensions {:.3f} s\n",
              result.equilibrium_wall_s, result.reduction_wall_s, result.forcing_wall_s, result.dynamics_wall_s,
              result.wave_frequency_wall_s, result.tensions_wall_s);
+  if (result.coupled_solver) {
+    const engine::IdaStatistics& s = *result.coupled_solver;
+    fmt::print("  coupled: {} lines, {} states; {} steps, {} Newton-matrix setups ({} partial), {} residuals; "
+               "{:.1f}x real time\n",
+               result.coupled_lines, result.coupled_state_size, s.steps, s.newton_matrix_setups,
+               s.newton_matrix_updates, s.residual_evaluations,
+               result.dynamics_wall_s > 0.0 ? o.duration_s / result.dynamics_wall_s : 0.0);
+  }
   if (!result.dynamic_tensions.empty()) {
     fmt::print("  line dynamics {:.3f} s; max fairlead tension, quasi-static vs dynamic:\n", result.line_dynamics_wall_s);
     for (std::size_t l = 0; l < result.dynamic_tensions.size() && l < result.tensions.size(); ++l) {
@@ -225,8 +235,76 @@ int run_analyze(const std::string& project_file, const AnalyzeOptions& o) {
                  *std::max_element(qs.begin(), qs.end()) / 1e3, *std::max_element(dy.begin(), dy.end()) / 1e3,
                  result.dynamic_tensions[l].solver.steps);
     }
+    for (std::size_t l = result.tensions.size(); l < result.dynamic_tensions.size(); ++l) {
+      const auto& dy = result.dynamic_tensions[l].tension_N;
+      fmt::print("    {:<12} {:>13}  {:10.1f} kN  (riser top)\n", result.dynamic_tensions[l].line, "",
+                 *std::max_element(dy.begin(), dy.end()) / 1e3);
+    }
   }
   for (const auto& note : result.notes) fmt::print("  note: {}\n", note);
+  return app::kExitOk;
+}
+
+struct CompareOptions {
+  std::string case_name;
+  double duration_s = 10800.0;
+  double step_s = 0.5;
+  std::uint64_t seed = 1;
+  std::string out;
+};
+
+/// `spiral compare`: the four levels on one case and realization, side by
+/// side (terminal table, comparison.json).
+int run_compare(const std::string& project_file, const CompareOptions& o) {
+  const design::ValidatedProject loaded = design::load_validated_project(project_file);
+  design::find_load_case(loaded.project, o.case_name);  // an unknown case fails before any run
+  design::ComparisonRequest request;
+  request.load_case = o.case_name;
+  request.duration_s = o.duration_s;
+  request.output_step_s = o.step_s;
+  request.seed = o.seed;
+  if (isatty(STDERR_FILENO)) {
+    request.progress = [](const std::string& level, double fraction) {
+      fmt::print(stderr, "\r  {:<12} {:3.0f} %", level, 100.0 * fraction);
+      if (fraction >= 1.0) fmt::print(stderr, "\n");
+      std::fflush(stderr);
+    };
+  }
+  design::LevelComparison comparison;
+  try {
+    comparison = design::compare_levels(loaded, request);
+  } catch (const engine::FileFormatError& error) {
+    fmt::print(stderr, "{}\n", error.what());
+    return app::kExitBadInput;
+  }
+  const std::filesystem::path folder =
+      o.out.empty() ? std::filesystem::path("out") / std::filesystem::path(project_file).stem() / "compare" /
+                          fmt::format("{}-seed{}", o.case_name, o.seed)
+                    : std::filesystem::path(o.out);
+  const std::string table = design::comparison_table(comparison);
+  try {
+    std::filesystem::create_directories(folder);
+    const std::filesystem::path tmp = folder / "comparison.json.tmp";
+    {
+      std::ofstream json_out(tmp);
+      json_out << design::comparison_to_json(comparison).dump(2) << "\n";
+      if (!json_out) throw std::runtime_error("cannot write " + tmp.string());
+    }
+    std::filesystem::rename(tmp, folder / "comparison.json");
+    std::ofstream table_out(folder / "comparison.txt");
+    table_out << table;
+    if (!table_out) throw std::runtime_error("cannot write " + (folder / "comparison.txt").string());
+  } catch (const std::exception& error) {
+    fmt::print(stderr, "output error: {}\n", error.what());
+    fmt::print("{}", table);  // the finished comparison is not lost
+    return app::kExitOutputError;
+  }
+  fmt::print("levels of '{}', case {} (seed {}, {:.0f} s): {}\n", loaded.project.name, o.case_name, o.seed,
+             o.duration_s, folder.string());
+  fmt::print("{}", table);
+  for (const auto& level : comparison.levels) {
+    if (level.error) return app::kExitSolverFailure;  // the other levels are written above
+  }
   return app::kExitOk;
 }
 
@@ -322,10 +400,10 @@ int main(int argc, char** argv) {
 
   AnalyzeOptions analyze_options;
   CLI::App* analyze = cli.add_subcommand(
-      "analyze", "Time-domain hull analysis of a load case (uncoupled | sc | sc-enhanced): CSV + JSON");
+      "analyze", "Time-domain analysis of a load case (uncoupled | sc | sc-enhanced | coupled): CSV + JSON");
   analyze->add_option("PROJECT", project_file, "Project YAML file")->required();
   analyze->add_option("--case", analyze_options.case_name, "Load case name")->required();
-  analyze->add_option("--level", analyze_options.level, "uncoupled | sc | sc-enhanced (default: sc)");
+  analyze->add_option("--level", analyze_options.level, "uncoupled | sc | sc-enhanced | coupled (default: sc)");
   analyze->add_option("--duration", analyze_options.duration_s, "Simulated time, s (default: 10800)");
   analyze->add_option("--step", analyze_options.step_s, "Output step, s (default: 0.5)");
   analyze->add_option("--seed", analyze_options.seed, "Random seed of the wave and wind realizations (default: 1)");
@@ -334,6 +412,18 @@ int main(int argc, char** argv) {
   analyze->add_option("--out", analyze_options.out,
                       "Output folder (default: out/<project-stem>/analyze/<case>-<level>-seed<N>)");
   analyze->footer(kExitCodeHelp);
+
+  CompareOptions compare_options;
+  CLI::App* compare = cli.add_subcommand(
+      "compare", "All analysis levels (uncoupled, sc, sc-enhanced, coupled) on one case and realization");
+  compare->add_option("PROJECT", project_file, "Project YAML file")->required();
+  compare->add_option("--case", compare_options.case_name, "Load case name")->required();
+  compare->add_option("--duration", compare_options.duration_s, "Simulated time, s (default: 10800)");
+  compare->add_option("--step", compare_options.step_s, "Output step, s (default: 0.5)");
+  compare->add_option("--seed", compare_options.seed, "Random seed of the realizations (default: 1)");
+  compare->add_option("--out", compare_options.out,
+                      "Output folder (default: out/<project-stem>/compare/<case>-seed<N>)");
+  compare->footer(kExitCodeHelp);
 
   try {
     cli.parse(argc, argv);
@@ -357,6 +447,7 @@ int main(int argc, char** argv) {
     }
     if (report_cmd->parsed()) return run_report(project_file, stage_name, out_dir);
     if (analyze->parsed()) return run_analyze(project_file, analyze_options);
+    if (compare->parsed()) return run_compare(project_file, compare_options);
     if (equilibrium->parsed() || stiffness->parsed()) {
       if (!case_name.empty()) case_request.load_case = case_name;
       if (!damaged_line.empty()) case_request.damaged_line = damaged_line;

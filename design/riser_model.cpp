@@ -175,6 +175,11 @@ RiserDesign riser_design(const Project& project, const Riser& riser) {
     const RiserSection& s = riser.sections[riser.sections.size() - 1 - i];
     design.fe_model.sections[i].drag_normal = s.drag_normal;
     design.fe_model.sections[i].drag_tangential = s.drag_axial;
+    // Dynamics only: displaced volume and added mass on the hydrodynamic diameter.
+    const double d = design.fe_model.sections[i].hydro_diameter_m;
+    design.fe_model.sections[i].displaced_area_m2 = 0.25 * std::numbers::pi * d * d;
+    design.fe_model.sections[i].added_mass_normal = s.added_mass_normal;
+    design.fe_model.sections[i].added_mass_tangential = s.added_mass_axial;
   }
   design.fe_model.refinement = touchdown_refinement_zone(riser.fe, laid_m);
   return design;

@@ -17,6 +17,7 @@
 #include "design/command_line_reference.hpp"
 #include "design/environment_loads.hpp"
 #include "design/hull_model.hpp"
+#include "design/coupled_analysis.hpp"
 #include "design/line_hydrodynamics.hpp"
 #include "design/mooring_model.hpp"
 #include "design/project_validation.hpp"
@@ -337,6 +338,15 @@ std::optional<Eigen::Matrix<double, 6, Eigen::Dynamic>> wave_frequency_motion(
 
 }  // namespace
 
+std::optional<Eigen::Matrix<double, 6, Eigen::Dynamic>> wave_frequency_motions(
+    const ValidatedProject& validated, const DynamicModel& model,
+    const DynamicAnalysisRequest& request, const Eigen::VectorXd& times_s) {
+  const Project& project = validated.project;
+  const LoadCase& load_case = find_load_case(project, request.load_case);
+  return wave_frequency_motion(project, find_environment(project, load_case.environment), model,
+                               request, times_s);
+}
+
 const char* to_string(AnalysisLevel level) {
   switch (level) {
     case AnalysisLevel::uncoupled:
@@ -345,19 +355,20 @@ const char* to_string(AnalysisLevel level) {
       return "sc";
     case AnalysisLevel::semi_coupled_enhanced:
       return "sc-enhanced";
+    case AnalysisLevel::coupled:
+      return "coupled";
   }
   return "?";
 }
 
 AnalysisLevel parse_analysis_level(const std::string& name, const Project& project) {
   for (AnalysisLevel level : {AnalysisLevel::uncoupled, AnalysisLevel::semi_coupled,
-                              AnalysisLevel::semi_coupled_enhanced}) {
+                              AnalysisLevel::semi_coupled_enhanced, AnalysisLevel::coupled}) {
     if (name == to_string(level)) return level;
   }
   throw command_line_error(
       project, "--level",
-      fmt::format("unknown analysis level \"{}\"; allowed: uncoupled | sc | sc-enhanced "
-                  "(coupled is not available yet)",
+      fmt::format("unknown analysis level \"{}\"; allowed: uncoupled | sc | sc-enhanced | coupled",
                   name));
 }
 
@@ -467,10 +478,11 @@ DynamicModel build_dynamic_model(const ValidatedProject& validated,
   // External force.
   const auto forcing_start = std::chrono::steady_clock::now();
   std::shared_ptr<const engine::WaveRealization> sea;
-  if (environment.waves && (project.hull.mean_drift || hull.morison)) {
+  if (environment.waves) {
     sea = std::make_shared<const engine::WaveRealization>(
         realize_sea(project, *environment.waves, request.duration_s, request.seed));
   }
+  model.sea = sea;
   std::shared_ptr<const engine::SlowDriftSeries> drift;
   if (environment.waves && project.hull.mean_drift) {
     const engine::MeanDriftTable table = drift_table_of(project, *project.hull.mean_drift);
@@ -612,16 +624,13 @@ DynamicModel build_dynamic_model(const ValidatedProject& validated,
   return model;
 }
 
-DynamicAnalysisResult run_dynamic_analysis(const ValidatedProject& validated,
-                                           const DynamicAnalysisRequest& request) {
-  const Project& project = validated.project;
-  DynamicModel model = build_dynamic_model(validated, request);
-  const LoadCase& load_case = find_load_case(project, request.load_case);
-  const Environment& environment = find_environment(project, load_case.environment);
-
+DynamicAnalysisResult result_of_model(const DynamicModel& model,
+                                      const DynamicAnalysisRequest& request,
+                                      const std::string& case_name,
+                                      const std::string& environment_name) {
   DynamicAnalysisResult result;
-  result.case_name = load_case.name;
-  result.environment = environment.name;
+  result.case_name = case_name;
+  result.environment = environment_name;
   result.level = request.level;
   result.seed = request.seed;
   result.static_offset = model.statics.offset;
@@ -632,6 +641,39 @@ DynamicAnalysisResult run_dynamic_analysis(const ValidatedProject& validated,
   result.equilibrium_wall_s = model.equilibrium_wall_s;
   result.reduction_wall_s = model.reduction_wall_s;
   result.forcing_wall_s = model.forcing_wall_s;
+  return result;
+}
+
+std::vector<TensionSeries> quasi_static_fairlead_tensions(
+    const Project& project, const std::string& damaged_line,
+    const Eigen::Matrix<double, 6, Eigen::Dynamic>& total) {
+  std::vector<TensionSeries> tensions;
+  LineArrayModel mooring = build_mooring_model(project, damaged_line);
+  const Eigen::Index n = total.cols();
+  for (const auto& line : mooring.lines)
+    tensions.push_back({line->name(), std::vector<double>(n), std::vector<Eigen::Vector3d>(n)});
+  for (Eigen::Index k = 0; k < n; ++k) {
+    const engine::HullPose pose =
+        engine::pose_from_offset(project.hull.reference_point_g, total.col(k));
+    for (std::size_t l = 0; l < mooring.lines.size(); ++l) {
+      const auto& line = mooring.lines[l];
+      const Eigen::Vector3d fairlead = pose.reference_point_g + pose.rotation * line->attachment_b();
+      tensions[l].fairlead_g_m[static_cast<std::size_t>(k)] = fairlead;
+      tensions[l].tension_N[static_cast<std::size_t>(k)] = line->solve(fairlead).top_tension_N;
+    }
+  }
+  return tensions;
+}
+
+DynamicAnalysisResult run_dynamic_analysis(const ValidatedProject& validated,
+                                           const DynamicAnalysisRequest& request) {
+  if (request.level == AnalysisLevel::coupled) return run_coupled_analysis(validated, request);
+  const Project& project = validated.project;
+  DynamicModel model = build_dynamic_model(validated, request);
+  const LoadCase& load_case = find_load_case(project, request.load_case);
+  const Environment& environment = find_environment(project, load_case.environment);
+
+  DynamicAnalysisResult result = result_of_model(model, request, load_case.name, environment.name);
 
   // Low-frequency dynamics from the static equilibrium, at rest.
   const engine::HullSimulationOptions options = forced_run_options(request);
@@ -693,20 +735,8 @@ DynamicAnalysisResult run_dynamic_analysis(const ValidatedProject& validated,
   // Quasi-static fairlead tensions at the total motion.
   start = std::chrono::steady_clock::now();
   if (request.compute_tensions) {
-    LineArrayModel mooring = build_mooring_model(project, load_case.damaged_line.value_or(""));
-    const Eigen::Index n = result.total.cols();
-    for (const auto& line : mooring.lines)
-      result.tensions.push_back({line->name(), std::vector<double>(n), std::vector<Eigen::Vector3d>(n)});
-    for (Eigen::Index k = 0; k < n; ++k) {
-      const engine::HullPose pose =
-          engine::pose_from_offset(project.hull.reference_point_g, result.total.col(k));
-      for (std::size_t l = 0; l < mooring.lines.size(); ++l) {
-        const auto& line = mooring.lines[l];
-        const Eigen::Vector3d fairlead = pose.reference_point_g + pose.rotation * line->attachment_b();
-        result.tensions[l].fairlead_g_m[static_cast<std::size_t>(k)] = fairlead;
-        result.tensions[l].tension_N[static_cast<std::size_t>(k)] = line->solve(fairlead).top_tension_N;
-      }
-    }
+    result.tensions = quasi_static_fairlead_tensions(project, load_case.damaged_line.value_or(""),
+                                                     result.total);
   }
   result.tensions_wall_s = seconds_since(start);
 
@@ -720,13 +750,15 @@ DynamicAnalysisResult run_dynamic_analysis(const ValidatedProject& validated,
     lines.dt_s = result.times_s(1) - result.times_s(0);
     lines.motion = result.total;
     lines.ramp_s = request.line_dynamics_ramp_s;
-    result.dynamic_tensions = run_mooring_line_dynamics(project, lines);
+    lines.sea = model.sea;
+    result.dynamic_tensions = run_line_dynamics(project, lines);
     result.line_dynamics_wall_s = seconds_since(start);
     result.notes.push_back(
-        fmt::format("dynamic tensions: FE lines with the total hull motion prescribed at the "
-                    "fairleads, built up over the "
-                    "first {:g} s; current on the lines, no wave kinematics on the lines",
-                    request.line_dynamics_ramp_s));
+        fmt::format("dynamic tensions: FE mooring lines and risers with the total hull motion "
+                    "prescribed at the fairleads and hang-offs, built up over the "
+                    "first {:g} s; current on the lines{}",
+                    request.line_dynamics_ramp_s,
+                    model.sea ? " and linear wave kinematics at each element's static midpoint" : ""));
   }
   return result;
 }

@@ -64,12 +64,14 @@
 #include "engine/hull/radiation_memory.hpp"
 #include "engine/hull/wamit_1.hpp"
 #include "engine/hull/wamit_3.hpp"
+#include "engine/environment/wave_realization.hpp"
 
 namespace spiral::design {
 
-enum class AnalysisLevel { uncoupled, semi_coupled, semi_coupled_enhanced };
+/// coupled: hull and every dynamic FE line integrated together (coupled_analysis.hpp).
+enum class AnalysisLevel { uncoupled, semi_coupled, semi_coupled_enhanced, coupled };
 
-/// "uncoupled", "sc", "sc-enhanced" (the CLI names).
+/// "uncoupled", "sc", "sc-enhanced", "coupled" (the CLI names).
 const char* to_string(AnalysisLevel level);
 /// Parses the CLI name; throws InputError (path `--level`) for anything else.
 AnalysisLevel parse_analysis_level(const std::string& name, const Project& project);
@@ -85,6 +87,9 @@ struct DynamicAnalysisRequest {
   /// the hull motion prescribed at its fairlead (design/line_dynamics.hpp).
   bool line_dynamics = false;
   double line_dynamics_ramp_s = 20.0;  ///< build-up ramp of the prescribed motion, >= 0
+  /// Coupled level: the integrator's work limit per output step (IDA
+  /// gives up beyond it: a step-size collapse stops the case, not the machine).
+  long coupled_max_steps_between_outputs = 500000;
   /// Called with the fraction done (0..1) during the dynamics; may be empty.
   std::function<void(double)> progress;
 };
@@ -106,6 +111,9 @@ struct DynamicModel {
   engine::Vector6d mean_slow_drift_force = engine::Vector6d::Zero();  ///< sum a_k² D_k, global
   /// The slow-drift force alone, F_sd(t) (global), empty without waves or drift data.
   std::function<engine::Vector6d(double)> slow_drift;
+  /// The case's seeded wave realization (empty without waves): the slow
+  /// drift, the Morison hull and the dynamic lines all see this one sea.
+  std::shared_ptr<const engine::WaveRealization> sea;
   std::vector<std::string> notes;
   double equilibrium_wall_s = 0.0;  ///< static case (equilibrium)
   double reduction_wall_s = 0.0;    ///< K reduction (+ line hydrodynamics for sc-enhanced)
@@ -135,12 +143,18 @@ struct DynamicAnalysisResult {
   Eigen::Matrix<double, 6, Eigen::Dynamic> total;           ///< LF + WF
   bool wave_frequency_computed = false;
   std::vector<TensionSeries> tensions;               ///< quasi-static
-  std::vector<LineDynamicsSeries> dynamic_tensions;  ///< with request.line_dynamics
+  /// With request.line_dynamics (mooring lines), or from the coupled run
+  /// (mooring lines, then risers: their top tension).
+  std::vector<LineDynamicsSeries> dynamic_tensions;
   engine::Vector6d static_offset = engine::Vector6d::Zero();
   engine::Vector6d mean_slow_drift_force = engine::Vector6d::Zero();
   std::optional<engine::Matrix6d> line_added_mass;
   std::optional<engine::Matrix6d> line_damping;
-  engine::CvodeStatistics solver;
+  engine::CvodeStatistics solver;  ///< hull integrator (not the coupled level)
+  /// Coupled level: the one IDA integration of hull + lines, and its size.
+  std::optional<engine::IdaStatistics> coupled_solver;
+  long coupled_state_size = 0;
+  int coupled_lines = 0;
   std::vector<std::string> notes;
   double equilibrium_wall_s = 0.0;
   double reduction_wall_s = 0.0;
@@ -161,6 +175,26 @@ engine::MotionRaoTable motion_raos_from_excitation(const engine::ExcitationTable
                                                    const engine::Matrix6d& linear_damping,
                                                    const engine::Matrix6d& stiffness);
 
+/// Wave-frequency hull motions (global, m, rad) of the request's case at
+/// `times_s`, from the .4 RAOs or .1 + .3; empty without them or without waves.
+std::optional<Eigen::Matrix<double, 6, Eigen::Dynamic>> wave_frequency_motions(
+    const ValidatedProject& project, const DynamicModel& model,
+    const DynamicAnalysisRequest& request, const Eigen::VectorXd& times_s);
+
+/// A result that carries the model's case data, notes and set-up timings
+/// (no series yet) at `request.level`.
+DynamicAnalysisResult result_of_model(const DynamicModel& model,
+                                      const DynamicAnalysisRequest& request,
+                                      const std::string& case_name,
+                                      const std::string& environment_name);
+
+/// Quasi-static fairlead tension of every intact mooring line (catenary) at
+/// each column of `total` (hull offsets, m, rad).
+std::vector<TensionSeries> quasi_static_fairlead_tensions(
+    const Project& project, const std::string& damaged_line,
+    const Eigen::Matrix<double, 6, Eigen::Dynamic>& total);
+
+/// Any level; coupled goes to run_coupled_analysis (coupled_analysis.hpp).
 DynamicAnalysisResult run_dynamic_analysis(const ValidatedProject& project,
                                            const DynamicAnalysisRequest& request);
 

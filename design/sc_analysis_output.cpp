@@ -190,7 +190,22 @@ nlohmann::json dynamic_analysis_to_json(const DynamicAnalysisResult& r,
                             {"error_test_failures", t.solver.error_test_failures},
                             {"nonlinear_convergence_failures", t.solver.nonlinear_convergence_failures}});
   }
-  if (!r.dynamic_tensions.empty()) j["line_dynamics_solver"] = line_solvers;
+  if (r.coupled_solver) {
+    const engine::IdaStatistics& s = *r.coupled_solver;
+    j["coupled_solver"] = {{"integrator", "IDA (BDF, order <= 2), hull + lines in one system"},
+                           {"lines", r.coupled_lines},
+                           {"states", r.coupled_state_size},
+                           {"steps", s.steps},
+                           {"residual_evaluations", s.residual_evaluations},
+                           {"jacobian_evaluations", s.newton_matrix_setups},
+                           {"partial_jacobian_updates", s.newton_matrix_updates},
+                           {"nonlinear_iterations", s.nonlinear_iterations},
+                           {"error_test_failures", s.error_test_failures},
+                           {"nonlinear_convergence_failures", s.nonlinear_convergence_failures},
+                           {"last_step_s", s.last_step_s}};
+  } else if (!r.dynamic_tensions.empty()) {
+    j["line_dynamics_solver"] = line_solvers;
+  }
   j["notes"] = r.notes;
   return j;
 }

@@ -113,10 +113,36 @@ realtype dot(N_Vector x, N_Vector y) {
 realtype max_norm(N_Vector x) {
   return NV_LENGTH_S(x) > 0 ? vec(x).cwiseAbs().maxCoeff() : 0.0;
 }
+// Block error norms (IdaOptions::error_group_starts): the integrator in
+// IDASolve on this thread, or null (one group). Set by advance_to only.
+thread_local const std::vector<Eigen::Index>* t_error_groups = nullptr;
+
+/// max over the groups of sqrt(Σ_g (x w)² / n_g), the terms selected by `keep`.
+template <class Keep>
+realtype grouped_wrms(const Vec& x, const Vec& w, const Keep& keep) {
+  const std::vector<Eigen::Index>& starts = *t_error_groups;
+  const Eigen::Index n = x.size();
+  double worst = 0.0;
+  for (std::size_t g = 0; g < starts.size(); ++g) {
+    const Eigen::Index a = starts[g], b = g + 1 < starts.size() ? starts[g + 1] : n;
+    double sum = 0.0;
+    for (Eigen::Index i = a; i < b; ++i) {
+      if (keep(i)) sum += (x[i] * w[i]) * (x[i] * w[i]);
+    }
+    worst = std::max(worst, sum / static_cast<double>(b - a));
+  }
+  return std::sqrt(worst);
+}
+
 realtype wrms_norm(N_Vector x, N_Vector w) {
+  if (t_error_groups != nullptr) return grouped_wrms(vec(x), vec(w), [](Eigen::Index) { return true; });
   return std::sqrt(vec(x).cwiseProduct(vec(w)).squaredNorm() / static_cast<double>(NV_LENGTH_S(x)));
 }
 realtype wrms_norm_mask(N_Vector x, N_Vector w, N_Vector id) {
+  if (t_error_groups != nullptr) {
+    const Vec mask = vec(id);
+    return grouped_wrms(vec(x), vec(w), [&](Eigen::Index i) { return mask[i] > 0.0; });
+  }
   const auto xw = vec(x).cwiseProduct(vec(w)).array();
   const double sum = (vec(id).array() > 0.0).select(xw * xw, 0.0).sum();
   return std::sqrt(sum / static_cast<double>(NV_LENGTH_S(x)));
@@ -248,6 +274,7 @@ struct IdaIntegrator::Impl {
   std::string last_residual_message;
   std::string last_ida_message;
   long recoverable_failures = 0;
+  std::vector<Eigen::Index> error_groups;
 
   ~Impl() {
     if (ida != nullptr) IDAFree(&ida);
@@ -439,9 +466,19 @@ IdaIntegrator::IdaIntegrator(ImplicitSystem& system, double t0_s, const Eigen::V
         "IDA: max_steps_between_outputs and max_steps_between_setups must be > 0");
   }
 
+  if (!options.error_group_starts.empty()) {
+    const auto& g = options.error_group_starts;
+    bool ok = g.front() == 0;
+    for (std::size_t i = 1; i < g.size(); ++i) ok = ok && g[i] > g[i - 1];
+    if (!ok || g.back() >= n)
+      throw std::invalid_argument(
+          "IDA: error_group_starts must start at 0 and increase strictly below the state size");
+  }
+
   Impl& m = *impl_;
   m.system = &system;
   m.options = options;
+  m.error_groups = options.error_group_starts;
   m.y_out = y0;
   m.yp_out = yp0;
   m.t_out = t0_s;
@@ -509,7 +546,9 @@ void IdaIntegrator::advance_to(double t_out_s) {
         fmt::format("IDA: output time {} s must be after {} s", t_out_s, m.t_out));
   }
   realtype t_reached = m.t_out;
+  if (!m.error_groups.empty()) fast_nvector::t_error_groups = &m.error_groups;
   const int flag = IDASolve(m.ida, t_out_s, &t_reached, m.y, m.yp, IDA_NORMAL);
+  fast_nvector::t_error_groups = nullptr;
   if (m.fatal_exception) {
     std::exception_ptr e = std::exchange(m.fatal_exception, nullptr);
     std::rethrow_exception(e);
@@ -544,6 +583,17 @@ const Eigen::VectorXd& IdaIntegrator::state() const {
 }
 const Eigen::VectorXd& IdaIntegrator::state_derivative() const {
   return impl_->yp_out;
+}
+
+Eigen::VectorXd IdaIntegrator::weighted_local_errors() const {
+  const Impl& m = *impl_;
+  N_Vector ele = N_VClone(m.y), ewt = N_VClone(m.y);
+  Eigen::VectorXd out = Eigen::VectorXd::Zero(NV_LENGTH_S(m.y));
+  if (IDAGetEstLocalErrors(m.ida, ele) == IDA_SUCCESS && IDAGetErrWeights(m.ida, ewt) == IDA_SUCCESS)
+    out = fast_nvector::vec(ele).cwiseProduct(fast_nvector::vec(ewt)).cwiseAbs();
+  N_VDestroy(ele);
+  N_VDestroy(ewt);
+  return out;
 }
 
 IdaStatistics IdaIntegrator::statistics() const {

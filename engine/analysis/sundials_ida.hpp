@@ -40,6 +40,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "engine/analysis/sundials_cvode.hpp"
 
@@ -82,6 +83,13 @@ struct IdaOptions {
   /// Per state: 1 differential, 0 algebraic. Algebraic states are left out of
   /// the local error test (IDASetSuppressAlg).
   std::optional<Eigen::VectorXd> differential_id;
+  /// Block error norms: the states split into groups at these indices
+  /// (strictly increasing, the first 0); every norm IDA takes (local error
+  /// test, Newton convergence) is then the largest of the groups' own WRMS
+  /// norms, so each block meets the tolerance by itself however many states
+  /// the others have (the one WRMS norm over all N states would let one
+  /// block's error through diluted by √(N / n_block)). Empty: one group.
+  std::vector<Eigen::Index> error_group_starts;
   int max_order = 5;                        ///< 1..5
   std::optional<double> max_step_s;         ///< > 0
   std::optional<double> initial_step_s;     ///< > 0
@@ -129,6 +137,10 @@ class IdaIntegrator {
   const Eigen::VectorXd& state() const;
   const Eigen::VectorXd& state_derivative() const;
   IdaStatistics statistics() const;
+  /// |local error estimate| × error weight per state of the last step
+  /// (IDAGetEstLocalErrors, IDAGetErrWeights): which states limit the step,
+  /// or made it collapse.
+  Eigen::VectorXd weighted_local_errors() const;
 
  private:
   struct Impl;

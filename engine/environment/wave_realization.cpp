@@ -42,16 +42,13 @@ double uniform01(std::mt19937_64& rng) {
   return static_cast<double>(rng() >> 11) * 0x1.0p-53;
 }
 
-struct Profiles {
-  double ch_over_sh = 0.0;  ///< cosh k(z'+h) / sinh kh
-  double sh_over_sh = 0.0;  ///< sinh k(z'+h) / sinh kh
-  double ch_over_ch = 0.0;  ///< cosh k(z'+h) / cosh kh
-};
+}  // namespace
 
 // Depth attenuation written with exponentials of non-positive arguments only,
 // e.g. cosh k(z+h) / sinh kh = e^{kz} (1 + e^{-2k(z+h)}) / (1 - e^{-2kh}),
 // so that deep components (kh of hundreds) do not overflow.
-Profiles profiles(const WaveComponent& c, double z_stretched, const std::optional<double>& h) {
+WaveProfiles wave_profiles(const WaveComponent& c, double z_stretched,
+                           const std::optional<double>& h) {
   const double k = c.wavenumber_rad_per_m;
   const double e = std::exp(k * z_stretched);
   if (!h) return {e, e, e};
@@ -61,7 +58,6 @@ Profiles profiles(const WaveComponent& c, double z_stretched, const std::optiona
           e * (1.0 + g) * c.inv_one_plus_e2kh};
 }
 
-}  // namespace
 
 DispersionSolution solve_dispersion(const DispersionInput& in) {
   require_positive(in.omega_rad_per_s, "wave frequency", "rad/s");
@@ -326,7 +322,7 @@ WaveKinematics wave_kinematics(const WaveRealization& sea, const Eigen::Vector3d
         c.omega_rad_per_s * t_s - c.kx_rad_per_m * p.x() - c.ky_rad_per_m * p.y() + c.phase_rad;
     const double cos_t = std::cos(theta);
     const double sin_t = std::sin(theta);
-    const Profiles f = profiles(c, out.stretched_z_m, h);
+    const WaveProfiles f = wave_profiles(c, out.stretched_z_m, h);
     const double aw = c.amplitude_m * c.omega_rad_per_s;
     const double aw2 = aw * c.omega_rad_per_s;
     // DNV-RP-C205 §3.2.2 (linear wave theory), eta = a cos(theta).

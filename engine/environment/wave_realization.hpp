@@ -136,6 +136,15 @@ struct WaveRealization {
   double duration_s = 0.0;
 };
 
+/// Depth profiles of a component at (stretched) z, DNV-RP-C205 §3.2.2.
+struct WaveProfiles {
+  double ch_over_sh = 0.0;  ///< cosh k(z'+h) / sinh kh (horizontal velocity); e^{kz'} in deep water
+  double sh_over_sh = 0.0;  ///< sinh k(z'+h) / sinh kh (vertical velocity)
+  double ch_over_ch = 0.0;  ///< cosh k(z'+h) / cosh kh (pressure)
+};
+WaveProfiles wave_profiles(const WaveComponent& component, double z_stretched_m,
+                           const std::optional<double>& water_depth_m);
+
 /// Builds the components (validates every input; see the header comment).
 WaveRealization make_wave_realization(const WaveRealizationInput& input);
 

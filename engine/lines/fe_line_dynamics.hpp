@@ -106,6 +106,7 @@
 #include <vector>
 
 #include "engine/analysis/sundials_ida.hpp"
+#include "engine/environment/wave_realization.hpp"
 #include "engine/lines/fe_line_statics.hpp"
 
 namespace spiral::engine {
@@ -123,7 +124,15 @@ struct FeDynamicEnvironment {
   double seabed_lateral_friction = 0.0;     ///< μ across the line, >= 0
   double seabed_damping_N_s_per_m2 = 0.0;   ///< per m of line per m/s vertical, in contact, >= 0
   double friction_velocity_m_per_s = 0.01;  ///< full friction above this sliding speed, > 0
-  WaveKinematicsFn waves;                   ///< empty: no waves
+  WaveKinematicsFn waves;                   ///< empty: no waves (a point-wise field)
+  /// A wave realization acting on the line: linear kinematics at each
+  /// element's static midpoint (engine/environment/fixed_point_wave_kinematics.hpp),
+  /// added to `waves` if both are given. Null: none.
+  std::shared_ptr<const WaveRealization> sea;
+  /// The sea's kinematics built up from 0 by a quintic ramp over this time
+  /// from the start time (engine::smooth_ramp), as the hull motion is: a
+  /// line at rest cannot meet the full wave flow at once. >= 0.
+  double sea_ramp_s = 0.0;
 };
 
 /// Position, velocity and acceleration of a prescribed end at time t (global).
@@ -134,7 +143,9 @@ struct EndKinematics {
 };
 using EndMotionFn = std::function<EndKinematics(double t_s)>;
 
-enum class FeEndCondition { fixed, prescribed, free };
+/// attached: end B follows a body whose equations are integrated with the
+/// line (the coupled hull + lines system, engine/analysis/coupled_dynamics.hpp).
+enum class FeEndCondition { fixed, prescribed, free, attached };
 
 struct FeDynamicsOptions {
   FeEndCondition end_A = FeEndCondition::fixed;

@@ -88,10 +88,60 @@ TEST(CliAnalyze, LineDynamicsWritesDynamicTensions) {
   std::filesystem::remove_all(out);
 }
 
+// The coupled level end to end: hull + the three FE chains in one system,
+// its integrator statistics in the summary and the coupled tensions as
+// channels.
+TEST(CliAnalyze, CoupledLevelWritesItsSolverAndTensions) {
+  const auto out =
+      std::filesystem::temp_directory_path() / ("spiral-coupled-" + std::to_string(::getpid()));
+  const auto result = run_spiral("analyze " + scenario("oc4-semisubmersible.yaml") +
+                                 " --case intact-raft-jonswap --level coupled --duration 120 --out " +
+                                 out.string());
+  ASSERT_EQ(result.exit_code, app::kExitOk) << result.err;
+  EXPECT_NE(result.out.find("coupled: 3 lines"), std::string::npos) << result.out;
+  const nlohmann::json j = nlohmann::json::parse(read_text((out / "summary.json").string()));
+  EXPECT_EQ(j["level"], "coupled");
+  EXPECT_EQ(j["coupled_solver"]["lines"], 3);
+  EXPECT_GT(j["coupled_solver"]["steps"].get<long>(), 0);
+  int dynamic = 0;
+  for (const auto& c : j["channels"])
+    if (c["name"].get<std::string>().rfind("dynamic_tension_", 0) == 0) ++dynamic;
+  EXPECT_EQ(dynamic, 3);
+  std::filesystem::remove_all(out);
+}
+
+// `spiral compare`: the four levels on one realization, a table on the
+// terminal and comparison.json with the keys the issue names.
+TEST(CliCompare, FourLevelsSideBySide) {
+  const auto out =
+      std::filesystem::temp_directory_path() / ("spiral-compare-" + std::to_string(::getpid()));
+  const auto result = run_spiral("compare " + scenario("oc4-semisubmersible.yaml") +
+                                 " --case intact-raft-jonswap --duration 300 --out " + out.string());
+  ASSERT_EQ(result.exit_code, app::kExitOk) << result.err;
+  EXPECT_NE(result.out.find("speed-up vs coupled"), std::string::npos) << result.out;
+  const nlohmann::json j = nlohmann::json::parse(read_text((out / "comparison.json").string()));
+  for (const char* level : {"uncoupled", "sc", "sc-enhanced", "coupled"}) {
+    ASSERT_TRUE(j["levels"].contains(level)) << level;
+    EXPECT_GT(j["levels"][level]["wall_s"].get<double>(), 0.0) << level;
+    EXPECT_GT(j["levels"][level]["max_offset_m"].get<double>(), 0.0) << level;
+  }
+  EXPECT_GT(j["levels"]["sc"]["speedup_vs_coupled"].get<double>(), 1.0);
+  EXPECT_TRUE(j["levels"]["sc"]["channels"]["offset_m"].contains("diff_pct_vs_coupled"));
+  EXPECT_TRUE(j["levels"]["coupled"]["channels"].contains("tension_L2_N"));
+  std::filesystem::remove_all(out);
+}
+
+TEST(CliCompare, UnknownCaseIsBadInput) {
+  const auto result = run_spiral("compare " + scenario("oc4-semisubmersible.yaml") +
+                                 " --case nosuch --duration 100 --out /tmp/spiral-never");
+  EXPECT_EQ(result.exit_code, app::kExitBadInput);
+  EXPECT_NE(result.err.find("nosuch"), std::string::npos) << result.err;
+}
+
 TEST(CliAnalyze, UnknownLevelIsBadInput) {
   const auto result =
       run_spiral("analyze " + scenario("oc4-semisubmersible.yaml") +
-                 " --case intact-raft-jonswap --level coupled --out /tmp/spiral-never");
+                 " --case intact-raft-jonswap --level fully-coupled --out /tmp/spiral-never");
   EXPECT_EQ(result.exit_code, app::kExitBadInput);
   EXPECT_NE(result.err.find("--level"), std::string::npos) << result.err;
 }

@@ -5,13 +5,17 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <iostream>
 #include <limits>
 #include <numbers>
 
 #include "design/mooring_model.hpp"
 #include "design/validated_project.hpp"
 #include "engine/analysis/line_array.hpp"
+#include "engine/analysis/statistics.hpp"
+#include "engine/environment/wave_realization.hpp"
 
 namespace spiral::design {
 namespace {
@@ -35,11 +39,50 @@ LineDynamicsInput surge_motion(double amplitude_m, double period_s, double durat
 TEST(LineDynamics, HullAtRestKeepsTheStaticTension) {
   const ValidatedProject p = load_validated_project(kOc4);
   const std::vector<LineDynamicsSeries> lines =
-      run_mooring_line_dynamics(p.project, surge_motion(0.0, 100.0, 120.0));
+      run_line_dynamics(p.project, surge_motion(0.0, 100.0, 120.0));
   ASSERT_EQ(lines.size(), 3u);
   for (const LineDynamicsSeries& l : lines) {
     for (double t : l.tension_N)
       EXPECT_NEAR(t, l.tension_N.front(), 1e-6 * l.tension_N.front()) << l.line;
+  }
+}
+
+// Waves on the lines: with the hull held still, a regular wave (3 m, 10 s)
+// on the OC4 chains makes their fairlead tension oscillate at the wave
+// period (the drag and inertia of the upper chain in the orbital flow).
+TEST(LineDynamics, ARegularWaveOnTheLinesMakesTheTensionOscillateAtItsPeriod) {
+  const ValidatedProject p = load_validated_project(kOc4);
+  LineDynamicsInput in = surge_motion(0.0, 100.0, 200.0);
+  in.ramp_s = 20.0;
+  engine::RegularWaveInput wave;
+  wave.amplitude_m = 3.0;
+  wave.omega_rad_per_s = 2.0 * std::numbers::pi / 10.0;
+  wave.water_depth_m = p.project.site.depth_m;
+  in.sea = std::make_shared<const engine::WaveRealization>(engine::make_regular_wave(wave));
+  const std::vector<LineDynamicsSeries> lines = run_line_dynamics(p.project, in);
+  const LineDynamicsSeries& l1 = lines.front();  // L1 lies along the wave direction (+x)
+  std::vector<double> late(l1.tension_N.begin() + 200, l1.tension_N.end());  // after 100 s
+  const double period = engine::zero_upcrossing_period_s(late, in.dt_s);
+  EXPECT_NEAR(period, 10.0, 0.2);
+  const auto [lo, hi] = std::minmax_element(late.begin(), late.end());
+  EXPECT_GT(*hi - *lo, 3e-4 * *hi);  // measured 1.3 kN of 1.1 MN (1.2e-3); still water: < 1e-6
+  std::cout << "regular wave on the lines: L1 tension range " << (*hi - *lo) / 1e3
+            << " kN, period " << period << " s\n";
+}
+
+// Risers run with the lines: at rest each keeps its static top tension (the
+// equilibrium's, from the same FE model) — the deep-water scenario's 12 SCRs.
+TEST(LineDynamics, RisersAtRestKeepTheirStaticTopTension) {
+  const ValidatedProject p = load_validated_project(std::string(SPIRAL_SOURCE_DIR) +
+                                                    "/scenarios/deepwater-fps.yaml");
+  LineDynamicsInput in = surge_motion(0.0, 100.0, 10.0);
+  const std::vector<LineDynamicsSeries> series = run_line_dynamics(p.project, in);
+  ASSERT_EQ(series.size(), p.project.mooring.lines.size() + p.project.risers.size());
+  for (std::size_t i = p.project.mooring.lines.size(); i < series.size(); ++i) {
+    const LineDynamicsSeries& r = series[i];
+    EXPECT_EQ(r.line, p.project.risers[i - p.project.mooring.lines.size()].name);
+    EXPECT_GT(r.tension_N.front(), 1e6) << r.line;  // an SCR in 1800 m: MN
+    for (double t : r.tension_N) EXPECT_NEAR(t, r.tension_N.front(), 1e-6 * t) << r.line;
   }
 }
 
@@ -51,7 +94,7 @@ TEST(LineDynamics, SlowSurgeFollowsTheQuasiStaticCatenary) {
   const ValidatedProject p = load_validated_project(kOc4);
   LineDynamicsInput in = surge_motion(5.0, 200.0, 400.0);
   in.ramp_s = 50.0;
-  const std::vector<LineDynamicsSeries> lines = run_mooring_line_dynamics(p.project, in);
+  const std::vector<LineDynamicsSeries> lines = run_line_dynamics(p.project, in);
   LineArrayModel catenaries = build_mooring_model(p.project);
   double worst = 0.0;
   for (std::size_t l = 0; l < lines.size(); ++l) {
@@ -82,7 +125,7 @@ TEST(LineDynamics, AFailingLineIsNamedWithTheTimeReached) {
   LineDynamicsInput in = surge_motion(1.0, 20.0, 40.0);
   in.max_steps_between_samples = 3;
   try {
-    run_mooring_line_dynamics(p.project, in);
+    run_line_dynamics(p.project, in);
     FAIL() << "the work limit must stop the integration";
   } catch (const engine::SolverError& e) {
     const std::string what = e.what();
@@ -96,7 +139,7 @@ TEST(LineDynamics, NonFiniteMotionIsRejected) {
   const ValidatedProject p = load_validated_project(kOc4);
   LineDynamicsInput in = surge_motion(1.0, 20.0, 40.0);
   in.motion(0, 40) = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_THROW(run_mooring_line_dynamics(p.project, in), std::invalid_argument);
+  EXPECT_THROW(run_line_dynamics(p.project, in), std::invalid_argument);
 }
 
 }  // namespace

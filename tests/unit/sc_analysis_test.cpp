@@ -370,7 +370,8 @@ TEST(ScAnalysis, MorisonHullInWavesSplitsTheIntegratedMotionIntoLowAndWaveFreque
 
 TEST(ScAnalysis, UnknownLevelAndCaseAreInputErrors) {
   const ValidatedProject p = load_validated_project(kOc4);
-  EXPECT_THROW(parse_analysis_level("coupled", p.project), InputError);
+  EXPECT_THROW(parse_analysis_level("fully-coupled", p.project), InputError);
+  EXPECT_EQ(parse_analysis_level("coupled", p.project), AnalysisLevel::coupled);
   EXPECT_EQ(parse_analysis_level("sc-enhanced", p.project), AnalysisLevel::semi_coupled_enhanced);
   DynamicAnalysisRequest request;
   request.load_case = "nosuch";

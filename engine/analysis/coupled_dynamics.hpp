@@ -1,0 +1,148 @@
+#pragma once
+// The fully coupled level (DESIGN.md §1): the hull's 6-DOF low-frequency
+// equations (hull_dynamics.hpp) and the dynamic FE model of every line
+// (fe_line_dynamics.hpp) integrated together as one implicit system with
+// SUNDIALS IDA. Every line's force acts on the hull at every step (inside
+// every Newton iteration), and the hull moves every line's end.
+//
+// Unknowns: y = [q, q̇ (hull, 12); y_1 … y_L (lines: [q_i, v_i])]. Line i's
+// end B is held at the attachment point p_i(q̃) = x_ref(q̃) + R(q̃) r_i of the
+// hull at the total offset q̃ = q + q_w(t) — the low-frequency state plus a
+// prescribed wave-frequency motion q_w (from RAOs, as the S-C level; zero
+// for a hull whose model carries its wave-frequency loads) — with velocity
+// P_i q̃̇ and acceleration P_i q̃̈ + Ṗ_i q̃̇, P_i = ∂p_i/∂q̃ (3 × 6). The
+// line's force on the hull is the generalized force of its end force f_i
+// (virtual work f_i · δp_i = (P_iᵀ f_i) · δq), so the hull and the lines
+// exchange energy exactly:
+//   M_h q̈ = F_hull(t, q, q̇) + Σ_i P_iᵀ f_i(y_i, q̃),
+// with F_hull the hull's own forces (hydrostatics, damping, slow drift,
+// wind, current: hull_generalized_force with no line model).
+//
+// Newton solve: each line's reduced banded system (fe_dynamic_line.hpp) is
+// condensed onto its end B — the line's dynamic stiffness Σ_i (3 × 3) and a
+// force correction φ_i — so the hull's 6 × 6 Newton matrix becomes
+//   c² M_h + c B_h + K_h + K_geo + Σ_i P_iᵀ Σ_i P_i
+// (B_h, K_h: finite differences of F_hull at the setup; K_geo: the change of
+// P_iᵀ f_i with the hull's rotation at fixed f_i), solved once, and the
+// lines' corrections follow by back-substitution. The cost per Newton
+// iteration is that of the lines' own solves plus 6 × 6 work: the coupled
+// system costs about what the lines cost with the motion prescribed, but
+// every line shares the one step size.
+//
+// Error control: the hull and every line are separate error groups
+// (IdaOptions::error_group_starts): each meets the tolerance by itself.
+//
+// Lines are evaluated on `threads` threads of a worker pool (residual,
+// setup, both halves of the solve; each line writes its own slots, the hull sums in line order, so
+// the result does not depend on the thread count).
+//
+// Measured while building it (deep-water scenario, lc1 storm, hull + 16
+// mooring lines + 12 SCRs = 171,660 states; OC4 for the free decays; the
+// 2-core EPYC shared with other builds, load 4–5, so CPU time where given):
+//  * one WRMS norm over all states let a line's or the hull's error through
+//    diluted by √(N/n): the OC4 heave free decay erred by 0.87 % in period;
+//    block norms (IdaOptions::error_group_starts): 0.05 %;
+//  * lines evaluated on threads started per loop: OC4 600 s 5.2 s wall; the
+//    worker pool: 1.44 s;
+//  * refactoring every line at every partial update (some line's seabed
+//    contact changes nearly every step): 30 s in 16.1 s wall; only the
+//    stale lines: 11.1 s; keeping their end-B condensation from the last
+//    full setup: 60 s in 8.1 s CPU instead of 9.8 s;
+//  * hull tolerance 1e-5 m: the hull set the step at 113 of 120 outputs
+//    (gust-driven accelerations), 595 steps for 60 s; 1e-4 m: 306, the
+//    lines set it;
+//  * the waves on the lines (fixed_point_wave_kinematics.hpp) cost 7 %.
+// What remains per step (perf): element forces 19 %, Newton-matrix updates
+// of the lines whose contact changed 11 %, band solves 7 %, wave
+// kinematics 7 %; the 12 risers (1 m elements over their 400 m touchdown
+// zone) hold 70 % of the states.
+//
+// Not modelled: the hull's radiation memory (Cummins) — the hull takes
+// A(ω_LF) and B_lin (a model with a kernel is rejected). Waves on the lines
+// come from the lines' environments (FeDynamicEnvironment::sea / waves).
+
+#include <Eigen/Core>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "engine/analysis/hull_dynamics.hpp"
+#include "engine/analysis/sundials_ida.hpp"
+#include "engine/lines/fe_line_dynamics.hpp"
+
+namespace spiral::engine {
+
+/// One line of the coupled system.
+struct CoupledLine {
+  std::string name;
+  FeLineModel model;
+  FeDynamicEnvironment environment;
+  /// Static solution of `model` with end B at the attachment point of the
+  /// hull at its initial position (and the prescribed motion's value at the
+  /// start time, which the build-up ramp makes zero).
+  FeStaticsResult initial;
+  Eigen::Vector3d attachment_b_m = Eigen::Vector3d::Zero();  ///< body frame, from the reference point
+  FeEndCondition end_A = FeEndCondition::fixed;              ///< fixed or free
+};
+
+/// A prescribed wave-frequency hull motion (m, rad; and its derivatives).
+struct PrescribedHullMotion {
+  Vector6d position = Vector6d::Zero();
+  Vector6d velocity = Vector6d::Zero();
+  Vector6d acceleration = Vector6d::Zero();
+};
+using PrescribedHullMotionFn = std::function<PrescribedHullMotion(double t_s)>;
+
+struct CoupledOptions {
+  double start_time_s = 0.0;
+  std::vector<double> output_times_s;  ///< strictly increasing, > start_time_s
+  /// Integrator tolerances: the lines' (FeDynamicsOptions' defaults, measured
+  /// there) and the hull's absolute ones.
+  double relative_tolerance = 2e-6;
+  double position_tolerance_m = 1e-4;
+  double slope_tolerance = 2e-6;
+  double velocity_tolerance_m_per_s = 0.1;
+  /// The hull's absolute tolerances (positions; velocities 10× per second).
+  /// BDF2's period error grows as (ω h)²: where only the hull limits the
+  /// step (a free decay), 1e-4 m gives 0.39 % on OC4's 17.6 s heave and
+  /// 1e-5 m 0.07 % (coupled_dynamics_test); in a storm the lines limit the
+  /// step (h ≈ 0.2 s: ≤ 0.2 % on a 17 s period). On the deep-water storm
+  /// 1e-5 m made the hull set the step at 60 % of the outputs (gust-driven
+  /// accelerations) and cost 1.35× the steps of 1e-4 m.
+  double hull_position_tolerance_m = 1e-4;
+  double hull_rotation_tolerance_rad = 1e-6;
+  int max_order = 2;
+  std::optional<double> max_step_s;
+  long max_steps_between_outputs = 500000;
+  int threads = 1;  ///< >= 1
+  PrescribedHullMotionFn wave_frequency_motion;  ///< empty: none
+};
+
+struct CoupledTimeSeries {
+  Eigen::VectorXd times_s;                               ///< start time, then output_times_s
+  Eigen::Matrix<double, 6, Eigen::Dynamic> position;     ///< low-frequency hull offset q, m, rad
+  Eigen::Matrix<double, 6, Eigen::Dynamic> velocity;     ///< q̇
+  std::vector<Eigen::Matrix<double, 3, Eigen::Dynamic>> end_B_force_N;  ///< per line, global
+  IdaStatistics statistics;
+  /// Per line (then the hull, last): at how many outputs its weighted local
+  /// error was the largest — which part of the system sets the step.
+  std::vector<long> step_limiting_outputs;
+  long state_size = 0;
+  double wall_clock_s = 0.0;
+};
+
+/// Integrates hull + lines from the hull at `initial_offset` (at rest; the
+/// lines from their static solutions). `loads.lines` must be a
+/// LinearizedLines (usually all zero: the FE lines replace it; non-zero it
+/// adds, e.g., lines left out of the FE set). Throws std::invalid_argument
+/// for bad options or a model with radiation memory, SolverError for a line
+/// that cannot start (named), IntegrationError (time reached, cause) when
+/// the integration fails.
+CoupledTimeSeries simulate_coupled(const HullDynamicsModel& hull, const HullLoads& loads,
+                                   const Eigen::Vector3d& reference_point_at_rest_g,
+                                   const Vector6d& initial_offset,
+                                   const std::vector<CoupledLine>& lines,
+                                   const CoupledOptions& options);
+
+}  // namespace spiral::engine

@@ -1,0 +1,110 @@
+#pragma once
+// A fixed set of worker threads for fine-grained parallel loops that run
+// thousands of times per second — the coupled hull + lines system evaluates
+// its lines in parallel at every residual and Newton solve (≈ 0.1–1 ms of
+// work each), where starting threads per loop (parallel_for) would cost as
+// much as the work. Same contract as parallel_for: task(i) for i in
+// [0, count), each task writes only its own slots, and the exception of the
+// lowest failing index is rethrown after all tasks ran.
+
+#include <algorithm>
+#include <atomic>
+#include <condition_variable>
+#include <exception>
+#include <functional>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace spiral::engine {
+
+class WorkerPool {
+ public:
+  /// `threads` >= 1 threads in all, the caller's included.
+  explicit WorkerPool(int threads) {
+    for (int t = 1; t < threads; ++t) workers_.emplace_back([this] { work(); });
+  }
+  ~WorkerPool() {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      stop_ = true;
+    }
+    start_.notify_all();
+    for (std::thread& t : workers_) t.join();
+  }
+  WorkerPool(const WorkerPool&) = delete;
+  WorkerPool& operator=(const WorkerPool&) = delete;
+
+  int threads() const { return static_cast<int>(workers_.size()) + 1; }
+
+  template <class Task>
+  void run(int count, const Task& task) {
+    if (count <= 0) return;
+    errors_.assign(static_cast<std::size_t>(count), nullptr);
+    if (workers_.empty() || count == 1) {
+      for (int i = 0; i < count; ++i) guarded(task, i);
+    } else {
+      {
+        std::lock_guard<std::mutex> lock(mutex_);
+        job_ = [&task, this](int i) { guarded(task, i); };
+        count_ = count;
+        next_ = 0;
+        busy_ = static_cast<int>(workers_.size());
+        ++generation_;
+      }
+      start_.notify_all();
+      drain();
+      std::unique_lock<std::mutex> lock(mutex_);
+      done_.wait(lock, [this] { return busy_ == 0; });
+      job_ = nullptr;
+    }
+    for (const std::exception_ptr& e : errors_) {
+      if (e) std::rethrow_exception(e);
+    }
+  }
+
+ private:
+  template <class Task>
+  void guarded(const Task& task, int i) {
+    try {
+      task(i);
+    } catch (...) {
+      errors_[static_cast<std::size_t>(i)] = std::current_exception();
+    }
+  }
+
+  void drain() {
+    for (int i = next_++; i < count_; i = next_++) job_(i);
+  }
+
+  void work() {
+    long seen = 0;
+    for (;;) {
+      {
+        std::unique_lock<std::mutex> lock(mutex_);
+        start_.wait(lock, [&] { return stop_ || generation_ != seen; });
+        if (stop_) return;
+        seen = generation_;
+      }
+      drain();
+      {
+        std::lock_guard<std::mutex> lock(mutex_);
+        --busy_;
+      }
+      done_.notify_one();
+    }
+  }
+
+  std::vector<std::thread> workers_;
+  std::mutex mutex_;
+  std::condition_variable start_, done_;
+  std::function<void(int)> job_;
+  std::vector<std::exception_ptr> errors_;
+  std::atomic<int> next_{0};
+  int count_ = 0;
+  int busy_ = 0;
+  long generation_ = 0;
+  bool stop_ = false;
+};
+
+}  // namespace spiral::engine

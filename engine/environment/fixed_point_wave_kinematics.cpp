@@ -1,0 +1,90 @@
+#include "engine/environment/fixed_point_wave_kinematics.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <stdexcept>
+
+namespace spiral::engine {
+
+FixedPointWaveKinematics::FixedPointWaveKinematics(std::shared_ptr<const WaveRealization> sea,
+                                                   const std::vector<Eigen::Vector3d>& points,
+                                                   double cutoff)
+    : sea_(std::move(sea)) {
+  if (!sea_) throw std::invalid_argument("fixed-point wave kinematics: no sea");
+  if (!(cutoff > 0.0 && cutoff < 1.0))
+    throw std::invalid_argument("fixed-point wave kinematics: cutoff must be in (0, 1)");
+  const auto& c = sea_->components;
+  order_.resize(c.size());
+  std::iota(order_.begin(), order_.end(), std::size_t{0});
+  std::stable_sort(order_.begin(), order_.end(), [&](std::size_t a, std::size_t b) {
+    return c[a].wavenumber_rad_per_m < c[b].wavenumber_rad_per_m;
+  });
+  cos_wt_.resize(c.size());
+  sin_wt_.resize(c.size());
+  for (std::size_t j : order_) {
+    omega_.push_back(c[j].omega_rad_per_s);
+    cos_heading_.push_back(c[j].cos_heading);
+    sin_heading_.push_back(c[j].sin_heading);
+  }
+  const double log_cutoff = std::log(cutoff);
+  points_.resize(points.size());
+  for (std::size_t p = 0; p < points.size(); ++p) {
+    const Eigen::Vector3d& x = points[p];
+    Point& out = points_[p];
+    if (x.z() >= 0.0) continue;  // above the still-water level: no kinematics (see the header)
+    // e^{k z} >= cutoff  <=>  k <= ln(cutoff) / z: a prefix of the sorted components.
+    const double k_max = log_cutoff / x.z();
+    while (out.count < order_.size() && c[order_[out.count]].wavenumber_rad_per_m <= k_max)
+      ++out.count;
+    out.horizontal_c.resize(out.count);
+    out.horizontal_s.resize(out.count);
+    out.vertical_c.resize(out.count);
+    out.vertical_s.resize(out.count);
+    for (std::size_t j = 0; j < out.count; ++j) {
+      const WaveComponent& w = c[order_[j]];
+      const WaveProfiles f = wave_profiles(w, x.z(), sea_->water_depth_m);
+      const double psi = w.phase_rad - w.kx_rad_per_m * x.x() - w.ky_rad_per_m * x.y();
+      const double aw = w.amplitude_m * w.omega_rad_per_s;
+      out.horizontal_c[j] = aw * f.ch_over_sh * std::cos(psi);
+      out.horizontal_s[j] = aw * f.ch_over_sh * std::sin(psi);
+      out.vertical_c[j] = aw * f.sh_over_sh * std::cos(psi);
+      out.vertical_s[j] = aw * f.sh_over_sh * std::sin(psi);
+    }
+  }
+}
+
+void FixedPointWaveKinematics::evaluate(double t_s, std::vector<Eigen::Vector3d>& velocity,
+                                        std::vector<Eigen::Vector3d>& acceleration) const {
+  std::size_t needed = 0;
+  for (const Point& p : points_) needed = std::max(needed, p.count);
+  for (std::size_t j = 0; j < needed; ++j) {
+    const double wt = omega_[j] * t_s;
+    cos_wt_[j] = std::cos(wt);
+    sin_wt_[j] = std::sin(wt);
+  }
+  velocity.assign(points_.size(), Eigen::Vector3d::Zero());
+  acceleration.assign(points_.size(), Eigen::Vector3d::Zero());
+  for (std::size_t p = 0; p < points_.size(); ++p) {
+    const Point& pt = points_[p];
+    double ux = 0.0, uy = 0.0, uz = 0.0, ax = 0.0, ay = 0.0, az = 0.0;
+    for (std::size_t j = 0; j < pt.count; ++j) {
+      const double C = cos_wt_[j], S = sin_wt_[j], omega = omega_[j];
+      // θ = ω t + ψ (η = a cos θ): cos θ = C cos ψ − S sin ψ, sin θ = S cos ψ + C sin ψ.
+      const double u_h = pt.horizontal_c[j] * C - pt.horizontal_s[j] * S;
+      const double du_h = -omega * (pt.horizontal_c[j] * S + pt.horizontal_s[j] * C);
+      const double v_sin = pt.vertical_c[j] * S + pt.vertical_s[j] * C;
+      const double v_cos = pt.vertical_c[j] * C - pt.vertical_s[j] * S;
+      ux += u_h * cos_heading_[j];
+      uy += u_h * sin_heading_[j];
+      ax += du_h * cos_heading_[j];
+      ay += du_h * sin_heading_[j];
+      uz -= v_sin;
+      az -= omega * v_cos;
+    }
+    velocity[p] = {ux, uy, uz};
+    acceleration[p] = {ax, ay, az};
+  }
+}
+
+}  // namespace spiral::engine

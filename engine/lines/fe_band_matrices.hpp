@@ -1,0 +1,191 @@
+#pragma once
+// Band-matrix kernels of the FE line dynamics' Newton solve (fe_dynamic_line.hpp):
+// a symmetric band kept by its lower band, and the reduced Newton matrix
+// S = c² M − c C − K factored by banded Cholesky with a band-LU fallback.
+// Private to engine/lines and the coupled system that assembles lines.
+
+#include <Eigen/Core>
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+#include "engine/common/banded_lu.hpp"
+
+namespace spiral::engine::fe_detail {
+
+/// Σ a[r] b[r] for r in [1, len], in four partial sums: the band solves are
+/// otherwise bound by the latency of one long chain of additions.
+inline double band_dot(const double* a, const double* b, int len) {
+  double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
+  int r = 1;
+  for (; r + 3 <= len; r += 4) {
+    s0 += a[r] * b[r];
+    s1 += a[r + 1] * b[r + 1];
+    s2 += a[r + 2] * b[r + 2];
+    s3 += a[r + 3] * b[r + 3];
+  }
+  for (; r <= len; ++r) s0 += a[r] * b[r];
+  return (s0 + s1) + (s2 + s3);
+}
+
+/// A symmetric band matrix by its lower band (column-major, b + 1 entries
+/// per column), for a matrix whose products the Newton solves need but
+/// never its factors.
+struct SymmetricBand {
+  int n = 0, b = 0;
+  std::vector<double> a;
+  void reset(int size, int half_band) {
+    n = size;
+    b = half_band;
+    a.assign(static_cast<std::size_t>(n) * static_cast<std::size_t>(b + 1), 0.0);
+  }
+  /// Where entry (i, j), i ≥ j, i − j ≤ half_band, sits in the lower band.
+  static std::size_t offset(int i, int j, int half_band) {
+    return static_cast<std::size_t>(j * (half_band + 1) + i - j);
+  }
+  double& lower(int i, int j) { return a[offset(i, j, b)]; }
+  double* lower_data() { return a.data(); }
+  /// y += A x.
+  void multiply_add(const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
+    const double* xp = x.data();
+    double* yp = y.data();
+    for (int j = 0; j < n; ++j) {
+      const double* col = &a[static_cast<std::size_t>(j * (b + 1))];
+      const int km = std::min(b, n - 1 - j);
+      const double xj = xp[j];
+      for (int r = 1; r <= km; ++r) yp[j + r] += col[r] * xj;
+      yp[j] += col[0] * xj + band_dot(col, xp + j, km);
+    }
+  }
+};
+
+/// The reduced Newton matrix S = c² M − c C − K, symmetric (M, the drag,
+/// damping and friction Jacobians and the elastic and contact tangents all
+/// are; the drag's direction derivatives, which are not, are left out) and
+/// positive definite for a line in tension: factored by banded Cholesky
+/// (dpbtf2 / dpbtrs, LAPACK Users' Guide §5.3.2) on its lower band — a
+/// third of the operations of the pivoted band LU and no fill-in — with the
+/// band LU (BandMatrix) as the fallback when a pivot is not positive (slack
+/// or compressed elements at long steps). Prescribed DOFs get identity
+/// rows and zero columns (their corrections are the right-hand side's).
+class NewtonMatrix {
+ public:
+  void reset(int size, int half_band) {
+    n_ = size;
+    b_ = half_band;
+    band_.reset(size, half_band);
+  }
+  /// Entry (i, j), i ≥ j, i − j ≤ half band.
+  double& lower(int i, int j) { return band_.lower(i, j); }
+  /// The lower band, column-major (SymmetricBand::offset).
+  double* lower_data() { return band_.lower_data(); }
+
+  /// Factors; false if singular (both factorisations failed).
+  bool factorize() {
+    copy_ = band_.a;
+    cholesky_ = cholesky();
+    if (cholesky_) return true;
+    lu_.reset(n_, b_, b_);
+    for (int j = 0; j < n_; ++j) {
+      for (int i = j; i <= std::min(n_ - 1, j + b_); ++i) {
+        const double v = copy_[SymmetricBand::offset(i, j, b_)];
+        lu_.at(i, j) = v;
+        lu_.at(j, i) = v;
+      }
+    }
+    return lu_.factorize();
+  }
+
+  void solve_in_place(Eigen::VectorXd& x) const {
+    if (!cholesky_) {
+      lu_.solve_in_place(x);
+    } else if (b_ == 11) {
+      solve_kd<11>(x.data());
+    } else if (b_ == 14) {
+      solve_kd<14>(x.data());
+    } else {
+      solve_kd<0>(x.data());
+    }
+  }
+
+ private:
+  // The band kernels with the half bandwidth a compile-time constant for the
+  // two bandwidths of FE lines (11; 14 with a hinge joint): the interior
+  // columns' loops then have fixed lengths and unroll (KD = 0: run time).
+  template <int KD>
+  int kd() const {
+    return KD > 0 ? KD : b_;
+  }
+
+  template <int KD>
+  void solve_kd(double* x) const {
+    const int b = kd<KD>(), ld = b + 1;
+    const double* l = band_.a.data();
+    const double* inv = inv_diagonal_.data();
+    for (int j = 0; j < n_; ++j) {  // L y = x
+      const double* col = l + static_cast<std::ptrdiff_t>(j) * ld;
+      const double xj = x[j] * inv[j];
+      x[j] = xj;
+      double* xr = x + j;
+      if (j + b < n_) {
+        for (int r = 1; r <= b; ++r) xr[r] -= col[r] * xj;
+      } else {
+        for (int r = 1; r < n_ - j; ++r) xr[r] -= col[r] * xj;
+      }
+    }
+    for (int j = n_ - 1; j >= 0; --j) {  // Lᵀ x = y
+      const double* col = l + static_cast<std::ptrdiff_t>(j) * ld;
+      const double* xr = x + j;
+      const double sum = j + b < n_ ? band_dot(col, xr, b) : band_dot(col, xr, n_ - 1 - j);
+      x[j] = (x[j] - sum) * inv[j];
+    }
+  }
+
+  bool cholesky() {
+    inv_diagonal_.resize(static_cast<std::size_t>(n_));
+    if (b_ == 11) return cholesky_kd<11>();
+    if (b_ == 14) return cholesky_kd<14>();
+    return cholesky_kd<0>();
+  }
+
+  template <int KD>
+  bool cholesky_kd() {
+    const int b = kd<KD>(), ld = b + 1;
+    double* l = band_.a.data();
+    for (int j = 0; j < n_; ++j) {
+      double* col = l + static_cast<std::ptrdiff_t>(j) * ld;
+      if (!(col[0] > 0.0)) return false;
+      const double d = std::sqrt(col[0]);
+      col[0] = d;
+      const double inv = 1.0 / d;
+      inv_diagonal_[static_cast<std::size_t>(j)] = inv;
+      const int km = std::min(b, n_ - 1 - j);
+      for (int r = 1; r <= km; ++r) col[r] *= inv;
+      // Trailing update of columns j + c: L(j+r, j+c) −= L(j+r, j) L(j+c, j).
+      if (km == b) {
+        for (int c = 1; c <= b; ++c) {
+          double* target = col + c * ld - c;
+          const double f = col[c];
+          for (int r = c; r <= b; ++r) target[r] -= col[r] * f;
+        }
+      } else {
+        for (int c = 1; c <= km; ++c) {
+          double* target = col + c * ld - c;
+          const double f = col[c];
+          for (int r = c; r <= km; ++r) target[r] -= col[r] * f;
+        }
+      }
+    }
+    return true;
+  }
+
+  int n_ = 0, b_ = 0;
+  SymmetricBand band_;  // the lower band; Cholesky factors in place
+  std::vector<double> copy_, inv_diagonal_;
+  BandMatrix lu_;
+  bool cholesky_ = true;
+};
+
+
+}  // namespace spiral::engine::fe_detail

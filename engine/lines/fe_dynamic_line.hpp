@@ -1,0 +1,428 @@
+#pragma once
+// One FE line's dynamic equations as an implicit system (the DAE, reduced
+// Newton matrix and outputs of fe_line_dynamics.hpp): integrated on its own
+// by FeLineDynamics, or as one block of the coupled hull + lines system
+// (engine/analysis/coupled_dynamics.hpp), whose end B then follows the hull
+// (FeEndCondition::attached) and whose Newton solve is split so that the
+// hull rows can take the line's Schur complement at its end B.
+// Private to engine: callers use FeLineDynamics or the coupled system.
+
+#include <Eigen/Core>
+#include <array>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "engine/analysis/sampled_trajectory.hpp"
+#include "engine/analysis/sundials_ida.hpp"
+#include "engine/environment/fixed_point_wave_kinematics.hpp"
+#include "engine/lines/ancf_dynamic_loads.hpp"
+#include "engine/lines/fe_band_matrices.hpp"
+#include "engine/lines/fe_line_dynamics.hpp"
+#include "engine/lines/fe_line_problem.hpp"
+
+namespace spiral::engine::fe_detail {
+
+// A change of an element's seabed contact by this fraction of its length
+// since the Newton matrix was factored refreshes the matrix (see
+// newton_matrix_stale). Measured on the OC4 benchmark (80 elements, rtol
+// 1e-6): never 14.2k steps, 269 Newton convergence failures; 0.2 12.7k,
+// 183; 0.1 11.4k, 65; 0.05 11.1k, none, but 4.7k refreshes (2.8k at 0.1).
+constexpr double kContactChangeForRefresh = 0.1;
+
+
+[[noreturn]] inline void invalid_dynamics(const std::string& what) {
+  throw SolverError("FE line dynamics: invalid input: " + what);
+}
+
+struct DynamicLine final : ImplicitSystem {
+  Problem p;
+  std::vector<ancf::DynamicElementProperties> dyn;
+  std::vector<std::array<int, kElementDofs>> element_dofs;  // global DOF of each element DOF
+  std::vector<ancf::GaussShapes> shapes;                    // element lengths are fixed
+  std::vector<std::array<double, 2>>
+      end_force_offset_N;         // N_0 at ξ = 0, 1 per element (node tensions)
+  ancf::LoadContext static_ctx;   // no current: the drag is dynamic
+  ancf::LoadContext current_ctx;  // for current_at
+  std::vector<CurrentProfilePoint> current;
+  ancf::SeabedDynamics bed;
+  WaveKinematicsFn waves;
+  bool still_water = true;  // no current, no waves: the fluid kinematics are zero
+  FeDynamicsOptions options;
+  Eigen::Vector3d end_A_rest_m = Eigen::Vector3d::Zero(), end_B_rest_m = Eigen::Vector3d::Zero();
+  int n = 0;
+
+  // Workspace.
+  Eigen::VectorXd qw, vw, aw, G, rhs, w;
+  NewtonMatrix S;  // the factored Newton matrix (or the mass matrix at the start)
+  std::vector<int> fixed_dofs;
+  SymmetricBand D;                                             // c_j M − C at the setup's c_j
+  std::vector<ancf::ElementDynamicMatrices> element_matrices;  // of the last evaluation
+  // Per element: (12 i + j, position in the lower bands) of each entry
+  // with i, j free and global j ≤ global i.
+  std::vector<std::vector<std::pair<int, int>>> lower_entries;
+  std::vector<double> contact_at_setup, contact_now;  // per element, fraction in seabed contact
+  std::vector<char> element_stale;                    // contact changed since its evaluation
+
+  bool fixed(int i) const { return p.fixed[static_cast<std::size_t>(i)] != 0; }
+
+  // End B attached (coupled system): its kinematics, set by the system
+  // before each residual and setup, and its Schur complement (below).
+  EndKinematics end_B_attached;
+  std::array<double, kElementDofs * kElementDofs> end_S{}, end_D{};  // last element, setup c_j
+  Eigen::Matrix<double, Eigen::Dynamic, 3> end_B_influence;         // X = S_ff⁻¹ S_fB
+  Eigen::Matrix3d end_B_schur = Eigen::Matrix3d::Zero();             // S_BB − S_Bf X
+  static constexpr int kEndBLocal = 6;  // r_b in the element's [r_a, r'_a, r_b, r'_b]
+
+  /// Overwrites the prescribed DOFs of (q, v, a) with their values at t.
+  void apply_prescribed(double t, Eigen::VectorXd& q, Eigen::VectorXd& v,
+                        Eigen::VectorXd& a) const {
+    const int ra = p.r_dof.front(), rb = p.r_dof.back();
+    if (options.end_A == FeEndCondition::fixed) {
+      q.segment<3>(ra) = end_A_rest_m;
+      v.segment<3>(ra).setZero();
+      a.segment<3>(ra).setZero();
+    }
+    if (options.end_B == FeEndCondition::fixed) {
+      q.segment<3>(rb) = end_B_rest_m;
+      v.segment<3>(rb).setZero();
+      a.segment<3>(rb).setZero();
+    } else if (options.end_B != FeEndCondition::free) {
+      const EndKinematics k =
+          options.end_B == FeEndCondition::prescribed ? options.end_B_motion(t) : end_B_attached;
+      q.segment<3>(rb) = k.position_m;
+      v.segment<3>(rb) = k.velocity_m_per_s;
+      a.segment<3>(rb) = k.acceleration_m_per_s2;
+    }
+  }
+
+  // The sea's kinematics at the elements' static midpoints, evaluated once
+  // per time (the Newton iterations of a step share it).
+  std::unique_ptr<FixedPointWaveKinematics> element_waves;
+  double sea_ramp_s = 0.0;
+  mutable double element_waves_time = std::numeric_limits<double>::quiet_NaN();
+  mutable std::vector<Eigen::Vector3d> element_wave_velocity, element_wave_acceleration;
+
+  /// Fluid velocity and acceleration at the element's Gauss points.
+  void fluid_at(double t, std::size_t e, const double* qe, ancf::ElementFluid& fluid) const {
+    if (element_waves && t != element_waves_time) {
+      element_waves->evaluate(t, element_wave_velocity, element_wave_acceleration);
+      element_waves_time = t;
+    }
+    for (std::size_t gp = 0; gp < ancf::kGaussXi.size(); ++gp) {
+      const ancf::ShapeAt& sh = shapes[e][gp];
+      Eigen::Vector3d r = Eigen::Vector3d::Zero();
+      for (int k = 0; k < 4; ++k)
+        r += sh.S[k] * Eigen::Vector3d(qe[3 * k], qe[3 * k + 1], qe[3 * k + 2]);
+      Eigen::Vector3d u = Eigen::Vector3d::Zero(), a = Eigen::Vector3d::Zero();
+      if (!current.empty()) {
+        const ancf::V3<double> c = ancf::current_at<double>(current_ctx, r.z());
+        u = {c.x, c.y, c.z};
+      }
+      if (waves) {
+        Eigen::Vector3d uw, aw_;
+        waves(r, t, uw, aw_);
+        u += uw;
+        a += aw_;
+      }
+      if (element_waves) {
+        const RampValue ramp = smooth_ramp(t - options.start_time_s, sea_ramp_s);
+        u += ramp.value * element_wave_velocity[e];
+        a += ramp.value * element_wave_acceleration[e] + ramp.rate_per_s * element_wave_velocity[e];
+      }
+      for (int x = 0; x < 3; ++x) {
+        fluid.velocity[gp][static_cast<std::size_t>(x)] = u[x];
+        fluid.acceleration[gp][static_cast<std::size_t>(x)] = a[x];
+      }
+    }
+  }
+
+  struct ElementValues {
+    std::array<double, kElementDofs> q, v, a;
+  };
+  ElementValues gather(std::size_t e, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                       const Eigen::VectorXd& a) const {
+    ElementValues x;
+    for (int k = 0; k < kElementDofs; ++k) {
+      const int dof = element_dofs[e][static_cast<std::size_t>(k)];
+      x.q[k] = q[dof];
+      x.v[k] = v[dof];
+      x.a[k] = a[dof];
+    }
+    return x;
+  }
+
+  /// Net generalised forces of element e (inertia included, d'Alembert);
+  /// returns the element's fraction in seabed contact.
+  double element_forces(double t, std::size_t e, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                        const Eigen::VectorXd& a, std::array<double, kElementDofs>& ge) const {
+    const ElementValues x = gather(e, q, v, a);
+    ancf::ElementFluid fluid;
+    if (!still_water) fluid_at(t, e, x.q.data(), fluid);
+    return ancf::dynamic_element_forces(p.elements[e], dyn[e], shapes[e], static_ctx, bed,
+                                        still_water ? nullptr : &fluid, x.q.data(), x.v.data(),
+                                        x.a.data(), ge.data());
+  }
+
+  /// Net generalised nodal forces G (inertia included, d'Alembert) at (t, q,
+  /// v, a); with contact, each element's fraction in seabed contact.
+  void assemble_forces(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                       const Eigen::VectorXd& a, Eigen::VectorXd& g,
+                       std::vector<double>* contact = nullptr) const {
+    g.setZero(n);
+    std::array<double, kElementDofs> ge;
+    for (std::size_t e = 0; e < p.elements.size(); ++e) {
+      const double c = element_forces(t, e, q, v, a, ge);
+      if (contact != nullptr) (*contact)[e] = c;
+      for (int i = 0; i < kElementDofs; ++i)
+        g[element_dofs[e][static_cast<std::size_t>(i)]] += ge[i];
+    }
+    for (const auto& [node, f] : p.mesh.point_loads)
+      g[p.r_dof[static_cast<std::size_t>(node)] + 2] -= f;
+  }
+
+  /// The net force on the position DOFs of an end node (0: end A, else end
+  /// B): G there, from the one element at that end.
+  Eigen::Vector3d end_force(bool end_B, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                            const Eigen::VectorXd& a, double t) const {
+    const std::size_t e = end_B ? p.elements.size() - 1 : 0;
+    const int node = end_B ? p.n_nodes - 1 : 0;
+    std::array<double, kElementDofs> ge;
+    element_forces(t, e, q, v, a, ge);
+    const int k0 = end_B ? 6 : 0;  // r_b or r_a in [r_a, r'_a, r_b, r'_b]
+    Eigen::Vector3d f(ge[k0], ge[k0 + 1], ge[k0 + 2]);
+    for (const auto& [load_node, load] : p.mesh.point_loads) {
+      if (load_node == node) f.z() -= load;
+    }
+    return f;
+  }
+
+  /// The Newton matrices of element e (M, C = ∂G/∂v, K = ∂G/∂q) at (t, q,
+  /// v), and its seabed contact there.
+  void evaluate_element_matrices(double t, std::size_t e, const Eigen::VectorXd& q,
+                                 const Eigen::VectorXd& v) {
+    const ElementValues x = gather(e, q, v, v);  // the matrices do not depend on q̈
+    ancf::ElementFluid fluid;
+    if (!still_water) fluid_at(t, e, x.q.data(), fluid);
+    contact_at_setup[e] = ancf::element_newton_matrices(
+        p.elements[e], dyn[e], shapes[e], static_ctx, bed, still_water ? nullptr : &fluid,
+        x.q.data(), x.v.data(), element_matrices[e]);
+    element_stale[e] = 0;
+  }
+
+  /// S = cM M + cC C + cK K and, with D_cj, D = D_cj M − C from the element
+  /// matrices (lower bands: both are symmetric); prescribed DOFs get
+  /// identity rows and zero columns in S and nothing in D.
+  void combine_matrices(double cM, double cC, double cK, std::optional<double> D_cj) {
+    S.reset(n, p.band);
+    if (D_cj) D.reset(n, p.band);
+    double* s_lower = S.lower_data();
+    double* d_lower = D_cj ? D.lower_data() : nullptr;
+    const double cB = D_cj.value_or(0.0);
+    for (std::size_t e = 0; e < p.elements.size(); ++e) {
+      const ancf::ElementDynamicMatrices& em = element_matrices[e];
+      for (const auto& [ij, at] : lower_entries[e]) {
+        const auto k = static_cast<std::size_t>(ij);
+        s_lower[at] += cM * em.M[k] + cC * em.C[k] + cK * em.K[k];
+        if (d_lower != nullptr) d_lower[at] += cB * em.M[k] - em.C[k];
+      }
+    }
+    for (int i : fixed_dofs) S.lower(i, i) = 1.0;
+  }
+
+  // The contact stiffness k ∫ S Sᵀ of an element near the touchdown point
+  // (k L ≈ 1e7 N/m for the OC4 chain) dwarfs c² M at the step sizes of the
+  // line's motion: a Newton matrix factored before an element's contact
+  // changed makes the iteration diverge (rate > 0.9, measured) until the
+  // next refresh.
+  // Only those elements are re-evaluated (update_newton_matrix).
+  bool newton_matrix_stale() override {
+    bool any = false;
+    for (std::size_t e = 0; e < contact_now.size(); ++e) {
+      if (std::abs(contact_now[e] - contact_at_setup[e]) > kContactChangeForRefresh) {
+        element_stale[e] = 1;
+        any = true;
+      }
+    }
+    return any;
+  }
+
+  void load_state(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp) {
+    qw = y.head(n);
+    vw = y.tail(n);
+    aw = yp.tail(n);
+    apply_prescribed(t, qw, vw, aw);
+  }
+
+  void residual(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp,
+                Eigen::VectorXd& r) override {
+    load_state(t, y, yp);
+    assemble_forces(t, qw, vw, aw, G, &contact_now);
+    r.resize(2 * n);
+    for (int i = 0; i < n; ++i) {
+      if (fixed(i)) {
+        r[i] = y[i] - qw[i];
+        r[n + i] = y[n + i] - vw[i];
+      } else {
+        r[i] = yp[i] - y[n + i];
+        r[n + i] = -G[i];
+      }
+    }
+  }
+
+  // S = c² M − c C − K, D = c M − C (the Newton matrix of the residual, reduced).
+  bool setup_newton_matrix(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp,
+                           double cj) override {
+    load_state(t, y, yp);
+    for (std::size_t e = 0; e < p.elements.size(); ++e) evaluate_element_matrices(t, e, qw, vw);
+    combine_matrices(cj * cj, -cj, -1.0, cj);
+    return S.factorize();
+  }
+
+  // A new c_j, and the elements whose contact changed re-evaluated; the
+  // others keep the matrices of their last evaluation (as a Jacobian kept
+  // over steps is everywhere).
+  bool update_newton_matrix(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp,
+                            double cj) override {
+    load_state(t, y, yp);
+    for (std::size_t e = 0; e < p.elements.size(); ++e) {
+      if (element_stale[e] != 0) evaluate_element_matrices(t, e, qw, vw);
+    }
+    combine_matrices(cj * cj, -cj, -1.0, cj);
+    return S.factorize();
+  }
+
+  // Row 2 uses the setup's c_j (the matrix it factored); row 1 (δv = c δq −
+  // b_q) the current one, so the kinematic rows are always solved exactly.
+  void solve_newton_system(double cj, Eigen::Ref<Eigen::VectorXd> b) override {
+    w = b.head(n);
+    rhs = b.tail(n);
+    for (int i : fixed_dofs) w[i] = 0.0;
+    D.multiply_add(w, rhs);  // D has no prescribed rows
+    for (int i : fixed_dofs) rhs[i] = 0.0;
+    S.solve_in_place(rhs);
+    write_corrections(cj, b);
+  }
+
+  /// Free DOFs: δq = rhs, δv = c δq − b_q (w holds b_q there); prescribed
+  /// ones: δq = b_q, δv = b_v (identity rows).
+  void write_corrections(double cj, Eigen::Ref<Eigen::VectorXd> b) {
+    for (int i : fixed_dofs) {
+      rhs[i] = b[i];
+      w[i] = b[n + i];
+    }
+    b.tail(n) = cj * rhs - w;
+    b.head(n) = rhs;
+    for (int i : fixed_dofs) b[n + i] = w[i];
+  }
+
+  // --- End B attached: the line's part of the coupled Newton solve ---
+  //
+  // With end B moving with a body, the line's Newton system keeps its
+  // reduced form S δq = b_v + D β over all DOFs, where β = b_q at the free
+  // DOFs and, at end B, β_B = c b_qB + P b_qh − b_vB (the end's velocity
+  // correction written as c δq_B − β_B, P the end's 3 × 6 body Jacobian):
+  //   δq_f = y_f − X δq_B,   y_f = S_ff⁻¹ (b_vf + D_ff β_f + D_fB β_B),
+  // and the end force G_B (the line's force on the body) changes by
+  //   δG_B = φ − Σ_B δq_B,   φ = −S_Bf y_f + D_Bf β_f + D_BB β_B,
+  // Σ_B = S_BB − S_Bf X (the line's dynamic stiffness at its end: the
+  // Schur complement of the free DOFs). Only the last element touches end B.
+
+  double end_S_at(int i, int j) const {
+    return end_S[static_cast<std::size_t>(kElementDofs * i + j)];
+  }
+  double end_D_at(int i, int j) const {
+    return end_D[static_cast<std::size_t>(kElementDofs * i + j)];
+  }
+  int end_dof(int k) const { return element_dofs.back()[static_cast<std::size_t>(k)]; }
+
+  /// After a setup or update at c_j: the last element's S and D, which the
+  /// split solve applies at end B (they must match the factored S and D).
+  void prepare_end_B_matrices(double cj) {
+    const ancf::ElementDynamicMatrices& em = element_matrices.back();
+    for (std::size_t k = 0; k < end_S.size(); ++k) {
+      end_S[k] = cj * cj * em.M[k] - cj * em.C[k] - em.K[k];
+      end_D[k] = cj * em.M[k] - em.C[k];
+    }
+  }
+
+  /// X and Σ_B from the factored S (three back-solves). A partial update
+  /// may keep them from the last full setup: X is the line's response to a
+  /// unit end motion, which a few elements changing their seabed contact
+  /// far from end B hardly alter, and Σ_B enters only the hull's Newton
+  /// matrix (both only change how fast the Newton iteration converges).
+  void condense_end_B() {
+    end_B_influence.setZero(n, 3);
+    for (int c = 0; c < 3; ++c) {
+      rhs.setZero(n);
+      for (int k = 0; k < kElementDofs; ++k) {
+        if (!fixed(end_dof(k))) rhs[end_dof(k)] = end_S_at(k, kEndBLocal + c);
+      }
+      S.solve_in_place(rhs);
+      end_B_influence.col(c) = rhs;
+    }
+    for (int a = 0; a < 3; ++a) {
+      for (int c = 0; c < 3; ++c) {
+        double sum = end_S_at(kEndBLocal + a, kEndBLocal + c);
+        for (int k = 0; k < kElementDofs; ++k) {
+          if (!fixed(end_dof(k))) sum -= end_S_at(kEndBLocal + a, k) * end_B_influence(end_dof(k), c);
+        }
+        end_B_schur(a, c) = sum;
+      }
+    }
+  }
+
+  /// First half of the solve: y_f (kept in `rhs`) and φ.
+  Eigen::Vector3d solve_free(const Eigen::Ref<const Eigen::VectorXd>& b,
+                             const Eigen::Vector3d& beta_B) {
+    w = b.head(n);
+    rhs = b.tail(n);
+    for (int i : fixed_dofs) w[i] = 0.0;
+    D.multiply_add(w, rhs);
+    for (int k = 0; k < kElementDofs; ++k) {
+      const int dof = end_dof(k);
+      if (fixed(dof)) continue;
+      for (int c = 0; c < 3; ++c) rhs[dof] += end_D_at(k, kEndBLocal + c) * beta_B[c];
+    }
+    for (int i : fixed_dofs) rhs[i] = 0.0;
+    S.solve_in_place(rhs);
+    Eigen::Vector3d phi = Eigen::Vector3d::Zero();
+    for (int a = 0; a < 3; ++a) {
+      for (int k = 0; k < kElementDofs; ++k) {
+        const int dof = end_dof(k);
+        if (fixed(dof)) continue;
+        phi[a] += -end_S_at(kEndBLocal + a, k) * rhs[dof] + end_D_at(kEndBLocal + a, k) * w[dof];
+      }
+      for (int c = 0; c < 3; ++c) phi[a] += end_D_at(kEndBLocal + a, kEndBLocal + c) * beta_B[c];
+    }
+    return phi;
+  }
+
+  /// Second half: the corrections of every DOF written into b, given end B's.
+  void finish_solve(double cj, Eigen::Ref<Eigen::VectorXd> b, const Eigen::Vector3d& dq_B,
+                    const Eigen::Vector3d& beta_B) {
+    rhs.noalias() -= end_B_influence * dq_B;
+    write_corrections(cj, b);
+    const int rb = p.r_dof.back();
+    b.segment<3>(rb) = dq_B;
+    b.segment<3>(n + rb) = cj * dq_B - beta_B;
+  }
+
+  /// The line's force on end B at the last residual evaluation.
+  Eigen::Vector3d end_B_force_of_residual() const { return G.segment<3>(p.r_dof.back()); }
+
+  /// Builds the line from a static solution (FeLineDynamics' constructor);
+  /// returns the consistent initial values and the integrator settings
+  /// (tolerances per state, algebraic end DOFs).
+  struct Start {
+    Eigen::VectorXd y0, yp0;
+    IdaOptions ida;
+  };
+  Start initialize(const FeLineModel& model, const FeDynamicEnvironment& environment,
+                   const FeStaticsResult& initial, const FeDynamicsOptions& options);
+};
+
+}  // namespace spiral::engine::fe_detail
