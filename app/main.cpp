@@ -400,6 +400,19 @@ int main(int argc, char** argv) {
   soz_cmd->add_option("--threads", soz_options.threads, "Threads (default: all cores)");
   bool no_check = false;
   soz_cmd->add_flag("--no-check", no_check, "Skip the load cases' equilibria and the offset check");
+  bool still_water_only = false;
+  soz_cmd->add_flag("--still-water-only", still_water_only,
+                    "Without --case: check every case against the still-water zone (no zone per current)");
+  bool soz_extreme = false;
+  design::SozExtremeOptions soz_extreme_options;
+  CLI::Option* extreme_flag = soz_cmd->add_flag("--extreme", soz_extreme,
+                    "Also check the extreme offsets: enhanced S-C time-domain analysis of each case, 3-h MPM");
+  soz_cmd->add_option("--duration", soz_extreme_options.duration_s,
+                      "With --extreme: simulated time per case, s (default 10800)")
+      ->needs(extreme_flag);
+  soz_cmd->add_option("--seed", soz_extreme_options.seed,
+                      "With --extreme: seed of the wave and wind realizations (default 1)")
+      ->needs(extreme_flag);
   soz_cmd->add_flag("--json", json, "Machine output spiral.soz (docs/output-format.md) instead of the table");
   soz_cmd->add_flag("--csv", csv, "CSV per direction and riser instead of the table");
   soz_cmd->footer(kExitCodeHelp);
@@ -447,6 +460,8 @@ int main(int argc, char** argv) {
       if (soz_condition == "survival") soz_options.condition = design::DesignCondition::survival;
       soz_options.model = soz_model == "catenary" ? design::SozModel::catenary : design::SozModel::fe;
       soz_options.offset_check = !no_check;
+      if (soz_extreme) soz_options.extreme = soz_extreme_options;
+      soz_options.zone_per_current = !still_water_only;
       return run_soz_command(project_file, soz_options, json ? SozView::json : csv ? SozView::csv : SozView::table);
     }
     if (report_cmd->parsed()) return run_report(project_file, stage_name, out_dir);

@@ -1,5 +1,6 @@
 #include "design/project.hpp"
 
+#include <numbers>
 #include <utility>
 
 namespace spiral::design {
@@ -103,8 +104,42 @@ const char* to_string(DesignCondition condition) {
   return "?";
 }
 
+namespace {
+constexpr double kDegToRad = std::numbers::pi / 180.0;
+// Typical design rotation of an SCR / lazy-wave flex joint (elastomeric or
+// titanium stress joint): ±15° (recalled, U: manufacturers' catalogues; API
+// RP 2RD and DNV-OS-F201 require the joint's own limit and give no number).
+constexpr double kDefaultFlexJointRotation_deg = 15.0;
+}  // namespace
+
+RiserCriteriaOverrides riser_criteria_defaults(RiserKind kind) {
+  RiserCriteriaOverrides d;
+  // API RP 2RD allowable stress: sigma_vM <= C_f C_a sigma_y, C_a = 2/3,
+  // C_f = 1.0 (normal), 1.2 (extreme), 1.5 (survival) (recalled, U). Unused
+  // by a flexible (no steel wall is checked) but harmless there.
+  d.design_factor_normal = 0.67;
+  d.design_factor_extreme = 0.80;
+  d.design_factor_survival = 1.00;
+  // No compression anywhere: API RP 2RD / DNV-OS-F201 (steel, TDP buckling),
+  // API RP 17B (flexible: birdcaging of the tensile armour).
+  d.min_effective_tension_N = 0.0;
+  switch (kind) {
+    case RiserKind::scr:
+    case RiserKind::lazy_wave:
+      d.max_flex_joint_rotation_rad = kDefaultFlexJointRotation_deg * kDegToRad;
+      break;
+    case RiserKind::flexible:
+      // Hung off through a bend stiffener, not a flex joint; its MBR comes
+      // from the pipe (API 17J) and has no default.
+      break;
+  }
+  return d;
+}
+
 RiserCriteria riser_criteria(const Criteria& criteria, const Riser& riser) {
-  return with_overrides(criteria.risers, riser.criteria);
+  return with_overrides(
+      with_overrides(with_overrides(RiserCriteria{}, riser_criteria_defaults(riser.kind)), criteria.risers),
+      riser.criteria);
 }
 
 RiserCriteria with_overrides(RiserCriteria base, const RiserCriteriaOverrides& o) {

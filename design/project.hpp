@@ -78,12 +78,14 @@ inline constexpr double kDefaultRiserElementLength_m = 5.0;
 struct TouchdownRefinement {
   double length_m = 0.0;          ///< arc length of the refined zone, centred on the TDP, > 0
   double element_length_m = 0.0;  ///< element length inside it, > 0, <= FeMesh::element_length_m
+  bool operator==(const TouchdownRefinement&) const = default;
 };
 
 /// Discretization of a line or riser into finite elements (unstretched lengths).
 struct FeMesh {
   double element_length_m = kDefaultLineElementLength_m;  ///< target element length, > 0
   std::optional<TouchdownRefinement> touchdown_refinement;
+  bool operator==(const FeMesh&) const = default;
 };
 
 struct MooringLine {
@@ -275,6 +277,7 @@ struct RiserSection {
   double drag_axial = 0.0;
   double added_mass_normal = 1.0;
   double added_mass_axial = 0.0;
+  bool operator==(const RiserSection&) const = default;
 };
 
 /// The design condition of a load case (API RP 2RD): it selects the riser
@@ -289,21 +292,27 @@ struct RiserDesignFactors {
   double normal = 0.67;
   double extreme = 0.80;
   double survival = 1.00;
+  bool operator==(const RiserDesignFactors&) const = default;
 };
 
-/// Riser acceptance criteria (DESIGN.md §6) after per-riser overrides.
+/// Riser acceptance criteria (DESIGN.md §6) of one riser: its kind's
+/// defaults (riser_criteria_defaults), then `criteria.risers`, then the
+/// riser's own `criteria` (riser_criteria). Absent optionals are not checked.
 struct RiserCriteria {
   RiserDesignFactors design_factor;
   double min_effective_tension_N = 0.0;               ///< >= 0, everywhere along the riser
   std::optional<double> max_top_tension_N;            ///< > 0
   std::optional<double> max_top_angle_rad;            ///< from vertical, (0, pi/2)
-  std::optional<double> max_flex_joint_rotation_rad;  ///< from the at-rest angle, (0, pi/2)
+  /// Angle between the riser's top tangent and the hull-fixed flex-joint axis
+  /// (the at-rest top tangent, turning with the hull), (0, pi/2).
+  std::optional<double> max_flex_joint_rotation_rad;
   std::optional<double> min_bending_radius_m;         ///< > 0; required for flexible risers
   std::optional<double> max_touchdown_excursion_m;    ///< TDP horizontal travel from rest, > 0
+  bool operator==(const RiserCriteria&) const = default;
 };
 
-/// Per-riser overrides of `criteria.risers`: only the keys given replace the
-/// project values (riser_criteria() merges them).
+/// Riser criteria as written (`criteria.risers`, `risers[i].criteria`):
+/// only the keys given replace the values below them (riser_criteria()).
 struct RiserCriteriaOverrides {
   std::optional<double> design_factor_normal;
   std::optional<double> design_factor_extreme;
@@ -406,7 +415,7 @@ struct MooringCriteria {
 
 struct Criteria {
   MooringCriteria mooring;
-  RiserCriteria risers;                        ///< project-wide; see Riser::criteria for overrides
+  RiserCriteriaOverrides risers;  ///< project-wide, as given; riser_criteria() merges the layers
   std::optional<double> max_offset_pct_depth;  ///< %, of water depth, > 0
 };
 
@@ -469,7 +478,24 @@ const char* to_string(DesignCondition condition);
 /// `base` with the values given in `overrides` replacing its own.
 RiserCriteria with_overrides(RiserCriteria base, const RiserCriteriaOverrides& overrides);
 
-/// The criteria of `riser`: `criteria.risers` with the riser's overrides applied.
+/// The criteria a riser of `kind` gets where neither `criteria.risers` nor
+/// the riser gives a value (docs/project-format.md, "Riser criteria", for the
+/// sources):
+///   scr, lazy_wave: design factors 0.67 / 0.80 / 1.00 of yield (API RP 2RD
+///     allowable-stress factors C_f C_a, C_a = 2/3, C_f = 1.0 / 1.2 / 1.5);
+///     min effective tension 0 (API RP 2RD, DNV-OS-F201: no compression in
+///     the touchdown zone); flex-joint rotation 15° (a typical flex-joint
+///     design rotation; the codes leave it to the joint's data sheet).
+///   flexible: min effective tension 0 (API RP 17B: no axial compression,
+///     which birdcages the armour wires); no flex joint (a bend stiffener
+///     takes the top angle: not checked); no steel wall (the design factors
+///     are not used); min bending radius: no default — it is a property of
+///     the pipe's structure (API 17J), required (validation
+///     `flexible_min_bending_radius`).
+RiserCriteriaOverrides riser_criteria_defaults(RiserKind kind);
+
+/// The criteria of `riser`: its kind's defaults, then `criteria.risers`, then
+/// the riser's own `criteria`.
 RiserCriteria riser_criteria(const Criteria& criteria, const Riser& riser);
 
 /// The design factor of `condition`.

@@ -895,7 +895,7 @@ Criteria read_criteria(MapReader& r) {
     }
   });
   r.map("risers", kOptional, [&](MapReader& x) {
-    criteria.risers = with_overrides(RiserCriteria{}, read_riser_criteria(x));
+    criteria.risers = read_riser_criteria(x);
   });
   criteria.max_offset_pct_depth = r.number("max_offset_pct_depth", "%", kOptional);
   return criteria;

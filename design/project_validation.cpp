@@ -265,20 +265,6 @@ void check_riser_criteria(Reporter& r, const std::string& at, const RiserCriteri
   }
 }
 
-/// Every value of `c` as given (for checking the merged project-level criteria).
-RiserCriteriaOverrides as_given(const RiserCriteria& c) {
-  RiserCriteriaOverrides o;
-  o.design_factor_normal = c.design_factor.normal;
-  o.design_factor_extreme = c.design_factor.extreme;
-  o.design_factor_survival = c.design_factor.survival;
-  o.min_effective_tension_N = c.min_effective_tension_N;
-  o.max_top_tension_N = c.max_top_tension_N;
-  o.max_top_angle_rad = c.max_top_angle_rad;
-  o.max_flex_joint_rotation_rad = c.max_flex_joint_rotation_rad;
-  o.min_bending_radius_m = c.min_bending_radius_m;
-  o.max_touchdown_excursion_m = c.max_touchdown_excursion_m;
-  return o;
-}
 
 void check_site(const Project& p, Reporter& r) {
   positive(r, "site.depth", p.site.depth_m, "m", "depth_positive");
@@ -798,7 +784,7 @@ void check_criteria(const Project& p, Reporter& r) {
     at_least(r, at + ".als_mean", m.dnv_os_e301->als_mean, 1.0, "", c);
     at_least(r, at + ".als_dynamic", m.dnv_os_e301->als_dynamic, 1.0, "", c);
   }
-  check_riser_criteria(r, "criteria.risers", as_given(p.criteria.risers));
+  check_riser_criteria(r, "criteria.risers", p.criteria.risers);
   positive(r, "criteria.max_offset_pct_depth", p.criteria.max_offset_pct_depth, "%",
            "offset_limit_positive");
 }

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -190,8 +192,17 @@ std::unique_ptr<engine::FeStaticLine> riser_static_line(const Project& project, 
                                                 fe_environment(project, current, contact_diameter_m));
 }
 
+Eigen::Vector3d flex_joint_axis_b(const RiserDesign& design) {
+  // The joint is installed along the riser's at-rest top tangent: the design
+  // top angle from the downward vertical, in the vertical plane of the azimuth.
+  const double s = std::sin(design.design_top_angle_rad);
+  return {s * std::cos(design.azimuth_rad), s * std::sin(design.azimuth_rad),
+          -std::cos(design.design_top_angle_rad)};
+}
+
 RiserStaticsRow riser_statics_row(const Project& project, const RiserDesign& design,
-                                  const engine::FeStaticsResult& solution, DesignCondition condition) {
+                                  const engine::FeStaticsResult& solution, DesignCondition condition,
+                                  const Eigen::Matrix3d& hull_rotation) {
   const engine::Seawater water{project.site.water_density_kg_per_m3, project.site.gravity_m_per_s2};
   RiserStaticsRow row;
   row.name = design.name;
@@ -199,6 +210,16 @@ RiserStaticsRow riser_statics_row(const Project& project, const RiserDesign& des
   const Eigen::Vector3d& top = solution.end_B_force_N;  // on the hull: outwards and down
   row.top_tension_N = top.norm();
   row.top_angle_deg = std::atan2(top.head<2>().norm(), -top.z()) * kRadToDeg;
+  // Flex-joint rotation: the angle between the riser's top tangent (the top
+  // force, which points down the riser: a flex joint carries little moment,
+  // so the end shear is small) and the joint's axis as the hull has turned
+  // it. Unlike the change of top angle, it sees the riser plane swinging
+  // about the vertical (cross offsets, hull yaw) and the hull's roll/pitch.
+  // atan2 of |a × t| and a · t keeps small angles accurate.
+  const Eigen::Vector3d axis_g = hull_rotation * flex_joint_axis_b(design);
+  const Eigen::Vector3d tangent_g = top.normalized();
+  row.flex_joint_rotation_deg =
+      std::atan2(axis_g.cross(tangent_g).norm(), axis_g.dot(tangent_g)) * kRadToDeg;
   const Eigen::Vector3d hang_off_g = solution.node_position_m.back();
   if (solution.touchdown) row.touchdown_distance_m = (solution.touchdown->position_m - hang_off_g).head<2>().norm();
 
@@ -269,9 +290,8 @@ RiserStaticsRow riser_statics_row(const Project& project, const RiserDesign& des
         row.top_angle_deg / (*c.max_top_angle_rad * kRadToDeg));
   }
   if (c.max_flex_joint_rotation_rad) {
-    const double rotation_deg = std::abs(row.top_angle_deg - design.design_top_angle_rad * kRadToDeg);
-    add("flex_joint_rotation", rotation_deg, *c.max_flex_joint_rotation_rad * kRadToDeg, "deg",
-        rotation_deg / (*c.max_flex_joint_rotation_rad * kRadToDeg));
+    add("flex_joint_rotation", row.flex_joint_rotation_deg, *c.max_flex_joint_rotation_rad * kRadToDeg, "deg",
+        row.flex_joint_rotation_deg / (*c.max_flex_joint_rotation_rad * kRadToDeg));
   }
   if (c.min_bending_radius_m) {
     add("min_bending_radius", row.min_bending_radius_m, *c.min_bending_radius_m, "m",

@@ -103,6 +103,10 @@ struct RiserStaticsRow {
   std::string kind;
   double top_tension_N = 0.0;
   double top_angle_deg = 0.0;            ///< from vertical
+  /// Angle between the top tangent and the flex-joint axis (the at-rest top
+  /// tangent at the design top angle in the riser's azimuth plane, fixed to
+  /// the hull and turned with it), deg; includes the azimuthal swing.
+  double flex_joint_rotation_deg = 0.0;
   double touchdown_distance_m = 0.0;     ///< horizontal, hang-off to touchdown point (0: none)
   double min_effective_tension_N = 0.0;
   double min_effective_tension_arc_m = 0.0;  ///< from the foot
@@ -120,8 +124,14 @@ struct RiserStaticsRow {
   std::vector<RiserProfilePoint> profile;  ///< every FE node, foot first
 };
 
-/// Post-processes an FE solution of the riser at hang-off position `hang_off_g`.
+/// Post-processes an FE solution of the riser, the hull's rotation
+/// `hull_rotation` (body to global) placing its flex-joint axis.
 RiserStaticsRow riser_statics_row(const Project& project, const RiserDesign& design,
-                                  const engine::FeStaticsResult& solution, DesignCondition condition);
+                                  const engine::FeStaticsResult& solution, DesignCondition condition,
+                                  const Eigen::Matrix3d& hull_rotation);
+
+/// The riser's flex-joint axis in the hull body frame: the unit top tangent
+/// (pointing down the riser) at the design top angle in its azimuth plane.
+Eigen::Vector3d flex_joint_axis_b(const RiserDesign& design);
 
 }  // namespace spiral::design

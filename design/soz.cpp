@@ -14,6 +14,7 @@
 
 #include "design/environment_loads.hpp"
 #include "design/input_error.hpp"
+#include "design/soz_symmetry.hpp"
 #include "design/static_case.hpp"
 #include "engine/analysis/rigid_body.hpp"
 #include "engine/common/parallel_for.hpp"
@@ -35,6 +36,8 @@ constexpr double kFalsiInset = 0.4;
 // Refinement iterations per bracket: bisection of a 20 %-of-depth bracket to
 // 1 mm takes < 25; this only stops a pathological case.
 constexpr int kMaxRefineIterations = 60;
+// Newton tolerance of the march samples (RiserOffsetEvaluator::Precision).
+constexpr double kMarchForceTolerance = 1e-6;
 // Directions per parallel task: 72 directions × 12 risers give 144 tasks on
 // any core count, fine enough to balance 2–64 threads.
 constexpr int kDirectionsPerTask = 6;
@@ -79,7 +82,7 @@ RiserOffsetEvaluator::RiserOffsetEvaluator(const Project& project, const RiserDe
       model_(model),
       environment_(fe_environment(project, conditions.current,
                                   design.sections.front().properties.hydrodynamic_diameter_m)) {
-  zero_ = model_ == SozModel::fe ? solve_fe(hang_off_g({0.0, 0.0}), nullptr)
+  zero_ = model_ == SozModel::fe ? solve_fe(hang_off_g({0.0, 0.0}), nullptr, Precision::final)
                                  : solve_catenary(hang_off_g({0.0, 0.0}));
   if (!zero_.error.empty()) throw engine::SolverError(zero_.error);
   if (zero_.touchdown_g) {
@@ -96,14 +99,15 @@ Eigen::Vector3d RiserOffsetEvaluator::hang_off_g(const Eigen::Vector2d& offset_x
   return engine::body_point_to_global(project_.hull.reference_point_g, offset, design_.hang_off_b);
 }
 
-RiserOffsetEvaluator::Evaluation RiserOffsetEvaluator::evaluate(
-    const Eigen::Vector2d& offset_xy_m, const engine::FeStaticsResult* warm) const {
+RiserOffsetEvaluator::Evaluation RiserOffsetEvaluator::evaluate(const Eigen::Vector2d& offset_xy_m,
+                                                                const engine::FeStaticsResult* warm,
+                                                                Precision precision) const {
   const Eigen::Vector3d top = hang_off_g(offset_xy_m);
   Evaluation e;
   if (model_ == SozModel::catenary) {
     e = solve_catenary(top);
   } else {
-    e = solve_fe(top, warm ? warm : zero_.solution.get());
+    e = solve_fe(top, warm ? warm : zero_.solution.get(), precision);
   }
   if (!e.error.empty()) return e;
   add_touchdown_check(e, e.touchdown_g);
@@ -136,15 +140,23 @@ RiserOffsetEvaluator::Evaluation RiserOffsetEvaluator::failed(std::string messag
 }
 
 RiserOffsetEvaluator::Evaluation RiserOffsetEvaluator::solve_fe(
-    const Eigen::Vector3d& top, const engine::FeStaticsResult* warm) const {
+    const Eigen::Vector3d& top, const engine::FeStaticsResult* warm, Precision precision) const {
   engine::FeStaticsOptions options;
+  if (precision == Precision::march) {
+    options.relative_force_tolerance = kMarchForceTolerance;
+    // The touchdown node move sharpens the TDP curvature peak for the final
+    // bracket; a march point's pass/fail does not hinge on it (5 % of the
+    // Newton work, callgrind on the default SCR).
+    options.snap_node_to_touchdown = false;
+  }
   options.compute_end_B_stiffness = false;  // the zone needs forces and stresses only
   if (warm) engine::warm_start_from(options, *warm);
   Evaluation e;
   try {
     auto solution = std::make_shared<engine::FeStaticsResult>(engine::solve_fe_line_statics(
         design_.fe_model, environment_, {design_.foot_g, top}, options));
-    e.row = riser_statics_row(project_, design_, *solution, conditions_.condition);
+    e.row = riser_statics_row(project_, design_, *solution, conditions_.condition,
+                              engine::rotation_matrix(conditions_.rotation_rad));
     if (solution->touchdown) e.touchdown_g = solution->touchdown->position_m;
     e.solution = std::move(solution);
   } catch (const engine::SolverError& error) {
@@ -200,7 +212,8 @@ RiserOffsetEvaluator::Evaluation RiserOffsetEvaluator::solve_catenary(
       tdp.head<2>() += c.touchdown_x_m * along;
       r.touchdown = engine::FeTouchdown{c.laid_length_m, tdp};
     }
-    e.row = riser_statics_row(project_, design_, r, conditions_.condition);
+    e.row = riser_statics_row(project_, design_, r, conditions_.condition,
+                              engine::rotation_matrix(conditions_.rotation_rad));
     if (r.touchdown) e.touchdown_g = r.touchdown->position_m;
   } catch (const engine::SolverError& error) {
     e = failed(fmt::format("riser '{}' (catenary screening) at hang-off ({:.2f}, {:.2f}, {:.2f}) m: {}",
@@ -226,13 +239,18 @@ struct Sample {
 
 class DirectionSearch {
  public:
-  /// `previous`: the search of the neighbouring direction in the same task
-  /// (or null); its solutions are warm starts too — at offset d the two
-  /// hang-offs are only d·step apart, closer than the march step.
+  /// `chunk`: the searches of the earlier directions of the same task, in
+  /// order (the direction before this one last); `index`: this direction's
+  /// place in the task. Their samples are warm starts too — at offset d two
+  /// neighbouring hang-offs are only d·step apart, closer than the march
+  /// step — and cover the march where they are closer than one march step.
   DirectionSearch(const RiserOffsetEvaluator& evaluator, double direction_rad,
-                  const SozOptions& options, double depth_m, const DirectionSearch* previous)
+                  const SozOptions& options, double depth_m,
+                  const std::vector<std::unique_ptr<DirectionSearch>>& chunk, int index)
       : evaluator_(evaluator),
-        previous_(previous),
+        chunk_(chunk),
+        index_(index),
+        step_rad_(options.step_deg * kDegToRad),
         unit_(std::cos(direction_rad), std::sin(direction_rad)),
         tolerance_m_(options.tolerance_m),
         step_m_(options.march_step_pct_depth * depth_m / 100.0),
@@ -246,10 +264,17 @@ class DirectionSearch {
     const Sample* pass = &samples_.front();
     const Sample* fail = nullptr;
     double d = 0.0;
-    // 1. Coarse march to the first failure.
+    // 1. Coarse march to the first failure. A march point is solved unless
+    // the covering direction of the task (covering_index) passed at the same
+    // offset: the march resolves the zone to one march step radially, and
+    // that direction is within one march step of the point along the arc.
     while (d < limit_m_ - 1e-9) {
       d = std::min(d + step_m_, limit_m_);
-      const Sample& s = evaluate(d);
+      // The search limit is always solved: a direction that passes reports
+      // it as its allowable offset, and the boundary may lie within the
+      // last step although the neighbour passes there.
+      if (d < limit_m_ - 1e-9 && covered(d, true)) continue;
+      const Sample& s = evaluate(d, RiserOffsetEvaluator::Precision::march);
       if (s.g() > 0.0) {
         fail = &s;
         break;
@@ -264,6 +289,17 @@ class DirectionSearch {
       result.solves = solves_;
       return result;
     }
+    // The bracket's passing end must be a solve of this direction: march
+    // points skipped below the failure are solved now, downwards, until one
+    // passes (the failure moves down with them).
+    for (double below = fail->d_m - step_m_; below > pass->d_m + 1e-9; below -= step_m_) {
+      const Sample& s = evaluate(below, RiserOffsetEvaluator::Precision::march);
+      if (s.g() <= 0.0) {
+        pass = &s;
+        break;
+      }
+      fail = &s;
+    }
     // 2. Refine the first boundary.
     const auto [edge_pass, edge_fail] = refine(*pass, *fail);
     result.allowable_offset_m = edge_pass.d_m;
@@ -271,11 +307,15 @@ class DirectionSearch {
     result.governing_utilization = edge_fail.evaluation.row.utilization;
     result.solver_message = edge_fail.evaluation.error;
     // 3. Continue the coarse march: does the riser pass again farther out?
+    // Mirror of the coverage above: while this direction fails, a point whose
+    // covering direction fails at the same offset is not solved (a band
+    // narrower than one step is below the march's resolution either way).
     const Sample* previous = fail;
     std::optional<SozBand> open;
     while (d < limit_m_ - 1e-9) {
       d = std::min(d + step_m_, limit_m_);
-      const Sample& s = evaluate(d);
+      if (previous->g() > 0.0 && covered(d, false)) continue;
+      const Sample& s = evaluate(d, RiserOffsetEvaluator::Precision::march);
       const bool passes = s.g() <= 0.0;
       const bool previous_passes = previous->g() <= 0.0;
       if (passes && !previous_passes) {
@@ -293,9 +333,33 @@ class DirectionSearch {
   }
 
  private:
+  /// The earlier direction of the task that covers this one's march point at
+  /// offset d, or −1: directions are grouped in blocks of m (m divides
+  /// kDirectionsPerTask) spanning at most one march step of arc at d, (m − 1)
+  /// d Δθ ≤ step; a block's first direction covers the rest.
+  int covering_index(double d) const {
+    int m = 1;
+    for (const int candidate : {2, 3, 6}) {
+      if (kDirectionsPerTask % candidate == 0 && (candidate - 1) * d * step_rad_ <= step_m_) m = candidate;
+    }
+    const int first = index_ - index_ % m;
+    return first == index_ ? -1 : first;
+  }
+
+  /// Whether the march point at d is covered by a solve of the covering
+  /// direction at the same offset that passes (`passing`) or fails.
+  bool covered(double d, bool passing) const {
+    const int k = covering_index(d);
+    if (k < 0 || k >= static_cast<int>(chunk_.size())) return false;
+    for (const Sample& s : chunk_[static_cast<std::size_t>(k)]->samples_) {
+      if (std::abs(s.d_m - d) <= 1e-9 * std::max(1.0, d)) return (s.g() <= 0.0) == passing;
+    }
+    return false;
+  }
+
   /// Solves at offset d along the direction, warm-started from the sample
-  /// (of this direction or the previous one) whose hull offset is nearest.
-  const Sample& evaluate(double d) {
+  /// (of this direction or an earlier one of the task) whose hull offset is nearest.
+  const Sample& evaluate(double d, RiserOffsetEvaluator::Precision precision) {
     const Eigen::Vector2d x = d * unit_;
     const engine::FeStaticsResult* warm = nullptr;
     double nearest_m = std::numeric_limits<double>::infinity();
@@ -309,17 +373,12 @@ class DirectionSearch {
       }
     };
     consider(*this);
-    if (previous_) consider(*previous_);
+    for (const auto& search : chunk_) consider(*search);
     ++solves_;
-    samples_.push_back({d, evaluator_.evaluate(x, warm)});
+    samples_.push_back({d, evaluator_.evaluate(x, warm, precision)});
     return samples_.back();
   }
 
- public:
-  /// Forgets the previous direction (before it is destroyed).
-  void detach() { previous_ = nullptr; }
-
- private:
   /// Shrinks [pass, fail] (either order along d) to the tolerance by
   /// safeguarded regula falsi (Illinois): returns the final passing and
   /// failing samples.
@@ -334,7 +393,7 @@ class DirectionSearch {
       }
       const double inset = kFalsiInset * tolerance_m_;
       x = std::clamp(x, lo + inset, hi - inset);
-      const Sample s = evaluate(x);
+      const Sample s = evaluate(x, RiserOffsetEvaluator::Precision::final);
       if (s.g() <= 0.0) {
         pass = s;
         g_pass = s.g();
@@ -351,7 +410,9 @@ class DirectionSearch {
   }
 
   const RiserOffsetEvaluator& evaluator_;
-  const DirectionSearch* previous_;
+  const std::vector<std::unique_ptr<DirectionSearch>>& chunk_;
+  int index_;
+  double step_rad_;
   Eigen::Vector2d unit_;
   double tolerance_m_;
   double step_m_;
@@ -399,6 +460,18 @@ void validate_soz_options(const Project& project, const SozOptions& o) {
     }
   }
   if (o.load_case) find_load_case(project, *o.load_case);
+  if (o.extreme) {
+    if (!(o.extreme->duration_s > 0.0)) {
+      throw command_line_error(project, "--duration",
+                               fmt::format("must be > 0 s, got {} s", o.extreme->duration_s),
+                               "soz_duration_positive");
+    }
+    if (!o.offset_check && !o.load_case) {
+      throw command_line_error(project, "--extreme",
+                               "the extreme offsets are part of the offset check: drop --no-check",
+                               "soz_extreme_needs_check");
+    }
+  }
 }
 
 SozResult compute_soz(const Project& project, const std::vector<RiserDesign>& risers,
@@ -415,20 +488,30 @@ SozResult compute_soz(const Project& project, const std::vector<RiserDesign>& ri
   const int hardware = static_cast<int>(std::thread::hardware_concurrency());
   result.threads = options.threads > 0 ? options.threads : std::max(1, hardware);
 
+  // Risers whose zone is another's turned about the vertical are not solved.
+  std::vector<int> shift;
+  const std::vector<int> source =
+      soz_rotation_sources(project, risers, conditions, options, n_directions, shift);
+  std::vector<int> solved;  // riser indices that are solved
+  for (std::size_t r = 0; r < risers.size(); ++r) {
+    if (source[r] < 0) solved.push_back(static_cast<int>(r));
+  }
+
   // Zero-offset solves (cold), one riser per task.
-  const int n_risers = static_cast<int>(risers.size());
+  const int n_solved = static_cast<int>(solved.size());
   std::vector<std::unique_ptr<RiserOffsetEvaluator>> evaluators(risers.size());
-  engine::parallel_for(n_risers, result.threads, [&](int r) {
-    evaluators[static_cast<std::size_t>(r)] = std::make_unique<RiserOffsetEvaluator>(
-        project, risers[static_cast<std::size_t>(r)], conditions, options.model);
+  engine::parallel_for(n_solved, result.threads, [&](int i) {
+    const auto r = static_cast<std::size_t>(solved[static_cast<std::size_t>(i)]);
+    evaluators[r] = std::make_unique<RiserOffsetEvaluator>(project, risers[r], conditions, options.model);
   });
   result.risers.resize(risers.size());
   for (std::size_t r = 0; r < risers.size(); ++r) {
     RiserSoz& z = result.risers[r];
-    const RiserStaticsRow& zero = evaluators[r]->zero_offset().row;
     z.name = risers[r].name;
     z.kind = to_string(risers[r].kind);
     z.azimuth_deg = normalize_deg(risers[r].azimuth_rad * kRadToDeg);
+    if (source[r] >= 0) continue;  // filled from its source below
+    const RiserStaticsRow& zero = evaluators[r]->zero_offset().row;
     z.zero_offset_governing_criterion = zero.governing_criterion;
     z.zero_offset_utilization = zero.utilization;
     z.fails_at_zero_offset = !zero.passes;
@@ -438,14 +521,14 @@ SozResult compute_soz(const Project& project, const std::vector<RiserDesign>& ri
 
   // Directions: tasks of kDirectionsPerTask directions of one riser.
   const int chunks = (n_directions + kDirectionsPerTask - 1) / kDirectionsPerTask;
-  engine::parallel_for(n_risers * chunks, result.threads, [&](int task) {
-    const std::size_t r = static_cast<std::size_t>(task / chunks);
+  engine::parallel_for(n_solved * chunks, result.threads, [&](int task) {
+    const auto r = static_cast<std::size_t>(solved[static_cast<std::size_t>(task / chunks)]);
     RiserSoz& z = result.risers[r];
     const int first = (task % chunks) * kDirectionsPerTask;
     // Directions of a task run in order, each warm-started from its
     // predecessor in the task; the chunks are fixed, so the result does not
     // depend on the thread count.
-    std::unique_ptr<DirectionSearch> previous;
+    std::vector<std::unique_ptr<DirectionSearch>> chunk;
     for (int k = first; k < std::min(first + kDirectionsPerTask, n_directions); ++k) {
       SozDirection& out = z.directions[static_cast<std::size_t>(k)];
       const double direction_deg = result.directions_deg[static_cast<std::size_t>(k)];
@@ -455,13 +538,38 @@ SozResult compute_soz(const Project& project, const std::vector<RiserDesign>& ri
         out.governing_utilization = z.zero_offset_utilization;
         continue;
       }
-      auto search = std::make_unique<DirectionSearch>(
-          *evaluators[r], direction_deg * kDegToRad, options, project.site.depth_m, previous.get());
+      auto search = std::make_unique<DirectionSearch>(*evaluators[r], direction_deg * kDegToRad, options,
+                                                      project.site.depth_m, chunk, k - first);
       out = search->run(direction_deg);
-      search->detach();
-      previous = std::move(search);
+      chunk.push_back(std::move(search));
     }
   });
+
+  // Rotated copies: direction k of the riser is direction k − shift of its source.
+  for (std::size_t r = 0; r < risers.size(); ++r) {
+    if (source[r] < 0) continue;
+    const RiserSoz& from = result.risers[static_cast<std::size_t>(source[r])];
+    RiserSoz& z = result.risers[r];
+    z.zero_offset_governing_criterion = from.zero_offset_governing_criterion;
+    z.zero_offset_utilization = from.zero_offset_utilization;
+    z.fails_at_zero_offset = from.fails_at_zero_offset;
+    z.zone_rotated_from = from.name;
+    z.directions.resize(from.directions.size());
+    for (int k = 0; k < n_directions; ++k) {
+      SozDirection d = from.directions[static_cast<std::size_t>((k - shift[r] + n_directions) % n_directions)];
+      d.direction_deg = result.directions_deg[static_cast<std::size_t>(k)];
+      d.solves = 0;
+      z.directions[static_cast<std::size_t>(k)] = std::move(d);
+    }
+  }
+  std::string rotated;
+  for (const RiserSoz& z : result.risers) {
+    if (!z.zone_rotated_from.empty()) rotated += fmt::format("{}{} = {}", rotated.empty() ? "" : ", ", z.name, z.zone_rotated_from);
+  }
+  if (!rotated.empty()) {
+    result.notes.push_back("zones turned about the vertical from an identical riser (same design and criteria, no "
+                           "current, no hull rotations: exact by symmetry): " + rotated);
+  }
 
   // Per-riser summaries and the platform intersection.
   result.platform.allowable_offset_m.assign(static_cast<std::size_t>(n_directions),
@@ -497,105 +605,6 @@ SozResult compute_soz(const Project& project, const std::vector<RiserDesign>& ri
   }
   if (risers.empty()) result.notes.push_back("the project has no risers: no SOZ");
   result.zone_wall_s = seconds_since(start);
-  return result;
-}
-
-OffsetCheck check_offset(const SozResult& zone, const StaticCaseResult& c, const std::string& zone_name) {
-  OffsetCheck check;
-  check.case_name = c.case_name;
-  check.condition = c.condition;
-  check.damaged_line = c.damaged_line;
-  check.offset_m = c.offset_summary.horizontal_m;
-  check.direction_deg = c.offset_summary.direction_deg;
-  check.zone = zone_name;
-  check.allowable_m = std::numeric_limits<double>::infinity();
-  for (const RiserSoz& z : zone.risers) {
-    std::vector<double> allowable;
-    for (const SozDirection& d : z.directions) allowable.push_back(d.allowable_offset_m);
-    const double a = polygon_allowable(zone.directions_deg, allowable, check.direction_deg);
-    if (a < check.allowable_m) {
-      check.allowable_m = a;
-      check.governing_riser = z.name;
-    }
-  }
-  check.margin_m = check.allowable_m - check.offset_m;
-  check.ratio = check.allowable_m > 0.0 ? check.offset_m / check.allowable_m
-                                        : std::numeric_limits<double>::infinity();
-  check.passes = check.offset_m <= check.allowable_m;
-  return check;
-}
-
-SozResult run_soz(const ValidatedProject& validated, const SozOptions& options) {
-  const Project& project = validated.project;
-  validate_soz_options(project, options);
-  SozConditions conditions;
-  conditions.condition = options.condition;
-  std::vector<OffsetCheck> checks;
-  std::vector<std::string> notes;
-  const auto check_start = std::chrono::steady_clock::now();
-  // Static equilibria of the load cases: the offsets to check, and (with
-  // --case) the mean heave/rotations the zone is computed at.
-  std::vector<StaticCaseResult> cases;
-  if (options.load_case) {
-    cases.push_back(run_static_case(validated, {options.load_case, std::nullopt, false}));
-  } else if (options.offset_check) {
-    RestSolutionCache rest_solutions;  // cases sharing an environment solve its lines once
-    for (const LoadCase& c : project.load_cases)
-      cases.push_back(run_static_case(validated, {c.name, std::nullopt, false}, &rest_solutions));
-  }
-  const double check_wall_s = seconds_since(check_start);
-  if (options.load_case) {
-    const StaticCaseResult& c = cases.front();
-    const LoadCase& lc =
-        *std::find_if(project.load_cases.begin(), project.load_cases.end(),
-                      [&](const LoadCase& l) { return l.name == *options.load_case; });
-    const Environment& env =
-        *std::find_if(project.environments.begin(), project.environments.end(),
-                      [&](const Environment& e) { return e.name == lc.environment; });
-    conditions.name = c.case_name;
-    conditions.heave_m = c.offset(2);
-    conditions.rotation_rad = c.offset.tail<3>();
-    conditions.condition = lc.condition;
-    conditions.current = current_profile_of(env);
-  }
-
-  std::vector<RiserDesign> designs;
-  for (const Riser& riser : project.risers) {
-    if (std::find(options.exclude_risers.begin(), options.exclude_risers.end(), riser.name) !=
-        options.exclude_risers.end()) {
-      continue;
-    }
-    designs.push_back(riser_design(project, riser));
-  }
-  SozResult result = compute_soz(project, designs, conditions, options);
-  if (options.model == SozModel::catenary && conditions.current) {
-    result.notes.push_back(
-        "the catenary screening model carries no current: this zone ignores the case's current on "
-        "the risers "
-        "(use --model fe)");
-  }
-  result.check_wall_s = check_wall_s;
-  for (const std::string& n : notes) result.notes.push_back(n);
-  if (!options.exclude_risers.empty()) {
-    std::string names;
-    for (const std::string& n : options.exclude_risers) names += (names.empty() ? "" : ", ") + n;
-    result.notes.push_back("risers left out of the platform zone: " + names);
-  }
-
-  if (!designs.empty()) {
-    for (const StaticCaseResult& c : cases)
-      result.offset_checks.push_back(check_offset(result, c, options.load_case ? "case" : "still-water"));
-    if (!options.load_case && !cases.empty()) {
-      result.notes.push_back(
-          "offset check against the still-water zone (no current on the risers, no mean "
-          "heave/rotations); "
-          "use --case NAME for a case's own zone");
-    }
-    if (!cases.empty()) {
-      result.notes.push_back(
-          "offsets are static (mean); extreme offsets need the dynamic analyses (not yet run)");
-    }
-  }
   return result;
 }
 

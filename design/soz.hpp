@@ -16,7 +16,15 @@
 // rotations of a load case when one is given):
 //  1. march outwards from d = 0 in steps of `march_step_pct_depth` up to
 //     `search_limit_pct_depth` until a point fails (each solve warm-started
-//     from the nearest converged offset of that direction);
+//     from the nearest converged offset of that direction or an earlier one
+//     of its task, and converged to 1e-6 of the force scale — 1e-10 in the
+//     refinement). The march resolves the zone to one step radially; near
+//     the centre the directions are closer than that along the arc, so a
+//     march point within one step of arc of a passing point of an earlier
+//     direction of the task at the same offset is not solved (blocks of 2, 3
+//     or 6 directions, the block's first solved; deterministic: tasks are
+//     fixed). The bracket's passing end is always solved: skipped points
+//     below a failure are solved downwards until one passes;
 //  2. refine the bracket [last pass, first fail] to `tolerance_m` with a
 //     safeguarded regula falsi (Illinois) on the governing utilization − 1,
 //     kept at least 0.4 tolerance inside the bracket so it closes from both
@@ -34,6 +42,16 @@
 // allowable offset and the riser that sets it. Between grid directions the
 // allowable offset is interpolated linearly in angle (the polygon's edges).
 //
+// Risers that differ only by a rotation about the vertical share a zone:
+// with no current and no hull roll/pitch/yaw the problem — FE riser, flat
+// isotropic seabed (axial friction only), gravity, criteria incl. the
+// flex-joint axis that turns with the azimuth — is invariant under that
+// rotation, so a riser of the same design, criteria and hang-off depth whose
+// azimuth is a whole number of grid steps from another's has that riser's
+// zone turned by those steps (exact up to round-off; the default scenario's
+// risers pair up 180° apart). Any current or hull rotation breaks the
+// symmetry and every riser is solved.
+//
 // Parallel: risers × direction chunks on all cores (std::thread); each task
 // owns its FE state; results go to pre-sized slots, so the output does not
 // depend on the number of threads. Solver failures inside the march are not
@@ -41,6 +59,7 @@
 // the solver's message is kept.
 
 #include <Eigen/Core>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -52,6 +71,13 @@
 #include "engine/environment/current_profile.hpp"
 
 namespace spiral::design {
+
+/// The dynamic analysis behind the extreme offset check (sc_analysis.hpp,
+/// level sc-enhanced, tensions off).
+struct SozExtremeOptions {
+  double duration_s = 10800.0;  ///< > 0; the MPM is always scaled to a 3-h sea state
+  std::uint64_t seed = 1;       ///< of the wave and wind realizations
+};
 
 /// The riser model the zone is computed with.
 /// fe: the reference (riser_static_line: FE with bending, current drag, seabed).
@@ -76,7 +102,14 @@ struct SozOptions {
   /// the offset check covers every load case of the project.
   std::optional<std::string> load_case;
   DesignCondition condition = DesignCondition::normal;  ///< without load_case
+  /// Without load_case: check each case against the zone of its own current
+  /// and design condition (run_soz computes one per distinct pair, besides
+  /// the still-water zone). False: every case against the still-water zone.
+  bool zone_per_current = true;
   bool offset_check = true;  ///< run the load cases' static equilibria and check them
+  /// Also the extreme offsets: the enhanced S-C time-domain analysis of every
+  /// checked load case (soz_check.cpp). None: static (mean) offsets only.
+  std::optional<SozExtremeOptions> extreme;
   std::vector<std::string> exclude_risers;  ///< left out of the analysis (e.g. sensitivity)
   SozModel model = SozModel::fe;
   int threads = 0;  ///< 0: std::thread::hardware_concurrency()
@@ -125,6 +158,10 @@ struct RiserSoz {
   std::string near_governing, far_governing;
   bool star_shaped = true;
   int solves = 0;
+  /// Set when the zone is another riser's zone turned about the vertical
+  /// (compute_soz: identical design and criteria, no current, no hull
+  /// rotations, azimuths a whole number of grid steps apart); then solves = 0.
+  std::string zone_rotated_from;
 };
 
 struct PlatformSoz {
@@ -133,12 +170,29 @@ struct PlatformSoz {
   std::vector<std::string> governing_criterion;  ///< that riser's criterion there
 };
 
-/// One load case's static offset against the platform SOZ.
+/// How the extreme offset of a check was found (kind "extreme").
+struct OffsetExtreme {
+  double duration_s = 0.0;  ///< simulated record
+  std::uint64_t seed = 1;
+  /// 3-h MPM of the utilization channel r(t) = |d(t)| / allowable(θ(t)) by
+  /// the three estimators of engine::most_probable_maximum; the check uses
+  /// Weibull (soz_check.cpp says why).
+  double ratio_mpm_gumbel = 0.0, ratio_mpm_weibull = 0.0, ratio_mpm_rayleigh = 0.0;
+  double record_max_ratio = 0.0;  ///< largest r(t) of the record
+  double record_max_ratio_time_s = 0.0;
+  double mean_offset_m = 0.0;     ///< mean |d(t)| of the record
+  double offset_mpm_m = 0.0;      ///< 3-h MPM (Weibull) of |d(t)| itself, for reference
+};
+
+/// One load case's offset (static mean, or extreme) against the platform SOZ.
 struct OffsetCheck {
   std::string case_name;
   std::string condition;  ///< intact | damaged
   std::optional<std::string> damaged_line;
-  std::string kind = "static";  ///< static (mean); extreme offsets need dynamic results (not yet)
+  /// static: the mean (static equilibrium) offset. extreme: ratio = 3-h MPM
+  /// of r(t) (OffsetExtreme), direction the one of the record's largest r(t),
+  /// offset_m = ratio × allowable_m there.
+  std::string kind = "static";
   double offset_m = 0.0;        ///< horizontal offset of the reference point
   double direction_deg = 0.0;
   double allowable_m = 0.0;  ///< platform SOZ in that direction (interpolated)
@@ -148,6 +202,20 @@ struct OffsetCheck {
   std::string governing_riser;
   /// The zone it was checked against: the case's own (with its current) or still-water.
   std::string zone;
+  std::optional<OffsetExtreme> extreme;  ///< kind extreme only
+};
+
+/// A zone the offset check used besides the result's own (run_soz without
+/// load_case): the risers under one current and design condition of the
+/// load cases, at zero mean heave/rotations.
+struct SozZone {
+  std::string name;  ///< "<environment>/<condition>": the first environment with that current
+  SozConditions conditions;
+  std::vector<std::string> cases;  ///< the load cases checked against it
+  std::vector<RiserSoz> risers;
+  PlatformSoz platform;
+  int solves = 0;
+  double zone_wall_s = 0.0;
 };
 
 struct SozResult {
@@ -159,9 +227,10 @@ struct SozResult {
   std::vector<RiserSoz> risers;
   PlatformSoz platform;
   std::vector<OffsetCheck> offset_checks;
+  std::vector<SozZone> zones;  ///< the zones per current (run_soz), besides this one
   std::vector<std::string> notes;
-  int solves = 0;  ///< riser static solves of the zone computation
-  double zone_wall_s = 0.0;
+  int solves = 0;  ///< riser static solves of the zone computation (all zones)
+  double zone_wall_s = 0.0;  ///< all zones
   double check_wall_s = 0.0;
   int threads = 1;
 };
@@ -177,6 +246,9 @@ SozResult compute_soz(const Project& project, const std::vector<RiserDesign>& ri
                       const SozConditions& conditions, const SozOptions& options);
 
 /// Zones of the project's risers, platform intersection and offset check.
+/// Without options.load_case (and with zone_per_current) also one zone per
+/// distinct current and design condition of the checked cases (zones), each
+/// case checked against its own; with options.extreme the extreme offsets too.
 SozResult run_soz(const ValidatedProject& project, const SozOptions& options);
 
 /// One static case's horizontal offset against the platform zone of `zone`
@@ -211,10 +283,16 @@ class RiserOffsetEvaluator {
   /// Throws engine::SolverError when it cannot.
   RiserOffsetEvaluator(const Project& project, const RiserDesign& design,
                        const SozConditions& conditions, SozModel model);
+  /// Newton tolerance of a solve. final: the engine's default (1e-10 of the
+  /// force scale). march: 1e-6 — the criteria move by ~1e-6 of themselves,
+  /// far below what the pass/fail of a march sample or a 0.1 m tolerance
+  /// can see, and the chord iterations of the warm start stop earlier; no
+  /// touchdown node move (the final solves keep it for the TDP curvature).
+  enum class Precision { march, final };
   /// The row at hull offset `offset_xy_m` (m, global x, y), warm-started from
   /// `warm` (a solution of this evaluator) or, when null, from the zero-offset one.
-  Evaluation evaluate(const Eigen::Vector2d& offset_xy_m,
-                      const engine::FeStaticsResult* warm) const;
+  Evaluation evaluate(const Eigen::Vector2d& offset_xy_m, const engine::FeStaticsResult* warm,
+                      Precision precision = Precision::final) const;
   const Evaluation& zero_offset() const { return zero_; }
   const RiserDesign& design() const { return design_; }
 
@@ -222,7 +300,8 @@ class RiserOffsetEvaluator {
   Eigen::Vector3d hang_off_g(const Eigen::Vector2d& offset_xy_m) const;
   /// The evaluation of a solve that failed with `message` (fails "no_static_solution").
   Evaluation failed(std::string message) const;
-  Evaluation solve_fe(const Eigen::Vector3d& hang_off_g, const engine::FeStaticsResult* warm) const;
+  Evaluation solve_fe(const Eigen::Vector3d& hang_off_g, const engine::FeStaticsResult* warm,
+                      Precision precision) const;
   Evaluation solve_catenary(const Eigen::Vector3d& hang_off_g) const;
   void add_touchdown_check(Evaluation& e, const std::optional<Eigen::Vector3d>& touchdown_g) const;
 

@@ -80,26 +80,74 @@ nlohmann::json soz_to_json(const SozResult& r) {
                       {"cross_right_m", z.cross_right_m},
                       {"near_governing", z.near_governing},
                       {"far_governing", z.far_governing},
-                      {"solves", z.solves}});
+                      {"solves", z.solves},
+                      {"zone_rotated_from", z.zone_rotated_from.empty() ? nlohmann::json(nullptr)
+                                                                        : nlohmann::json(z.zone_rotated_from)}});
   }
   nlohmann::json platform_pct = nlohmann::json::array();
   for (double a : r.platform.allowable_offset_m) platform_pct.push_back(pct(a, r.depth_m));
   nlohmann::json checks = nlohmann::json::array();
   for (const OffsetCheck& c : r.offset_checks) {
+    nlohmann::json extreme(nullptr);
+    if (c.extreme) {
+      const OffsetExtreme& e = *c.extreme;
+      extreme = {{"level", "sc-enhanced"},
+                 {"duration_s", e.duration_s},
+                 {"seed", e.seed},
+                 {"estimator", "weibull"},
+                 {"ratio_mpm_3h",
+                  {{"gumbel", number(e.ratio_mpm_gumbel)},
+                   {"weibull", number(e.ratio_mpm_weibull)},
+                   {"rayleigh", number(e.ratio_mpm_rayleigh)}}},
+                 {"record_max_ratio", number(e.record_max_ratio)},
+                 {"record_max_ratio_time_s", e.record_max_ratio_time_s},
+                 {"mean_offset_m", e.mean_offset_m},
+                 {"offset_mpm_3h_m", e.offset_mpm_m}};
+    }
     checks.push_back({{"case", c.case_name},
                       {"condition", c.condition},
                       {"damaged_line",
                        c.damaged_line ? nlohmann::json(*c.damaged_line) : nlohmann::json(nullptr)},
                       {"kind", c.kind},
                       {"zone", c.zone},
-                      {"offset_m", c.offset_m},
-                      {"offset_pct_depth", pct(c.offset_m, r.depth_m)},
+                      {"offset_m", number(c.offset_m)},
+                      {"offset_pct_depth", number(pct(c.offset_m, r.depth_m))},
                       {"direction_deg", c.direction_deg},
                       {"allowable_m", number(c.allowable_m)},
                       {"margin_m", number(c.margin_m)},
                       {"ratio", number(c.ratio)},
                       {"passes", c.passes},
-                      {"governing_riser", c.governing_riser}});
+                      {"governing_riser", c.governing_riser},
+                      {"extreme", extreme}});
+  }
+  nlohmann::json zones = nlohmann::json::array();
+  for (const SozZone& zone : r.zones) {
+    nlohmann::json zone_risers = nlohmann::json::array();
+    for (const RiserSoz& z : zone.risers) {
+      nlohmann::json allowable = nlohmann::json::array(), governing = nlohmann::json::array();
+      for (const SozDirection& d : z.directions) {
+        allowable.push_back(d.allowable_offset_m);
+        governing.push_back(d.governing_criterion);
+      }
+      zone_risers.push_back({{"name", z.name},
+                             {"fails_at_zero_offset", z.fails_at_zero_offset},
+                             {"allowable_offset_m", allowable},
+                             {"governing_criterion", governing},
+                             {"star_shaped", z.star_shaped},
+                             {"near_m", z.near_m},
+                             {"far_m", z.far_m}});
+    }
+    zones.push_back({{"name", zone.name},
+                     {"design_condition", to_string(zone.conditions.condition)},
+                     {"current", zone.conditions.current.has_value()},
+                     {"cases", zone.cases},
+                     {"risers", zone_risers},
+                     {"platform",
+                      {{"allowable_offset_m", zone.platform.allowable_offset_m},
+                       {"governing_riser", zone.platform.governing_riser},
+                       {"governing_criterion", zone.platform.governing_criterion}}},
+                     {"solves", zone.solves},
+                     {"zone_wall_s", zone.zone_wall_s}});
   }
   const SozConditions& k = r.conditions;
   return {{"format", "spiral.soz"},
@@ -127,6 +175,7 @@ nlohmann::json soz_to_json(const SozResult& r) {
             {"governing_riser", r.platform.governing_riser},
             {"governing_criterion", r.platform.governing_criterion}}},
           {"offset_checks", checks},
+          {"zones", zones},
           {"notes", r.notes},
           {"solves", r.solves},
           {"threads", r.threads},
@@ -153,6 +202,14 @@ std::string soz_to_csv(const SozResult& r) {
     out +=
         fmt::format("{},platform,{:.3f},{:.4f},{},,,\n", r.directions_deg[k], a, pct(a, r.depth_m),
                     r.platform.governing_riser[k] + ":" + r.platform.governing_criterion[k]);
+  }
+  for (const SozZone& zone : r.zones) {
+    for (std::size_t k = 0; k < r.directions_deg.size(); ++k) {
+      const double a = zone.platform.allowable_offset_m[k];
+      out += fmt::format("{},platform@{},{:.3f},{:.4f},{},,,\n", r.directions_deg[k], zone.name, a,
+                         pct(a, r.depth_m),
+                         zone.platform.governing_riser[k] + ":" + zone.platform.governing_criterion[k]);
+    }
   }
   return out;
 }
@@ -216,16 +273,37 @@ std::string soz_table(const SozResult& r) {
                        r.platform.governing_riser[k]);
   }
 
+  if (!r.zones.empty()) {
+    out += "\nPlatform allowable offset per direction, m, in the zones of the cases' currents (zone: cases):\n";
+    for (std::size_t z = 0; z < r.zones.size(); ++z) {
+      std::string cases;
+      for (const std::string& c : r.zones[z].cases) cases += (cases.empty() ? "" : ", ") + c;
+      out += fmt::format("  Z{} {}: {}\n", z + 1, r.zones[z].name, cases);
+    }
+    out += fmt::format("{:>5} {:>12}", "dir°", "still-water");
+    for (std::size_t z = 0; z < r.zones.size(); ++z) out += fmt::format(" {:>12}", fmt::format("Z{}", z + 1));
+    out += "\n";
+    for (std::size_t k = 0; k < r.directions_deg.size(); ++k) {
+      out += fmt::format("{:>5g} {:>11.1f}{}", r.directions_deg[k], r.platform.allowable_offset_m[k],
+                         criterion_letter(r.platform.governing_criterion[k]));
+      for (const SozZone& zone : r.zones) {
+        out += fmt::format(" {:>11.1f}{}", zone.platform.allowable_offset_m[k],
+                           criterion_letter(zone.platform.governing_criterion[k]));
+      }
+      out += "\n";
+    }
+  }
+
   if (!r.offset_checks.empty()) {
     out += "\nOffset check against the platform SOZ (ratio = offset / allowable, ≤ 1 passes):\n";
-    out += fmt::format("{:<32} {:<8} {:<6} {:>9} {:>7} {:>11} {:>9} {:>7} {:<5} {:<6}\n", "case",
+    out += fmt::format("{:<32} {:<8} {:<7} {:>9} {:>7} {:>11} {:>9} {:>7} {:<5} {:<6} {}\n", "case",
                        "cond.", "kind", "offset m", "dir°", "allowable m", "margin m", "ratio", "",
-                       "riser");
+                       "riser", "zone");
     for (const OffsetCheck& c : r.offset_checks) {
       out += fmt::format(
-          "{:<32} {:<8} {:<6} {:>9.2f} {:>7.1f} {:>11.2f} {:>9.2f} {:>7.3f} {:<5} {:<6}\n",
+          "{:<32} {:<8} {:<7} {:>9.2f} {:>7.1f} {:>11.2f} {:>9.2f} {:>7.3f} {:<5} {:<6} {}\n",
           c.case_name, c.condition, c.kind, c.offset_m, c.direction_deg, c.allowable_m, c.margin_m,
-          c.ratio, c.passes ? "PASS" : "FAIL", c.governing_riser);
+          c.ratio, c.passes ? "PASS" : "FAIL", c.governing_riser, c.zone);
     }
   }
   for (const std::string& note : r.notes) out += "Note: " + note + "\n";
@@ -243,7 +321,10 @@ std::string soz_table(const SozResult& r) {
   out += fmt::format(
       "\n{} riser static solves in {:.2f} s on {} threads ({:.2f} ms per solve per thread)",
       r.solves, r.zone_wall_s, r.threads, 1e3 * time_per_solve_s(r));
-  if (r.check_wall_s > 0.0) out += fmt::format("; load-case equilibria {:.2f} s", r.check_wall_s);
+  if (r.check_wall_s > 0.0) {
+    out += fmt::format("; load-case equilibria{} {:.2f} s",
+                       r.options.extreme ? " and S-C storms" : "", r.check_wall_s);
+  }
   out += "\n";
   return out;
 }

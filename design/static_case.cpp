@@ -176,7 +176,8 @@ StaticCaseResult run_static_case(const ValidatedProject& validated,
   for (std::size_t r = 0; r < lines.risers.size(); ++r) {
     // The equilibrium left every riser solved at the final pose.
     const auto& riser = static_cast<const engine::FeStaticLine&>(*lines.lines[lines.designs.size() + r]);
-    result.risers.push_back(riser_statics_row(project, lines.risers[r], *riser.last_result(), result.design_condition));
+    result.risers.push_back(riser_statics_row(project, lines.risers[r], *riser.last_result(), result.design_condition,
+                                              equilibrium.pose.rotation));
   }
 
   // With a radiation file the modes use M + A(w_LF) (the hull's added mass at

@@ -85,6 +85,7 @@ nlohmann::json static_case_to_json(const StaticCaseResult& r, const std::string&
                       {"kind", row.kind},
                       {"top_tension_N", row.top_tension_N},
                       {"top_angle_deg", row.top_angle_deg},
+                      {"flex_joint_rotation_deg", row.flex_joint_rotation_deg},
                       {"touchdown_distance_m", row.touchdown_distance_m},
                       {"min_effective_tension_N", row.min_effective_tension_N},
                       {"min_effective_tension_arc_m", row.min_effective_tension_arc_m},

@@ -127,6 +127,7 @@ struct FeLineSection {
   double added_mass_tangential = 0.0;  ///< C_at on displaced_area_m2, >= 0
   double axial_damping_Ns = 0.0;       ///< c in N_d = c dε/dt (strain-rate damping), >= 0
   double EA_dynamic_N = 0.0;           ///< axial stiffness for the fluctuations about the mean (polyester); 0: EA_N
+  bool operator==(const FeLineSection&) const = default;
 };
 
 /// A stretch of finer mesh, e.g. around the expected touchdown point.
@@ -134,6 +135,7 @@ struct FeRefinementZone {
   double start_arc_length_m = 0.0;  ///< unstretched arc length from end A where the zone starts
   double length_m = 0.0;            ///< > 0
   double element_length_m = 0.0;    ///< > 0; used where smaller than the section's own target
+  bool operator==(const FeRefinementZone&) const = default;
 };
 
 /// The line (immutable): sections ordered from end A to end B.
@@ -143,6 +145,7 @@ struct FeLineModel {
   /// sections.size() − 1, or empty): clump weight (> 0) or buoy (< 0), N.
   std::vector<double> joint_load_N;
   std::optional<FeRefinementZone> refinement;
+  bool operator==(const FeLineModel&) const = default;
 };
 
 /// Where the two ends are held (pinned), global frame.

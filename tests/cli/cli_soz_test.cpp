@@ -40,6 +40,12 @@ TEST(CliSoz, JsonHasTheDocumentedKeys) {
   EXPECT_NEAR(check["margin_m"].get<double>(),
               check["allowable_m"].get<double>() - check["offset_m"].get<double>(), 1e-9);
   EXPECT_EQ(check["passes"].get<bool>(), check["ratio"].get<double>() <= 1.0);
+  // lc2 has a current: its own zone, named in its check.
+  EXPECT_EQ(check["zone"], "still-water");
+  ASSERT_EQ(j["zones"].size(), 1u);
+  EXPECT_EQ(j["offset_checks"][1]["zone"], j["zones"][0]["name"]);
+  EXPECT_EQ(j["zones"][0]["platform"]["allowable_offset_m"].size(), 8u);
+  EXPECT_EQ(j["zones"][0]["cases"][0], "lc2");
   EXPECT_GT(j["solves"].get<int>(), 0);
 }
 
@@ -102,6 +108,19 @@ TEST(CliSoz, FlexibleRiserWithoutBendingRadiusIsBadInput) {
   const CommandResult r = run_spiral("soz " + file);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("min_bending_radius"), std::string::npos) << r.err;
+}
+
+TEST(CliSoz, ExtremeOptionsAreCheckedAsBadInput) {
+  const std::string file =
+      write_temp_project("soz-extreme.yaml", soz_project_yaml(soz_riser_yaml("R", 0.0)));
+  const CommandResult zero = run_spiral("soz " + file + " --step-deg 90 --extreme --duration 0");
+  EXPECT_EQ(zero.exit_code, 2);
+  EXPECT_NE(zero.err.find("--duration: must be > 0 s, got 0 s"), std::string::npos) << zero.err;
+  const CommandResult unchecked = run_spiral("soz " + file + " --step-deg 90 --extreme --no-check");
+  EXPECT_EQ(unchecked.exit_code, 2);
+  EXPECT_NE(unchecked.err.find("--extreme"), std::string::npos) << unchecked.err;
+  // --duration without --extreme is a usage error (CLI11 "needs").
+  EXPECT_EQ(run_spiral("soz " + file + " --step-deg 90 --duration 600").exit_code, 2);
 }
 
 TEST(CliSoz, UnknownCaseIsBadInput) {

@@ -55,13 +55,19 @@ TEST(ProjectLoader, MinimalProjectLoadsWithDefaults) {
   EXPECT_FALSE(p.hull.wind_coefficients || p.hull.current_coefficients || p.hull.mean_drift ||
                p.hull.geometry);
   EXPECT_EQ(p.load_cases[0].condition, DesignCondition::extreme);
-  EXPECT_DOUBLE_EQ(p.criteria.risers.design_factor.normal, 0.67);
-  EXPECT_DOUBLE_EQ(p.criteria.risers.design_factor.extreme, 0.80);
-  EXPECT_DOUBLE_EQ(p.criteria.risers.design_factor.survival, 1.00);
-  EXPECT_DOUBLE_EQ(p.criteria.risers.min_effective_tension_N, 0.0);
-  EXPECT_FALSE(p.criteria.risers.max_top_tension_N.has_value());
-  EXPECT_FALSE(p.criteria.risers.min_bending_radius_m.has_value());
-  EXPECT_DOUBLE_EQ(design_factor(p.criteria.risers.design_factor, DesignCondition::normal), 0.67);
+  // Nothing given at project level: a riser gets its kind's defaults.
+  EXPECT_FALSE(p.criteria.risers.design_factor_normal || p.criteria.risers.max_top_tension_N ||
+               p.criteria.risers.min_bending_radius_m);
+  Riser scr;
+  scr.kind = RiserKind::scr;
+  const RiserCriteria c = riser_criteria(p.criteria, scr);
+  EXPECT_DOUBLE_EQ(c.design_factor.normal, 0.67);
+  EXPECT_DOUBLE_EQ(c.design_factor.extreme, 0.80);
+  EXPECT_DOUBLE_EQ(c.design_factor.survival, 1.00);
+  EXPECT_DOUBLE_EQ(c.min_effective_tension_N, 0.0);
+  EXPECT_FALSE(c.max_top_tension_N.has_value());
+  EXPECT_FALSE(c.min_bending_radius_m.has_value());
+  EXPECT_DOUBLE_EQ(design_factor(c.design_factor, DesignCondition::normal), 0.67);
 }
 
 TEST(ProjectLoader, FormatSampleLoadsWithExpectedValues) {
@@ -203,10 +209,10 @@ TEST(ProjectLoader, FormatSampleLoadsWithExpectedValues) {
   EXPECT_EQ(p.criteria.mooring.code, MooringCode::api_rp_2sk);
   EXPECT_DOUBLE_EQ(p.criteria.mooring.api_rp_2sk->damaged_dynamic, 1.25);
   EXPECT_DOUBLE_EQ(*p.criteria.max_offset_pct_depth, 10.0);
-  const RiserCriteria& rc = p.criteria.risers;
-  EXPECT_DOUBLE_EQ(rc.design_factor.normal, 0.67);
-  EXPECT_DOUBLE_EQ(rc.design_factor.survival, 1.0);
-  EXPECT_DOUBLE_EQ(rc.min_effective_tension_N, 0.0);
+  const RiserCriteriaOverrides& rc = p.criteria.risers;  // as written
+  EXPECT_DOUBLE_EQ(*rc.design_factor_normal, 0.67);
+  EXPECT_DOUBLE_EQ(*rc.design_factor_survival, 1.0);
+  EXPECT_DOUBLE_EQ(*rc.min_effective_tension_N, 0.0);
   EXPECT_DOUBLE_EQ(*rc.max_top_tension_N, 4.0e6);
   EXPECT_NEAR(*rc.max_top_angle_rad, 20.0 * std::numbers::pi / 180.0, kTol);
   EXPECT_NEAR(*rc.max_flex_joint_rotation_rad, 12.0 * std::numbers::pi / 180.0, kTol);
@@ -524,6 +530,33 @@ TEST(ProjectLoader, RiserCriteriaOverridesMergeWithTheProjectCriteria) {
   EXPECT_DOUBLE_EQ(c.min_effective_tension_N, 1.0e4);
   EXPECT_DOUBLE_EQ(*c.max_top_tension_N, 3.0e6);
   EXPECT_DOUBLE_EQ(design_factor(c.design_factor, DesignCondition::extreme), 0.7);
+}
+
+TEST(ProjectLoader, RiserCriteriaDefaultByKindUnderTheProjectAndRiserValues) {
+  Criteria criteria;
+  Riser scr, flexible;
+  scr.kind = RiserKind::scr;
+  flexible.kind = RiserKind::flexible;
+  // Kind defaults (docs/project-format.md): a steel riser has a flex joint,
+  // a flexible a bend stiffener (no flex-joint check) and no MBR default.
+  const RiserCriteria s = riser_criteria(criteria, scr);
+  ASSERT_TRUE(s.max_flex_joint_rotation_rad.has_value());
+  EXPECT_NEAR(*s.max_flex_joint_rotation_rad, 15.0 * std::numbers::pi / 180.0, kTol);
+  EXPECT_DOUBLE_EQ(s.design_factor.extreme, 0.80);
+  EXPECT_EQ(riser_criteria_defaults(RiserKind::lazy_wave).max_flex_joint_rotation_rad,
+            riser_criteria_defaults(RiserKind::scr).max_flex_joint_rotation_rad);
+  const RiserCriteria f = riser_criteria(criteria, flexible);
+  EXPECT_FALSE(f.max_flex_joint_rotation_rad.has_value());
+  EXPECT_FALSE(f.min_bending_radius_m.has_value());
+  EXPECT_DOUBLE_EQ(f.min_effective_tension_N, 0.0);
+  // A project value replaces the kind default; a riser value the project's.
+  criteria.risers.max_flex_joint_rotation_rad = 10.0 * std::numbers::pi / 180.0;
+  criteria.risers.min_bending_radius_m = 4.0;
+  EXPECT_NEAR(*riser_criteria(criteria, scr).max_flex_joint_rotation_rad,
+              10.0 * std::numbers::pi / 180.0, kTol);
+  flexible.criteria.min_bending_radius_m = 3.5;
+  EXPECT_DOUBLE_EQ(*riser_criteria(criteria, flexible).min_bending_radius_m, 3.5);
+  EXPECT_DOUBLE_EQ(*riser_criteria(criteria, scr).min_bending_radius_m, 4.0);
 }
 
 TEST(ProjectLoader, ScenariosCarryTheCoupledStaticsData) {

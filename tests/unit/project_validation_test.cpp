@@ -3,6 +3,7 @@
 
 #include "design/project_validation.hpp"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -376,6 +377,14 @@ TEST(ProjectValidation, FlexibleRiserNeedsAMinimumBendingRadius) {
   const auto issues = check(kMinimal + kFlexibleRiser);
   expect_single(issues, "flexible_min_bending_radius", "risers[0].criteria.min_bending_radius");
   EXPECT_EQ(issues[0].line, 33);  // the riser entry: no criteria map was written
+  // The message the user sees: file:line:col: field path: problem.
+  EXPECT_EQ(format_issue(issues[0]).rfind(
+                fmt::format("{}:33:{}: risers[0].criteria.min_bending_radius: a flexible riser needs "
+                            "min_bending_radius (m)",
+                            issues[0].file, issues[0].column.value_or(0)),
+                0),
+            0u)
+      << format_issue(issues[0]);
   // Either level satisfies it.
   EXPECT_TRUE(
       check(kMinimal + kFlexibleRiser + "    criteria: {min_bending_radius: 3.0}\n").empty());

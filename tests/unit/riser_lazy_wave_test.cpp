@@ -73,7 +73,8 @@ TEST_P(LazyWave, PlacedWithSagAndHogBendsTouchdownAndNoCompression) {
   const Eigen::Vector3d hang_off_g = project.hull.reference_point_g + design.hang_off_b;
   line->solve(hang_off_g);
   const engine::FeStaticsResult& solution = *line->last_result();
-  const RiserStaticsRow row = riser_statics_row(project, design, solution, DesignCondition::normal);
+  const RiserStaticsRow row = riser_statics_row(project, design, solution, DesignCondition::normal,
+                                                Eigen::Matrix3d::Identity());
 
   EXPECT_NEAR(row.top_angle_deg, c.top_angle_deg, kTopAngleTolerance_deg);
   ASSERT_TRUE(solution.touchdown.has_value());
