@@ -90,6 +90,9 @@ CriticalCaseVerification verify_case(const ValidatedProject& vp, const Intermedi
   // The riser criteria the coupled run does not give (stress, angles, …)
   // stand as the stage's static equilibrium of the case checked them.
   v.static_risers_pass = stage.statics.checks[ranked.case_index].risers_pass;
+  v.static_riser_utilization = ranked.riser_utilization;
+  v.static_riser = ranked.riser;
+  v.static_riser_criterion = ranked.riser_criterion;
   v.comparison.case_name = statics.case_name;
   v.comparison.seed = base.seed;
   v.comparison.duration_s = base.duration_s;
@@ -134,17 +137,9 @@ CriticalCaseVerification verify_case(const ValidatedProject& vp, const Intermedi
   return v;
 }
 
-/// The verdict's reason: the failed runs first (nothing was verified there),
-/// then the failing check of largest utilization, else the largest one.
+/// The failing check of largest utilization over the verified cases, else
+/// the largest utilization.
 std::string governing_of(const AdvancedStageResults& r) {
-  std::vector<std::string> failed;
-  for (const CriticalCaseVerification& c : r.cases)
-    if (!c.coupled) failed.push_back(c.case_name);
-  if (!failed.empty()) {
-    std::string names;
-    for (const std::string& n : failed) names += (names.empty() ? "" : ", ") + n;
-    return fmt::format("coupled run failed for {} of {} critical cases: {}", failed.size(), r.cases.size(), names);
-  }
   struct Candidate {
     double utilization = -1.0;
     bool pass = true;
@@ -166,13 +161,16 @@ std::string governing_of(const AdvancedStageResults& r) {
       consider(c.soz_offset->ratio, c.soz_offset->passes,
                fmt::format("{}: MPM offset / SOZ {:.3f} ({})", c.case_name, c.soz_offset->ratio,
                            c.soz_offset->governing_riser));
-    if (!c.static_risers_pass) consider(1.0, false, fmt::format("{}: riser criteria at the static equilibrium", c.case_name));
+    if (!c.static_riser.empty())
+      consider(c.static_riser_utilization, c.static_risers_pass,
+               fmt::format("{}: riser {} {} {:.3f} (static equilibrium)", c.case_name, c.static_riser,
+                           c.static_riser_criterion, c.static_riser_utilization));
     for (const FinalRiserCheck& rc : c.risers)
       if (rc.limit_N)
         consider(rc.utilization, rc.pass,
                  fmt::format("{}: riser {} top tension {:.3f}", c.case_name, rc.riser, rc.utilization));
   }
-  return worst.text.empty() ? std::string("no checks") : worst.text;
+  return worst.text;
 }
 
 }  // namespace
@@ -211,9 +209,10 @@ AdvancedStageResults run_advanced_stage(const ValidatedProject& vp, const Advanc
   }
   out.verification_wall_s = seconds_since(runs_start);
   for (const CriticalCaseVerification& c : out.cases) {
-    out.failed_runs += c.coupled ? 0 : 1;
+    if (!c.coupled) out.failed_cases.push_back(c.case_name);
     out.pass = out.pass && c.pass;
   }
+  out.failed_runs = static_cast<int>(out.failed_cases.size());
   out.governing = governing_of(out);
   out.wall_time_s = seconds_since(start);
   return out;

@@ -87,8 +87,11 @@ struct CriticalCaseVerification {
   bool offset_limit_pass = true;
   std::vector<FinalRiserCheck> risers;
   /// The case's static riser criteria (stage statics): what the coupled
-  /// run's top tensions do not cover (stress, angles, compression).
+  /// run's top tensions do not cover (stress, angles, compression); the
+  /// largest utilization, its riser and criterion (none without risers).
   bool static_risers_pass = true;
+  double static_riser_utilization = 0.0;
+  std::string static_riser, static_riser_criterion;
   bool pass = false;  ///< the coupled run finished and every check passes
   double wall_s = 0.0;
 };
@@ -100,9 +103,11 @@ struct AdvancedStageResults {
   std::uint64_t seed = 1;
   std::vector<CriticalCaseVerification> cases;  ///< rank order
   int failed_runs = 0;                          ///< cases whose coupled run failed
+  std::vector<std::string> failed_cases;        ///< their names, rank order
   bool pass = true;
-  /// The one-line reason of the verdict: the failed runs, or the failing
-  /// check of largest utilization, or the largest utilization when all pass.
+  /// The governing check of the verified cases: the failing check of largest
+  /// utilization, or the largest utilization when all pass ("" when no case
+  /// was verified).
   std::string governing;
   double verification_wall_s = 0.0;  ///< the coupled and S-C runs
   double wall_time_s = 0.0;
