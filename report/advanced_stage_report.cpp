@@ -222,7 +222,7 @@ Section case_section(const design::CriticalCaseVerification& c) {
   const std::string line = c.coupled ? c.coupled->most_loaded_line : std::string();
   Table t{id + "-comparison",
           fmt::format("Case {}: sc-enhanced against coupled, {} on seed {}. MPM: most probable 3-h maximum "
-                      "(Gumbel). Δ: 100 (S-C − coupled) / |coupled|. The S-C tension is the quasi-static "
+                      "(Gumbel; the sample maximum where the record is too short for the fit). Δ: 100 (S-C − coupled) / |coupled|. The S-C tension is the quasi-static "
                       "catenary at the S-C fairlead motion, the coupled one the FE line's top tension.",
                       c.case_name, duration_text(c.comparison.duration_s), c.comparison.seed),
           {"Quantity", "Level", "Mean", "Std", "Max", "MPM", "Δ mean (%)", "Δ std (%)", "Δ max (%)", "Δ MPM (%)"},
