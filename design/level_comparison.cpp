@@ -32,10 +32,6 @@ ChannelSummary summarize(const std::string& name, const std::string& unit,
   return c;
 }
 
-double percent_difference(double level, double coupled) {
-  return std::abs(coupled) > 0.0 ? 100.0 * (level - coupled) / std::abs(coupled) : 0.0;
-}
-
 const ChannelSummary* find_channel(const LevelSummary& level, const std::string& name) {
   for (const ChannelSummary& c : level.channels) {
     if (c.name == name) return &c;
@@ -56,6 +52,21 @@ double total_wall_s(const DynamicAnalysisResult& r) {
 }
 
 }  // namespace
+
+double percent_difference(double level, double coupled) {
+  return std::abs(coupled) > 0.0 ? 100.0 * (level - coupled) / std::abs(coupled) : 0.0;
+}
+
+LevelSummary summarize_level(const DynamicAnalysisResult& result) {
+  LevelSummary s;
+  s.level = result.level;
+  s.wall_s = total_wall_s(result);
+  s.line_dynamics_wall_s = result.line_dynamics_wall_s;
+  s.channels = summarize_channels(result);
+  s.notes = result.notes;
+  s.coupled_solver = result.coupled_solver;
+  return s;
+}
 
 std::vector<ChannelSummary> summarize_channels(const DynamicAnalysisResult& r) {
   std::vector<ChannelSummary> out;
@@ -112,12 +123,7 @@ LevelComparison compare_levels(const ValidatedProject& project, const Comparison
       c.levels.push_back(std::move(s));
       continue;
     }
-    s.wall_s = total_wall_s(result);
-    s.line_dynamics_wall_s = result.line_dynamics_wall_s;
-    s.channels = summarize_channels(result);
-    s.notes = result.notes;
-    s.coupled_solver = result.coupled_solver;
-    c.levels.push_back(std::move(s));
+    c.levels.push_back(summarize_level(result));
   }
   return c;
 }

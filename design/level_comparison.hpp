@@ -77,6 +77,13 @@ LevelComparison compare_levels(const ValidatedProject& project, const Comparison
 /// quasi-static tensions).
 std::vector<ChannelSummary> summarize_channels(const DynamicAnalysisResult& result);
 
+/// One level's summary of a finished analysis: its own cost (see the file
+/// comment), channels, notes and coupled solver statistics.
+LevelSummary summarize_level(const DynamicAnalysisResult& result);
+
+/// 100 (level − coupled) / |coupled|; 0 when the coupled value is 0.
+double percent_difference(double level, double coupled);
+
 /// {"load_case", "seed", "duration_s", "levels": {"sc": {"wall_s",
 /// "speedup_vs_coupled", "max_offset_m", "channels": {name: {mean, std, max,
 /// mpm, "diff_pct_vs_coupled": {…}}}}, …}} (docs/output-format.md).

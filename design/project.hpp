@@ -434,6 +434,10 @@ struct StageSoz {
 struct Stage {
   std::string name;  ///< preliminary, intermediate, advanced (DESIGN.md §2) or a user name
   StageSoz soz;
+  /// Simulated time of the advanced stage's coupled and S-C verification runs
+  /// (s, > 0; absent: 3 h, the duration the MPM extremes refer to). Only the
+  /// advanced stage takes it (`stage_duration_advanced_only`).
+  std::optional<double> duration_s;
 };
 
 /// Position of a YAML node in its file (1-based).

@@ -946,11 +946,12 @@ void read_project(MapReader& r, Project& p, const std::filesystem::path& base_fo
         assign(stage.soz.model, z.enumeration("model", kStageSozModels, kOptional));
         assign(stage.soz.step_deg, z.number("step_deg", "deg", kOptional));
       });
+      stage.duration_s = s.number("duration", "s", kOptional);
       p.stages.push_back(stage);
     });
   } else {
     r.child("stages", kOptional);  // known key, for suggestions
-    p.stages = {{"preliminary", {}}, {"intermediate", {}}, {"advanced", {}}};
+    p.stages = {{"preliminary", {}, {}}, {"intermediate", {}, {}}, {"advanced", {}, {}}};
   }
 }
 

@@ -811,6 +811,18 @@ std::vector<InputIssue> check_project(const Project& project, const LineCheckTab
       r.fail(fmt::format("stages[{}].soz.step_deg", i), "soz_step_divides_360",
              fmt::format("must be > 0 and divide 360, got {} deg", step));
     }
+    if (const std::optional<double> duration = project.stages[i].duration_s) {
+      const std::string path = fmt::format("stages[{}].duration", i);
+      if (project.stages[i].name != "advanced") {
+        // The preliminary and intermediate storms are 3 h by design (their
+        // MPM extremes rank the cases); a duration there would be ignored.
+        r.fail(path, "stage_duration_advanced_only",
+               fmt::format("only the advanced stage takes a duration, got it on stage '{}'",
+                           project.stages[i].name));
+      } else if (!(*duration > 0.0)) {
+        r.fail(path, "stage_duration_positive", fmt::format("must be > 0, got {} s", *duration));
+      }
+    }
   }
   std::stable_sort(issues.begin(), issues.end(), [](const InputIssue& a, const InputIssue& b) {
     return std::pair(a.line.value_or(0), a.column.value_or(0)) <

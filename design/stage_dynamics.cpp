@@ -28,6 +28,8 @@ std::vector<double> row(const Eigen::Matrix<double, 6, Eigen::Dynamic>& m, int d
   return out;
 }
 
+}  // namespace
+
 double fairlead_segment_mbl(const ValidatedProject& vp, const std::string& line_name) {
   for (const MooringLine& line : vp.project.mooring.lines) {
     if (line.name != line_name || line.segments.empty()) continue;
@@ -36,8 +38,6 @@ double fairlead_segment_mbl(const ValidatedProject& vp, const std::string& line_
   }
   return 0.0;
 }
-
-}  // namespace
 
 StormChannel summarize_storm_channel(std::string name, std::string unit, std::vector<double> values,
                                  double dt_s) {
@@ -104,7 +104,16 @@ StageDynamics run_stage_dynamics(const ValidatedProject& vp, const StaticCaseRes
   request.seed = 1;
   request.statics = &statics;
   const DynamicAnalysisResult r = run_dynamic_analysis(vp, request);
+  StageDynamics out = summarize_stage_dynamics(vp, statics, request, r, zone, std::move(selection));
+  out.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return out;
+}
 
+StageDynamics summarize_stage_dynamics(const ValidatedProject& vp, const StaticCaseResult& statics,
+                                       const DynamicAnalysisRequest& request,
+                                       const DynamicAnalysisResult& r, const SozResult* zone,
+                                       std::string selection, const std::string& tension_line) {
+  const AnalysisLevel level = r.level;
   StageDynamics out;
   out.case_name = r.case_name;
   out.condition = statics.condition;
@@ -116,12 +125,13 @@ StageDynamics run_stage_dynamics(const ValidatedProject& vp, const StaticCaseRes
   out.seed = r.seed;
   out.times_s.assign(r.times_s.data(), r.times_s.data() + r.times_s.size());
   out.notes = r.notes;
-  out.equilibrium_wall_s = 0.0;  // the stage's static case was reused
+  out.equilibrium_wall_s = r.equilibrium_wall_s;  // 0 when the stage's static case was reused
   out.reduction_wall_s = r.reduction_wall_s;
   out.forcing_wall_s = r.forcing_wall_s;
   out.dynamics_wall_s = r.dynamics_wall_s + r.wave_frequency_wall_s;
   out.tensions_wall_s = r.tensions_wall_s;
-  out.solver_steps = static_cast<int>(r.solver.steps);
+  out.solver_steps = r.coupled_solver ? static_cast<int>(r.coupled_solver->steps)
+                                      : static_cast<int>(r.solver.steps);
   const double dt = request.output_step_s;
 
   out.channels.push_back(summarize_storm_channel("surge", "m", row(r.total, 0, 1.0), dt));
@@ -140,18 +150,36 @@ StageDynamics run_stage_dynamics(const ValidatedProject& vp, const StaticCaseRes
                            kRadToDeg;
   out.channels.push_back(summarize_storm_channel("offset", "m", std::move(offset), dt));
 
-  // The most loaded line: the largest sampled fairlead tension.
-  const TensionSeries* loaded = nullptr;
+  // The tension records the stage checks: the coupled run's own FE line
+  // tensions (its mooring lines; the risers follow them in dynamic_tensions),
+  // else the quasi-static catenary tensions at the total motion.
+  struct Record {
+    const std::string* line;
+    const std::vector<double>* tension_N;
+  };
+  std::vector<Record> records;
+  if (level == AnalysisLevel::coupled) {
+    out.tension_source = "coupled";
+    for (const LineDynamicsSeries& t : r.dynamic_tensions) {
+      const bool mooring = std::any_of(vp.project.mooring.lines.begin(), vp.project.mooring.lines.end(),
+                                       [&](const MooringLine& l) { return l.name == t.line; });
+      if (mooring) records.push_back({&t.line, &t.tension_N});
+    }
+  } else {
+    for (const TensionSeries& t : r.tensions) records.push_back({&t.line, &t.tension_N});
+  }
+  // The requested line, else the most loaded one (largest sampled tension).
+  const Record* loaded = nullptr;
   double peak = -1.0;
-  for (const TensionSeries& t : r.tensions) {
-    const double m = t.tension_N.empty() ? 0.0 : *std::max_element(t.tension_N.begin(), t.tension_N.end());
-    if (m > peak) peak = m, loaded = &t;
+  for (const Record& t : records) {
+    const double m = t.tension_N->empty() ? 0.0 : *std::max_element(t.tension_N->begin(), t.tension_N->end());
+    if (tension_line.empty() ? m > peak : *t.line == tension_line) peak = m, loaded = &t;
   }
   if (loaded) {
-    out.most_loaded_line = loaded->line;
-    out.channels.push_back(summarize_storm_channel("tension " + loaded->line, "N", loaded->tension_N, dt));
+    out.most_loaded_line = *loaded->line;
+    out.channels.push_back(summarize_storm_channel("tension " + *loaded->line, "N", *loaded->tension_N, dt));
     const StormChannel& t = out.channels.back();
-    out.fairlead_mbl_N = fairlead_segment_mbl(vp, loaded->line);
+    out.fairlead_mbl_N = fairlead_segment_mbl(vp, *loaded->line);
     const DynamicTensionCheck check =
         dynamic_tension_check(vp.project.criteria.mooring, statics.condition == "damaged", t.mean,
                               t.mpm_max.value_or(t.maximum), out.fairlead_mbl_N);
@@ -172,7 +200,6 @@ StageDynamics run_stage_dynamics(const ValidatedProject& vp, const StaticCaseRes
     check.kind = "extreme";
     out.extreme_offset = check;
   }
-  out.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
 }
 

@@ -56,6 +56,10 @@ struct StageDynamics {
   /// surge (m), sway (m), yaw (deg), offset (m, horizontal), tension of the most loaded line (N).
   std::vector<StormChannel> channels;
   std::string most_loaded_line;  ///< by its largest sampled fairlead tension
+  /// Where the tension channel comes from: "quasi-static" (catenary at the
+  /// instantaneous fairlead, the S-C levels) or "coupled" (the dynamic FE line
+  /// of the coupled run).
+  std::string tension_source = "quasi-static";
   double fairlead_mbl_N = 0.0;   ///< MBL of that line's fairlead segment
   double dynamic_safety_factor = 0.0;  ///< API SF_dyn, or γ_dyn for DNV
   double tension_utilization = 0.0;    ///< see the file comment; pass when <= 1
@@ -80,6 +84,20 @@ struct DynamicTensionCheck {
 };
 DynamicTensionCheck dynamic_tension_check(const MooringCriteria& criteria, bool damaged,
                                           double mean_N, double mpm_N, double mbl_N);
+
+/// MBL of the fairlead (top) segment of a mooring line; 0 for an unknown line.
+double fairlead_segment_mbl(const ValidatedProject& project, const std::string& line_name);
+
+/// The stage's view of one finished analysis `result` of `request` (whose
+/// `statics` is the case's static equilibrium): channels, statistics and the
+/// two dynamic checks. The tension channel is the mooring line `tension_line`
+/// (empty: the most loaded one); a coupled result's tensions are its dynamic
+/// FE tensions (risers left out), the other levels' the quasi-static ones.
+/// `wall_s` is left to the caller (it timed the analysis).
+StageDynamics summarize_stage_dynamics(const ValidatedProject& project, const StaticCaseResult& statics,
+                                       const DynamicAnalysisRequest& request,
+                                       const DynamicAnalysisResult& result, const SozResult* zone,
+                                       std::string selection, const std::string& tension_line = "");
 
 /// Runs the analysis of `statics.case_name` at `level` (3 h, 0.5 s, seed 1),
 /// reusing `statics` as its static equilibrium. `zone`: the platform SOZ for

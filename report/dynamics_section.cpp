@@ -27,34 +27,12 @@ std::string display_unit(const design::StormChannel& c) {
   return c.unit == "N" ? "kN" : c.unit;
 }
 
-Series envelope(const std::vector<double>& t, const std::vector<double>& v, double scale) {
-  Series s;
-  const std::size_t n = std::min(t.size(), v.size());
-  const std::size_t per = std::max<std::size_t>(1, (n + kEnvelopeBins - 1) / kEnvelopeBins);
-  for (std::size_t b = 0; b < n; b += per) {
-    const std::size_t e = std::min(n, b + per);
-    const auto [lo, hi] = std::minmax_element(v.begin() + static_cast<std::ptrdiff_t>(b),
-                                              v.begin() + static_cast<std::ptrdiff_t>(e));
-    // In time order within the bin, so the polyline does not fold back.
-    const bool lo_first = lo < hi;
-    const auto first = lo_first ? lo : hi, second = lo_first ? hi : lo;
-    s.x.push_back(t[static_cast<std::size_t>(first - v.begin())]);
-    s.y.push_back(*first * scale);
-    if (per > 1) {
-      s.x.push_back(t[static_cast<std::size_t>(second - v.begin())]);
-      s.y.push_back(*second * scale);
-    }
-  }
-  s.line_width = 0.5;
-  return s;
-}
-
 Plot time_plot(const design::StageDynamics& d, const design::StormChannel& c, std::size_t color) {
   Plot p;
   p.title = c.name;
   p.x_label = "Time (s)";
   p.y_label = fmt::format("{} ({})", c.name, display_unit(c));
-  Series s = envelope(d.times_s, c.values, display_scale(c));
+  Series s = time_envelope(d.times_s, c.values, display_scale(c));
   s.label = fmt::format("{} {}", design::to_string(d.level), c.name);
   s.color = palette(color);
   p.series.push_back(std::move(s));
@@ -104,8 +82,39 @@ Plot spectrum_plot(const design::StormChannel& c, std::size_t color) {
   return p;
 }
 
-/// Plots stacked in `rows` × `cols` panels of one figure.
-Figure panels(std::string id, std::string caption, double aspect, std::vector<Plot> plots, int cols) {
+TableCell opt(const std::optional<double>& v, int decimals, double scale) {
+  return v ? num(*v, decimals, scale) : text("–");
+}
+
+}  // namespace
+
+std::size_t envelope_bin_samples(std::size_t samples) {
+  return std::max<std::size_t>(1, (samples + kEnvelopeBins - 1) / kEnvelopeBins);
+}
+
+Series time_envelope(const std::vector<double>& t, const std::vector<double>& v, double scale) {
+  Series s;
+  const std::size_t n = std::min(t.size(), v.size());
+  const std::size_t per = envelope_bin_samples(n);
+  for (std::size_t b = 0; b < n; b += per) {
+    const std::size_t e = std::min(n, b + per);
+    const auto [lo, hi] = std::minmax_element(v.begin() + static_cast<std::ptrdiff_t>(b),
+                                              v.begin() + static_cast<std::ptrdiff_t>(e));
+    // In time order within the bin, so the polyline does not fold back.
+    const bool lo_first = lo < hi;
+    const auto first = lo_first ? lo : hi, second = lo_first ? hi : lo;
+    s.x.push_back(t[static_cast<std::size_t>(first - v.begin())]);
+    s.y.push_back(*first * scale);
+    if (per > 1) {
+      s.x.push_back(t[static_cast<std::size_t>(second - v.begin())]);
+      s.y.push_back(*second * scale);
+    }
+  }
+  s.line_width = 0.5;
+  return s;
+}
+
+Figure plot_panels(std::string id, std::string caption, double aspect, std::vector<Plot> plots, int cols) {
   Figure f{std::move(id), std::move(caption), aspect, std::nullopt, nullptr};
   f.draw = [plots = std::move(plots), cols](cairo_t* cr, double w, double h) {
     const int rows = static_cast<int>((plots.size() + static_cast<std::size_t>(cols) - 1) /
@@ -122,12 +131,6 @@ Figure panels(std::string id, std::string caption, double aspect, std::vector<Pl
   return f;
 }
 
-TableCell opt(const std::optional<double>& v, int decimals, double scale) {
-  return v ? num(*v, decimals, scale) : text("–");
-}
-
-}  // namespace
-
 std::vector<Block> storm_blocks(const design::StageDynamics& d, const std::string& id) {
   std::vector<Block> out;
   std::vector<Plot> motion, spectra;
@@ -135,28 +138,30 @@ std::vector<Block> storm_blocks(const design::StageDynamics& d, const std::strin
     motion.push_back(time_plot(d, d.channels[i], i));
     spectra.push_back(spectrum_plot(d.channels[i], i));
   }
-  out.emplace_back(panels(
+  out.emplace_back(plot_panels(
       id + "-motions",
       fmt::format("Hull motions of the reference point in case {} ({}, {:.0f} s, seed {}): surge, sway, yaw "
                   "and the horizontal offset √(x² + y²) from the rest position; dashed: the mean (grey) and the "
                   "MPM of the 3-h maximum (red, Gumbel). Each plotted point pair is the min and max of {} s.",
                   d.case_name, design::to_string(d.level), d.duration_s, d.seed,
-                  d.output_step_s * std::max<std::size_t>(1, (d.times_s.size() + kEnvelopeBins - 1) / kEnvelopeBins)),
+                  d.output_step_s * static_cast<double>(envelope_bin_samples(d.times_s.size()))),
       1.25, std::move(motion), 2));
-  out.emplace_back(panels(id + "-spectra",
+  out.emplace_back(plot_panels(id + "-spectra",
                           "One-sided Welch spectra of the same channels (Hann window, 50 % overlap), up to "
                           "the frequency beyond which less than 1e-6 of the variance lies.",
                           1.3, std::move(spectra), 2));
   if (d.channels.size() > 4) {
     const design::StormChannel& t = d.channels[4];
     Plot series = time_plot(d, t, 4);  // not red: the MPM line is
-    series.title = fmt::format("Quasi-static fairlead tension, {}", d.most_loaded_line);
+    const bool coupled = d.tension_source == "coupled";
+    series.title = fmt::format("{} fairlead tension, {}", coupled ? "Coupled" : "Quasi-static", d.most_loaded_line);
     Plot spectrum = spectrum_plot(t, 4);
-    out.emplace_back(panels(
+    out.emplace_back(plot_panels(
         id + "-tension",
-        fmt::format("Quasi-static fairlead tension of the most loaded line, {} (elastic catenary at the "
-                    "instantaneous fairlead position at every output step), and its spectrum.",
-                    d.most_loaded_line),
+        fmt::format("{} fairlead tension of the most loaded line, {} ({}), and its spectrum.",
+                    coupled ? "Coupled" : "Quasi-static", d.most_loaded_line,
+                    coupled ? "the dynamic FE line's top tension, integrated with the hull"
+                            : "elastic catenary at the instantaneous fairlead position at every output step"),
         1.25, {series, spectrum}, 1));
   }
   Table stats{id + "-statistics",

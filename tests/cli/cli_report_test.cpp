@@ -257,12 +257,108 @@ TEST(CliReportStages, IntermediateRanksEveryLoadCase) {
   fs::remove_all(dir);
 }
 
-TEST(CliReportStages, AdvancedIsRejectedNamingWhatIsMissing) {
-  const auto result =
-      run_spiral("report " + scenario("deepwater-fps.yaml") + " --stage advanced --out /tmp/spiral-never-written");
-  EXPECT_EQ(result.exit_code, app::kExitBadInput);
-  EXPECT_NE(result.err.find("fully coupled"), std::string::npos) << result.err;
-  EXPECT_FALSE(fs::exists("/tmp/spiral-never-written"));
+/// The OC4 scenario (two load cases, both critical) with its advanced stage's
+/// verification runs `duration_s` long, written into `dir` with absolute data paths.
+fs::path oc4_with_advanced_duration(const fs::path& dir, double duration_s) {
+  std::string yaml = read_text(fs::path(SPIRAL_SOURCE_DIR) / "scenarios" / "oc4-semisubmersible.yaml");
+  for (std::size_t at; (at = yaml.find("../../shared/data")) != std::string::npos;)
+    yaml.replace(at, std::string("../../shared/data").size(), SPIRAL_SHARED_DATA_DIR);
+  const std::string key = "- {name: advanced}";
+  const std::size_t at = yaml.find(key);
+  EXPECT_NE(at, std::string::npos);
+  yaml.replace(at, key.size(), fmt::format("- {{name: advanced, duration: {}}}", duration_s));
+  const fs::path file = dir / "oc4-advanced.yaml";
+  std::ofstream(file) << yaml;
+  return file;
+}
+
+// The advanced stage: the critical cases run coupled and sc-enhanced for the
+// project's duration; the comparison table's differences are those of its
+// own values, S-C is cheaper than coupled, every line's final utilization is
+// its coupled MPM with the API dynamic factor, the PDF renders page by page
+// and its text holds the comparison values and the verdict with its governing check.
+TEST(CliReportStages, AdvancedVerifiesTheCriticalCasesCoupled) {
+  const fs::path dir = fresh_dir("spiral-cli-report-advanced");
+  const fs::path folder = dir / "report";
+  const auto result = run_spiral("report '" + oc4_with_advanced_duration(dir, 300.0).string() +
+                                 "' --stage advanced --out '" + folder.string() + "'");
+  ASSERT_EQ(result.exit_code, app::kExitOk) << result.err;
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(result.out, m, std::regex(R"(\((\d+) pages\))"))) << result.out;
+  const int pages = std::stoi(m[1]);
+  EXPECT_GE(pages, 6);  // title, model, load cases, critical cases, final check, one section per case
+  const fs::path png_dir = dir / "png";
+  fs::create_directories(png_dir);
+  ASSERT_EQ(std::system(fmt::format("pdftoppm -r 20 -png '{}' '{}/p' 2>/dev/null", (folder / "report.pdf").string(),
+                                    png_dir.string())
+                            .c_str()),
+            0);
+  int count = 0;
+  for (const auto& e : fs::directory_iterator(png_dir)) count += e.path().extension() == ".png" ? 1 : 0;
+  EXPECT_EQ(count, pages);
+  const fs::path txt = dir / "report.txt";
+  ASSERT_EQ(std::system(fmt::format("pdftotext -layout '{}' '{}'", (folder / "report.pdf").string(), txt.string())
+                            .c_str()),
+            0);
+  const std::string text = read_text(txt);
+  const std::string flat = squeeze(text);
+
+  // Coupled vs S-C: rows in (sc-enhanced, coupled) pairs; Δ = 100 (S-C − coupled) / |coupled|.
+  const auto cmp = read_csv(folder / "tables" / "case-intact-raft-jonswap-comparison.csv");
+  ASSERT_EQ(cmp.size(), 1u + 2u * 3u);  // offset, surge, tension of the most loaded line
+  ASSERT_EQ(cmp[0][5], "MPM");
+  ASSERT_EQ(cmp[0][9], "Δ MPM (%)");
+  for (std::size_t i = 1; i + 1 < cmp.size(); i += 2) {
+    const auto &sc = cmp[i], &coupled = cmp[i + 1];
+    ASSERT_EQ(sc[1], "sc-enhanced");
+    ASSERT_EQ(coupled[1], "coupled");
+    for (int col = 2; col <= 5; ++col) {
+      const double s = std::stod(sc[col]), c = std::stod(coupled[col]);
+      // The CSV keeps 10 significant digits: 1e-6 relative is far above their rounding.
+      const double expected = c == 0.0 ? 0.0 : 100.0 * (s - c) / std::abs(c);
+      EXPECT_NEAR(std::stod(sc[col + 4]), expected, 1e-6 * (1.0 + std::abs(expected)))
+          << sc[0] << " column " << cmp[0][col];
+    }
+    // The coupled MPM as the PDF table shows it (kN to 1 decimal, m to 3).
+    const bool tension = coupled[0].rfind("tension", 0) == 0;
+    const std::string shown = fmt::format("{:.{}f}", std::stod(coupled[5]), tension ? 1 : 3);
+    EXPECT_NE(text.find(shown), std::string::npos) << coupled[0] << " MPM " << shown;
+  }
+  const auto cost = read_csv(folder / "tables" / "case-intact-raft-jonswap-cost.csv");
+  ASSERT_EQ(cost.size(), 3u);
+  ASSERT_EQ(cost[1][0], "sc-enhanced");
+  const double sc_wall = std::stod(cost[1][1]), coupled_wall = std::stod(cost[2][1]);
+  EXPECT_NEAR(std::stod(cost[1][3]), coupled_wall / sc_wall, 1e-9 * coupled_wall / sc_wall);
+  EXPECT_GT(std::stod(cost[1][3]), 1.0) << "S-C must be cheaper than coupled";
+  EXPECT_NEAR(std::stod(cost[1][2]), 300.0 / sc_wall, 1e-9 * 300.0 / sc_wall);
+  EXPECT_TRUE(fs::exists(folder / "figures" / "case-intact-raft-jonswap-levels.svg"));
+
+  // Final check: API RP 2SK intact dynamic factor 1.67 on every line's coupled MPM.
+  const auto lines = read_csv(folder / "tables" / "final-tension.csv");
+  ASSERT_EQ(lines.size(), 1u + 2u * 3u);  // both cases, three lines
+  double worst = 0.0;
+  std::string worst_text;
+  bool all_pass = true;
+  for (std::size_t i = 1; i < lines.size(); ++i) {
+    const double mpm = std::stod(lines[i][4]), mbl = std::stod(lines[i][5]), u = std::stod(lines[i][7]);
+    EXPECT_NEAR(u, mpm * 1.67 / mbl, 1e-8 * u) << lines[i][0] << " " << lines[i][1];
+    EXPECT_EQ(lines[i][8], u <= 1.0 ? "PASS" : "FAIL");
+    all_pass = all_pass && u <= 1.0;
+    if (u > worst) worst = u, worst_text = fmt::format("{}: dynamic tension {} {:.3f}", lines[i][0], lines[i][1], u);
+  }
+  const auto offsets = read_csv(folder / "tables" / "final-offset.csv");
+  ASSERT_EQ(offsets.size(), 3u);
+  for (std::size_t i = 1; i < offsets.size(); ++i) {
+    const double ratio = std::stod(offsets[i][3]);
+    EXPECT_NEAR(ratio, std::stod(offsets[i][1]) / 20.0, 1e-9);  // 10 % of 200 m
+    all_pass = all_pass && ratio <= 1.0;
+    if (ratio > worst) worst = ratio, worst_text = fmt::format("{}: MPM offset {:.2f} m", offsets[i][0], std::stod(offsets[i][1]));
+  }
+  EXPECT_NE(result.out.find(all_pass ? "(PASS)" : "(FAIL)"), std::string::npos) << result.out;
+  EXPECT_NE(flat.find(all_pass ? "PASS — all 2 critical cases verified fully coupled" : "FAIL —"), std::string::npos);
+  EXPECT_NE(flat.find(worst_text), std::string::npos) << worst_text;
+  EXPECT_NE(flat.find("coupled and sc-enhanced, 300 s each"), std::string::npos);
+  fs::remove_all(dir);
 }
 
 /// The OC4 scenario with hull.geometry.panel_mesh set to `mesh`, written into

@@ -503,5 +503,19 @@ TEST(ProjectValidation, MorisonHullNeedsGeometryAndTakesNoBemKeys) {
   expect_single(issues, "coefficient_non_negative", "hull.geometry.pontoons[0].drag");
 }
 
+// stages[].duration: the advanced stage's verification runs only, > 0.
+TEST(ProjectValidation, StageDurationOnlyOnTheAdvancedStageAndPositive) {
+  const auto ok = check(kMinimal + "stages:\n  - {name: intermediate}\n  - {name: advanced, duration: 600.0}\n");
+  EXPECT_TRUE(ok.empty()) << all(ok);
+  EXPECT_DOUBLE_EQ(parse_project(kMinimal + "stages:\n  - {name: advanced, duration: 600.0}\n", "test.yaml")
+                       .stages[0]
+                       .duration_s.value_or(0.0),
+                   600.0);
+  expect_single(check(kMinimal + "stages:\n  - {name: intermediate, duration: 600.0}\n"),
+                "stage_duration_advanced_only", "stages[0].duration");
+  expect_single(check(kMinimal + "stages:\n  - {name: preliminary}\n  - {name: advanced, duration: 0.0}\n"),
+                "stage_duration_positive", "stages[1].duration");
+}
+
 }  // namespace
 }  // namespace spiral::design
