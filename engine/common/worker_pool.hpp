@@ -54,6 +54,7 @@ class WorkerPool {
       }
       start_.notify_all();
       drain();
+      spin_until([this] { return busy_.load(std::memory_order_acquire) == 0; });
       std::unique_lock<std::mutex> lock(mutex_);
       done_.wait(lock, [this] { return busy_ == 0; });
       job_ = nullptr;
@@ -77,9 +78,20 @@ class WorkerPool {
     for (int i = next_++; i < count_; i = next_++) job_(i);
   }
 
+  // A short spin before sleeping on the condition variable: the loops come
+  // every few hundred microseconds, and a futex sleep and wake-up costs tens
+  // of microseconds each way (measured: 51 s of system time in a 645 s
+  // coupled storm before the spin). Bounded, so an idle pool sleeps.
+  template <class Ready>
+  static void spin_until(const Ready& ready) {
+    for (int i = 0; i < kSpinChecks && !ready(); ++i) std::this_thread::yield();
+  }
+  static constexpr int kSpinChecks = 200;
+
   void work() {
     long seen = 0;
     for (;;) {
+      spin_until([&] { return generation_.load(std::memory_order_acquire) != seen; });
       {
         std::unique_lock<std::mutex> lock(mutex_);
         start_.wait(lock, [&] { return stop_ || generation_ != seen; });
@@ -102,8 +114,8 @@ class WorkerPool {
   std::vector<std::exception_ptr> errors_;
   std::atomic<int> next_{0};
   int count_ = 0;
-  int busy_ = 0;
-  long generation_ = 0;
+  std::atomic<int> busy_{0};
+  std::atomic<long> generation_{0};
   bool stop_ = false;
 };
 

@@ -10,20 +10,20 @@
 // each component splits into a time part and a space part,
 //   cos(ω t − k·x0 + φ) = cos ω t · cos ψ − sin ω t · sin ψ,  ψ = φ − k·x0,
 // so the amplitudes a ω f(z0) cos ψ, a ω f(z0) sin ψ are computed once and
-// each time costs one sin/cos per component for all points plus ≈ 12
+// each time costs one sin/cos per component for all points plus ≈ 20
 // multiply-adds per component and point. The error of holding a point at
 // its static position is the phase k Δ of its low-frequency excursion Δ
 // about the mean position: k σ ≈ 0.03 rad/m × 1–3 m = 0.03–0.1 rad for the
 // deep-water storm (surge std 1.1 m) — MoorDyn's original approach
 // (kinematics at the nodes' initial positions, Hall 2015).
 //
-// Profiles: first-order linear theory at the point's z (DNV-RP-C205 §3.2.2),
-// no Wheeler stretching — the stretching is a correction of the order of
-// the wave steepness k a that matters near the surface, where lines rarely
-// are (fairleads and hang-offs lie below the troughs); points above the
-// still-water level get no kinematics. Components whose depth profile has
-// decayed below `cutoff` of its surface value are left out of a point's
-// sum, and a point where all of them have is flagged still.
+// Profiles: linear theory (DNV-RP-C205 §3.2.2) with Wheeler stretching
+// (§3.2.3) to second order in k Δz about the point's z (evaluate() says
+// how), η from the point's kept components; a point above the instantaneous
+// surface is dry (zero), as is one above the still-water level at rest.
+// Components whose depth profile has decayed below `cutoff` of its surface
+// value are left out of a point's sum, and a point where all of them have
+// is flagged still.
 
 #include <Eigen/Core>
 #include <memory>
@@ -52,10 +52,12 @@ class FixedPointWaveKinematics {
     std::size_t count = 0;                   // components kept: the first `count` by wavenumber
     std::vector<double> horizontal_c, horizontal_s;  // a ω f_h cos ψ, a ω f_h sin ψ
     std::vector<double> vertical_c, vertical_s;      // a ω f_v cos ψ, a ω f_v sin ψ
+    std::vector<double> elevation_c, elevation_s;    // a cos ψ, a sin ψ
+    double z_m = 0.0;
   };
   std::shared_ptr<const WaveRealization> sea_;
   std::vector<std::size_t> order_;  // components by increasing wavenumber
-  std::vector<double> omega_, cos_heading_, sin_heading_;  // in that order
+  std::vector<double> omega_, wavenumber_, cos_heading_, sin_heading_;  // in that order
   std::vector<Point> points_;
   mutable std::vector<double> cos_wt_, sin_wt_;  // per component (sorted), of the last t
 };

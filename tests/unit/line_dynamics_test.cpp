@@ -65,7 +65,7 @@ TEST(LineDynamics, ARegularWaveOnTheLinesMakesTheTensionOscillateAtItsPeriod) {
   const double period = engine::zero_upcrossing_period_s(late, in.dt_s);
   EXPECT_NEAR(period, 10.0, 0.2);
   const auto [lo, hi] = std::minmax_element(late.begin(), late.end());
-  EXPECT_GT(*hi - *lo, 3e-4 * *hi);  // measured 1.3 kN of 1.1 MN (1.2e-3); still water: < 1e-6
+  EXPECT_GT(*hi - *lo, 3e-4 * *hi);  // measured 1.7 kN of 1.1 MN (1.5e-3; 1.3 kN without Wheeler stretching); still water: < 1e-6
   std::cout << "regular wave on the lines: L1 tension range " << (*hi - *lo) / 1e3
             << " kN, period " << period << " s\n";
 }
