@@ -65,12 +65,7 @@ DynamicAnalysisResult run_coupled_analysis(const ValidatedProject& validated,
   sc.level = AnalysisLevel::semi_coupled;
   DynamicModel model = build_dynamic_model(validated, sc);
   const LoadCase& load_case = find_load_case(project, request.load_case);
-  const Environment& environment = [&]() -> const Environment& {
-    for (const Environment& e : project.environments) {
-      if (e.name == load_case.environment) return e;
-    }
-    throw std::logic_error("validated load case without its environment");
-  }();
+  const Environment& environment = environment_of(project, load_case);
 
   DynamicAnalysisResult result = result_of_model(model, request, load_case.name, environment.name);
   result.reduction_wall_s = 0.0;  // set below: the FE lines' statics

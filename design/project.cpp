@@ -1,5 +1,7 @@
 #include "design/project.hpp"
 
+#include <algorithm>
+#include <stdexcept>
 #include <numbers>
 #include <utility>
 
@@ -167,6 +169,14 @@ double design_factor(const RiserDesignFactors& factors, DesignCondition conditio
       return factors.survival;
   }
   return factors.extreme;
+}
+
+const Environment& environment_of(const Project& project, const LoadCase& load_case) {
+  const auto it = std::find_if(project.environments.begin(), project.environments.end(),
+                               [&](const Environment& e) { return e.name == load_case.environment; });
+  if (it == project.environments.end())
+    throw std::logic_error("load case " + load_case.name + " names no environment of the project");
+  return *it;
 }
 
 }  // namespace spiral::design

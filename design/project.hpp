@@ -502,6 +502,9 @@ RiserCriteriaOverrides riser_criteria_defaults(RiserKind kind);
 /// the riser's own `criteria`.
 RiserCriteria riser_criteria(const Criteria& criteria, const Riser& riser);
 
+/// The environment a load case names (validation guarantees it exists).
+const Environment& environment_of(const Project& project, const LoadCase& load_case);
+
 /// The design factor of `condition`.
 double design_factor(const RiserDesignFactors& factors, DesignCondition condition);
 

@@ -78,11 +78,6 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-const Environment& find_environment(const Project& project, const std::string& name) {
-  return *std::find_if(project.environments.begin(), project.environments.end(),
-                       [&](const Environment& e) { return e.name == name; });
-}
-
 engine::CoefficientTable table_of(const HullLoadCoefficients& c) {
   return {c.headings_rad, c.surge_m2, c.sway_m2, c.yaw_m3};
 }
@@ -343,7 +338,7 @@ std::optional<Eigen::Matrix<double, 6, Eigen::Dynamic>> wave_frequency_motions(
     const DynamicAnalysisRequest& request, const Eigen::VectorXd& times_s) {
   const Project& project = validated.project;
   const LoadCase& load_case = find_load_case(project, request.load_case);
-  return wave_frequency_motion(project, find_environment(project, load_case.environment), model,
+  return wave_frequency_motion(project, environment_of(project, load_case), model,
                                request, times_s);
 }
 
@@ -383,7 +378,7 @@ DynamicModel build_dynamic_model(const ValidatedProject& validated,
                     request.duration_s, request.output_step_s));
   }
   const LoadCase& load_case = find_load_case(project, request.load_case);
-  const Environment& environment = find_environment(project, load_case.environment);
+  const Environment& environment = environment_of(project, load_case);
 
   DynamicModel model;
   try {
@@ -672,7 +667,7 @@ DynamicAnalysisResult run_dynamic_analysis(const ValidatedProject& validated,
   const Project& project = validated.project;
   DynamicModel model = build_dynamic_model(validated, request);
   const LoadCase& load_case = find_load_case(project, request.load_case);
-  const Environment& environment = find_environment(project, load_case.environment);
+  const Environment& environment = environment_of(project, load_case);
 
   DynamicAnalysisResult result = result_of_model(model, request, load_case.name, environment.name);
 

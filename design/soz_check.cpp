@@ -226,9 +226,7 @@ std::vector<int> zones_of_cases(const Project& project, const std::vector<std::s
   std::vector<std::optional<Current>> currents;  // of `zones`
   for (const std::string& name : case_names) {
     const LoadCase& lc = find_load_case(project, name);
-    const Environment& env =
-        *std::find_if(project.environments.begin(), project.environments.end(),
-                      [&](const Environment& e) { return e.name == lc.environment; });
+    const Environment& env = environment_of(project, lc);
     const std::optional<Current> current = ignore_current ? std::nullopt : env.current;
     if (!current && lc.condition == still_water_condition) {
       index.push_back(-1);
@@ -308,9 +306,7 @@ SozResult run_soz(const ValidatedProject& validated, const SozOptions& options) 
   if (options.load_case) {
     const StaticCaseResult& c = cases.front();
     const LoadCase& lc = find_load_case(project, *options.load_case);
-    const Environment& env =
-        *std::find_if(project.environments.begin(), project.environments.end(),
-                      [&](const Environment& e) { return e.name == lc.environment; });
+    const Environment& env = environment_of(project, lc);
     conditions.name = c.case_name;
     conditions.heave_m = c.offset(2);
     conditions.rotation_rad = c.offset.tail<3>();
