@@ -151,6 +151,18 @@ class CoupledSystem final : public ImplicitSystem {
     r.segment<6>(6) = eq_.total_mass * yp.segment<6>(6) - net;
   }
 
+  /// Every line's force on the hull at (t, y, y') from its end element alone
+  /// (the only element at end B: the value the full residual would give).
+  void end_forces(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp) {
+    const PrescribedHullMotion hull = total_motion(t, y, yp);
+    for_each_line([&](LineBlock& b) {
+      load_line(b, hull, y, yp);
+      fe_detail::DynamicLine& l = b.line;
+      l.load_state(t, b.y, b.yp);
+      b.force_N = l.end_force(true, l.qw, l.vw, l.aw, t);
+    });
+  }
+
   bool newton_matrix_stale() override {
     bool any = false;
     for (LineBlock& b : blocks_) {
@@ -402,9 +414,8 @@ CoupledTimeSeries simulate_coupled(const HullDynamicsModel& hull, const HullLoad
   out.end_B_force_N.assign(blocks.size(), Eigen::Matrix<double, 3, Eigen::Dynamic>(3, n_out));
   out.state_size = size;
   out.step_limiting_outputs.assign(blocks.size() + 1, 0);
-  Eigen::VectorXd r;
   auto record = [&](Eigen::Index k, double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp) {
-    system.residual(t, y, yp, r);  // sets every line's end force at (t, y, y')
+    system.end_forces(t, y, yp);
     out.times_s[k] = t;
     out.position.col(k) = y.head<6>();
     out.velocity.col(k) = y.segment<6>(6);

@@ -42,6 +42,7 @@ FixedPointWaveKinematics::FixedPointWaveKinematics(std::shared_ptr<const WaveRea
     out.horizontal_s.resize(out.count);
     out.vertical_c.resize(out.count);
     out.vertical_s.resize(out.count);
+    max_count_ = std::max(max_count_, out.count);
     out.elevation_c.resize(out.count);
     out.elevation_s.resize(out.count);
     out.z_m = x.z();
@@ -62,9 +63,7 @@ FixedPointWaveKinematics::FixedPointWaveKinematics(std::shared_ptr<const WaveRea
 
 void FixedPointWaveKinematics::evaluate(double t_s, std::vector<Eigen::Vector3d>& velocity,
                                         std::vector<Eigen::Vector3d>& acceleration) const {
-  std::size_t needed = 0;
-  for (const Point& p : points_) needed = std::max(needed, p.count);
-  for (std::size_t j = 0; j < needed; ++j) {
+  for (std::size_t j = 0; j < max_count_; ++j) {
     const double wt = omega_[j] * t_s;
     cos_wt_[j] = std::cos(wt);
     sin_wt_[j] = std::sin(wt);

@@ -59,6 +59,7 @@ class FixedPointWaveKinematics {
   std::vector<std::size_t> order_;  // components by increasing wavenumber
   std::vector<double> omega_, wavenumber_, cos_heading_, sin_heading_;  // in that order
   std::vector<Point> points_;
+  std::size_t max_count_ = 0;  // the most components any point keeps
   mutable std::vector<double> cos_wt_, sin_wt_;  // per component (sorted), of the last t
 };
 
