@@ -17,8 +17,9 @@
 //  1. march outwards from d = 0 in steps of `march_step_pct_depth` up to
 //     `search_limit_pct_depth` until a point fails (each solve warm-started
 //     from the nearest converged offset of that direction or an earlier one
-//     of its task, and converged to 1e-6 of the force scale — 1e-10 in the
-//     refinement). The march resolves the zone to one step radially; near
+//     of its task, and converged to 1e-5 of the force scale — 1e-10 in the
+//     refinement; a march point within 2.5e-3 of utilization 1 is solved
+//     again to 1e-10, soz.cpp). The march resolves the zone to one step radially; near
 //     the centre the directions are closer than that along the arc, so a
 //     march point within one step of arc of a passing point of an earlier
 //     direction of the task at the same offset is not solved (blocks of 2, 3
@@ -42,15 +43,19 @@
 // allowable offset and the riser that sets it. Between grid directions the
 // allowable offset is interpolated linearly in angle (the polygon's edges).
 //
-// Risers that differ only by a rotation about the vertical share a zone:
-// with no current and no hull roll/pitch/yaw the problem — FE riser, flat
-// isotropic seabed (axial friction only), gravity, criteria incl. the
-// flex-joint axis that turns with the azimuth — is invariant under that
-// rotation, so a riser of the same design, criteria and hang-off depth whose
-// azimuth is a whole number of grid steps from another's has that riser's
-// zone turned by those steps (exact up to round-off; the default scenario's
-// risers pair up 180° apart). Any current or hull rotation breaks the
-// symmetry and every riser is solved.
+// Risers related by a rotation about the vertical or a reflection in a
+// vertical plane share a zone (soz_symmetry.hpp): with no current and no
+// hull roll/pitch/yaw the problem — FE riser, flat isotropic seabed (axial
+// friction only), gravity, criteria incl. the flex-joint axis in the
+// azimuth plane — is invariant under both, so a riser of the same design,
+// criteria and hang-off depth that such a map carries onto another, with
+// the direction grid onto itself, has that riser's zone mapped (exact up to
+// the search tolerance). A riser that is its own mirror image is searched
+// on one half. The default scenario's 12 SCRs: P6–P8 and E2 are P1–P3 and
+// E1 turned by 180°, P4, P9 and P5, P10 are P3 and P2 mirrored, P1 and E1
+// are searched on one half each — 3 risers' worth of searches instead of 12.
+// Any current or hull rotation breaks the symmetry and every riser is
+// solved.
 //
 // Parallel: risers × direction chunks on all cores (std::thread); each task
 // owns its FE state; results go to pre-sized slots, so the output does not
@@ -92,8 +97,9 @@ struct SozOptions {
   double step_deg = 5.0;     ///< direction step, > 0, must divide 360
   double tolerance_m = 0.1;  ///< bracket width of each allowable offset, > 0
   /// Coarse march step, % of depth, > 0. 2.5 % (45 m in 1800 m): the FE
-  /// Newton solve warm-started 45 m away converges in ≈ 20 iterations,
-  /// 90 m away it needs a continuation and ≈ 100 (measured on the default SCR).
+  /// Newton solve warm-started 45 m away converges in ≈ 5 iterations
+  /// (≈ 3.6 Jacobians), 90 m away it needs a continuation and ≈ 100
+  /// (measured on the default SCR).
   double march_step_pct_depth = 2.5;
   double search_limit_pct_depth = 20.0;  ///< largest offset searched, % of depth, > march step
   /// Load case: its current on the risers, the mean heave/rotations of its
@@ -112,6 +118,11 @@ struct SozOptions {
   std::optional<SozExtremeOptions> extreme;
   std::vector<std::string> exclude_risers;  ///< left out of the analysis (e.g. sensitivity)
   SozModel model = SozModel::fe;
+  /// Solve each distinct zone once: risers that are turned or mirrored
+  /// copies of another, and the mirrored half of a riser symmetric about its
+  /// own plane, are copied (soz_symmetry.hpp; exact up to the search
+  /// tolerance). Off: every riser and direction is searched (tests).
+  bool exploit_symmetry = true;
   int threads = 0;  ///< 0: std::thread::hardware_concurrency()
 };
 
@@ -162,6 +173,12 @@ struct RiserSoz {
   /// (compute_soz: identical design and criteria, no current, no hull
   /// rotations, azimuths a whole number of grid steps apart); then solves = 0.
   std::string zone_rotated_from;
+  /// Set when the zone is another riser's zone mirrored in a vertical plane
+  /// (same conditions as above, the placements mirror images on the grid).
+  std::string zone_mirrored_from;
+  /// The riser is its own mirror image in the plane of its foot and hang-off
+  /// (on the grid): one half of its directions is solved, the other mirrored.
+  bool zone_mirror_symmetric = false;
 };
 
 struct PlatformSoz {

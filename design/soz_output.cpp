@@ -82,7 +82,10 @@ nlohmann::json soz_to_json(const SozResult& r) {
                       {"far_governing", z.far_governing},
                       {"solves", z.solves},
                       {"zone_rotated_from", z.zone_rotated_from.empty() ? nlohmann::json(nullptr)
-                                                                        : nlohmann::json(z.zone_rotated_from)}});
+                                                                        : nlohmann::json(z.zone_rotated_from)},
+                      {"zone_mirrored_from", z.zone_mirrored_from.empty() ? nlohmann::json(nullptr)
+                                                                          : nlohmann::json(z.zone_mirrored_from)},
+                      {"zone_mirror_symmetric", z.zone_mirror_symmetric}});
   }
   nlohmann::json platform_pct = nlohmann::json::array();
   for (double a : r.platform.allowable_offset_m) platform_pct.push_back(pct(a, r.depth_m));

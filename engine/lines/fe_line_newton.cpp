@@ -88,7 +88,7 @@ NewtonOutcome newton(const Problem& p, const FeStaticsOptions& o, Eigen::VectorX
       // a chord step just below it: polish with more chord steps while they
       // contract, so that the state is as exact as a full Newton iteration
       // leaves it (stages and touchdown-node moves that follow depend on it).
-      if (!polishing || out.residual_N <= kChordPolish * tolerance_N) return out;
+      if (!polishing || !o.polish_chord_steps || out.residual_N <= kChordPolish * tolerance_N) return out;
     }
     if (it + chord_steps >= o.max_iterations) return out;
     const double m0 = merit(p, g);
@@ -475,10 +475,7 @@ static bool move_node_to(Problem& p, Eigen::VectorXd& q, double s_new, double to
 /// laid elements are straight and the suspended ones smooth, which restores
 /// most of the element's accuracy (header numbers).
 NewtonOutcome snap_touchdown(Problem& p, const FeStaticsOptions& o, Eigen::VectorXd& q, Tangent& t, Counters& counters,
-                             int max_passes) {
-  NewtonOutcome last;
-  last.converged = true;
-  bool moved = false;
+                             int max_passes, NewtonOutcome last) {
   // The node position s solves s = target(s), a contraction with a factor near
   // 0.8 here: secant steps on f(s) = target(s) − s (Aitken) from the second
   // pass on, plain fixed-point steps when the secant is not usable.
@@ -500,13 +497,11 @@ NewtonOutcome snap_touchdown(Problem& p, const FeStaticsOptions& o, Eigen::Vecto
     f_prev = f;
     if (std::abs(f) < target.tolerance_m) break;
     if (!move_node_to(p, q, s_new, 0.0)) break;
-    moved = true;
     ++counters.remeshes;
     last = solve_with_current_steps(p, o, q, t, counters);
     if (!last.converged) break;
   }
-  if (!moved) last = newton(p, o, q, t);  // already converged: returns at once with its diagnostics
-  return last;
+  return last;  // unmoved: the converged outcome it was given
 }
 
 }  // namespace spiral::engine::fe_detail

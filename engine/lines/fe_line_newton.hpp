@@ -52,9 +52,10 @@ struct CurrentSteps {
 NewtonOutcome solve_with_current_steps(Problem& p, const FeStaticsOptions& o, Eigen::VectorXd& q,
                                        Tangent& t, Counters& counters, CurrentSteps steps = {});
 /// Touchdown node: move the nearest node onto the touchdown point and
-/// re-solve until it stays (at most max_passes re-solves).
+/// re-solve until it stays (at most max_passes re-solves). `last`: the
+/// outcome of the converged solve of q, returned if no node moves.
 NewtonOutcome snap_touchdown(Problem& p, const FeStaticsOptions& o, Eigen::VectorXd& q, Tangent& t, Counters& counters,
-                             int max_passes);
+                             int max_passes, NewtonOutcome last);
 /// Where the touchdown node goes (and the tolerance), given the lift-off point.
 struct TouchdownTarget {
   double arc_length_m = 0.0;

@@ -127,7 +127,7 @@ FeStaticsResult solve_fe_line_statics(const FeLineModel& model, const FeEnvironm
     // No continuation from a warm state: they restart from zero current, and
     // the cold start below (swung into the current) is cheaper and surer.
     last = solve_with_current_steps(p, options, q, t, counters, {.continuations = false});
-    if (last.converged) last = snap_touchdown(p, options, q, t, counters, kFinalSnapPasses);
+    if (last.converged) last = snap_touchdown(p, options, q, t, counters, kFinalSnapPasses, last);
     done = last.converged;
     if (!done) {
       t.valid = t.chord_steps = false;  // cold start
@@ -165,7 +165,7 @@ FeStaticsResult solve_fe_line_statics(const FeLineModel& model, const FeEnvironm
     Counters trial;
     last = solve_with_current_steps(p, direct, q, t, trial,
                                     {.swing_predictor = swing_direct, .continuations = false});
-    if (last.converged) last = snap_touchdown(p, options, q, t, trial, kFinalSnapPasses);
+    if (last.converged) last = snap_touchdown(p, options, q, t, trial, kFinalSnapPasses, last);
     counters.iterations += trial.iterations;
     counters.load_steps += trial.load_steps;
     counters.remeshes += trial.remeshes;
@@ -194,14 +194,14 @@ FeStaticsResult solve_fe_line_statics(const FeLineModel& model, const FeEnvironm
           {.swing_predictor = first_stage && !swing_direct, .direct = !repeat});
       if (!last.converged) break;
       if (final_stage) {
-        last = snap_touchdown(p, options, q, t, counters, kFinalSnapPasses);
+        last = snap_touchdown(p, options, q, t, counters, kFinalSnapPasses, last);
         break;
       }
       // One early move once the penalty layer fits inside an element, so the
       // final stage starts with the node near the touchdown point.
       const auto td = find_touchdown(p, q);
       if (td && touchdown_node_target(p, q, td->arc_length_m).tolerance_m < 0.01 * h_min) {
-        last = snap_touchdown(p, stage_options, q, t, counters, 1);
+        last = snap_touchdown(p, stage_options, q, t, counters, 1, last);
         if (!last.converged) break;
       }
       k = std::min(k_target, 10.0 * k);

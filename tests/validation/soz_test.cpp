@@ -63,7 +63,10 @@ double at(const SozResult& r, std::size_t riser, double direction_deg) {
 
 TEST(Soz, SymmetricAboutTheAzimuthPlaneAndNearFarGovernedByDifferentPhysics) {
   const Project p = project(test::soz_riser_yaml("R", 0.0));
-  const SozResult r = compute_soz(p, designs(p), {}, options(30.0));
+  SozOptions o = options(30.0);
+  o.exploit_symmetry = false;  // every direction searched: the symmetry is the physics', not a copy
+  const SozResult r = compute_soz(p, designs(p), {}, o);
+  ASSERT_FALSE(r.risers.front().zone_mirror_symmetric);
   ASSERT_EQ(r.risers.size(), 1u);
   const RiserSoz& z = r.risers[0];
   ASSERT_FALSE(z.fails_at_zero_offset) << z.zero_offset_governing_criterion;
@@ -136,7 +139,9 @@ TEST(Soz, CoveredMarchPointsDoNotChangeTheZone) {
   const Project p = project(risers);
   const std::vector<RiserDesign> d = designs(p);
   const SozResult fine = compute_soz(p, {d[0]}, {}, options(5.0));
-  const SozResult reference = compute_soz(p, d, {}, options(90.0));
+  SozOptions every = options(90.0);
+  every.exploit_symmetry = false;  // mirror images among the 18 would be copied
+  const SozResult reference = compute_soz(p, d, {}, every);
   for (int i = 0; i < 18; ++i) {
     ASSERT_TRUE(reference.risers[static_cast<std::size_t>(i)].zone_rotated_from.empty());
     for (int q = 0; q < 4; ++q) {
@@ -182,6 +187,62 @@ TEST(Soz, IdenticalRiserTurnedAboutTheVerticalSharesTheZone) {
   const Project q =
       project(test::soz_riser_yaml("A", 0.0, 20.0) + test::soz_riser_yaml("B", 100.0, 20.0));
   EXPECT_TRUE(compute_soz(q, designs(q), {}, options(30.0)).risers[1].zone_rotated_from.empty());
+}
+
+TEST(Soz, MirrorImageRiserSharesTheMirroredZone) {
+  // A at 10° and B at 170° are mirror images in the plane at 90° (on the 30°
+  // grid: 2 × 90° is six steps), but 160° apart — not a whole number of
+  // steps, so no rotation maps them, and neither is its own mirror image on
+  // the grid (2 × 10° is not a whole number of steps).
+  const Project p = project(test::soz_riser_yaml("A", 10.0, 20.0) + test::soz_riser_yaml("B", 170.0, 20.0));
+  const std::vector<RiserDesign> both = designs(p);
+  const SozResult r = compute_soz(p, both, {}, options(30.0));
+  EXPECT_TRUE(r.risers[0].zone_mirrored_from.empty());
+  EXPECT_FALSE(r.risers[0].zone_mirror_symmetric);
+  EXPECT_EQ(r.risers[1].zone_mirrored_from, "A");
+  EXPECT_TRUE(r.risers[1].zone_rotated_from.empty());
+  EXPECT_EQ(r.risers[1].solves, 0);
+  // Against B searched on its own: the same zone within the search tolerance.
+  SozOptions every = options(30.0);
+  every.exploit_symmetry = false;
+  const SozResult alone = compute_soz(p, {both[1]}, {}, every);
+  for (std::size_t k = 0; k < r.directions_deg.size(); ++k) {
+    EXPECT_NEAR(r.risers[1].directions[k].allowable_offset_m, alone.risers[0].directions[k].allowable_offset_m,
+                kSymmetry_m)
+        << r.directions_deg[k];
+    EXPECT_EQ(r.risers[1].directions[k].governing_criterion, alone.risers[0].directions[k].governing_criterion)
+        << r.directions_deg[k];
+  }
+  EXPECT_NEAR(r.risers[1].far_m, r.risers[0].far_m, 1e-9);
+}
+
+TEST(Soz, RiserSymmetricAboutItsOwnPlaneIsSearchedOnOneHalf) {
+  // R at 60° on the 30° grid: its plane falls on the grid, so the directions
+  // from 60° to 240° are searched and the rest mirrored.
+  const Project p = project(test::soz_riser_yaml("R", 60.0, 20.0));
+  const std::vector<RiserDesign> d = designs(p);
+  const SozResult half = compute_soz(p, d, {}, options(30.0));
+  SozOptions every = options(30.0);
+  every.exploit_symmetry = false;
+  const SozResult full = compute_soz(p, d, {}, every);
+  ASSERT_TRUE(half.risers[0].zone_mirror_symmetric);
+  EXPECT_FALSE(full.risers[0].zone_mirror_symmetric);
+  for (std::size_t k = 0; k < half.directions_deg.size(); ++k) {
+    const double relative_deg = std::fmod(half.directions_deg[k] - 60.0 + 360.0, 360.0);
+    EXPECT_EQ(half.risers[0].directions[k].solves == 0, relative_deg > 180.0) << half.directions_deg[k];
+    EXPECT_NEAR(half.risers[0].directions[k].allowable_offset_m, full.risers[0].directions[k].allowable_offset_m,
+                kSymmetry_m)
+        << half.directions_deg[k];
+    EXPECT_EQ(half.risers[0].directions[k].governing_criterion, full.risers[0].directions[k].governing_criterion);
+  }
+  EXPECT_LT(half.solves, 0.7 * full.solves);  // 7 of 12 directions searched
+  // Off the grid (2 × 10° is not a whole number of 30° steps) and under a
+  // current the whole zone is searched.
+  const Project q = project(test::soz_riser_yaml("R", 10.0, 20.0));
+  EXPECT_FALSE(compute_soz(q, designs(q), {}, options(30.0)).risers[0].zone_mirror_symmetric);
+  SozConditions current;
+  current.current = current_profile_of(*p.environments[1].current);
+  EXPECT_FALSE(compute_soz(p, d, current, options(30.0)).risers[0].zone_mirror_symmetric);
 }
 
 TEST(Soz, PlatformZoneIsTheIntersectionAndShrinksWithEveryRiser) {
@@ -352,6 +413,7 @@ TEST(Soz, ResultsDoNotDependOnTheThreadCount) {
   const Project p = project(test::soz_riser_yaml("A", 0.0, 20.0) + test::soz_riser_yaml("B", 180.0, 20.0));
   const std::vector<RiserDesign> d = designs(p);
   SozOptions o = options(45.0);
+  o.exploit_symmetry = false;  // four tasks, not one half-riser
   o.threads = 1;
   const SozResult one = compute_soz(p, d, {}, o);
   o.threads = 3;
