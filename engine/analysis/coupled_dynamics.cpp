@@ -71,7 +71,6 @@ struct LineBlock {
   fe_detail::DynamicLine line;
   Eigen::Index offset = 0;  // of its states in y
   Eigen::Index size = 0;
-  Eigen::VectorXd y, yp, r;
   Attachment at;                                // at the last residual or setup
   Eigen::Matrix<double, 3, 6> setup_jacobian;  // P of the setup
   Eigen::Vector3d force_N = Eigen::Vector3d::Zero();  // f_i of the last residual
@@ -102,11 +101,11 @@ class CoupledSystem final : public ImplicitSystem {
   }
 
   std::vector<LineBlock>& blocks() { return blocks_; }
+  WorkerPool& pool() { return pool_; }
   const HullEquations& hull() const { return eq_; }
 
   /// The total hull motion q̃ = q + q_w(t) and its rates.
-  PrescribedHullMotion total_motion(double t, const Eigen::VectorXd& y,
-                                    const Eigen::VectorXd& yp) const {
+  PrescribedHullMotion total_motion(double t, const VectorConstRef& y, const VectorConstRef& yp) const {
     PrescribedHullMotion m;
     if (options_.wave_frequency_motion) m = options_.wave_frequency_motion(t);
     m.position += y.head<6>();
@@ -115,9 +114,8 @@ class CoupledSystem final : public ImplicitSystem {
     return m;
   }
 
-  /// Sets line i's end B kinematics from the hull state and copies its states.
-  void load_line(LineBlock& b, const PrescribedHullMotion& hull, const Eigen::VectorXd& y,
-                 const Eigen::VectorXd& yp) const {
+  /// Sets the line's end B kinematics from the hull state.
+  void load_line(LineBlock& b, const PrescribedHullMotion& hull) const {
     b.at = attachment(reference_g_, b.input->attachment_b_m, hull.position);
     EndKinematics& k = b.line.end_B_attached;
     k.position_m = b.at.position_m;
@@ -126,27 +124,23 @@ class CoupledSystem final : public ImplicitSystem {
         b.at.jacobian * hull.acceleration +
         centripetal_acceleration(reference_g_, b.input->attachment_b_m, hull.position,
                                  hull.velocity);
-    b.y = y.segment(b.offset, b.size);
-    b.yp = yp.segment(b.offset, b.size);
   }
 
-  void residual(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp,
-                Eigen::VectorXd& r) override {
+  // Each line reads its states from y, y' and writes its residual into r in
+  // place (its own segments).
+  void residual(double t, const VectorConstRef& y, const VectorConstRef& yp, VectorRef r) override {
     const PrescribedHullMotion hull = total_motion(t, y, yp);
     for_each_line([&](LineBlock& b) {
-      load_line(b, hull, y, yp);
-      b.line.residual(t, b.y, b.yp, b.r);
-      if (!b.r.allFinite())
+      load_line(b, hull);
+      auto r_line = r.segment(b.offset, b.size);
+      b.line.residual(t, y.segment(b.offset, b.size), yp.segment(b.offset, b.size), r_line);
+      if (!r_line.allFinite())
         throw SolverError(fmt::format("line {}: non-finite forces at t = {} s", b.input->name, t));
       b.force_N = b.line.end_B_force_of_residual();
     });
-    r.resize(y.size());
     const Vector6d q = y.head<6>(), q_dot = y.segment<6>(6);
     Vector6d net = hull_generalized_force(eq_, t, q, q_dot, nullptr);
-    for (const LineBlock& b : blocks_) {
-      r.segment(b.offset, b.size) = b.r;
-      net += b.at.jacobian.transpose() * b.force_N;
-    }
+    for (const LineBlock& b : blocks_) net += b.at.jacobian.transpose() * b.force_N;
     r.head<6>() = yp.head<6>() - q_dot;
     r.segment<6>(6) = eq_.total_mass * yp.segment<6>(6) - net;
   }
@@ -156,9 +150,9 @@ class CoupledSystem final : public ImplicitSystem {
   void end_forces(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp) {
     const PrescribedHullMotion hull = total_motion(t, y, yp);
     for_each_line([&](LineBlock& b) {
-      load_line(b, hull, y, yp);
+      load_line(b, hull);
       fe_detail::DynamicLine& l = b.line;
-      l.load_state(t, b.y, b.yp);
+      l.load_state(t, y.segment(b.offset, b.size), yp.segment(b.offset, b.size));
       b.force_N = l.end_force(true, l.qw, l.vw, l.aw, t);
     });
   }
@@ -172,14 +166,12 @@ class CoupledSystem final : public ImplicitSystem {
     return any;
   }
 
-  bool setup_newton_matrix(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp,
-                           double cj) override {
+  bool setup_newton_matrix(double t, const VectorConstRef& y, const VectorConstRef& yp, double cj) override {
     hull_tangents(t, y);
     return refactor(t, y, yp, cj, /*full=*/true);
   }
 
-  bool update_newton_matrix(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp,
-                            double cj) override {
+  bool update_newton_matrix(double t, const VectorConstRef& y, const VectorConstRef& yp, double cj) override {
     return refactor(t, y, yp, cj, /*full=*/false);
   }
 
@@ -231,7 +223,7 @@ class CoupledSystem final : public ImplicitSystem {
   // B_h = −∂F_hull/∂q̇, K_h = −∂F_hull/∂q by forward differences at the setup
   // (steps 1e-6 of the scale of each DOF: the forces are smooth, and a
   // Newton matrix needs no more than a few digits).
-  void hull_tangents(double t, const Eigen::VectorXd& y) {
+  void hull_tangents(double t, const VectorConstRef& y) {
     const Vector6d q = y.head<6>(), q_dot = y.segment<6>(6);
     const Vector6d f0 = hull_generalized_force(eq_, t, q, q_dot, nullptr);
     for (int k = 0; k < 6; ++k) {
@@ -244,17 +236,17 @@ class CoupledSystem final : public ImplicitSystem {
     }
   }
 
-  bool refactor(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp, double cj,
-                bool full) {
+  bool refactor(double t, const VectorConstRef& y, const VectorConstRef& yp, double cj, bool full) {
     const PrescribedHullMotion hull = total_motion(t, y, yp);
     std::vector<char> ok(blocks_.size(), 0);
     for_each_line([&](LineBlock& b) {
       const std::size_t i = static_cast<std::size_t>(&b - blocks_.data());
       ok[i] = 1;
       if (!full && !b.stale && std::abs(cj / b.factored_cj - 1.0) <= kLineRefactorCjChange) return;
-      load_line(b, hull, y, yp);
-      const bool factored = full ? b.line.setup_newton_matrix(t, b.y, b.yp, cj)
-                                 : b.line.update_newton_matrix(t, b.y, b.yp, cj);
+      load_line(b, hull);
+      const auto y_line = y.segment(b.offset, b.size), yp_line = yp.segment(b.offset, b.size);
+      const bool factored = full ? b.line.setup_newton_matrix(t, y_line, yp_line, cj)
+                                 : b.line.update_newton_matrix(t, y_line, yp_line, cj);
       if (factored) {
         b.line.prepare_end_B_matrices(cj);
         if (full || b.never_condensed) b.line.condense_end_B();
@@ -389,7 +381,7 @@ CoupledTimeSeries simulate_coupled(const HullDynamicsModel& hull, const HullLoad
   // The hull's initial acceleration from the forces at rest (the lines'
   // end forces at their static state, where their end inertia is zero).
   {
-    Eigen::VectorXd r;
+    Eigen::VectorXd r(size);
     system.residual(options.start_time_s, y0, yp0, r);
     yp0.segment<6>(6) = system.hull().total_mass_lu.solve(-r.segment<6>(6));
   }
@@ -404,6 +396,7 @@ CoupledTimeSeries simulate_coupled(const HullDynamicsModel& hull, const HullLoad
   for (const LineBlock& b : blocks) io.error_group_starts.push_back(b.offset);
   io.max_step_s = options.max_step_s;
   io.max_steps_between_outputs = options.max_steps_between_outputs;
+  io.vector_pool = &system.pool();  // idle between the system's own loops
   IdaIntegrator ida(system, options.start_time_s, y0, yp0, io);
 
   CoupledTimeSeries out;

@@ -46,18 +46,22 @@
 
 namespace spiral::engine {
 
+class WorkerPool;
+
 /// F(t, y, y') = 0 with its own Newton-matrix solver.
+using VectorConstRef = Eigen::Ref<const Eigen::VectorXd>;
+using VectorRef = Eigen::Ref<Eigen::VectorXd>;
+
 class ImplicitSystem {
  public:
   virtual ~ImplicitSystem() = default;
-  /// r = F(t, y, y'). May throw SolverError (recoverable).
-  virtual void residual(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp,
-                        Eigen::VectorXd& r) = 0;
+  /// r = F(t, y, y') (r has the size of y; the integrator's own vectors,
+  /// not copies). May throw SolverError (recoverable).
+  virtual void residual(double t, const VectorConstRef& y, const VectorConstRef& yp, VectorRef r) = 0;
   /// Builds and factors (an approximation of) J = ∂F/∂y + cj ∂F/∂y' at
   /// (t, y, y'). Returns false if it cannot (singular): IDA then retries
   /// with a smaller step.
-  virtual bool setup_newton_matrix(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp,
-                                   double cj) = 0;
+  virtual bool setup_newton_matrix(double t, const VectorConstRef& y, const VectorConstRef& yp, double cj) = 0;
   /// Solves J x = b in place with the last factorisation; cj is IDA's
   /// current value (it may differ from the one of the setup).
   virtual void solve_newton_system(double cj, Eigen::Ref<Eigen::VectorXd> b) = 0;
@@ -70,8 +74,7 @@ class ImplicitSystem {
   /// setup_newton_matrix before the first solve, after a nonlinear
   /// convergence failure and every max_steps_between_setups steps). Default:
   /// a full setup.
-  virtual bool update_newton_matrix(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp,
-                                    double cj) {
+  virtual bool update_newton_matrix(double t, const VectorConstRef& y, const VectorConstRef& yp, double cj) {
     return setup_newton_matrix(t, y, yp, cj);
   }
 };
@@ -90,6 +93,12 @@ struct IdaOptions {
   /// the others have (the one WRMS norm over all N states would let one
   /// block's error through diluted by √(N / n_block)). Empty: one group.
   std::vector<Eigen::Index> error_group_starts;
+  /// Threads for IDA's own vector operations over the states (not owned;
+  /// it must outlive the integrator and be idle while IDA runs — the
+  /// system's own pool between its loops): elementwise ones split into one
+  /// range per thread, the block norms one block per task, so the results
+  /// are the same with or without it. Null: on the calling thread.
+  WorkerPool* vector_pool = nullptr;
   int max_order = 5;                        ///< 1..5
   std::optional<double> max_step_s;         ///< > 0
   std::optional<double> initial_step_s;     ///< > 0

@@ -250,18 +250,16 @@ struct DynamicLine final : ImplicitSystem {
     return any;
   }
 
-  void load_state(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp) {
+  void load_state(double t, const VectorConstRef& y, const VectorConstRef& yp) {
     qw = y.head(n);
     vw = y.tail(n);
     aw = yp.tail(n);
     apply_prescribed(t, qw, vw, aw);
   }
 
-  void residual(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp,
-                Eigen::VectorXd& r) override {
+  void residual(double t, const VectorConstRef& y, const VectorConstRef& yp, VectorRef r) override {
     load_state(t, y, yp);
     assemble_forces(t, qw, vw, aw, G, &contact_now);
-    r.resize(2 * n);
     for (int i = 0; i < n; ++i) {
       if (fixed(i)) {
         r[i] = y[i] - qw[i];
@@ -274,8 +272,7 @@ struct DynamicLine final : ImplicitSystem {
   }
 
   // S = c² M − c C − K, D = c M − C (the Newton matrix of the residual, reduced).
-  bool setup_newton_matrix(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp,
-                           double cj) override {
+  bool setup_newton_matrix(double t, const VectorConstRef& y, const VectorConstRef& yp, double cj) override {
     load_state(t, y, yp);
     for (std::size_t e = 0; e < p.elements.size(); ++e) evaluate_element_matrices(t, e, qw, vw);
     combine_matrices(cj * cj, -cj, -1.0, cj);
@@ -285,8 +282,7 @@ struct DynamicLine final : ImplicitSystem {
   // A new c_j, and the elements whose contact changed re-evaluated; the
   // others keep the matrices of their last evaluation (as a Jacobian kept
   // over steps is everywhere).
-  bool update_newton_matrix(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp,
-                            double cj) override {
+  bool update_newton_matrix(double t, const VectorConstRef& y, const VectorConstRef& yp, double cj) override {
     load_state(t, y, yp);
     for (std::size_t e = 0; e < p.elements.size(); ++e) {
       if (element_stale[e] != 0) evaluate_element_matrices(t, e, qw, vw);
