@@ -155,11 +155,10 @@ realtype max_norm(N_Vector x) {
 // IDASolve on this thread, or null (one group). Set by advance_to only.
 thread_local const std::vector<Eigen::Index>* t_error_groups = nullptr;
 
-/// max over the groups of sqrt(Σ_g (x w)² / n_g), the terms selected by `keep`.
-/// Each group's sum runs in index order whether on the pool or not, so the
-/// norm is the same either way.
-template <class Keep>
-realtype grouped_wrms(const Vec& x, const Vec& w, const Keep& keep) {
+/// max over the groups of sqrt(Σ_g (x w)² / n_g), the terms with mask > 0
+/// (no mask: all). Each group's sum is one Eigen reduction whether on the
+/// pool or not, so the norm is the same either way.
+realtype grouped_wrms(const Vec& x, const Vec& w, const double* mask) {
   const std::vector<Eigen::Index>& starts = *t_error_groups;
   const Eigen::Index n = x.size();
   thread_local std::vector<double> per_thread;
@@ -167,12 +166,13 @@ realtype grouped_wrms(const Vec& x, const Vec& w, const Keep& keep) {
   mean_square.assign(starts.size(), 0.0);
   const auto group = [&](int gi) {
     const auto g = static_cast<std::size_t>(gi);
-    const Eigen::Index a = starts[g], b = g + 1 < starts.size() ? starts[g + 1] : n;
-    double sum = 0.0;
-    for (Eigen::Index i = a; i < b; ++i) {
-      if (keep(i)) sum += (x[i] * w[i]) * (x[i] * w[i]);
-    }
-    mean_square[g] = sum / static_cast<double>(b - a);
+    const Eigen::Index a = starts[g], m = (g + 1 < starts.size() ? starts[g + 1] : n) - a;
+    const auto xw2 = (x.segment(a, m).array() * w.segment(a, m).array()).square();
+    const double sum =
+        mask == nullptr
+            ? xw2.sum()
+            : (Eigen::Map<const Eigen::ArrayXd>(mask + a, m) > 0.0).select(xw2, 0.0).sum();
+    mean_square[g] = sum / static_cast<double>(m);
   };
   const int groups = static_cast<int>(starts.size());
   if (t_pool != nullptr && t_pool->threads() > 1 && n >= kMinSplitStates) {
@@ -184,14 +184,11 @@ realtype grouped_wrms(const Vec& x, const Vec& w, const Keep& keep) {
 }
 
 realtype wrms_norm(N_Vector x, N_Vector w) {
-  if (t_error_groups != nullptr) return grouped_wrms(vec(x), vec(w), [](Eigen::Index) { return true; });
+  if (t_error_groups != nullptr) return grouped_wrms(vec(x), vec(w), nullptr);
   return std::sqrt(vec(x).cwiseProduct(vec(w)).squaredNorm() / static_cast<double>(NV_LENGTH_S(x)));
 }
 realtype wrms_norm_mask(N_Vector x, N_Vector w, N_Vector id) {
-  if (t_error_groups != nullptr) {
-    const Vec mask = vec(id);
-    return grouped_wrms(vec(x), vec(w), [&](Eigen::Index i) { return mask[i] > 0.0; });
-  }
+  if (t_error_groups != nullptr) return grouped_wrms(vec(x), vec(w), NV_DATA_S(id));
   const auto xw = vec(x).cwiseProduct(vec(w)).array();
   const double sum = (vec(id).array() > 0.0).select(xw * xw, 0.0).sum();
   return std::sqrt(sum / static_cast<double>(NV_LENGTH_S(x)));

@@ -70,42 +70,61 @@ void FixedPointWaveKinematics::evaluate(double t_s, std::vector<Eigen::Vector3d>
   }
   velocity.assign(points_.size(), Eigen::Vector3d::Zero());
   acceleration.assign(points_.size(), Eigen::Vector3d::Zero());
-  const std::optional<double>& h = sea_->water_depth_m;
   for (std::size_t p = 0; p < points_.size(); ++p) {
-    const Point& pt = points_[p];
-    if (pt.count == 0) continue;
-    // Wheeler stretching (DNV-RP-C205 §3.2.3): the profiles at
-    // z' = (z − η) h / (h + η) (deep water z − η), η from the point's kept
-    // components; f(z') = f(z + Δz) to second order in k Δz (cosh' = k sinh):
-    // f_h(z') ≈ (1 + ½ k²Δz²) f_h + k Δz f_v, f_v(z') ≈ (1 + ½ k²Δz²) f_v + k Δz f_h,
-    // error (k Δz)³/6 ≤ (k a)³/6 — 1e-3 at a steepness k a of 0.18.
-    double eta = 0.0;
-    for (std::size_t j = 0; j < pt.count; ++j)
-      eta += pt.elevation_c[j] * cos_wt_[j] - pt.elevation_s[j] * sin_wt_[j];
-    if (pt.z_m > eta) continue;  // in a trough above the surface: dry
-    const double z_stretched = h ? (pt.z_m - eta) * *h / (*h + eta) : pt.z_m - eta;
-    const double dz = z_stretched - pt.z_m;
-    double ux = 0.0, uy = 0.0, uz = 0.0, ax = 0.0, ay = 0.0, az = 0.0;
-    for (std::size_t j = 0; j < pt.count; ++j) {
-      const double C = cos_wt_[j], S = sin_wt_[j], omega = omega_[j];
-      const double kdz = wavenumber_[j] * dz, same = 1.0 + 0.5 * kdz * kdz;
-      // θ = ω t + ψ (η = a cos θ): cos θ = C cos ψ − S sin ψ, sin θ = S cos ψ + C sin ψ.
-      const double xh = pt.horizontal_c[j] * C - pt.horizontal_s[j] * S;  // a ω f_h cos θ
-      const double yh = pt.horizontal_c[j] * S + pt.horizontal_s[j] * C;  // a ω f_h sin θ
-      const double xv = pt.vertical_c[j] * C - pt.vertical_s[j] * S;
-      const double yv = pt.vertical_c[j] * S + pt.vertical_s[j] * C;
-      const double u_h = same * xh + kdz * xv;
-      const double du_h = -omega * (same * yh + kdz * yv);
-      ux += u_h * cos_heading_[j];
-      uy += u_h * sin_heading_[j];
-      ax += du_h * cos_heading_[j];
-      ay += du_h * sin_heading_[j];
-      uz -= same * yv + kdz * yh;
-      az -= omega * (same * xv + kdz * xh);
-    }
-    velocity[p] = {ux, uy, uz};
-    acceleration[p] = {ax, ay, az};
+    if (points_[p].count > 0) at_point(points_[p], cos_wt_.data(), sin_wt_.data(), velocity[p], acceleration[p]);
   }
+}
+
+void FixedPointWaveKinematics::evaluate_point(double t_s, std::size_t point, Eigen::Vector3d& velocity,
+                                              Eigen::Vector3d& acceleration) const {
+  velocity.setZero();
+  acceleration.setZero();
+  const Point& pt = points_[point];
+  if (pt.count == 0) return;
+  thread_local std::vector<double> cos_wt, sin_wt;
+  cos_wt.resize(pt.count);
+  sin_wt.resize(pt.count);
+  for (std::size_t j = 0; j < pt.count; ++j) {
+    const double wt = omega_[j] * t_s;
+    cos_wt[j] = std::cos(wt);
+    sin_wt[j] = std::sin(wt);
+  }
+  at_point(pt, cos_wt.data(), sin_wt.data(), velocity, acceleration);
+}
+
+void FixedPointWaveKinematics::at_point(const Point& pt, const double* cos_wt, const double* sin_wt,
+                                        Eigen::Vector3d& velocity, Eigen::Vector3d& acceleration) const {
+  const std::optional<double>& h = sea_->water_depth_m;
+  // Wheeler stretching (DNV-RP-C205 §3.2.3): the profiles at
+  // z' = (z − η) h / (h + η) (deep water z − η), η from the point's kept
+  // components; f(z') = f(z + Δz) to second order in k Δz (cosh' = k sinh):
+  // f_h(z') ≈ (1 + ½ k²Δz²) f_h + k Δz f_v, f_v(z') ≈ (1 + ½ k²Δz²) f_v + k Δz f_h,
+  // error (k Δz)³/6 ≤ (k a)³/6 — 1e-3 at a steepness k a of 0.18.
+  double eta = 0.0;
+  for (std::size_t j = 0; j < pt.count; ++j) eta += pt.elevation_c[j] * cos_wt[j] - pt.elevation_s[j] * sin_wt[j];
+  if (pt.z_m > eta) return;  // in a trough above the surface: dry
+  const double z_stretched = h ? (pt.z_m - eta) * *h / (*h + eta) : pt.z_m - eta;
+  const double dz = z_stretched - pt.z_m;
+  double ux = 0.0, uy = 0.0, uz = 0.0, ax = 0.0, ay = 0.0, az = 0.0;
+  for (std::size_t j = 0; j < pt.count; ++j) {
+    const double C = cos_wt[j], S = sin_wt[j], omega = omega_[j];
+    const double kdz = wavenumber_[j] * dz, same = 1.0 + 0.5 * kdz * kdz;
+    // θ = ω t + ψ (η = a cos θ): cos θ = C cos ψ − S sin ψ, sin θ = S cos ψ + C sin ψ.
+    const double xh = pt.horizontal_c[j] * C - pt.horizontal_s[j] * S;  // a ω f_h cos θ
+    const double yh = pt.horizontal_c[j] * S + pt.horizontal_s[j] * C;  // a ω f_h sin θ
+    const double xv = pt.vertical_c[j] * C - pt.vertical_s[j] * S;
+    const double yv = pt.vertical_c[j] * S + pt.vertical_s[j] * C;
+    const double u_h = same * xh + kdz * xv;
+    const double du_h = -omega * (same * yh + kdz * yv);
+    ux += u_h * cos_heading_[j];
+    uy += u_h * sin_heading_[j];
+    ax += du_h * cos_heading_[j];
+    ay += du_h * sin_heading_[j];
+    uz -= same * yv + kdz * yh;
+    az -= omega * (same * xv + kdz * xh);
+  }
+  velocity = {ux, uy, uz};
+  acceleration = {ax, ay, az};
 }
 
 }  // namespace spiral::engine

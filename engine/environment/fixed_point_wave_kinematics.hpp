@@ -46,6 +46,10 @@ class FixedPointWaveKinematics {
   /// Velocity and local acceleration at every point at time t (global).
   void evaluate(double t_s, std::vector<Eigen::Vector3d>& velocity_m_per_s,
                 std::vector<Eigen::Vector3d>& acceleration_m_per_s2) const;
+  /// The same at one point only (its own sin/cos of ω t: for a single
+  /// element's forces at a time the line is not otherwise evaluated at).
+  void evaluate_point(double t_s, std::size_t point, Eigen::Vector3d& velocity_m_per_s,
+                      Eigen::Vector3d& acceleration_m_per_s2) const;
 
  private:
   struct Point {
@@ -55,6 +59,9 @@ class FixedPointWaveKinematics {
     std::vector<double> elevation_c, elevation_s;    // a cos ψ, a sin ψ
     double z_m = 0.0;
   };
+  void at_point(const Point& pt, const double* cos_wt, const double* sin_wt, Eigen::Vector3d& velocity,
+                Eigen::Vector3d& acceleration) const;
+
   std::shared_ptr<const WaveRealization> sea_;
   std::vector<std::size_t> order_;  // components by increasing wavenumber
   std::vector<double> omega_, wavenumber_, cos_heading_, sin_heading_;  // in that order

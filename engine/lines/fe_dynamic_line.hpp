@@ -107,11 +107,21 @@ struct DynamicLine final : ImplicitSystem {
   mutable std::vector<Eigen::Vector3d> element_wave_velocity, element_wave_acceleration;
 
   /// Fluid velocity and acceleration at the element's Gauss points.
-  void fluid_at(double t, std::size_t e, const double* qe, ancf::ElementFluid& fluid) const {
-    if (element_waves && t != element_waves_time) {
-      element_waves->evaluate(t, element_wave_velocity, element_wave_acceleration);
-      element_waves_time = t;
+  /// `alone`: this element's forces only are wanted at t (an output's end
+  /// force): its own wave kinematics, not the whole line's.
+  void fluid_at(double t, std::size_t e, const double* qe, ancf::ElementFluid& fluid, bool alone = false) const {
+    Eigen::Vector3d wave_u = Eigen::Vector3d::Zero(), wave_a = Eigen::Vector3d::Zero();
+    if (element_waves && alone && t != element_waves_time) {
+      element_waves->evaluate_point(t, e, wave_u, wave_a);
+    } else if (element_waves) {
+      if (t != element_waves_time) {
+        element_waves->evaluate(t, element_wave_velocity, element_wave_acceleration);
+        element_waves_time = t;
+      }
+      wave_u = element_wave_velocity[e];
+      wave_a = element_wave_acceleration[e];
     }
+    const RampValue ramp = element_waves ? smooth_ramp(t - options.start_time_s, sea_ramp_s) : RampValue{};
     for (std::size_t gp = 0; gp < ancf::kGaussXi.size(); ++gp) {
       const ancf::ShapeAt& sh = shapes[e][gp];
       Eigen::Vector3d r = Eigen::Vector3d::Zero();
@@ -129,9 +139,8 @@ struct DynamicLine final : ImplicitSystem {
         a += aw_;
       }
       if (element_waves) {
-        const RampValue ramp = smooth_ramp(t - options.start_time_s, sea_ramp_s);
-        u += ramp.value * element_wave_velocity[e];
-        a += ramp.value * element_wave_acceleration[e] + ramp.rate_per_s * element_wave_velocity[e];
+        u += ramp.value * wave_u;
+        a += ramp.value * wave_a + ramp.rate_per_s * wave_u;
       }
       for (int x = 0; x < 3; ++x) {
         fluid.velocity[gp][static_cast<std::size_t>(x)] = u[x];
@@ -158,10 +167,11 @@ struct DynamicLine final : ImplicitSystem {
   /// Net generalised forces of element e (inertia included, d'Alembert);
   /// returns the element's fraction in seabed contact.
   double element_forces(double t, std::size_t e, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
-                        const Eigen::VectorXd& a, std::array<double, kElementDofs>& ge) const {
+                        const Eigen::VectorXd& a, std::array<double, kElementDofs>& ge,
+                        bool alone = false) const {
     const ElementValues x = gather(e, q, v, a);
     ancf::ElementFluid fluid;
-    if (!still_water) fluid_at(t, e, x.q.data(), fluid);
+    if (!still_water) fluid_at(t, e, x.q.data(), fluid, alone);
     return ancf::dynamic_element_forces(p.elements[e], dyn[e], shapes[e], static_ctx, bed,
                                         still_water ? nullptr : &fluid, x.q.data(), x.v.data(),
                                         x.a.data(), ge.data());
@@ -191,7 +201,7 @@ struct DynamicLine final : ImplicitSystem {
     const std::size_t e = end_B ? p.elements.size() - 1 : 0;
     const int node = end_B ? p.n_nodes - 1 : 0;
     std::array<double, kElementDofs> ge;
-    element_forces(t, e, q, v, a, ge);
+    element_forces(t, e, q, v, a, ge, /*alone=*/true);
     const int k0 = end_B ? 6 : 0;  // r_b or r_a in [r_a, r'_a, r_b, r'_b]
     Eigen::Vector3d f(ge[k0], ge[k0 + 1], ge[k0 + 2]);
     for (const auto& [load_node, load] : p.mesh.point_loads) {
