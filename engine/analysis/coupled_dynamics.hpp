@@ -52,10 +52,29 @@
 //    (gust-driven accelerations), 595 steps for 60 s; 1e-4 m: 306, the
 //    lines set it;
 //  * the waves on the lines (fixed_point_wave_kinematics.hpp) cost 7 %.
-// What remains per step (perf): element forces 19 %, Newton-matrix updates
-// of the lines whose contact changed 11 %, band solves 7 %, wave
-// kinematics 7 %; the 12 risers (1 m elements over their 400 m touchdown
-// zone) hold 70 % of the states.
+//  * IDA's vector operations (N_Vector, 171,660 entries) ran on the main
+//    thread while the pool's worker waited, and the adapter copied y, y'
+//    and r (1.4 MB each) serially at every residual and solve: main thread
+//    58 %, worker 40 % of the samples. Now the operations are split over
+//    the pool (IdaOptions::vector_pool; bit-identical) and the system works
+//    on IDA's vectors in place (ImplicitSystem takes Eigen::Ref): 52 / 46 %;
+//  * the outputs evaluated every line's wave kinematics at each output time
+//    for the end element's force alone (a third of all kinematics
+//    evaluations); now that element's own (evaluate_point).
+//  The 3-h lc1 storm (default scenario): 610 s → 467 s, 23× real time, the
+//  same 35,815 steps.
+// What remains per step (perf, 600 s): wave kinematics 15 %, element forces
+// 15 %, Newton-matrix updates of the lines whose contact changed 11 %, band
+// solves 7 %; the 12 risers (1 m elements over their 400 m touchdown zone)
+// hold 70 % of the states. Tried and not kept: refreshing a line's matrix on
+// 1 m of contact-length change instead of 10 % of an element (6× fewer
+// factorisations, 25 % faster on 600 s) — the std of surge, heave and the
+// tensions moved by 0.6–3.7 % where three runs with the present refresh
+// (rtol 2e-6, 5e-7, 1e-7: different step sequences) agree within
+// 0.2–0.9 %: the stale-matrix Newton iterates leave their error in the
+// motion; `#pragma omp simd` and an
+// Eigen-array form of the kinematics sums (SSE2): 1.4–1.9× slower than the
+// scalar loop.
 //
 // Not modelled: the hull's radiation memory (Cummins) — the hull takes
 // A(ω_LF) and B_lin (a model with a kernel is rejected). Waves on the lines
