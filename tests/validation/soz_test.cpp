@@ -135,7 +135,11 @@ TEST(Soz, CoveredMarchPointsDoNotChangeTheZone) {
   // relative to the riser on that 90° grid (none is a whole number of 90°
   // steps from another, so each is solved).
   std::string risers;
-  for (int i = 0; i < 18; ++i) risers += test::soz_riser_yaml("R" + std::to_string(i), 5.0 * i);
+  for (int i = 0; i < 18; ++i) {
+    std::string name = "R";  // not "R" + to_string: GCC 12's false -Wrestrict (bug 105329)
+    name += std::to_string(i);
+    risers += test::soz_riser_yaml(name, 5.0 * i);
+  }
   const Project p = project(risers);
   const std::vector<RiserDesign> d = designs(p);
   const SozResult fine = compute_soz(p, {d[0]}, {}, options(5.0));
