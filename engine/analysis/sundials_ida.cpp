@@ -92,11 +92,16 @@ thread_local WorkerPool* t_pool = nullptr;
 // few microseconds; an operation on 20,000 doubles ≈ 10 µs).
 constexpr Eigen::Index kMinSplitStates = 20000;
 
+/// Whether an operation on n states goes to the pool.
+bool on_pool(Eigen::Index n) {
+  return t_pool != nullptr && t_pool->threads() > 1 && n >= kMinSplitStates;
+}
+
 /// op(begin, length) over [0, n): on the pool in one contiguous range per
 /// thread, else at once. Elementwise operations give the same values either way.
 template <class Op>
 void elementwise(Eigen::Index n, const Op& op) {
-  if (t_pool == nullptr || t_pool->threads() == 1 || n < kMinSplitStates) {
+  if (!on_pool(n)) {
     op(Eigen::Index{0}, n);
     return;
   }
@@ -161,9 +166,7 @@ thread_local const std::vector<Eigen::Index>* t_error_groups = nullptr;
 realtype grouped_wrms(const Vec& x, const Vec& w, const double* mask) {
   const std::vector<Eigen::Index>& starts = *t_error_groups;
   const Eigen::Index n = x.size();
-  thread_local std::vector<double> per_thread;
-  std::vector<double>& mean_square = per_thread;  // the caller's, also on the pool's threads
-  mean_square.assign(starts.size(), 0.0);
+  std::vector<double> mean_square(starts.size(), 0.0);
   const auto group = [&](int gi) {
     const auto g = static_cast<std::size_t>(gi);
     const Eigen::Index a = starts[g], m = (g + 1 < starts.size() ? starts[g + 1] : n) - a;
@@ -175,7 +178,7 @@ realtype grouped_wrms(const Vec& x, const Vec& w, const double* mask) {
     mean_square[g] = sum / static_cast<double>(m);
   };
   const int groups = static_cast<int>(starts.size());
-  if (t_pool != nullptr && t_pool->threads() > 1 && n >= kMinSplitStates) {
+  if (on_pool(n)) {
     t_pool->run(groups, [&](int g) { group(g); });
   } else {
     for (int g = 0; g < groups; ++g) group(g);

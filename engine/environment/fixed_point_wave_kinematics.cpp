@@ -61,13 +61,17 @@ FixedPointWaveKinematics::FixedPointWaveKinematics(std::shared_ptr<const WaveRea
   }
 }
 
+void FixedPointWaveKinematics::time_phases(double t_s, std::size_t count, double* cos_wt, double* sin_wt) const {
+  for (std::size_t j = 0; j < count; ++j) {
+    const double wt = omega_[j] * t_s;
+    cos_wt[j] = std::cos(wt);
+    sin_wt[j] = std::sin(wt);
+  }
+}
+
 void FixedPointWaveKinematics::evaluate(double t_s, std::vector<Eigen::Vector3d>& velocity,
                                         std::vector<Eigen::Vector3d>& acceleration) const {
-  for (std::size_t j = 0; j < max_count_; ++j) {
-    const double wt = omega_[j] * t_s;
-    cos_wt_[j] = std::cos(wt);
-    sin_wt_[j] = std::sin(wt);
-  }
+  time_phases(t_s, max_count_, cos_wt_.data(), sin_wt_.data());
   velocity.assign(points_.size(), Eigen::Vector3d::Zero());
   acceleration.assign(points_.size(), Eigen::Vector3d::Zero());
   for (std::size_t p = 0; p < points_.size(); ++p) {
@@ -84,11 +88,7 @@ void FixedPointWaveKinematics::evaluate_point(double t_s, std::size_t point, Eig
   thread_local std::vector<double> cos_wt, sin_wt;
   cos_wt.resize(pt.count);
   sin_wt.resize(pt.count);
-  for (std::size_t j = 0; j < pt.count; ++j) {
-    const double wt = omega_[j] * t_s;
-    cos_wt[j] = std::cos(wt);
-    sin_wt[j] = std::sin(wt);
-  }
+  time_phases(t_s, pt.count, cos_wt.data(), sin_wt.data());
   at_point(pt, cos_wt.data(), sin_wt.data(), velocity, acceleration);
 }
 

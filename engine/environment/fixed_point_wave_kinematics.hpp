@@ -59,6 +59,8 @@ class FixedPointWaveKinematics {
     std::vector<double> elevation_c, elevation_s;    // a cos ψ, a sin ψ
     double z_m = 0.0;
   };
+  /// cos ω_j t, sin ω_j t of the first `count` (sorted) components.
+  void time_phases(double t_s, std::size_t count, double* cos_wt, double* sin_wt) const;
   void at_point(const Point& pt, const double* cos_wt, const double* sin_wt, Eigen::Vector3d& velocity,
                 Eigen::Vector3d& acceleration) const;
 
