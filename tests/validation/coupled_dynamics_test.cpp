@@ -67,6 +67,21 @@ std::vector<engine::CoupledLine> oc4_lines(const Project& project, const engine:
   return lines;
 }
 
+/// OC4 at its still-water equilibrium, the S-C model (hull, linearized lines).
+DynamicModel still_water_model(const ValidatedProject& p) {
+  DynamicAnalysisRequest request;
+  request.load_case = "intact-still-water";
+  request.level = AnalysisLevel::semi_coupled;
+  return build_dynamic_model(p, request);
+}
+
+/// Hull loads for the coupled system: its FE lines replace the linearized line array.
+engine::HullLoads loads_without_linearized_lines() {
+  engine::HullLoads loads;
+  loads.lines = engine::LinearizedLines{};
+  return loads;
+}
+
 std::vector<double> outputs(double duration_s, double dt_s) {
   std::vector<double> t;
   for (int k = 1; k * dt_s <= duration_s + 1e-9; ++k) t.push_back(k * dt_s);
@@ -127,10 +142,7 @@ TEST(CoupledDynamics, StillWaterStaysAtTheStaticEquilibrium) {
 // surge mass, and the integrators' period errors are < 1e-4.
 TEST(CoupledDynamics, QuasiStaticLinesReproduceTheScFreeDecayPeriods) {
   const ValidatedProject p = load_validated_project(kOc4);
-  DynamicAnalysisRequest request;
-  request.load_case = "intact-still-water";
-  request.level = AnalysisLevel::semi_coupled;
-  const DynamicModel model = build_dynamic_model(p, request);
+  const DynamicModel model = still_water_model(p);
   const engine::Vector6d q0 = model.initial_offset;
   const struct {
     int dof;
@@ -151,8 +163,7 @@ TEST(CoupledDynamics, QuasiStaticLinesReproduceTheScFreeDecayPeriods) {
     // 0.14 / 0.07 / 0.10 %), at the default 1e-4 m heave errs by 0.39 %.
     options.hull_position_tolerance_m = 1e-5;
     options.hull_rotation_tolerance_rad = 1e-7;
-    engine::HullLoads loads;
-    loads.lines = engine::LinearizedLines{};
+    const engine::HullLoads loads = loads_without_linearized_lines();
     const engine::CoupledTimeSeries coupled = engine::simulate_coupled(
         model.hull, loads, p.project.hull.reference_point_g, start,
         oc4_lines(p.project, start, std::nullopt, true), options);
@@ -168,16 +179,12 @@ TEST(CoupledDynamics, QuasiStaticLinesReproduceTheScFreeDecayPeriods) {
 // and successive peaks decay faster than with quasi-static lines.
 TEST(CoupledDynamics, RealLinesAddMassAndDampingInSurge) {
   const ValidatedProject p = load_validated_project(kOc4);
-  DynamicAnalysisRequest request;
-  request.load_case = "intact-still-water";
-  request.level = AnalysisLevel::semi_coupled;
-  const DynamicModel model = build_dynamic_model(p, request);
+  const DynamicModel model = still_water_model(p);
   engine::Vector6d start = model.initial_offset;
   start(0) += 5.0;
   engine::CoupledOptions options;
   options.output_times_s = outputs(400.0, 0.1);
-  engine::HullLoads loads;
-  loads.lines = engine::LinearizedLines{};
+  const engine::HullLoads loads = loads_without_linearized_lines();
   const auto run = [&](bool quasi_static) {
     return engine::simulate_coupled(model.hull, loads, p.project.hull.reference_point_g, start,
                                     oc4_lines(p.project, start, std::nullopt, quasi_static),
@@ -238,8 +245,7 @@ TEST(CoupledDynamics, MeanOffsetInSteadyCurrentIsTheCoupledStaticEquilibrium) {
   engine::CoupledOptions options;
   const double period = 110.0, duration = 1200.0, dt = 0.5;
   options.output_times_s = outputs(duration, dt);
-  engine::HullLoads loads;
-  loads.lines = engine::LinearizedLines{};
+  engine::HullLoads loads = loads_without_linearized_lines();
   loads.external = model.loads.external;  // empty: OC4 has no hull current coefficients
   const engine::CoupledTimeSeries run =
       engine::simulate_coupled(model.hull, loads, p.project.hull.reference_point_g, q_still,
@@ -258,17 +264,13 @@ TEST(CoupledDynamics, MeanOffsetInSteadyCurrentIsTheCoupledStaticEquilibrium) {
 // largest local error.
 TEST(CoupledDynamics, AnIntegratorFailureNamesTimeCauseAndPart) {
   const ValidatedProject p = load_validated_project(kOc4);
-  DynamicAnalysisRequest request;
-  request.load_case = "intact-still-water";
-  request.level = AnalysisLevel::semi_coupled;
-  const DynamicModel model = build_dynamic_model(p, request);
+  const DynamicModel model = still_water_model(p);
   engine::Vector6d start = model.initial_offset;
   start(0) += 5.0;
   engine::CoupledOptions options;
   options.output_times_s = outputs(20.0, 1.0);
   options.max_steps_between_outputs = 2;
-  engine::HullLoads loads;
-  loads.lines = engine::LinearizedLines{};
+  const engine::HullLoads loads = loads_without_linearized_lines();
   try {
     engine::simulate_coupled(model.hull, loads, p.project.hull.reference_point_g, start,
                              oc4_lines(p.project, start, std::nullopt, false), options);
@@ -285,10 +287,7 @@ TEST(CoupledDynamics, AnIntegratorFailureNamesTimeCauseAndPart) {
 // after 5 s) is named with the time in the failure.
 TEST(CoupledDynamics, ANonFiniteLineIsNamed) {
   const ValidatedProject p = load_validated_project(kOc4);
-  DynamicAnalysisRequest request;
-  request.load_case = "intact-still-water";
-  request.level = AnalysisLevel::semi_coupled;
-  const DynamicModel model = build_dynamic_model(p, request);
+  const DynamicModel model = still_water_model(p);
   const engine::Vector6d start = model.initial_offset;
   std::vector<engine::CoupledLine> lines = oc4_lines(p.project, start, std::nullopt, false);
   lines[1].environment.waves = [](const Eigen::Vector3d&, double t, Eigen::Vector3d& u,
@@ -298,8 +297,7 @@ TEST(CoupledDynamics, ANonFiniteLineIsNamed) {
   };
   engine::CoupledOptions options;
   options.output_times_s = outputs(20.0, 1.0);
-  engine::HullLoads loads;
-  loads.lines = engine::LinearizedLines{};
+  const engine::HullLoads loads = loads_without_linearized_lines();
   try {
     engine::simulate_coupled(model.hull, loads, p.project.hull.reference_point_g, start, lines,
                              options);
