@@ -24,7 +24,7 @@ design::ValidatedProject deepwater_with_drift() {
   design::ValidatedProject p = design::load_validated_project(std::string(SPIRAL_SOURCE_DIR) +
                                                               "/scenarios/deepwater-fps.yaml");
   design::MeanDriftFile drift;
-  drift.file = std::string(SPIRAL_SHARED_DATA_DIR) + "/hydro/oc4-semi/marin_semi.12d";
+  drift.file = std::string(SPIRAL_SCENARIO_DATA_DIR) + "/hydro/oc4-semi/marin_semi.12d";
   drift.ulen_m = 2.0;
   drift.period_scale = std::sqrt(2.0);
   p.project.hull.mean_drift = drift;

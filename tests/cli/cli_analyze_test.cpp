@@ -152,11 +152,11 @@ TEST(CliAnalyze, MissingRadiationFileIsBadInputWithFile) {
   std::filesystem::create_directories(dir);
   std::string text =
       read_text(std::string(SPIRAL_SOURCE_DIR) + "/scenarios/oc4-semisubmersible.yaml");
-  const std::string key = "radiation_file: ../../shared/data/hydro/oc4-semi/marin_semi.1";
+  const std::string key = "radiation_file: data/hydro/oc4-semi/marin_semi.1";
   text.replace(text.find(key), key.size(), "radiation_file: nonexistent.1");
-  const std::string drift = "../../shared/data/hydro/oc4-semi/marin_semi.12d";
+  const std::string drift = "data/hydro/oc4-semi/marin_semi.12d";
   text.replace(text.find(drift), drift.size(),
-               std::string(SPIRAL_SHARED_DATA_DIR) + "/hydro/oc4-semi/marin_semi.12d");
+               std::string(SPIRAL_SCENARIO_DATA_DIR) + "/hydro/oc4-semi/marin_semi.12d");
   { std::ofstream(dir / "p.yaml") << text; }
   const auto result =
       run_spiral("analyze '" + (dir / "p.yaml").string() + "' --case intact-raft-jonswap");

@@ -261,8 +261,9 @@ TEST(CliReportStages, IntermediateRanksEveryLoadCase) {
 /// verification runs `duration_s` long, written into `dir` with absolute data paths.
 fs::path oc4_with_advanced_duration(const fs::path& dir, double duration_s) {
   std::string yaml = read_text(fs::path(SPIRAL_SOURCE_DIR) / "scenarios" / "oc4-semisubmersible.yaml");
-  for (std::size_t at; (at = yaml.find("../../shared/data")) != std::string::npos;)
-    yaml.replace(at, std::string("../../shared/data").size(), SPIRAL_SHARED_DATA_DIR);
+  const std::string relative = "data/hydro/", absolute = SPIRAL_SCENARIO_DATA_DIR "/hydro/";
+  for (std::size_t at = 0; (at = yaml.find(relative, at)) != std::string::npos; at += absolute.size())
+    yaml.replace(at, relative.size(), absolute);
   const std::string key = "- {name: advanced}";
   const std::size_t at = yaml.find(key);
   EXPECT_NE(at, std::string::npos);
@@ -365,8 +366,9 @@ TEST(CliReportStages, AdvancedVerifiesTheCriticalCasesCoupled) {
 /// `dir` (its data paths made absolute so that it runs from there).
 fs::path oc4_with_panel_mesh(const fs::path& dir, const std::string& mesh) {
   std::string yaml = read_text(fs::path(SPIRAL_SOURCE_DIR) / "scenarios" / "oc4-semisubmersible.yaml");
-  for (std::size_t at; (at = yaml.find("../../shared/data")) != std::string::npos;)
-    yaml.replace(at, std::string("../../shared/data").size(), SPIRAL_SHARED_DATA_DIR);
+  const std::string relative = "data/hydro/", absolute = SPIRAL_SCENARIO_DATA_DIR "/hydro/";
+  for (std::size_t at = 0; (at = yaml.find(relative, at)) != std::string::npos; at += absolute.size())
+    yaml.replace(at, relative.size(), absolute);
   const std::string key = "\n  geometry:\n";
   const std::size_t at = yaml.find(key);
   EXPECT_NE(at, std::string::npos);

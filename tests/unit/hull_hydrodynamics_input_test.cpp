@@ -21,9 +21,9 @@
 namespace spiral::design {
 namespace {
 
-const std::string kShared = SPIRAL_SHARED_DATA_DIR;
-const std::string kOc4Radiation = kShared + "/hydro/oc4-semi/marin_semi.1";
-const std::string kOc4Drift = kShared + "/hydro/oc4-semi/marin_semi.12d";
+const std::string kScenarioData = SPIRAL_SCENARIO_DATA_DIR;
+const std::string kOc4Radiation = kScenarioData + "/hydro/oc4-semi/marin_semi.1";
+const std::string kOc4Drift = kScenarioData + "/hydro/oc4-semi/marin_semi.12d";
 
 /// kMinimal with `extra` inserted under hull: (two-space indented keys).
 std::string with_hull_keys(const std::string& extra) {

@@ -436,7 +436,7 @@ TEST(ProjectValidation, AirDensityMustBePositive) {
 }
 
 TEST(ProjectValidation, RadiationMemoryKeysParseAndTheDurationMustExceedTheStep) {
-  const std::string semi = std::string(SPIRAL_SHARED_DATA_DIR) + "/hydro/oc4-semi/marin_semi.1";
+  const std::string semi = std::string(SPIRAL_SCENARIO_DATA_DIR) + "/hydro/oc4-semi/marin_semi.1";
   const std::string hull_line = "  waterplane_inertia: [1.0e5, 1.0e5]\n";
   const std::string text =
       replace(kMinimal, hull_line,

@@ -262,7 +262,7 @@ TEST(ScAnalysis, RadiationMemoryWithoutDecayedDampingIsAnInputError) {
   ValidatedProject p = load_validated_project(kOc4);
   auto& hydro = *p.project.hull.hydrodynamics;
   hydro.radiation = RadiationModel::memory;
-  hydro.radiation_file = std::string(SPIRAL_SHARED_DATA_DIR) + "/hydro/cylinder-buoy/Buoy.1";
+  hydro.radiation_file = std::string(SPIRAL_TEST_DATA_DIR) + "/hydro/cylinder-buoy/Buoy.1";
   hydro.frequency_column = FrequencyColumnKind::angular_frequency;
   DynamicAnalysisRequest request;
   request.load_case = "intact-still-water";

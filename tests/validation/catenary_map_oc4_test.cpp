@@ -1,5 +1,5 @@
 // Validation against MAP++ 1.10.01 on the OC4-DeepCwind mooring
-// (${SPIRAL_SHARED_DATA_DIR}/validation/oc4/: the MAP++ input deck and its .sum
+// (${SPIRAL_TEST_DATA_DIR}/validation/oc4/: the MAP++ input deck and its .sum
 // output at zero offset): three identical lines, L = 835.35 m, EA = 7.536e8 N,
 // CB = 1.0, depth 200 m, anchors at radius 837.6 m, fairleads at radius 40.868 m,
 // 14 m below the surface.
@@ -52,7 +52,7 @@ std::vector<MapLine> read_map_sum(const std::string& path) {
 
 TEST(CatenaryMapOC4, ThreeLinesMatchMapSummary) {
   const auto map =
-      read_map_sum(std::string(SPIRAL_SHARED_DATA_DIR) +
+      read_map_sum(std::string(SPIRAL_TEST_DATA_DIR) +
                    "/validation/oc4/5MW_OC4Semi_WSt_WavesWN_simpler.macos-gnu.MAP.sum");
   ASSERT_EQ(map.size(), 3u);
   // Wet weight: MAP++ results reproduce with g = 9.80665 (validation README).

@@ -1,6 +1,6 @@
 // Validation against the ten single-line cases of MoorPy's own catenary test
 // (NREL/MoorPy tests/test_catenary.py, transcribed in
-// ${SPIRAL_SHARED_DATA_DIR}/validation/moorpy/test_catenary_cases.csv; conventions
+// ${SPIRAL_TEST_DATA_DIR}/validation/moorpy/test_catenary_cases.csv; conventions
 // in its header). Every case is also checked for closure with the closed-form
 // spans (Irvine 1981 eqs. 1.43-1.44; Jonkman 2007 eqs. B-3, B-4, B-7) written
 // here independently of the solver.
@@ -39,7 +39,7 @@ struct MoorPyCase {
 
 std::vector<MoorPyCase> read_cases() {
   const std::string path =
-      std::string(SPIRAL_SHARED_DATA_DIR) + "/validation/moorpy/test_catenary_cases.csv";
+      std::string(SPIRAL_TEST_DATA_DIR) + "/validation/moorpy/test_catenary_cases.csv";
   std::ifstream in(path);
   EXPECT_TRUE(in.good()) << "cannot open " << path;
   std::vector<MoorPyCase> cases;

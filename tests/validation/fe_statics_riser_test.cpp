@@ -24,7 +24,7 @@ namespace {
 /// OrcaFlex column of the shared reference table, kN, keyed by quantity.
 std::map<std::string, double> read_orcaflex_column() {
   const std::string path =
-      std::string(SPIRAL_SHARED_DATA_DIR) + "/validation/lowe_langley_2006_hanging_riser_static.csv";
+      std::string(SPIRAL_TEST_DATA_DIR) + "/validation/lowe_langley_2006_hanging_riser_static.csv";
   std::ifstream in(path);
   EXPECT_TRUE(in.good()) << "cannot open " << path;
   std::map<std::string, double> values;

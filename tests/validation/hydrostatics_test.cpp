@@ -257,7 +257,7 @@ TEST(WamitHst, DimensionalisesEachEntryWithItsExponent) {
 TEST(WamitHst, SharedHamsBuoyFileIsAllZeros) {
   // shared/data/hydro/cylinder-buoy/Buoy.hst: HAMS wrote zeros (no hydrostatic input).
   const auto hst = read_wamit_hst(
-      std::string(SPIRAL_SHARED_DATA_DIR) + "/hydro/cylinder-buoy/Buoy.hst", {1.0, kWater});
+      std::string(SPIRAL_TEST_DATA_DIR) + "/hydro/cylinder-buoy/Buoy.hst", {1.0, kWater});
   EXPECT_EQ(hst.entries_read, 36);
   EXPECT_EQ(hst.restoring_6x6.norm(), 0.0);
 }

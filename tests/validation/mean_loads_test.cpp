@@ -41,7 +41,7 @@ constexpr double kVarianceShareAbsTol = 1e-3;
 // expression from the same digits, so only round-off separates them.
 constexpr double kFrequencyMatch_rad_per_s = 1e-9;
 
-const char* kSemi12d = SPIRAL_SHARED_DATA_DIR "/hydro/oc4-semi/marin_semi.12d";
+const char* kSemi12d = SPIRAL_SCENARIO_DATA_DIR "/hydro/oc4-semi/marin_semi.12d";
 
 CoefficientTable four_heading_table() {
   // Coefficient x area at 0, 90, 180, 270 deg (relative flow direction, hull frame).

@@ -215,8 +215,8 @@ TEST(MorisonHull, TimeDomainMotionInARegularWaveIsTheRao) {
 
 // ------------------------------------------------------------------ HAMS
 
-const char* kBuoy1 = SPIRAL_SHARED_DATA_DIR "/hydro/cylinder-buoy/Buoy.1";
-const char* kBuoy3 = SPIRAL_SHARED_DATA_DIR "/hydro/cylinder-buoy/Buoy.3";
+const char* kBuoy1 = SPIRAL_TEST_DATA_DIR "/hydro/cylinder-buoy/Buoy.1";
+const char* kBuoy3 = SPIRAL_TEST_DATA_DIR "/hydro/cylinder-buoy/Buoy.3";
 
 // Long waves: w <= 1.2 rad/s, kR <= 0.05 and kT <= 0.1. The strip model takes
 // Ca and Ca_end constant (from the lowest frequency) while the file's A11

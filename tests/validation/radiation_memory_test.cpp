@@ -28,7 +28,7 @@ namespace {
 
 constexpr double kRho = 1025.0;
 constexpr double kG = 9.80665;
-const char* kSemi1 = SPIRAL_SHARED_DATA_DIR "/hydro/oc4-semi/marin_semi.1";
+const char* kSemi1 = SPIRAL_SCENARIO_DATA_DIR "/hydro/oc4-semi/marin_semi.1";
 
 HydroCoefficients oc4_radiation() {
   WamitReadOptions o;
@@ -101,7 +101,7 @@ TEST(RadiationMemory, DataThatDoNotReachTheDecayedDampingAreRefused) {
   o.frequency_column = FrequencyColumn::angular_frequency;
   o.water = {kRho, kG};
   const HydroCoefficients buoy =
-      read_wamit_1(SPIRAL_SHARED_DATA_DIR "/hydro/cylinder-buoy/Buoy.1", o);
+      read_wamit_1(SPIRAL_TEST_DATA_DIR "/hydro/cylinder-buoy/Buoy.1", o);
   try {
     make_radiation_memory(buoy, {});
     FAIL() << "expected RadiationDataError";

@@ -37,9 +37,9 @@ constexpr double kPrintedPeriodRelTol = 1e-5;
 // Phases are printed with 7 significant digits (9.000000E+01 deg).
 constexpr double kPrintedPhaseTol_deg = 1e-5;
 
-const char* kSemi1 = SPIRAL_SHARED_DATA_DIR "/hydro/oc4-semi/marin_semi.1";
-const char* kBuoy1 = SPIRAL_SHARED_DATA_DIR "/hydro/cylinder-buoy/Buoy.1";
-const char* kBuoy3 = SPIRAL_SHARED_DATA_DIR "/hydro/cylinder-buoy/Buoy.3";
+const char* kSemi1 = SPIRAL_SCENARIO_DATA_DIR "/hydro/oc4-semi/marin_semi.1";
+const char* kBuoy1 = SPIRAL_TEST_DATA_DIR "/hydro/cylinder-buoy/Buoy.1";
+const char* kBuoy3 = SPIRAL_TEST_DATA_DIR "/hydro/cylinder-buoy/Buoy.3";
 
 WamitReadOptions period_options(double ulen_m = 1.0) {
   WamitReadOptions o;

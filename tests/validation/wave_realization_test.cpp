@@ -291,7 +291,7 @@ TEST(FirstOrderExcitation, RegularWaveIsModulusTimesCosineWithPhaseLead) {
   WamitReadOptions options;
   options.frequency_column = FrequencyColumn::angular_frequency;
   options.water = {kRho, kG};
-  const auto table = read_wamit_3(SPIRAL_SHARED_DATA_DIR "/hydro/cylinder-buoy/Buoy.3", options);
+  const auto table = read_wamit_3(SPIRAL_TEST_DATA_DIR "/hydro/cylinder-buoy/Buoy.3", options);
   const double a = 1.5;
   const double w = 0.4;  // a tabulated frequency: no interpolation
   const double phi = 0.3;
