@@ -12,7 +12,7 @@
 #include "design/mooring_model.hpp"
 #include "engine/analysis/coupled_dynamics.hpp"
 #include "engine/analysis/line_array.hpp"
-#include "engine/analysis/sampled_trajectory.hpp"
+#include "engine/numerics/sampled_trajectory.hpp"
 #include "engine/common/parallel_for.hpp"
 
 namespace spiral::design {

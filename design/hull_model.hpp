@@ -6,7 +6,7 @@
 #include <optional>
 
 #include "design/project.hpp"
-#include "engine/analysis/rigid_body.hpp"
+#include "engine/common/rigid_body.hpp"
 #include "engine/analysis/static_equilibrium.hpp"
 #include "engine/hull/hydrostatics.hpp"
 #include "engine/hull/morison_hull.hpp"

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "engine/analysis/statistics.hpp"
+#include "engine/numerics/statistics.hpp"
 
 namespace spiral::design {
 namespace {

@@ -18,7 +18,7 @@
 //
 // Statistics per channel: mean, standard deviation, maximum and the
 // most-probable 3-h maximum (Gumbel fit of the cycle maxima,
-// engine/analysis/statistics.hpp; the sample maximum when the record is too
+// engine/numerics/statistics.hpp; the sample maximum when the record is too
 // short for the fit). Differences: 100 (level − coupled) / |coupled|.
 
 #include <cstdint>

@@ -11,7 +11,7 @@
 #include "design/riser_model.hpp"
 #include "engine/analysis/fe_static_line.hpp"
 #include "engine/analysis/line_array.hpp"
-#include "engine/analysis/sampled_trajectory.hpp"
+#include "engine/numerics/sampled_trajectory.hpp"
 #include "engine/common/parallel_for.hpp"
 #include "engine/lines/fe_line_dynamics.hpp"
 

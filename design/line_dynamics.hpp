@@ -37,7 +37,7 @@
 #include "design/line_properties.hpp"
 #include "design/project.hpp"
 #include "design/riser_model.hpp"
-#include "engine/analysis/sundials_ida.hpp"
+#include "engine/numerics/sundials_ida.hpp"
 #include "engine/common/eigen_types.hpp"
 #include "engine/environment/current_profile.hpp"
 #include "engine/lines/fe_line_dynamics.hpp"

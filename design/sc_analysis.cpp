@@ -22,7 +22,7 @@
 #include "design/mooring_model.hpp"
 #include "design/project_validation.hpp"
 #include "engine/analysis/line_array.hpp"
-#include "engine/analysis/statistics.hpp"
+#include "engine/numerics/statistics.hpp"
 #include "engine/environment/wave_realization.hpp"
 #include "engine/environment/wind.hpp"
 #include "engine/environment/wind_realization.hpp"

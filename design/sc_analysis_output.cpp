@@ -7,7 +7,7 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "engine/analysis/statistics.hpp"
+#include "engine/numerics/statistics.hpp"
 
 namespace spiral::design {
 namespace {

@@ -12,7 +12,7 @@
 #include <string>
 
 #include "design/sc_analysis.hpp"
-#include "engine/analysis/statistics.hpp"
+#include "engine/numerics/statistics.hpp"
 
 namespace spiral::design {
 

@@ -16,7 +16,7 @@
 #include "design/input_error.hpp"
 #include "design/soz_symmetry.hpp"
 #include "design/static_case.hpp"
-#include "engine/analysis/rigid_body.hpp"
+#include "engine/common/rigid_body.hpp"
 #include "engine/common/parallel_for.hpp"
 #include "engine/lines/catenary.hpp"
 

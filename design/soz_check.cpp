@@ -46,7 +46,7 @@
 #include "design/sc_analysis.hpp"
 #include "design/soz.hpp"
 #include "design/static_case.hpp"
-#include "engine/analysis/statistics.hpp"
+#include "engine/numerics/statistics.hpp"
 #include "engine/common/parallel_for.hpp"
 
 namespace spiral::design {

@@ -8,7 +8,7 @@
 #include <numbers>
 
 #include "design/sc_analysis_output.hpp"
-#include "engine/analysis/statistics.hpp"
+#include "engine/numerics/statistics.hpp"
 
 namespace spiral::design {
 

@@ -12,7 +12,7 @@
 //    ULS (intact) or ALS (damaged) factors.
 //  - extreme offset: the MPM horizontal offset against the platform SOZ in
 //    the direction of the largest sampled offset (when a zone is given).
-// MPM: the Gumbel estimate of engine/analysis/statistics.hpp (segment maxima,
+// MPM: the Gumbel estimate of engine/numerics/statistics.hpp (segment maxima,
 // max-stable, so it scales to 3 h without assuming a narrow band).
 
 #include <cstdint>

@@ -15,7 +15,7 @@
 #include "design/riser_model.hpp"
 #include "design/statics_study.hpp"
 #include "design/validated_project.hpp"
-#include "engine/analysis/rigid_body.hpp"
+#include "engine/common/rigid_body.hpp"
 #include "engine/lines/fe_line_statics.hpp"
 
 namespace spiral::design {

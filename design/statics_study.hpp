@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "design/mooring_model.hpp"
-#include "engine/analysis/rigid_body.hpp"
+#include "engine/common/rigid_body.hpp"
 #include "engine/analysis/static_line.hpp"
 
 namespace spiral::design {

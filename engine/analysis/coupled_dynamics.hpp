@@ -87,7 +87,7 @@
 #include <vector>
 
 #include "engine/analysis/hull_dynamics.hpp"
-#include "engine/analysis/sundials_ida.hpp"
+#include "engine/numerics/sundials_ida.hpp"
 #include "engine/lines/fe_line_dynamics.hpp"
 
 namespace spiral::engine {

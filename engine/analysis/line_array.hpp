@@ -15,7 +15,7 @@
 #include <span>
 #include <vector>
 
-#include "engine/analysis/rigid_body.hpp"
+#include "engine/common/rigid_body.hpp"
 #include "engine/analysis/static_line.hpp"
 
 namespace spiral::engine {

@@ -64,7 +64,7 @@
 #include <optional>
 #include <vector>
 
-#include "engine/analysis/rigid_body.hpp"
+#include "engine/common/rigid_body.hpp"
 #include "engine/environment/current_profile.hpp"
 #include "engine/environment/wave_spectrum.hpp"
 

@@ -38,7 +38,7 @@
 #include <span>
 #include <stdexcept>
 
-#include "engine/analysis/hull_dynamics.hpp"
+#include "engine/hull/retardation_kernel.hpp"
 #include "engine/hull/wamit_1.hpp"
 
 namespace spiral::engine {

@@ -1,6 +1,6 @@
 #include "engine/hull/slow_drift.hpp"
 
-#include "engine/analysis/rigid_body.hpp"
+#include "engine/common/rigid_body.hpp"
 
 #include <cmath>
 #include <numbers>

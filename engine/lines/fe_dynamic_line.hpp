@@ -16,8 +16,8 @@
 #include <utility>
 #include <vector>
 
-#include "engine/analysis/sampled_trajectory.hpp"
-#include "engine/analysis/sundials_ida.hpp"
+#include "engine/numerics/sampled_trajectory.hpp"
+#include "engine/numerics/sundials_ida.hpp"
 #include "engine/environment/fixed_point_wave_kinematics.hpp"
 #include "engine/lines/ancf_dynamic_loads.hpp"
 #include "engine/lines/fe_band_matrices.hpp"

@@ -105,7 +105,7 @@
 #include <optional>
 #include <vector>
 
-#include "engine/analysis/sundials_ida.hpp"
+#include "engine/numerics/sundials_ida.hpp"
 #include "engine/environment/wave_realization.hpp"
 #include "engine/lines/fe_line_statics.hpp"
 

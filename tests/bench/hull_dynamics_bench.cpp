@@ -11,7 +11,7 @@
 
 #include "../support/oc4_hull_dynamics.hpp"
 #include "engine/analysis/hull_dynamics.hpp"
-#include "engine/analysis/statistics.hpp"
+#include "engine/numerics/statistics.hpp"
 
 namespace {
 

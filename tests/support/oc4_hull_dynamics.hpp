@@ -9,7 +9,7 @@
 #include <Eigen/Core>
 
 #include "engine/analysis/hull_dynamics.hpp"
-#include "engine/analysis/rigid_body.hpp"
+#include "engine/common/rigid_body.hpp"
 
 namespace spiral::test {
 

@@ -14,7 +14,7 @@
 #include "design/mooring_model.hpp"
 #include "design/validated_project.hpp"
 #include "engine/analysis/line_array.hpp"
-#include "engine/analysis/statistics.hpp"
+#include "engine/numerics/statistics.hpp"
 #include "engine/environment/wave_realization.hpp"
 
 namespace spiral::design {

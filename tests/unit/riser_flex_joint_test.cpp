@@ -9,7 +9,7 @@
 
 #include "design/project_loader.hpp"
 #include "design/soz.hpp"
-#include "engine/analysis/rigid_body.hpp"
+#include "engine/common/rigid_body.hpp"
 #include "support/soz_project.hpp"
 
 namespace spiral::design {

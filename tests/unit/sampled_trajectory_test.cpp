@@ -1,5 +1,5 @@
 // The natural cubic spline trajectory and the quintic build-up ramp.
-#include "engine/analysis/sampled_trajectory.hpp"
+#include "engine/numerics/sampled_trajectory.hpp"
 
 #include <gtest/gtest.h>
 

@@ -13,7 +13,7 @@
 #include "design/environment_loads.hpp"
 #include "design/hull_model.hpp"
 #include "engine/analysis/line_array.hpp"
-#include "engine/analysis/statistics.hpp"
+#include "engine/numerics/statistics.hpp"
 #include "engine/hull/morison_hull.hpp"
 #include "support/expect_near.hpp"
 

@@ -2,7 +2,7 @@
 // statistics, and the error paths (fatal RHS exception rethrown, recoverable
 // RHS failures, too much work, invalid options).
 
-#include "engine/analysis/sundials_cvode.hpp"
+#include "engine/numerics/sundials_cvode.hpp"
 
 #include <gtest/gtest.h>
 

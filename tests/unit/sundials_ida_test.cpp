@@ -3,7 +3,7 @@
 // 2×2 Newton matrix solved by the system, and an algebraic (prescribed)
 // component excluded from the error test.
 
-#include "engine/analysis/sundials_ida.hpp"
+#include "engine/numerics/sundials_ida.hpp"
 
 #include <gtest/gtest.h>
 

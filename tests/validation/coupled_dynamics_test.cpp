@@ -27,7 +27,7 @@
 #include "design/static_case.hpp"
 #include "design/validated_project.hpp"
 #include "engine/analysis/line_array.hpp"
-#include "engine/analysis/statistics.hpp"
+#include "engine/numerics/statistics.hpp"
 
 namespace spiral::design {
 namespace {

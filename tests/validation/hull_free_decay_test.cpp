@@ -22,7 +22,7 @@
 #include <vector>
 
 #include "engine/analysis/hull_dynamics.hpp"
-#include "engine/analysis/statistics.hpp"
+#include "engine/numerics/statistics.hpp"
 #include "support/expect_near.hpp"
 #include "support/oc4_hull_dynamics.hpp"
 

@@ -17,7 +17,7 @@
 #include <numbers>
 
 #include "engine/analysis/hull_dynamics.hpp"
-#include "engine/analysis/rigid_body.hpp"
+#include "engine/common/rigid_body.hpp"
 #include "engine/hull/wamit_1.hpp"
 #include "engine/hull/wamit_3.hpp"
 #include "support/expect_near.hpp"

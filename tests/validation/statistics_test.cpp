@@ -4,7 +4,7 @@
 // 3-hour MPM estimators against each other and against the Rayleigh result
 // on Gaussian processes synthesized from a known spectrum (many seeds).
 
-#include "engine/analysis/statistics.hpp"
+#include "engine/numerics/statistics.hpp"
 
 #include <gtest/gtest.h>
 

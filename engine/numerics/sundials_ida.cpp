@@ -1,4 +1,4 @@
-#include "engine/analysis/sundials_ida.hpp"
+#include "engine/numerics/sundials_ida.hpp"
 
 #include "engine/common/worker_pool.hpp"
 

@@ -33,7 +33,7 @@
 // Residual errors, as in the CVODE adapter: a SolverError or a non-finite
 // residual is recoverable (IDA retries with a smaller step); any other
 // exception is fatal and rethrown after IDASolve returns. IDA failures throw
-// IntegrationError (engine/analysis/sundials_cvode.hpp) with the time
+// IntegrationError (engine/numerics/sundials_cvode.hpp) with the time
 // reached, the last step and a hint.
 
 #include <Eigen/Core>
@@ -42,7 +42,7 @@
 #include <string>
 #include <vector>
 
-#include "engine/analysis/sundials_cvode.hpp"
+#include "engine/numerics/sundials_cvode.hpp"
 
 namespace spiral::engine {
 

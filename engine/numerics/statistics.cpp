@@ -1,4 +1,4 @@
-#include "engine/analysis/statistics.hpp"
+#include "engine/numerics/statistics.hpp"
 
 #include <fmt/format.h>
 

@@ -1,4 +1,4 @@
-#include "engine/analysis/sampled_trajectory.hpp"
+#include "engine/numerics/sampled_trajectory.hpp"
 
 #include <fmt/format.h>
 

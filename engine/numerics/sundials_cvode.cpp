@@ -1,4 +1,4 @@
-#include "engine/analysis/sundials_cvode.hpp"
+#include "engine/numerics/sundials_cvode.hpp"
 
 #include <cvode/cvode.h>
 #include <fmt/format.h>
