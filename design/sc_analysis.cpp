@@ -1,8 +1,5 @@
 // Uncoupled and semi-coupled time-domain hull analyses of one load case
-// (sc_analysis.hpp has the method and its sources). Slightly past ~600
-// lines: the model assembly, its forcing table and the run read best together;
-// the tabulated forcing is the first candidate to move to engine/ when the
-// coupled level needs it too.
+// (sc_analysis.hpp has the method and its sources).
 #include "design/sc_analysis.hpp"
 
 #include <fmt/format.h>
@@ -21,12 +18,15 @@
 #include "design/line_hydrodynamics.hpp"
 #include "design/mooring_model.hpp"
 #include "design/project_validation.hpp"
+#include "engine/analysis/fairlead_velocity.hpp"
+#include "engine/analysis/forcing_table.hpp"
 #include "engine/analysis/line_array.hpp"
 #include "engine/numerics/statistics.hpp"
 #include "engine/environment/wave_realization.hpp"
 #include "engine/environment/wind.hpp"
 #include "engine/environment/wind_realization.hpp"
 #include "engine/hull/first_order_wave_response.hpp"
+#include "engine/hull/motion_raos.hpp"
 #include "engine/hull/mean_environmental_loads.hpp"
 #include "engine/hull/morison_hull.hpp"
 #include "engine/hull/radiation_memory.hpp"
@@ -114,175 +114,6 @@ engine::WaveRealization realize_sea(const Project& project, const Waves& waves, 
   return engine::make_wave_realization(input);
 }
 
-}  // namespace
-
-engine::MotionRaoTable motion_raos_from_excitation(const engine::ExcitationTable& x,
-                                                   const engine::HydroCoefficients& r,
-                                                   const engine::Matrix6d& mass,
-                                                   const engine::Matrix6d& linear_damping,
-                                                   const engine::Matrix6d& stiffness) {
-  engine::MotionRaoTable out;
-  out.quantity = engine::TransferQuantity::motion_rao;
-  out.omega_rad_per_s = x.omega_rad_per_s;
-  out.headings_rad = x.headings_rad;
-  out.file = x.file + " (RAOs with " + r.file + ")";
-  const auto nh = static_cast<Eigen::Index>(x.headings_rad.size());
-  const auto nw = static_cast<Eigen::Index>(x.omega_rad_per_s.size());
-  for (int d = 0; d < 6; ++d) {
-    out.values[static_cast<std::size_t>(d)] = Eigen::MatrixXcd::Zero(nh, nw);
-    out.dof_present[static_cast<std::size_t>(d)] = true;
-  }
-  const std::complex<double> i(0.0, 1.0);
-  for (Eigen::Index k = 0; k < nw; ++k) {
-    const double w = x.omega_rad_per_s[static_cast<std::size_t>(k)];
-    const Eigen::Matrix<std::complex<double>, 6, 6> H =
-        (-w * w * (mass + engine::added_mass_at(r, w)) + stiffness).cast<std::complex<double>>() +
-        i * w * (engine::damping_at(r, w) + linear_damping).cast<std::complex<double>>();
-    const Eigen::PartialPivLU<Eigen::Matrix<std::complex<double>, 6, 6>> lu(H);
-    for (Eigen::Index h = 0; h < nh; ++h) {
-      engine::Vector6cd X;
-      for (int d = 0; d < 6; ++d) X(d) = x.values[static_cast<std::size_t>(d)](h, k);
-      const engine::Vector6cd xi = lu.solve(X);
-      for (int d = 0; d < 6; ++d) out.values[static_cast<std::size_t>(d)](h, k) = xi(d);
-    }
-  }
-  return out;
-}
-
-namespace {
-
-/// Fairlead velocity covariance (global, 3x3) per mooring line from a motion
-/// record (central differences of the fairlead positions).
-std::vector<Eigen::Matrix3d> fairlead_velocity_covariance(
-    const LineArrayModel& mooring, const Eigen::Vector3d& reference_point,
-    const Eigen::Matrix<double, 6, Eigen::Dynamic>& motion, double dt_s) {
-  std::vector<Eigen::Matrix3d> out(mooring.lines.size(), Eigen::Matrix3d::Zero());
-  const Eigen::Index n = motion.cols();
-  if (n < 3) return out;
-  for (std::size_t l = 0; l < mooring.lines.size(); ++l) {
-    const Eigen::Vector3d arm_b = mooring.lines[l]->attachment_b();
-    const auto fairlead = [&](Eigen::Index k) {
-      const engine::HullPose pose = engine::pose_from_offset(reference_point, motion.col(k));
-      return Eigen::Vector3d(pose.reference_point_g + pose.rotation * arm_b);
-    };
-    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-    Eigen::Matrix3d second = Eigen::Matrix3d::Zero();
-    for (Eigen::Index k = 1; k + 1 < n; ++k) {
-      const Eigen::Vector3d v = (fairlead(k + 1) - fairlead(k - 1)) / (2.0 * dt_s);
-      mean += v;
-      second += v * v.transpose();
-    }
-    const double m = static_cast<double>(n - 2);
-    mean /= m;
-    out[l] = second / m - mean * mean.transpose();
-  }
-  return out;
-}
-
-/// Grid step of the tabulated state-independent forcing: Catmull-Rom
-/// interpolation errs by ~(w dt)^4/... of a component's amplitude, below 1e-3
-/// for the slow drift (difference frequencies < 2 rad/s) and ~1 % only at the
-/// 1 Hz end of the wind gust, where the hull does not respond.
-constexpr double kForcingStep_s = 0.1;
-/// Exact phasors are recomputed every this many grid steps (the rotation
-/// recurrence loses ~1e-16 per step).
-constexpr int kPhasorResync = 4096;
-/// Margin beyond the duration: CVODE may step past the last output time.
-constexpr double kForcingMargin_s = 120.0;
-
-/// The slow drift (rows 0-5, global, N, N·m) and the wind gust (row 6, m/s)
-/// are functions of time only: tabulated once on a uniform grid by the phasor
-/// recurrence e^{i w (t + dt)} = e^{i w t} e^{i w dt} (a complex product per
-/// component instead of a sine and cosine), then read in the right-hand side
-/// by Catmull-Rom interpolation (C1 in time, so the Adams steps stay long).
-class ForcingTable {
- public:
-  ForcingTable(const engine::SlowDriftSeries* drift, const engine::WindRealization* gust,
-               double duration_s)
-      : drift_(drift), gust_(gust) {
-    const auto n =
-        static_cast<Eigen::Index>(std::ceil((duration_s + kForcingMargin_s) / kForcingStep_s)) + 4;
-    values_.setZero(7, n);
-    if (drift) tabulate_drift(*drift);
-    if (gust) tabulate_gust(*gust);
-  }
-  Eigen::Matrix<double, 7, 1> at(double t) const {
-    const double s = t / kForcingStep_s + 1.0;  // column j holds t = (j − 1) dt
-    const auto j = static_cast<Eigen::Index>(std::floor(s));
-    if (j < 1 || j + 2 >= values_.cols()) return exact(t);
-    const double u = s - static_cast<double>(j);
-    const auto p0 = values_.col(j - 1), p1 = values_.col(j), p2 = values_.col(j + 1),
-               p3 = values_.col(j + 2);
-    return p1 + 0.5 * u *
-                    ((p2 - p0) +
-                     u * ((2.0 * p0 - 5.0 * p1 + 4.0 * p2 - p3) + u * (3.0 * (p1 - p2) + p3 - p0)));
-  }
-
- private:
-  Eigen::Matrix<double, 7, 1> exact(double t) const {
-    Eigen::Matrix<double, 7, 1> v = Eigen::Matrix<double, 7, 1>::Zero();
-    if (drift_) v.head<6>() = engine::slow_drift_force(*drift_, t);
-    if (gust_) v(6) = engine::wind_gust_m_per_s(*gust_, t);
-    return v;
-  }
-  void tabulate_drift(const engine::SlowDriftSeries& d) {
-    const Eigen::Index k = d.weight.cols();
-    Eigen::ArrayXd c(k), sn(k), rc(k), rs(k);
-    for (Eigen::Index i = 0; i < k; ++i) {
-      rc(i) = std::cos(d.omega_rad_per_s[static_cast<std::size_t>(i)] * kForcingStep_s);
-      rs(i) = std::sin(d.omega_rad_per_s[static_cast<std::size_t>(i)] * kForcingStep_s);
-    }
-    const double cy = std::cos(d.yaw_rad), sy = std::sin(d.yaw_rad);
-    for (Eigen::Index j = 0; j < values_.cols(); ++j) {
-      if (j % kPhasorResync == 0) {
-        const double t = static_cast<double>(j - 1) * kForcingStep_s;
-        for (Eigen::Index i = 0; i < k; ++i) {
-          const double theta = d.omega_rad_per_s[static_cast<std::size_t>(i)] * t +
-                               d.phase_rad[static_cast<std::size_t>(i)];
-          c(i) = std::cos(theta);
-          sn(i) = std::sin(theta);
-        }
-      }
-      const engine::Vector6d z_re = d.weight * c.matrix(), z_im = d.weight * sn.matrix();
-      const engine::Vector6d zs_re = d.signed_weight * c.matrix(),
-                             zs_im = d.signed_weight * sn.matrix();
-      const engine::Vector6d b = zs_re.cwiseProduct(z_re) + zs_im.cwiseProduct(z_im);
-      values_.col(j).head<6>() << cy * b(0) - sy * b(1), sy * b(0) + cy * b(1), b(2),
-          cy * b(3) - sy * b(4), sy * b(3) + cy * b(4), b(5);
-      const Eigen::ArrayXd next_c = c * rc - sn * rs;
-      sn = sn * rc + c * rs;
-      c = next_c;
-    }
-  }
-  void tabulate_gust(const engine::WindRealization& w) {
-    const auto k = static_cast<Eigen::Index>(w.omega_rad_per_s.size());
-    Eigen::ArrayXd c(k), sn(k), rc(k), rs(k), a(k);
-    for (Eigen::Index i = 0; i < k; ++i) {
-      rc(i) = std::cos(w.omega_rad_per_s[static_cast<std::size_t>(i)] * kForcingStep_s);
-      rs(i) = std::sin(w.omega_rad_per_s[static_cast<std::size_t>(i)] * kForcingStep_s);
-      a(i) = w.amplitude_m_per_s[static_cast<std::size_t>(i)];
-    }
-    for (Eigen::Index j = 0; j < values_.cols(); ++j) {
-      if (j % kPhasorResync == 0) {
-        const double t = static_cast<double>(j - 1) * kForcingStep_s;
-        for (Eigen::Index i = 0; i < k; ++i) {
-          const double theta = w.omega_rad_per_s[static_cast<std::size_t>(i)] * t +
-                               w.phase_rad[static_cast<std::size_t>(i)];
-          c(i) = std::cos(theta);
-          sn(i) = std::sin(theta);
-        }
-      }
-      values_(6, j) = (a * c).sum();
-      const Eigen::ArrayXd next_c = c * rc - sn * rs;
-      sn = sn * rc + c * rs;
-      c = next_c;
-    }
-  }
-  const engine::SlowDriftSeries* drift_;
-  const engine::WindRealization* gust_;
-  Eigen::Matrix<double, 7, Eigen::Dynamic> values_;
-};
-
 std::vector<double> output_times(double duration_s, double step_s) {
   std::vector<double> t;
   const auto n = static_cast<long>(std::floor(duration_s / step_s + 1e-9));
@@ -313,7 +144,7 @@ std::optional<Eigen::Matrix<double, 6, Eigen::Dynamic>> wave_frequency_motion(
   const engine::WamitReadOptions read = wamit_options_of(project, *hydro);
   const engine::MotionRaoTable raos =
       hydro->rao_file ? engine::read_wamit_4(*hydro->rao_file, read)
-                      : motion_raos_from_excitation(
+                      : engine::motion_raos_from_excitation(
                             engine::read_wamit_3(*hydro->excitation_file, read), *hull.radiation,
                             hull.mass_matrix, model.hull.linear_damping,
                             hull.statics.hydrostatic_stiffness + model.statics.stiffness);
@@ -556,9 +387,9 @@ DynamicModel build_dynamic_model(const ValidatedProject& validated,
   const double rho_w = project.site.water_density_kg_per_m3;
   const double rho_a = project.site.air_density_kg_per_m3;
   if (drift || current_table || wind_table || members) {
-    std::shared_ptr<const ForcingTable> forcing;
+    std::shared_ptr<const engine::ForcingTable> forcing;
     if (drift || gust)
-      forcing = std::make_shared<const ForcingTable>(drift.get(), gust.get(), request.duration_s);
+      forcing = std::make_shared<const engine::ForcingTable>(drift.get(), gust.get(), request.duration_s);
     model.loads.external = [=](double t, const engine::Vector6d& q, const engine::Vector6d& qd) {
       engine::Vector6d f = engine::Vector6d::Zero();
       Eigen::Matrix<double, 7, 1> tabulated = Eigen::Matrix<double, 7, 1>::Zero();
@@ -599,8 +430,10 @@ DynamicModel build_dynamic_model(const ValidatedProject& validated,
     if (const auto wf = wave_frequency_motion(project, environment, model, request, plain.times_s))
       motion += *wf;
     LineArrayModel mooring = build_mooring_model(project, damaged);
+    std::vector<Eigen::Vector3d> fairleads_b;
+    for (const auto& line : mooring.lines) fairleads_b.push_back(line->attachment_b());
     const auto covariance =
-        fairlead_velocity_covariance(mooring, reference_point, motion, request.output_step_s);
+        engine::fairlead_velocity_covariance(fairleads_b, reference_point, motion, request.output_step_s);
     const LineHydrodynamicsResult lines =
         line_hydrodynamics(mooring, engine::pose_from_offset(reference_point, model.statics.offset),
                            covariance, rho_w);

@@ -169,16 +169,6 @@ struct DynamicAnalysisResult {
   double line_dynamics_wall_s = 0.0;
 };
 
-/// Motion RAOs (WAMIT e^{iwt} convention, per unit wave amplitude) from the
-/// excitation X (.3) and A(w), B(w) (.1) on the excitation table's grid:
-///   xi(w, beta) = [−w² (mass + A(w)) + i w (B(w) + linear_damping) + stiffness]^-1 X(w, beta)
-/// (A, B interpolated in w, held outside the .1 table).
-engine::MotionRaoTable motion_raos_from_excitation(const engine::ExcitationTable& excitation,
-                                                   const engine::HydroCoefficients& radiation,
-                                                   const engine::Matrix6d& mass,
-                                                   const engine::Matrix6d& linear_damping,
-                                                   const engine::Matrix6d& stiffness);
-
 /// Wave-frequency hull motions (global, m, rad) of the request's case at
 /// `times_s`, from the .4 RAOs or .1 + .3; empty without them or without waves.
 std::optional<Eigen::Matrix<double, 6, Eigen::Dynamic>> wave_frequency_motions(

@@ -38,12 +38,12 @@ nlohmann::json channel_json(const std::string& name, const std::string& unit,
     return j;
   }
   try {
-    const engine::ChannelStatistics s = engine::analyze_channel(x, dt_s, welch_segment_length(x.size()));
+    const engine::ChannelStatistics s = engine::analyze_channel(x, dt_s, engine::welch_segment_length(x.size()));
     j["spectral_peak_period_s"] = s.spectral_peak_period_s;
     // The Welch spectrum (one-sided S(w), unit²·s/rad) up to where it holds
     // all but 1e-6 of the variance: the Nyquist tail of a 0.5 s record is noise.
     const engine::Spectrum& sp = s.spectrum;
-    const Eigen::Index last = spectrum_last_significant_bin(sp);
+    const Eigen::Index last = engine::spectrum_last_significant_bin(sp);
     std::vector<double> w(static_cast<std::size_t>(last + 1)), d(static_cast<std::size_t>(last + 1));
     for (Eigen::Index k = 0; k <= last; ++k) {
       w[static_cast<std::size_t>(k)] = sp.frequency_rad_s(k);
@@ -82,19 +82,7 @@ nlohmann::json matrix_json(const engine::Matrix6d& m) {
 
 }  // namespace
 
-Eigen::Index spectrum_last_significant_bin(const engine::Spectrum& sp) {
-  double total = 0.0;
-  for (Eigen::Index k = 0; k < sp.density.size(); ++k) total += sp.density(k);
-  Eigen::Index last = sp.density.size() - 1;
-  for (double tail = 0.0; last > 1 && tail + sp.density(last) <= 1e-6 * total; --last) tail += sp.density(last);
-  return last;
-}
 
-std::size_t welch_segment_length(std::size_t n) {
-  std::size_t s = 16;
-  while (s * 2 <= n / 8) s *= 2;
-  return std::min(s, n);
-}
 
 void write_dynamic_time_series_csv(const DynamicAnalysisResult& r,
                                    const std::filesystem::path& file) {

@@ -54,13 +54,13 @@ StormChannel summarize_storm_channel(std::string name, std::string unit, std::ve
   } else {
     try {
       const engine::ChannelStatistics s =
-          engine::analyze_channel(values, dt_s, welch_segment_length(values.size()));
+          engine::analyze_channel(values, dt_s, engine::welch_segment_length(values.size()));
       c.mpm_max = s.maximum.mpm_gumbel;
       c.mpm_min = s.minimum.mpm_gumbel;
       c.mpm_max_weibull = s.maximum.mpm_weibull;
       c.spectral_peak_period_s = s.spectral_peak_period_s;
       c.welch_segments = s.spectrum.segments;
-      const Eigen::Index last = spectrum_last_significant_bin(s.spectrum);
+      const Eigen::Index last = engine::spectrum_last_significant_bin(s.spectrum);
       for (Eigen::Index k = 0; k <= last; ++k) {
         c.spectrum_frequency_rad_per_s.push_back(s.spectrum.frequency_rad_s(k));
         c.spectrum_density.push_back(s.spectrum.density(k));

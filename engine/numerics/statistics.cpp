@@ -313,4 +313,18 @@ ChannelStatistics analyze_channel(std::span<const double> x, double dt_s,
   return c;
 }
 
+Eigen::Index spectrum_last_significant_bin(const Spectrum& sp) {
+  double total = 0.0;
+  for (Eigen::Index k = 0; k < sp.density.size(); ++k) total += sp.density(k);
+  Eigen::Index last = sp.density.size() - 1;
+  for (double tail = 0.0; last > 1 && tail + sp.density(last) <= 1e-6 * total; --last) tail += sp.density(last);
+  return last;
+}
+
+std::size_t welch_segment_length(std::size_t n) {
+  std::size_t s = 16;
+  while (s * 2 <= n / 8) s *= 2;
+  return std::min(s, n);
+}
+
 }  // namespace spiral::engine

@@ -161,4 +161,13 @@ ChannelStatistics analyze_channel(std::span<const double> x, double dt_s,
                                   std::size_t welch_segment_length,
                                   const ExtremeOptions& options = {});
 
+/// Welch segment length for a record of `samples` samples: the largest power
+/// of two <= samples/8 (>= 8 segments averaged with 50 % overlap, ~15 for a
+/// full record), at least 16 samples (and at most `samples`).
+std::size_t welch_segment_length(std::size_t samples);
+
+/// Last bin of a Welch spectrum that matters: the bins above it hold at most
+/// 1e-6 of the variance (the Nyquist tail of a 0.5 s record is noise).
+Eigen::Index spectrum_last_significant_bin(const Spectrum& spectrum);
+
 }  // namespace spiral::engine

@@ -3,6 +3,7 @@
 // offset under steady loads, seeded reproducibility, slow-drift mean, and the
 // input errors of the analysis.
 #include "design/sc_analysis.hpp"
+#include "engine/hull/motion_raos.hpp"
 
 #include <gtest/gtest.h>
 
@@ -474,7 +475,7 @@ TEST(ScAnalysis, RaosFromExcitationSolveTheMotionEquation) {
   const engine::Matrix6d mass = engine::Matrix6d::Identity() * 1.0e7;
   const engine::Matrix6d damping = engine::Matrix6d::Identity() * 5.0e4;
   const engine::Matrix6d stiffness = engine::Matrix6d::Identity() * 3.0e6;
-  const auto rao = motion_raos_from_excitation(x, radiation, mass, damping, stiffness);
+  const auto rao = engine::motion_raos_from_excitation(x, radiation, mass, damping, stiffness);
   const double w = 0.6;
   const double a = 3.0e6;  // linear between 2e6 at 0.2 and 4e6 at 1.0 rad/s
   const double b = 2.0e5 + 5.0e4;
