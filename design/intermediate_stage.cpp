@@ -1,4 +1,5 @@
 #include "design/intermediate_stage.hpp"
+#include "design/riser_checks.hpp"
 
 #include <algorithm>
 #include <chrono>

@@ -16,6 +16,7 @@
 #include "design/input_error.hpp"
 #include "design/soz_symmetry.hpp"
 #include "design/static_case.hpp"
+#include "design/riser_checks.hpp"
 #include "engine/common/rigid_body.hpp"
 #include "engine/common/parallel_for.hpp"
 #include "engine/lines/catenary.hpp"

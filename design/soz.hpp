@@ -70,6 +70,7 @@
 #include <string>
 #include <vector>
 
+#include "design/riser_checks.hpp"
 #include "design/riser_model.hpp"
 #include "design/static_case.hpp"
 #include "design/validated_project.hpp"

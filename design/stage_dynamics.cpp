@@ -15,8 +15,6 @@ namespace spiral::design {
 namespace {
 
 constexpr double kRadToDeg = 180.0 / std::numbers::pi;
-/// Characteristic strength of a mooring line in DNV-OS-E301 Ch. 2 Sec. 2 [4.1]: 0.95 MBL.
-constexpr double kDnvCharacteristicStrengthFraction = 0.95;
 /// The stage's storm: a 3-h sea state (the MPM's target duration) at the
 /// output step of `spiral analyze`, seed 1 (reproducible).
 constexpr double kStormDuration_s = 10800.0;
@@ -72,24 +70,6 @@ StormChannel summarize_storm_channel(std::string name, std::string unit, std::ve
   }
   c.values = std::move(values);
   return c;
-}
-
-DynamicTensionCheck dynamic_tension_check(const MooringCriteria& criteria, bool damaged,
-                                          double mean_N, double mpm_N, double mbl_N) {
-  DynamicTensionCheck out;
-  if (!(mbl_N > 0.0)) return out;
-  if (criteria.code == MooringCode::dnv_os_e301) {
-    const DnvOsE301Factors f = criteria.dnv_os_e301.value_or(dnv_os_e301_defaults(1));
-    const double g_mean = damaged ? f.als_mean : f.uls_mean;
-    out.factor = damaged ? f.als_dynamic : f.uls_dynamic;
-    out.utilization = (g_mean * mean_N + out.factor * std::max(0.0, mpm_N - mean_N)) /
-                      (kDnvCharacteristicStrengthFraction * mbl_N);
-    return out;
-  }
-  const ApiRp2skFactors f = criteria.api_rp_2sk.value_or(ApiRp2skFactors{});
-  out.factor = damaged ? f.damaged_dynamic : f.intact_dynamic;
-  out.utilization = mpm_N * out.factor / mbl_N;
-  return out;
 }
 
 StageDynamics run_stage_dynamics(const ValidatedProject& vp, const StaticCaseResult& statics,

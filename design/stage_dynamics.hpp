@@ -6,10 +6,7 @@
 // (moments, Welch spectrum, MPM of the 3-h maximum) and the two dynamic
 // checks:
 //  - tension: the line's MPM fairlead tension against its fairlead segment's
-//    MBL with the code's dynamic factor. API RP 2SK: T_mpm · SF_dyn / MBL ≤ 1
-//    (SF_dyn = intact_dynamic or damaged_dynamic). DNV-OS-E301 Ch. 2 Sec. 2
-//    [2.2]: (γ_mean T_mean + γ_dyn (T_mpm − T_mean)) / (0.95 MBL) ≤ 1, with the
-//    ULS (intact) or ALS (damaged) factors.
+//    MBL with the code's dynamic factor (mooring_checks.hpp).
 //  - extreme offset: the MPM horizontal offset against the platform SOZ in
 //    the direction of the largest sampled offset (when a zone is given).
 // MPM: the Gumbel estimate of engine/numerics/statistics.hpp (segment maxima,
@@ -20,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "design/mooring_checks.hpp"
 #include "design/sc_analysis.hpp"
 #include "design/soz.hpp"
 #include "design/static_case.hpp"
@@ -76,14 +74,6 @@ struct StageDynamics {
 /// Channel statistics of a uniformly sampled record (dt_s > 0).
 StormChannel summarize_storm_channel(std::string name, std::string unit, std::vector<double> values,
                                  double dt_s);
-
-/// Dynamic factor and utilization of the code check in the file comment.
-struct DynamicTensionCheck {
-  double factor = 0.0;
-  double utilization = 0.0;
-};
-DynamicTensionCheck dynamic_tension_check(const MooringCriteria& criteria, bool damaged,
-                                          double mean_N, double mpm_N, double mbl_N);
 
 /// MBL of the fairlead (top) segment of a mooring line; 0 for an unknown line.
 double fairlead_segment_mbl(const ValidatedProject& project, const std::string& line_name);

@@ -12,6 +12,7 @@
 #include "design/environment_loads.hpp"
 #include "design/hull_model.hpp"
 #include "design/mooring_model.hpp"
+#include "design/riser_checks.hpp"
 #include "engine/analysis/fe_static_line.hpp"
 #include "engine/analysis/line_array.hpp"
 #include "engine/analysis/static_equilibrium.hpp"

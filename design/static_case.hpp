@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "design/riser_checks.hpp"
 #include "design/riser_model.hpp"
 #include "design/statics_study.hpp"
 #include "design/validated_project.hpp"

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "design/statics_output.hpp"
+#include "design/riser_checks.hpp"
 
 namespace spiral::design {
 

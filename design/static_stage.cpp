@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "design/mooring_model.hpp"
+#include "design/riser_checks.hpp"
 #include "engine/analysis/line_array.hpp"
 #include "engine/common/solver_error.hpp"
 
@@ -16,8 +17,6 @@ namespace spiral::design {
 namespace {
 
 constexpr double kDegToRad = std::numbers::pi / 180.0;
-/// Characteristic strength of a mooring line in DNV-OS-E301 Ch. 2 Sec. 2 [4.1]: 0.95 MBL.
-constexpr double kDnvCharacteristicStrengthFraction = 0.95;
 
 CaseCheck check_case(const Project& project, const StaticCaseResult& result) {
   CaseCheck check;
@@ -138,15 +137,6 @@ StageSoz preliminary_soz_settings(const Project& project) {
   for (const Stage& stage : project.stages)
     if (stage.name == "preliminary") return stage.soz;
   return StageSoz{};
-}
-
-double mooring_safety_factor(const MooringCriteria& criteria, bool damaged) {
-  if (criteria.code == MooringCode::dnv_os_e301) {
-    const DnvOsE301Factors f = criteria.dnv_os_e301.value_or(dnv_os_e301_defaults(1));
-    return (damaged ? f.als_mean : f.uls_mean) / kDnvCharacteristicStrengthFraction;
-  }
-  const ApiRp2skFactors f = criteria.api_rp_2sk.value_or(ApiRp2skFactors{});
-  return damaged ? f.damaged_quasi_static : f.intact_quasi_static;
 }
 
 StaticStageResults run_static_stage(const ValidatedProject& validated,

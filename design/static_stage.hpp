@@ -14,18 +14,14 @@
 // hydrodynamics, it runs the enhanced S-C 3-h storm of the governing load
 // case (stage_dynamics.hpp: dynamic tension and extreme offset checks).
 //
-// Code check (DESIGN.md §6). API RP 2SK, quasi-static: a line passes when
-// T_max · SF ≤ MBL, SF = intact_quasi_static (intact) or damaged_quasi_static
-// (one line removed), i.e. code utilization T_max · SF / MBL ≤ 1. DNV-OS-E301
-// with a static (mean) tension only: T_d = γ_mean · T_max against the
-// characteristic strength S_C = 0.95 MBL, i.e. SF = γ_mean / 0.95 with γ_mean
-// the ULS (intact) or ALS (damaged) mean factor.
+// Code check: the quasi-static check of mooring_checks.hpp per line and case.
 
 #include <Eigen/Core>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "design/mooring_checks.hpp"
 #include "design/soz.hpp"
 #include "design/stage_dynamics.hpp"
 #include "design/static_case.hpp"
@@ -120,9 +116,6 @@ struct StaticStageResults {
 /// Offsets of a restoring curve: 0 … 10 % of depth in 20 steps.
 inline constexpr double kRestoringMaxOffsetFractionOfDepth = 0.10;
 inline constexpr int kRestoringSteps = 20;
-
-/// Safety factor of the project's mooring code for an intact or damaged case.
-double mooring_safety_factor(const MooringCriteria& criteria, bool damaged);
 
 /// Runs the static stage. Throws InputError / engine::SolverError as
 /// run_static_case does (the message names the case and line), and

@@ -9,6 +9,7 @@
 
 #include "design/project_loader.hpp"
 #include "design/soz.hpp"
+#include "design/riser_checks.hpp"
 #include "engine/common/rigid_body.hpp"
 #include "support/soz_project.hpp"
 

@@ -12,6 +12,7 @@
 
 #include "design/project_loader.hpp"
 #include "design/project_validation.hpp"
+#include "design/riser_checks.hpp"
 #include "design/riser_model.hpp"
 #include "unit/project_fixture.hpp"
 

@@ -14,6 +14,7 @@
 #include "design/input_error.hpp"
 #include "design/project_loader.hpp"
 #include "design/project_validation.hpp"
+#include "design/riser_checks.hpp"
 #include "support/soz_project.hpp"
 
 namespace spiral::design {
