@@ -20,6 +20,7 @@
 #include "design/command_line_reference.hpp"
 #include "design/input_error.hpp"
 #include "design/level_comparison.hpp"
+#include "design/level_comparison_output.hpp"
 #include "design/model_hash.hpp"
 #include "design/mooring_model.hpp"
 #include "design/project_summary.hpp"

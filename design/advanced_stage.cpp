@@ -20,12 +20,6 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-const ChannelSummary* find_channel(const LevelSummary& level, const std::string& name) {
-  for (const ChannelSummary& c : level.channels)
-    if (c.name == name) return &c;
-  return nullptr;
-}
-
 /// The final checks of one case from its coupled level summary: every
 /// mooring line's tension and every riser's top tension are its channels
 /// tension_<name>_N (the coupled FE lines, summarize_channels).

@@ -22,7 +22,6 @@
 // short for the fit). Differences: 100 (level − coupled) / |coupled|.
 
 #include <cstdint>
-#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
@@ -84,12 +83,9 @@ LevelSummary summarize_level(const DynamicAnalysisResult& result);
 /// 100 (level − coupled) / |coupled|; 0 when the coupled value is 0.
 double percent_difference(double level, double coupled);
 
-/// {"load_case", "seed", "duration_s", "levels": {"sc": {"wall_s",
-/// "speedup_vs_coupled", "max_offset_m", "channels": {name: {mean, std, max,
-/// mpm, "diff_pct_vs_coupled": {…}}}}, …}} (docs/output-format.md).
-nlohmann::json comparison_to_json(const LevelComparison& comparison);
-
-/// A compact side-by-side table (max and MPM per level, % against coupled).
-std::string comparison_table(const LevelComparison& comparison);
+/// The level's summary, null when the level is missing or failed.
+const LevelSummary* find_level(const LevelComparison& comparison, AnalysisLevel level);
+/// The channel named `name` of a level, null when it has none.
+const ChannelSummary* find_channel(const LevelSummary& level, const std::string& name);
 
 }  // namespace spiral::design

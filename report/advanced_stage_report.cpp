@@ -17,12 +17,6 @@ constexpr double kN = 1e-3;  // N -> kN
 /// The two levels' colours in every comparison plot: S-C blue, coupled orange.
 constexpr std::size_t kScColor = 0, kCoupledColor = 1;
 
-const design::ChannelSummary* find_channel(const design::LevelSummary& level, const std::string& name) {
-  for (const auto& c : level.channels)
-    if (c.name == name) return &c;
-  return nullptr;
-}
-
 std::string duration_text(double s) {
   return s >= 3600.0 ? fmt::format("{:.0f} s ({:.3g} h)", s, s / 3600.0) : fmt::format("{:.0f} s", s);
 }
@@ -117,9 +111,9 @@ void comparison_rows(Table& t, const design::LevelComparison& cmp, const std::st
                      const std::string& sc_name, const std::string& coupled_name, double scale, int decimals) {
   const design::LevelSummary& sc = cmp.levels.front();
   const design::LevelSummary& coupled = cmp.levels.back();
-  const design::ChannelSummary* ref = find_channel(coupled, coupled_name);
+  const design::ChannelSummary* ref = design::find_channel(coupled, coupled_name);
   for (const design::LevelSummary* level : {&sc, &coupled}) {
-    const design::ChannelSummary* c = find_channel(*level, level == &sc ? sc_name : coupled_name);
+    const design::ChannelSummary* c = design::find_channel(*level, level == &sc ? sc_name : coupled_name);
     if (c == nullptr) {
       t.rows.push_back({text(label), text(design::to_string(level->level)), text("–"), text("–"), text("–"),
                         text("–"), text("–"), text("–"), text("–"), text("–")});

@@ -20,6 +20,7 @@
 
 #include "design/coupled_analysis.hpp"
 #include "design/level_comparison.hpp"
+#include "design/level_comparison_output.hpp"
 #include "design/environment_loads.hpp"
 #include "design/line_dynamics.hpp"
 #include "design/mooring_model.hpp"
