@@ -7,8 +7,8 @@
 // speed-up; surge, offset and tension of both levels on one plot) and the
 // coupled storm. Reads results only.
 
-#include "design/advanced_stage.hpp"
-#include "design/validated_project.hpp"
+#include "design/stages/advanced_stage.hpp"
+#include "design/project/validated_project.hpp"
 #include "report/document.hpp"
 #include "report/static_stage_report.hpp"
 

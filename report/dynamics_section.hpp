@@ -5,7 +5,7 @@
 // statistics table (mean, std, extremes, MPM) with the level and the
 // wall-clock cost, and the dynamic checks. Reads results only.
 
-#include "design/stage_dynamics.hpp"
+#include "design/stages/stage_dynamics.hpp"
 #include "report/document.hpp"
 #include "report/plot.hpp"
 

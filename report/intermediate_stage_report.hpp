@@ -4,8 +4,8 @@
 // load cases and the critical ones, the SOZ with every storm's MPM offset,
 // and the storms of the critical cases. Reads results only.
 
-#include "design/intermediate_stage.hpp"
-#include "design/validated_project.hpp"
+#include "design/stages/intermediate_stage.hpp"
+#include "design/project/validated_project.hpp"
 #include "report/document.hpp"
 #include "report/static_stage_report.hpp"
 

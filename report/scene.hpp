@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "design/project.hpp"
+#include "design/project/project.hpp"
 #include "engine/hull/wamit_gdf.hpp"
 #include "report/image.hpp"
 

@@ -8,7 +8,7 @@
 #include <optional>
 #include <vector>
 
-#include "design/soz.hpp"
+#include "design/soz/soz.hpp"
 #include "report/document.hpp"
 
 namespace spiral::report {

@@ -6,9 +6,9 @@
 
 #include <vector>
 
-#include "design/project.hpp"
-#include "design/static_case.hpp"
-#include "design/static_stage.hpp"
+#include "design/project/project.hpp"
+#include "design/analysis/static_case.hpp"
+#include "design/stages/static_stage.hpp"
 #include "report/scene.hpp"
 
 namespace spiral::report {

@@ -6,8 +6,8 @@
 
 #include <string>
 
-#include "design/static_stage.hpp"
-#include "design/validated_project.hpp"
+#include "design/stages/static_stage.hpp"
+#include "design/project/validated_project.hpp"
 #include "report/document.hpp"
 
 namespace spiral::report {

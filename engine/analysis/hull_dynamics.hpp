@@ -136,7 +136,7 @@ void hull_state_derivative(const HullEquations& eq, const VelocityHistory* histo
 /// low-frequency system is non-stiff (periods 17–120 s) and smooth, where high
 /// order pays; rtol 1e-10, atol 1e-10 m and m/s, 1e-12 rad and rad/s. The
 /// integration error is then far below any engineering resolution (measured
-/// in tests/validation/hull_free_decay_test.cpp: period error ~1e-6, energy
+/// in tests/validation/engine/analysis/hull_free_decay_test.cpp: period error ~1e-6, energy
 /// drift 7e-7 over 20 surge periods of OC4) and a 3-hour S-C run takes
 /// milliseconds. With a NonlinearLineForce from catenary solves, the force
 /// carries the line solvers' closure noise (~1e-9 relative): raise rtol to

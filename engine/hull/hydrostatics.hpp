@@ -12,7 +12,7 @@
 // "Sea Loads on Ships and Offshore Structures" (1990) ch. 2, restoring
 // coefficients). Section numbers throughout are recalled, not re-read;
 // the formulas were checked against the box-barge closed form and the OC4
-// numbers (tests/validation/hydrostatics_test.cpp):
+// numbers (tests/validation/engine/hull/hydrostatics_test.cpp):
 //   C33 = rho g A_wp
 //   C34 = C43 =  rho g  S_y          (S_y = ∫ y dA = A_wp y_f)
 //   C35 = C53 = -rho g  S_x          (S_x = ∫ x dA = A_wp x_f)

@@ -26,7 +26,7 @@
 // strip model has no radiation damping and no free-surface memory: at short
 // waves (kR > ~0.3) diffraction (MacCamy & Fuchs 1954) lowers and shifts the
 // inertia force and the model over-predicts it (measured against HAMS in
-// tests/validation/morison_hull_test.cpp).
+// tests/validation/engine/hull/morison_hull_test.cpp).
 //
 // Linear (frequency-domain) quantities use the geometry at rest up to the
 // mean water level z = 0 (global z): added mass and first-order excitation

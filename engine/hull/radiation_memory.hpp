@@ -56,7 +56,7 @@ struct RadiationMemoryInput {
   /// Largest B_ii(w_end) / max_w B_ii accepted at either end of the table;
   /// 5 %: the step at w_max then puts at most ~B(w_max)/(pi t) of ringing into
   /// K(t), a few % of B(w) in the kernel's cosine transform (measured on OC4 in
-  /// tests/validation/radiation_memory_test.cpp).
+  /// tests/validation/engine/hull/radiation_memory_test.cpp).
   double tail_ratio_limit = 0.05;
 };
 

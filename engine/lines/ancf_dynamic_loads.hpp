@@ -366,7 +366,7 @@ inline double dynamic_element_forces(const ElementProperties& e, const DynamicEl
 /// dynamic_element_forces) plus the force-offset term. One pass over the
 /// Gauss points builds each term's 3×3 block per pair of shape functions
 /// once; equal to element_forces_and_tangent + add_dynamic_element_forces to
-/// round-off (tests/unit/ancf_dynamic_loads_test.cpp). All three are
+/// round-off (tests/unit/engine/lines/ancf_dynamic_loads_test.cpp). All three are
 /// symmetric. Returns the fraction of the element in seabed contact, as
 /// dynamic_element_forces.
 inline double element_newton_matrices(const ElementProperties& e, const DynamicElementProperties& d,

@@ -4,8 +4,8 @@
 // and cold (every line from its default initial guess).
 #include <benchmark/benchmark.h>
 
-#include "design/mooring_model.hpp"
-#include "design/validated_project.hpp"
+#include "design/model/mooring_model.hpp"
+#include "design/project/validated_project.hpp"
 #include "engine/analysis/line_array.hpp"
 
 namespace {

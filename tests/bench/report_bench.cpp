@@ -6,8 +6,8 @@
 
 #include <filesystem>
 
-#include "design/static_stage.hpp"
-#include "design/validated_project.hpp"
+#include "design/stages/static_stage.hpp"
+#include "design/project/validated_project.hpp"
 #include "report/render3d.hpp"
 #include "report/report_writer.hpp"
 #include "report/stage_scene.hpp"

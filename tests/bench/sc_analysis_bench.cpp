@@ -14,7 +14,7 @@
 
 #include <cmath>
 
-#include "design/sc_analysis.hpp"
+#include "design/analysis/dynamic_analysis.hpp"
 
 namespace {
 

@@ -8,7 +8,7 @@
 
 #include <algorithm>
 
-#include "design/soz.hpp"
+#include "design/soz/soz.hpp"
 
 namespace spiral::design {
 namespace {

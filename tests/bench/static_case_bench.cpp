@@ -3,7 +3,7 @@
 // 6×6 stiffness at the equilibrium (issue 3 targets: < 1 s and < 50 ms).
 #include <benchmark/benchmark.h>
 
-#include "design/static_case.hpp"
+#include "design/analysis/static_case.hpp"
 
 namespace {
 

@@ -15,7 +15,7 @@ namespace {
 // The OC4 definition report's stiffness (Robertson et al. 2014, Eq. 5-15), ±1 %:
 // three significant figures and the report's own catenary model.
 constexpr double kReportTolerance = 0.01;
-// Analytic tangent vs central differences (see tests/validation/line_array_stiffness_test.cpp).
+// Analytic tangent vs central differences (see tests/validation/engine/analysis/line_array_stiffness_test.cpp).
 constexpr double kFiniteDifferenceCheck = 1e-6;
 
 TEST(CliStaticCase, StiffnessJsonOfOc4StillWater) {

@@ -1,0 +1,40 @@
+#pragma once
+// The fully coupled analysis of one load case (DESIGN.md §1, the highest
+// level): the hull's low-frequency equations and every intact mooring line
+// and every riser as a dynamic FE line, integrated together
+// (engine/analysis/coupled_dynamics.hpp).
+//
+// Built from the same pieces as the S-C levels, so that the levels differ
+// only in how the lines enter:
+//   * start: the S-C static case (run_static_case, current on the lines) —
+//     hull at its equilibrium, each line's FE statics there with the case's
+//     current (design/analysis/line_dynamics.hpp: polyester at its dynamic EA,
+//     seabed damping and friction), risers from their foot to the hang-off;
+//   * hull: M + A(w_LF), B_lin, quadratic damping, C_hydro, F_hs0 and the
+//     same external low-frequency force (slow drift, wind with gusts,
+//     current on the hull, or the Morison members) on the same seeded
+//     realizations as the S-C run of that seed; with `radiation: memory` the
+//     coupled run keeps A(w_LF) (a note says so: the memory is not in the
+//     coupled system);
+//   * wave-frequency motion: the S-C level's RAO motion (same seed),
+//     superposed on the hull state at the fairleads (built up over the
+//     request's line_dynamics_ramp_s), so that the lines move with LF + WF
+//     and their forces act on the LF equations — including the WF line
+//     tension and drag, which is what the S-C levels do not see;
+//   * the lines' forces replace F0 − K (q − q0) altogether.
+// Outputs as the other levels (DynamicAnalysisResult): motions, quasi-static
+// tensions at the total motion (for comparison) and the coupled tensions in
+// `dynamic_tensions` (mooring lines, then risers), with the IDA statistics.
+//
+// Errors: as run_dynamic_analysis; a failing integration throws
+// engine::SolverError naming the case, the time reached, the part of the
+// system with the largest local error (a line, or the hull) and the cause.
+
+#include "design/analysis/dynamic_analysis.hpp"
+
+namespace spiral::design {
+
+DynamicAnalysisResult run_coupled_analysis(const ValidatedProject& project,
+                                           const DynamicAnalysisRequest& request);
+
+}  // namespace spiral::design

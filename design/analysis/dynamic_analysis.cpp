@@ -1,0 +1,595 @@
+// Uncoupled and semi-coupled time-domain hull analyses of one load case
+// (dynamic_analysis.hpp has the method and its sources).
+#include "design/analysis/dynamic_analysis.hpp"
+
+#include <fmt/format.h>
+
+#include <Eigen/LU>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <memory>
+#include <numbers>
+
+#include "design/project/command_line_reference.hpp"
+#include "design/model/environment_loads.hpp"
+#include "design/model/hull_model.hpp"
+#include "design/analysis/coupled_analysis.hpp"
+#include "design/analysis/line_hydrodynamics.hpp"
+#include "design/model/mooring_model.hpp"
+#include "design/project/project_validation.hpp"
+#include "engine/analysis/fairlead_velocity.hpp"
+#include "engine/analysis/forcing_table.hpp"
+#include "engine/analysis/line_array.hpp"
+#include "engine/numerics/statistics.hpp"
+#include "engine/environment/wave_realization.hpp"
+#include "engine/environment/wind.hpp"
+#include "engine/environment/wind_realization.hpp"
+#include "engine/hull/first_order_wave_response.hpp"
+#include "engine/hull/motion_raos.hpp"
+#include "engine/hull/mean_environmental_loads.hpp"
+#include "engine/hull/morison_hull.hpp"
+#include "engine/hull/radiation_memory.hpp"
+#include "engine/hull/slow_drift.hpp"
+#include "engine/hull/wamit_3.hpp"
+
+namespace spiral::design {
+namespace {
+
+/// Seed offset of the wind gust stream, so that waves and wind are
+/// independent for one user seed (a large prime: no overlap for nearby seeds).
+constexpr std::uint64_t kWindSeedOffset = 1000003;
+/// Wave components per direction of the realization (wave_realization.hpp:
+/// autocorrelation leakage ~ 1/sqrt(2N) = 0.05 for N = 200).
+constexpr int kWaveComponents = 200;
+/// Directions of a short-crested sea.
+constexpr int kSpreadingDirections = 11;
+/// Integrator tolerance of the forced runs. The default 1e-10 of
+/// hull_dynamics.hpp is for free decays; with random forcing a relative error
+/// of 1e-7 is far below the seed-to-seed scatter of any statistic (a few %),
+/// and it lies above the catenary closure noise (~1e-9 relative) of the
+/// uncoupled line force (hull_dynamics.hpp).
+constexpr double kForcedRunRelTol = 1e-7;
+/// Absolute tolerances of the forced runs: 1e-6 m (m/s) and 1e-8 rad (rad/s),
+/// a thousandth of a millimetre against offsets of metres; the free-decay
+/// defaults (1e-10 m) make CVODE resolve the hull's micrometre response to the
+/// 1 Hz end of the wind gust and the wave-frequency end of the drift force.
+constexpr double kForcedRunAbsTolTranslation = 1e-6;
+constexpr double kForcedRunAbsTolRotation = 1e-8;
+
+/// Morison hull in waves: LF and WF motions come out of one integration and
+/// are split by a zero-phase low-pass at this fraction of the realization's
+/// lowest wave frequency (0.5 w_p by default, so the cut is at 0.25 w_p):
+/// the wave band is then wholly WF, the moored surge/sway/yaw modes (periods
+/// of minutes) wholly LF.
+constexpr double kMorisonSplitFraction = 0.5;
+
+/// The Morison load of the members with what it points to (the flow holds
+/// raw pointers into this struct; it lives behind a shared_ptr, never moved).
+struct MorisonForcing {
+  engine::MorisonHull hull;
+  std::shared_ptr<const engine::WaveRealization> sea;
+  std::optional<engine::CurrentProfile> current;
+  engine::MorisonFlow flow;
+  engine::HullPose pose;
+};
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+engine::CoefficientTable table_of(const HullLoadCoefficients& c) {
+  return {c.headings_rad, c.surge_m2, c.sway_m2, c.yaw_m3};
+}
+
+std::string environment_path(const Project& project, const std::string& name, const char* leaf) {
+  for (std::size_t i = 0; i < project.environments.size(); ++i) {
+    if (project.environments[i].name == name) return fmt::format("environments[{}].{}", i, leaf);
+  }
+  return leaf;
+}
+
+/// Heading outside a hydrodynamic database: an input error at the environment.
+[[noreturn]] void heading_error(const Project& project, const std::string& environment,
+                                const std::string& what, const std::exception& e) {
+  throw InputError({make_issue(project, environment_path(project, environment, "waves.heading_deg"),
+                               "heading_in_database", fmt::format("{}: {}", what, e.what()))});
+}
+
+engine::WaveRealization realize_sea(const Project& project, const Waves& waves, double duration_s,
+                                    std::uint64_t seed) {
+  engine::WaveRealizationInput input;
+  input.spectrum = wave_spectrum_of(waves);
+  input.mean_heading_rad = waves.heading_rad;
+  if (waves.spreading_s) {
+    input.spreading =
+        engine::DirectionalSpreading{engine::SpreadingForm::cos_2s, *waves.spreading_s};
+    input.direction_count = kSpreadingDirections;
+  }
+  input.components_per_direction = kWaveComponents;
+  input.duration_s = duration_s;
+  input.seed = seed;
+  input.water_depth_m = project.site.depth_m;
+  input.water = {project.site.water_density_kg_per_m3, project.site.gravity_m_per_s2};
+  return engine::make_wave_realization(input);
+}
+
+std::vector<double> output_times(double duration_s, double step_s) {
+  std::vector<double> t;
+  const auto n = static_cast<long>(std::floor(duration_s / step_s + 1e-9));
+  for (long k = 0; k <= n; ++k) t.push_back(static_cast<double>(k) * step_s);
+  return t;
+}
+
+engine::HullSimulationOptions forced_run_options(const DynamicAnalysisRequest& request) {
+  engine::HullSimulationOptions options;
+  options.output_times_s = output_times(request.duration_s, request.output_step_s);
+  options.integrator.relative_tolerance = kForcedRunRelTol;
+  Eigen::VectorXd atol(12);
+  for (int i = 0; i < 12; ++i)
+    atol(i) = (i % 6) < 3 ? kForcedRunAbsTolTranslation : kForcedRunAbsTolRotation;
+  options.integrator.absolute_tolerances = atol;
+  return options;
+}
+
+/// Wave-frequency motions (global, m, rad) at `times` from the .4 RAOs or
+/// from .1 + .3; empty when the project has neither (or no waves).
+std::optional<Eigen::Matrix<double, 6, Eigen::Dynamic>> wave_frequency_motion(
+    const Project& project, const Environment& environment, const DynamicModel& model,
+    const DynamicAnalysisRequest& request, const Eigen::VectorXd& times) {
+  const auto& hydro = project.hull.hydrodynamics;
+  if (!environment.waves || !hydro || !(hydro->rao_file || hydro->excitation_file))
+    return std::nullopt;
+  const HullModel hull = build_hull_model(project);
+  const engine::WamitReadOptions read = wamit_options_of(project, *hydro);
+  const engine::MotionRaoTable raos =
+      hydro->rao_file ? engine::read_wamit_4(*hydro->rao_file, read)
+                      : engine::motion_raos_from_excitation(
+                            engine::read_wamit_3(*hydro->excitation_file, read), *hull.radiation,
+                            hull.mass_matrix, model.hull.linear_damping,
+                            hull.statics.hydrostatic_stiffness + model.statics.stiffness);
+  const engine::WaveRealization sea =
+      realize_sea(project, *environment.waves, request.duration_s, request.seed);
+  const Eigen::Vector3d& ref = project.hull.reference_point_g;
+  try {
+    const engine::FirstOrderWaveSeries series = engine::prepare_first_order_series(
+        sea, raos,
+        {ref.x() + model.statics.offset(0), ref.y() + model.statics.offset(1),
+         model.statics.offset(5)});
+    return engine::evaluate_first_order_many(series, times);
+  } catch (const std::invalid_argument& e) {
+    heading_error(project, environment.name, "wave-frequency RAOs (hull.hydrodynamics)", e);
+  }
+}
+
+}  // namespace
+
+std::optional<Eigen::Matrix<double, 6, Eigen::Dynamic>> wave_frequency_motions(
+    const ValidatedProject& validated, const DynamicModel& model,
+    const DynamicAnalysisRequest& request, const Eigen::VectorXd& times_s) {
+  const Project& project = validated.project;
+  const LoadCase& load_case = find_load_case(project, request.load_case);
+  return wave_frequency_motion(project, environment_of(project, load_case), model,
+                               request, times_s);
+}
+
+const char* to_string(AnalysisLevel level) {
+  switch (level) {
+    case AnalysisLevel::uncoupled:
+      return "uncoupled";
+    case AnalysisLevel::semi_coupled:
+      return "sc";
+    case AnalysisLevel::semi_coupled_enhanced:
+      return "sc-enhanced";
+    case AnalysisLevel::coupled:
+      return "coupled";
+  }
+  return "?";
+}
+
+AnalysisLevel parse_analysis_level(const std::string& name, const Project& project) {
+  for (AnalysisLevel level : {AnalysisLevel::uncoupled, AnalysisLevel::semi_coupled,
+                              AnalysisLevel::semi_coupled_enhanced, AnalysisLevel::coupled}) {
+    if (name == to_string(level)) return level;
+  }
+  throw command_line_error(
+      project, "--level",
+      fmt::format("unknown analysis level \"{}\"; allowed: uncoupled | sc | sc-enhanced | coupled",
+                  name));
+}
+
+DynamicModel build_dynamic_model(const ValidatedProject& validated,
+                                 const DynamicAnalysisRequest& request) {
+  const Project& project = validated.project;
+  if (!(request.duration_s > 0.0) || !(request.output_step_s > 0.0) ||
+      request.output_step_s > request.duration_s) {
+    throw command_line_error(
+        project, "--duration",
+        fmt::format("need duration > 0 s and 0 < output step <= duration, got {} s and {} s",
+                    request.duration_s, request.output_step_s));
+  }
+  const LoadCase& load_case = find_load_case(project, request.load_case);
+  const Environment& environment = environment_of(project, load_case);
+
+  DynamicModel model;
+  try {
+    model.statics = request.statics ? *request.statics
+                                    : run_static_case(validated, {request.load_case, std::nullopt, false});
+  } catch (const std::invalid_argument& e) {
+    if (std::string(e.what()).find("heading") != std::string::npos && environment.waves) {
+      heading_error(project, environment.name, "mean drift (hull.mean_drift)", e);
+    }
+    throw;
+  }
+  model.equilibrium_wall_s = model.statics.equilibrium_wall_s;
+  model.reduction_wall_s = model.statics.stiffness_wall_s;
+  model.notes = model.statics.notes;
+  model.initial_offset = model.statics.offset;
+
+  // Hull.
+  const HullModel hull = build_hull_model(project);
+  model.hull.mass = hull.mass_matrix;
+  model.hull.added_mass = hull.low_frequency_added_mass;
+  model.hull.hydrostatic_stiffness = hull.statics.hydrostatic_stiffness;
+  model.hull.hydrostatic_force_at_rest = hull.statics.rest_force;
+  if (project.hull.hydrodynamics) {
+    const HullHydrodynamics& hydro = *project.hull.hydrodynamics;
+    model.hull.linear_damping.diagonal() = hydro.linear_damping;
+    model.hull.quadratic_damping = hydro.quadratic_damping;
+    if (hydro.radiation == RadiationModel::memory) {
+      // Cummins' equation: A(inf) and the retardation kernel from the .1 data
+      // (engine/hull/radiation_memory.hpp); the data must reach the
+      // frequencies where B(w) has decayed, else an input error.
+      try {
+        model.radiation_memory = engine::make_radiation_memory(
+            *hull.radiation, {hydro.memory_duration_s, hydro.memory_time_step_s});
+      } catch (const engine::RadiationDataError& e) {
+        throw InputError({make_issue(project, "hull.hydrodynamics.radiation",
+                                     "radiation_memory_data", e.what())});
+      }
+      model.hull.added_mass = model.radiation_memory->added_mass_infinite;
+      model.hull.radiation_memory = model.radiation_memory->kernel;
+      model.notes.push_back(fmt::format(
+          "radiation memory: A(inf) {} and a {:g} s retardation kernel at {:g} s (Cummins 1962) "
+          "instead of A(w_LF)",
+          model.radiation_memory->added_mass_infinite_from_file
+              ? "from the file's zero-period row"
+              : fmt::format("from Ogilvie's relation over {} frequencies >= {:.3g} rad/s",
+                            model.radiation_memory->ogilvie_frequencies,
+                            model.radiation_memory->ogilvie_omega_min_rad_per_s),
+          hydro.memory_duration_s, hydro.memory_time_step_s));
+    }
+  } else {
+    model.notes.push_back(
+        "no hull.hydrodynamics: the hull has no added mass and no wave-frequency motions");
+  }
+
+  // Lines.
+  const Eigen::Vector3d reference_point = project.hull.reference_point_g;
+  const std::string damaged = load_case.damaged_line.value_or("");
+  engine::LinearizedLines linearized{model.statics.line_force, model.statics.stiffness,
+                                     model.statics.offset, std::nullopt, std::nullopt};
+  if (request.level == AnalysisLevel::uncoupled) {
+    auto mooring = std::make_shared<LineArrayModel>(build_mooring_model(project, damaged));
+    const engine::HullPose pose_eq =
+        engine::pose_from_offset(reference_point, model.statics.offset);
+    // The rest of the array (risers; current drag on model: fe lines) held at
+    // its linearization about the S-C equilibrium: F_rest0 − K_rest (q − q0).
+    const engine::Vector6d rest_force =
+        model.statics.line_force - engine::evaluate_line_array(mooring->lines, pose_eq).force;
+    engine::Matrix6d rest_stiffness = engine::Matrix6d::Zero();
+    for (std::size_t i = model.statics.lines.size(); i < model.statics.line_stiffness.size(); ++i) {
+      rest_stiffness += model.statics.line_stiffness[i];
+    }
+    if (!model.statics.risers.empty()) {
+      model.notes.push_back(
+          "uncoupled: risers enter linearized about the static equilibrium (F0 − K (q − q0))");
+    }
+    const engine::Vector6d q0 = model.statics.offset;
+    model.loads.lines = engine::NonlinearLineForce(
+        [mooring, reference_point, rest_force, rest_stiffness, q0](const engine::Vector6d& q) {
+          const engine::HullPose pose = engine::pose_from_offset(reference_point, q);
+          engine::Vector6d f = engine::Vector6d::Zero();
+          for (const auto& line : mooring->lines) {
+            const Eigen::Vector3d arm = pose.rotation * line->attachment_b();
+            const Eigen::Vector3d force = line->solve(pose.reference_point_g + arm).force_g;
+            f.head<3>() += force;
+            f.tail<3>() += arm.cross(force);
+          }
+          return engine::Vector6d(f + rest_force - rest_stiffness * (q - q0));
+        });
+  } else {
+    model.loads.lines = linearized;
+  }
+
+  // External force.
+  const auto forcing_start = std::chrono::steady_clock::now();
+  std::shared_ptr<const engine::WaveRealization> sea;
+  if (environment.waves) {
+    sea = std::make_shared<const engine::WaveRealization>(
+        realize_sea(project, *environment.waves, request.duration_s, request.seed));
+  }
+  model.sea = sea;
+  std::shared_ptr<const engine::SlowDriftSeries> drift;
+  if (environment.waves && project.hull.mean_drift) {
+    const engine::MeanDriftTable table = drift_table_of(project, *project.hull.mean_drift);
+    try {
+      drift = std::make_shared<const engine::SlowDriftSeries>(engine::prepare_slow_drift(
+          *sea, table,
+          {reference_point.x() + model.statics.offset(0),
+           reference_point.y() + model.statics.offset(1), model.statics.offset(5)}));
+    } catch (const std::invalid_argument& e) {
+      heading_error(project, environment.name, "slow drift (hull.mean_drift)", e);
+    }
+    const double c = std::cos(drift->yaw_rad);
+    const double s = std::sin(drift->yaw_rad);
+    const engine::Vector6d& b = drift->mean_force_b;
+    model.mean_slow_drift_force << c * b(0) - s * b(1), s * b(0) + c * b(1), b(2),
+        c * b(3) - s * b(4), s * b(3) + c * b(4), b(5);
+    model.slow_drift = [drift](double t) { return engine::slow_drift_force(*drift, t); };
+  }
+  std::optional<engine::CoefficientTable> current_table;
+  Eigen::Vector3d current_velocity = Eigen::Vector3d::Zero();
+  // Morison members: inertia, pressure and drag on the relative velocity
+  // (current + waves with Wheeler stretching − hull), the strips at the static
+  // equilibrium (engine/hull/morison_hull.hpp); they carry the current load on
+  // the hull, so the current coefficients are not added again.
+  std::shared_ptr<const MorisonForcing> members;
+  if (hull.morison) {
+    auto m = std::make_shared<MorisonForcing>();
+    m->hull = *hull.morison;
+    m->sea = sea;
+    m->current = current_profile_of(environment);
+    m->flow.sea = m->sea.get();
+    m->flow.current = m->current ? &*m->current : nullptr;
+    m->flow.water_density_kg_per_m3 = project.site.water_density_kg_per_m3;
+    if (sea) {
+      for (const auto& c : sea->components) m->flow.highest_crest_m += c.amplitude_m;
+      model.wave_split_frequency_rad_per_s = kMorisonSplitFraction * sea->omega_min_rad_per_s;
+    }
+    m->pose = engine::pose_from_offset(reference_point, model.statics.offset);
+    members = m;
+    if (project.hull.current_coefficients && m->current) {
+      model.notes.push_back(
+          "Morison hull: the members carry the current load in the dynamics; "
+          "hull.current_coefficients act in the static equilibrium only");
+    }
+  }
+  if (const auto profile = current_profile_of(environment);
+      profile && project.hull.current_coefficients && !hull.morison) {
+    current_table = table_of(*project.hull.current_coefficients);
+    current_velocity = engine::current_velocity_g(*profile, 0.0);
+  }
+  std::optional<engine::CoefficientTable> wind_table;
+  double wind_speed = 0.0;
+  Eigen::Vector3d wind_direction = Eigen::Vector3d::Zero();
+  std::shared_ptr<const engine::WindRealization> gust;
+  if (environment.wind && environment.wind->speed_m_per_s > 0.0 && project.hull.wind_coefficients) {
+    const Wind& wind = *environment.wind;
+    const double height = project.hull.wind_coefficients->reference_height_m;
+    wind_table = table_of(*project.hull.wind_coefficients);
+    wind_speed = engine::mean_wind_speed_m_per_s({wind.speed_m_per_s, height});
+    wind_direction << std::cos(wind.heading_rad), std::sin(wind.heading_rad), 0.0;
+    if (wind.spectrum != WindSpectrum::none) {
+      engine::WindRealizationInput input;
+      input.seed = request.seed + kWindSeedOffset;
+      if (wind.spectrum == WindSpectrum::npd) {
+        const engine::NpdSpectrumInput npd{wind.speed_m_per_s, height};
+        input.spectrum = [npd](double f) { return engine::npd_wind_spectrum(npd, f); };
+      } else {
+        const engine::ApiSpectrumInput api{
+            wind_speed, height, engine::api_turbulence_intensity(height) * wind_speed, 0.025};
+        input.spectrum = [api](double f) { return engine::api_wind_spectrum(api, f); };
+      }
+      gust = std::make_shared<const engine::WindRealization>(engine::make_wind_realization(input));
+    }
+  }
+  const double rho_w = project.site.water_density_kg_per_m3;
+  const double rho_a = project.site.air_density_kg_per_m3;
+  if (drift || current_table || wind_table || members) {
+    std::shared_ptr<const engine::ForcingTable> forcing;
+    if (drift || gust)
+      forcing = std::make_shared<const engine::ForcingTable>(drift.get(), gust.get(), request.duration_s);
+    model.loads.external = [=](double t, const engine::Vector6d& q, const engine::Vector6d& qd) {
+      engine::Vector6d f = engine::Vector6d::Zero();
+      Eigen::Matrix<double, 7, 1> tabulated = Eigen::Matrix<double, 7, 1>::Zero();
+      if (forcing) tabulated = forcing->at(t);
+      if (drift) f += tabulated.head<6>();
+      const Eigen::Vector3d hull_velocity(qd(0), qd(1), 0.0);
+      if (current_table) {
+        f += engine::coefficient_load(*current_table,
+                                      {rho_w, current_velocity - hull_velocity, q(5)})
+                 .load_g;
+      }
+      if (wind_table) {
+        const double u = wind_speed + tabulated(6);
+        f +=
+            engine::coefficient_load(*wind_table, {rho_a, u * wind_direction - hull_velocity, q(5)})
+                .load_g;
+      }
+      if (members) {
+        f += engine::morison_load(members->hull, members->flow, members->pose.reference_point_g,
+                                  members->pose.rotation, t, qd)
+                 .force;
+      }
+      return f;
+    };
+  }
+
+  model.forcing_wall_s = seconds_since(forcing_start);
+
+  // Enhanced S-C: line damping and added mass at the fairleads, the drag
+  // linearized on the fairlead velocities of a first plain S-C run.
+  if (request.level == AnalysisLevel::semi_coupled_enhanced) {
+    const auto start = std::chrono::steady_clock::now();
+    // The plain S-C model as built so far (same forcing, same seed).
+    const engine::HullTimeSeries plain =
+        engine::simulate_hull(model.hull, model.loads, model.initial_offset,
+                              engine::Vector6d::Zero(), forced_run_options(request));
+    Eigen::Matrix<double, 6, Eigen::Dynamic> motion = plain.position;
+    if (const auto wf = wave_frequency_motion(project, environment, model, request, plain.times_s))
+      motion += *wf;
+    LineArrayModel mooring = build_mooring_model(project, damaged);
+    std::vector<Eigen::Vector3d> fairleads_b;
+    for (const auto& line : mooring.lines) fairleads_b.push_back(line->attachment_b());
+    const auto covariance =
+        engine::fairlead_velocity_covariance(fairleads_b, reference_point, motion, request.output_step_s);
+    const LineHydrodynamicsResult lines =
+        line_hydrodynamics(mooring, engine::pose_from_offset(reference_point, model.statics.offset),
+                           covariance, rho_w);
+    linearized.added_mass = lines.added_mass;
+    linearized.damping = lines.damping;
+    model.line_added_mass = lines.added_mass;
+    model.line_damping = lines.damping;
+    model.loads.lines = linearized;
+    model.reduction_wall_s += seconds_since(start);
+    model.notes.push_back(
+        "sc-enhanced: line damping and added mass from the quasi-static line shape derivative "
+        "(normal Morison drag "
+        "linearized on the fairlead velocities of a first sc run, sqrt(8/pi) sigma); current on "
+        "the lines and line "
+        "dynamics neglected in these matrices");
+  }
+  return model;
+}
+
+DynamicAnalysisResult result_of_model(const DynamicModel& model,
+                                      const DynamicAnalysisRequest& request,
+                                      const std::string& case_name,
+                                      const std::string& environment_name) {
+  DynamicAnalysisResult result;
+  result.case_name = case_name;
+  result.environment = environment_name;
+  result.level = request.level;
+  result.seed = request.seed;
+  result.static_offset = model.statics.offset;
+  result.mean_slow_drift_force = model.mean_slow_drift_force;
+  result.line_added_mass = model.line_added_mass;
+  result.line_damping = model.line_damping;
+  result.notes = model.notes;
+  result.equilibrium_wall_s = model.equilibrium_wall_s;
+  result.reduction_wall_s = model.reduction_wall_s;
+  result.forcing_wall_s = model.forcing_wall_s;
+  return result;
+}
+
+std::vector<TensionSeries> quasi_static_fairlead_tensions(
+    const Project& project, const std::string& damaged_line,
+    const Eigen::Matrix<double, 6, Eigen::Dynamic>& total) {
+  std::vector<TensionSeries> tensions;
+  LineArrayModel mooring = build_mooring_model(project, damaged_line);
+  const Eigen::Index n = total.cols();
+  for (const auto& line : mooring.lines)
+    tensions.push_back({line->name(), std::vector<double>(n), std::vector<Eigen::Vector3d>(n)});
+  for (Eigen::Index k = 0; k < n; ++k) {
+    const engine::HullPose pose =
+        engine::pose_from_offset(project.hull.reference_point_g, total.col(k));
+    for (std::size_t l = 0; l < mooring.lines.size(); ++l) {
+      const auto& line = mooring.lines[l];
+      const Eigen::Vector3d fairlead = pose.reference_point_g + pose.rotation * line->attachment_b();
+      tensions[l].fairlead_g_m[static_cast<std::size_t>(k)] = fairlead;
+      tensions[l].tension_N[static_cast<std::size_t>(k)] = line->solve(fairlead).top_tension_N;
+    }
+  }
+  return tensions;
+}
+
+DynamicAnalysisResult run_dynamic_analysis(const ValidatedProject& validated,
+                                           const DynamicAnalysisRequest& request) {
+  if (request.level == AnalysisLevel::coupled) return run_coupled_analysis(validated, request);
+  const Project& project = validated.project;
+  DynamicModel model = build_dynamic_model(validated, request);
+  const LoadCase& load_case = find_load_case(project, request.load_case);
+  const Environment& environment = environment_of(project, load_case);
+
+  DynamicAnalysisResult result = result_of_model(model, request, load_case.name, environment.name);
+
+  // Low-frequency dynamics from the static equilibrium, at rest.
+  const engine::HullSimulationOptions options = forced_run_options(request);
+  if (request.progress && model.loads.external) {
+    // Progress from the integrator's time (the force is evaluated at
+    // increasing t, up to retried steps); reports at 1 % steps only.
+    auto next = std::make_shared<double>(0.0);
+    const auto progress = request.progress;
+    const double duration = request.duration_s;
+    model.loads.external = [inner = model.loads.external, next, progress, duration](
+                               double t, const engine::Vector6d& q, const engine::Vector6d& qd) {
+      if (t >= *next) {
+        progress(std::min(1.0, t / duration));
+        *next = t + 0.01 * duration;
+      }
+      return inner(t, q, qd);
+    };
+  }
+  const engine::HullTimeSeries lf = engine::simulate_hull(
+      model.hull, model.loads, model.initial_offset, engine::Vector6d::Zero(), options);
+  if (request.progress) request.progress(1.0);
+  result.times_s = lf.times_s;
+  result.low_frequency = lf.position;
+  result.solver = lf.statistics;
+  result.dynamics_wall_s = lf.wall_clock_s;
+
+  // Wave-frequency motions.
+  auto start = std::chrono::steady_clock::now();
+  result.wave_frequency.setZero(6, lf.times_s.size());
+  if (model.wave_split_frequency_rad_per_s > 0.0 && lf.times_s.size() >= 2) {
+    // Morison hull: the integration carried LF and WF together.
+    for (int d = 0; d < 6; ++d) {
+      const Eigen::VectorXd total = lf.position.row(d).transpose();
+      const std::vector<double> low = engine::low_pass_dft(
+          std::span<const double>(total.data(), static_cast<std::size_t>(total.size())),
+          request.output_step_s, model.wave_split_frequency_rad_per_s);
+      for (Eigen::Index k = 0; k < total.size(); ++k) {
+        result.low_frequency(d, k) = low[static_cast<std::size_t>(k)];
+        result.wave_frequency(d, k) = total(k) - low[static_cast<std::size_t>(k)];
+      }
+    }
+    result.wave_frequency_computed = true;
+    result.notes.push_back(fmt::format(
+        "Morison hull: low- and wave-frequency motions integrated together with the member "
+        "loads; split by a zero-phase low-pass at {:.3g} rad/s ({:g} x the lowest wave frequency)",
+        model.wave_split_frequency_rad_per_s, kMorisonSplitFraction));
+  } else if (auto wf = wave_frequency_motion(project, environment, model, request, lf.times_s)) {
+    result.wave_frequency = std::move(*wf);
+    result.wave_frequency_computed = true;
+  } else if (environment.waves) {
+    result.notes.push_back(
+        "no wave-frequency motions: the project gives no hull.hydrodynamics.excitation_file (.3) "
+        "or rao_file (.4); "
+        "motions are low-frequency only");
+  }
+  result.total = result.low_frequency + result.wave_frequency;
+  result.wave_frequency_wall_s = seconds_since(start);
+
+  // Quasi-static fairlead tensions at the total motion.
+  start = std::chrono::steady_clock::now();
+  if (request.compute_tensions) {
+    result.tensions = quasi_static_fairlead_tensions(project, load_case.damaged_line.value_or(""),
+                                                     result.total);
+  }
+  result.tensions_wall_s = seconds_since(start);
+
+  if (request.line_dynamics && result.times_s.size() >= 2) {
+    start = std::chrono::steady_clock::now();
+    LineDynamicsInput lines;
+    lines.damaged_line = load_case.damaged_line.value_or("");
+    lines.current = current_profile_of(environment);
+    lines.static_offset = model.initial_offset;
+    lines.t0_s = result.times_s(0);
+    lines.dt_s = result.times_s(1) - result.times_s(0);
+    lines.motion = result.total;
+    lines.ramp_s = request.line_dynamics_ramp_s;
+    lines.sea = model.sea;
+    result.dynamic_tensions = run_line_dynamics(project, lines);
+    result.line_dynamics_wall_s = seconds_since(start);
+    result.notes.push_back(
+        fmt::format("dynamic tensions: FE mooring lines and risers with the total hull motion "
+                    "prescribed at the fairleads and hang-offs, built up over the "
+                    "first {:g} s; current on the lines{}",
+                    request.line_dynamics_ramp_s,
+                    model.sea ? " and linear wave kinematics at each element's static midpoint" : ""));
+  }
+  return result;
+}
+
+}  // namespace spiral::design

@@ -1,0 +1,195 @@
+#pragma once
+// Time-domain hull analyses of one load case at the two cheap levels of
+// DESIGN.md §1: uncoupled and semi-coupled (S-C, plain and enhanced).
+//
+//   uncoupled     the mooring lines as nonlinear quasi-static catenaries
+//                 (build_mooring_model: no current on the lines, no line
+//                 damping or inertia), solved at the instantaneous fairlead
+//                 positions inside the hull equations; risers (if any) as
+//                 their linearization at the static equilibrium of the case.
+//   sc            Corrêa & Jacob's semi-coupled scheme: the coupled static
+//                 equilibrium with current on the lines (run_static_case),
+//                 the line array reduced there to F0 and the 6x6 tangent K,
+//                 the hull integrated from that position with
+//                 F_lines = F0 − K (q − q0).
+//   sc-enhanced   sc plus the lines' damping and added mass at the fairleads
+//                 (line_hydrodynamics.hpp; after Cruces Girón, Corrêa, Jacob
+//                 et al., Marine Structures 39, 2014, and Webster 1995).
+//
+// Hull (hull_dynamics.hpp): M + A(w_LF) (hull.hydrodynamics), or with
+// `radiation: memory` M + A(inf) and Cummins' memory force with the kernel
+// from the .1 data (engine/hull/radiation_memory.hpp), B_lin and
+// quadratic damping from the project, C_hydro and F_hs0 from hull_model.
+// External low-frequency force, each term only where the project has the data
+// (otherwise a note says what is missing):
+//   * slow drift by Newman's approximation (slow_drift.hpp) from the mean
+//     drift coefficients, on the seeded wave realization of the environment;
+//   * current on the hull by the coefficient table with the relative velocity
+//     V_rel = V_c(z = 0) − (x', y') (OCIMF form, quadratic in V_rel);
+//   * wind: mean speed at the table's reference height + a seeded gust
+//     realization of the environment's spectrum (NPD or API; none = steady),
+//     with the relative velocity U(t) e_w − (x', y').
+// The slow drift and the gust depend on time only: they are tabulated once at
+// 0.1 s and read by Catmull-Rom interpolation (dynamic_analysis.cpp, ForcingTable;
+// on the 3-h deep-water storm the surge std changes by 1e-5 m against the
+// direct sums, for 7x less dynamics time). The integrator runs at rtol 1e-7,
+// atol 1e-6 m / 1e-8 rad (forced runs; free decays keep the 1e-10 defaults).
+// Wave-frequency motions are superposed on the low-frequency ones (total = LF
+// + WF) from the .4 RAOs, or RAOs computed from .1 + .3 as
+//   xi(w) = [−w² (M + A(w)) + i w (B(w) + B_lin) + C_hydro + K_lines]^-1 X(w)
+// (WAMIT e^{iwt} convention); without .3/.4 there are none (a note says so).
+// Morison hull (hull.hydrodynamics.model: morison, engine/hull/morison_hull.hpp):
+// M + the members' strip added mass; the member loads (wave inertia and
+// pressure, drag on the relative velocity current + waves − hull) join the
+// external force, so the one integration carries LF and WF motions together
+// (the strips sit at the static equilibrium); the two are split by a
+// zero-phase low-pass at half the lowest wave frequency of the realization;
+// the members replace hull.current_coefficients in the dynamics.
+// Fairlead tensions: quasi-static catenary of every intact mooring line at the
+// instantaneous (total) fairlead position, at every output step.
+//
+// Errors: InputError (unknown case or level, headings outside a database),
+// engine::FileFormatError (hydrodynamic files), engine::SolverError
+// (equilibrium, line or integrator failure).
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "design/analysis/line_dynamics.hpp"
+#include "design/analysis/static_case.hpp"
+#include "design/project/validated_project.hpp"
+#include "engine/analysis/hull_dynamics.hpp"
+#include "engine/hull/radiation_memory.hpp"
+#include "engine/hull/wamit_1.hpp"
+#include "engine/hull/wamit_3.hpp"
+#include "engine/environment/wave_realization.hpp"
+
+namespace spiral::design {
+
+/// coupled: hull and every dynamic FE line integrated together (coupled_analysis.hpp).
+enum class AnalysisLevel { uncoupled, semi_coupled, semi_coupled_enhanced, coupled };
+
+/// "uncoupled", "sc", "sc-enhanced", "coupled" (the CLI names).
+const char* to_string(AnalysisLevel level);
+/// Parses the CLI name; throws InputError (path `--level`) for anything else.
+AnalysisLevel parse_analysis_level(const std::string& name, const Project& project);
+
+struct DynamicAnalysisRequest {
+  std::string load_case;
+  AnalysisLevel level = AnalysisLevel::semi_coupled;
+  double duration_s = 10800.0;  ///< > 0
+  double output_step_s = 0.5;   ///< > 0, <= duration
+  std::uint64_t seed = 1;       ///< waves use `seed`, the wind gust `seed` + 1000003
+  bool compute_tensions = true;
+  /// Also the dynamic tensions: every mooring line as a dynamic FE line with
+  /// the hull motion prescribed at its fairlead (design/analysis/line_dynamics.hpp).
+  bool line_dynamics = false;
+  double line_dynamics_ramp_s = 20.0;  ///< build-up ramp of the prescribed motion, >= 0
+  /// Coupled level: the integrator's work limit per output step (IDA
+  /// gives up beyond it: a step-size collapse stops the case, not the machine).
+  long coupled_max_steps_between_outputs = 500000;
+  /// The S-C static case of this load case when the caller has it already
+  /// (a stage runs every case's statics first); null: solved here. It must be
+  /// run_static_case of `load_case` with its own damaged line.
+  const StaticCaseResult* statics = nullptr;
+  /// Called with the fraction done (0..1) during the dynamics; may be empty.
+  std::function<void(double)> progress;
+};
+
+/// The low-frequency model of a case as the hull integrator takes it, with
+/// what it was built from (for tests: free decay, mean offset).
+struct DynamicModel {
+  engine::HullDynamicsModel hull;
+  engine::HullLoads loads;
+  engine::Vector6d initial_offset = engine::Vector6d::Zero();         ///< static equilibrium q0
+  StaticCaseResult statics;                                           ///< the S-C static case
+  std::optional<engine::Matrix6d> line_added_mass;                    ///< sc-enhanced
+  std::optional<engine::Matrix6d> line_damping;                       ///< sc-enhanced
+  /// hull.hydrodynamics.radiation: memory — A(inf), the kernel and their diagnostics.
+  std::optional<engine::RadiationMemory> radiation_memory;
+  /// Morison hull in waves: the LF/WF split frequency of the integrated
+  /// motion, rad/s (0: the WF motions come from RAOs, or there are none).
+  double wave_split_frequency_rad_per_s = 0.0;
+  engine::Vector6d mean_slow_drift_force = engine::Vector6d::Zero();  ///< sum a_k² D_k, global
+  /// The slow-drift force alone, F_sd(t) (global), empty without waves or drift data.
+  std::function<engine::Vector6d(double)> slow_drift;
+  /// The case's seeded wave realization (empty without waves): the slow
+  /// drift, the Morison hull and the dynamic lines all see this one sea.
+  std::shared_ptr<const engine::WaveRealization> sea;
+  std::vector<std::string> notes;
+  double equilibrium_wall_s = 0.0;  ///< static case (equilibrium)
+  double reduction_wall_s = 0.0;    ///< K reduction (+ line hydrodynamics for sc-enhanced)
+  double forcing_wall_s = 0.0;      ///< wave/wind realizations and the tabulated forcing
+};
+
+/// Builds the model of `request` (no integration). `fairlead_velocity_std`
+/// (m/s, per line and global axis), when given, sets the velocity amplitude of
+/// the enhanced S-C drag linearization; else a first sc pass supplies it.
+DynamicModel build_dynamic_model(const ValidatedProject& project,
+                                 const DynamicAnalysisRequest& request);
+
+struct TensionSeries {
+  std::string line;
+  std::vector<double> tension_N;
+  std::vector<Eigen::Vector3d> fairlead_g_m;  ///< fairlead position (global) at the total motion
+};
+
+struct DynamicAnalysisResult {
+  std::string case_name;
+  std::string environment;
+  AnalysisLevel level = AnalysisLevel::semi_coupled;
+  std::uint64_t seed = 1;
+  Eigen::VectorXd times_s;
+  Eigen::Matrix<double, 6, Eigen::Dynamic> low_frequency;   ///< m, rad
+  Eigen::Matrix<double, 6, Eigen::Dynamic> wave_frequency;  ///< m, rad (zero without RAOs)
+  Eigen::Matrix<double, 6, Eigen::Dynamic> total;           ///< LF + WF
+  bool wave_frequency_computed = false;
+  std::vector<TensionSeries> tensions;               ///< quasi-static
+  /// With request.line_dynamics (mooring lines), or from the coupled run
+  /// (mooring lines, then risers: their top tension).
+  std::vector<LineDynamicsSeries> dynamic_tensions;
+  engine::Vector6d static_offset = engine::Vector6d::Zero();
+  engine::Vector6d mean_slow_drift_force = engine::Vector6d::Zero();
+  std::optional<engine::Matrix6d> line_added_mass;
+  std::optional<engine::Matrix6d> line_damping;
+  engine::CvodeStatistics solver;  ///< hull integrator (not the coupled level)
+  /// Coupled level: the one IDA integration of hull + lines, and its size.
+  std::optional<engine::IdaStatistics> coupled_solver;
+  long coupled_state_size = 0;
+  int coupled_lines = 0;
+  std::vector<std::string> notes;
+  double equilibrium_wall_s = 0.0;
+  double reduction_wall_s = 0.0;
+  double forcing_wall_s = 0.0;
+  double dynamics_wall_s = 0.0;
+  double wave_frequency_wall_s = 0.0;
+  double tensions_wall_s = 0.0;
+  double line_dynamics_wall_s = 0.0;
+};
+
+/// Wave-frequency hull motions (global, m, rad) of the request's case at
+/// `times_s`, from the .4 RAOs or .1 + .3; empty without them or without waves.
+std::optional<Eigen::Matrix<double, 6, Eigen::Dynamic>> wave_frequency_motions(
+    const ValidatedProject& project, const DynamicModel& model,
+    const DynamicAnalysisRequest& request, const Eigen::VectorXd& times_s);
+
+/// A result that carries the model's case data, notes and set-up timings
+/// (no series yet) at `request.level`.
+DynamicAnalysisResult result_of_model(const DynamicModel& model,
+                                      const DynamicAnalysisRequest& request,
+                                      const std::string& case_name,
+                                      const std::string& environment_name);
+
+/// Quasi-static fairlead tension of every intact mooring line (catenary) at
+/// each column of `total` (hull offsets, m, rad).
+std::vector<TensionSeries> quasi_static_fairlead_tensions(
+    const Project& project, const std::string& damaged_line,
+    const Eigen::Matrix<double, 6, Eigen::Dynamic>& total);
+
+/// Any level; coupled goes to run_coupled_analysis (coupled_analysis.hpp).
+DynamicAnalysisResult run_dynamic_analysis(const ValidatedProject& project,
+                                           const DynamicAnalysisRequest& request);
+
+}  // namespace spiral::design

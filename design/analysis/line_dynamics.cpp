@@ -1,0 +1,193 @@
+#include "design/analysis/line_dynamics.hpp"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cmath>
+#include <numbers>
+
+#include "design/project/line_properties.hpp"
+#include "design/model/mooring_model.hpp"
+#include "design/model/riser_model.hpp"
+#include "engine/analysis/fe_static_line.hpp"
+#include "engine/analysis/line_array.hpp"
+#include "engine/numerics/sampled_trajectory.hpp"
+#include "engine/common/parallel_for.hpp"
+#include "engine/lines/fe_line_dynamics.hpp"
+
+namespace spiral::design {
+namespace {
+
+// MoorDyn's default seabed damping per unit area (Pa·s/m); times the contact width (diameter).
+constexpr double kSeabedDamping_Pa_s_per_m = 1.0e5;
+constexpr double kFrictionVelocity_m_per_s = 0.01;
+
+engine::FeDynamicEnvironment dynamic_environment(const Project& project,
+                                                 const std::optional<engine::CurrentProfile>& current,
+                                                 double contact_diameter_m) {
+  engine::FeDynamicEnvironment env;
+  env.statics = fe_environment(project, current, contact_diameter_m);
+  env.seabed_lateral_friction = project.site.seabed.friction_lateral;
+  env.seabed_damping_N_s_per_m2 = kSeabedDamping_Pa_s_per_m * contact_diameter_m;
+  env.friction_velocity_m_per_s = kFrictionVelocity_m_per_s;
+  return env;
+}
+
+}  // namespace
+
+DynamicLineSetup dynamic_mooring_line(const Project& project, const MooringLine& line,
+                                      const std::vector<LineTypeProperties>& types,
+                                      const std::optional<engine::CurrentProfile>& current,
+                                      const Eigen::Vector3d& fairlead_g) {
+  DynamicLineSetup setup;
+  setup.model = fe_line_model(project, line, types);
+  engine::FeLineModel& model = setup.model;
+  setup.environment =
+      dynamic_environment(project, current, model.sections.front().hydro_diameter_m);
+  try {
+    setup.statics =
+        engine::solve_fe_line_statics(model, setup.environment.statics, {line.anchor_g, fairlead_g});
+  } catch (const engine::SolverError& e) {
+    throw engine::SolverError(fmt::format(
+        "line {}: FE statics at the static equilibrium failed: {}", line.name, e.what()));
+  }
+  // Polyester: the dynamic EA at each section's mean static tension.
+  const std::vector<int> node_section = engine::node_sections(model, setup.statics);
+  for (std::size_t s = 0; s < model.sections.size(); ++s) {
+    const LineTypeProperties& type = find_type(types, line.segments[s].type);
+    if (type.kind != LineKind::polyester) continue;
+    double sum = 0.0;
+    int count = 0;
+    for (std::size_t i = 0; i < node_section.size(); ++i) {
+      if (node_section[i] == static_cast<int>(s)) sum += setup.statics.node_tension_N[i], ++count;
+    }
+    model.sections[s].EA_dynamic_N = dynamic_axial_stiffness_N(type, count > 0 ? sum / count : 0.0);
+  }
+  return setup;
+}
+
+DynamicLineSetup dynamic_riser(const Project& project, const RiserDesign& design,
+                               const std::optional<engine::CurrentProfile>& current,
+                               const Eigen::Vector3d& hang_off_g) {
+  DynamicLineSetup setup;
+  setup.model = design.fe_model;
+  setup.environment = dynamic_environment(
+      project, current, design.sections.front().properties.hydrodynamic_diameter_m);
+  const std::unique_ptr<engine::FeStaticLine> line = riser_static_line(project, design, current);
+  try {
+    line->solve(hang_off_g);
+  } catch (const engine::SolverError& e) {
+    throw engine::SolverError(fmt::format(
+        "riser {}: FE statics at the static equilibrium failed: {}", design.name, e.what()));
+  }
+  setup.statics = *line->last_result();
+  return setup;
+}
+
+namespace {
+
+/// One line or riser (`kind` names it in errors) whose top end sits at
+/// `attachment_b` on the hull; `make_setup` builds it with the top at a
+/// global position.
+template <class MakeSetup>
+LineDynamicsSeries run_one(const Project& project, const std::string& name, const char* kind,
+                           const Eigen::Vector3d& attachment_b, const MakeSetup& make_setup,
+                           const LineDynamicsInput& input) {
+  const auto start = std::chrono::steady_clock::now();
+  const Eigen::Vector3d& ref = project.hull.reference_point_g;
+  auto fairlead_at = [&](const engine::Vector6d& offset) {
+    const engine::HullPose pose = engine::pose_from_offset(ref, offset);
+    return Eigen::Vector3d(pose.reference_point_g + pose.rotation * attachment_b);
+  };
+  const Eigen::Vector3d rest = fairlead_at(input.static_offset);
+  DynamicLineSetup setup = make_setup(rest);
+  setup.environment.sea = input.sea;
+  setup.environment.sea_ramp_s = input.ramp_s;
+  const engine::FeLineModel& model = setup.model;
+  const engine::FeDynamicEnvironment& env = setup.environment;
+  const engine::FeStaticsResult& statics = setup.statics;
+
+  std::vector<Eigen::Vector3d> samples;
+  samples.reserve(static_cast<std::size_t>(input.motion.cols()));
+  for (Eigen::Index k = 0; k < input.motion.cols(); ++k)
+    samples.push_back(fairlead_at(input.motion.col(k)));
+  const auto trajectory =
+      std::make_shared<const engine::SampledTrajectory>(input.t0_s, input.dt_s, std::move(samples));
+  engine::FeDynamicsOptions options;
+  options.start_time_s = input.t0_s;
+  options.max_steps_between_outputs = input.max_steps_between_samples;
+  const double t0 = input.t0_s, ramp = input.ramp_s;
+  options.end_B_motion = [trajectory, rest, t0, ramp](double t) {
+    const engine::TrajectoryPoint p = trajectory->at(t);
+    const engine::RampValue r = engine::smooth_ramp(t - t0, ramp);
+    const Eigen::Vector3d d = p.position_m - rest;
+    engine::EndKinematics k;
+    k.position_m = rest + r.value * d;
+    k.velocity_m_per_s = r.rate_per_s * d + r.value * p.velocity_m_per_s;
+    k.acceleration_m_per_s2 = r.rate2_per_s2 * d + 2.0 * r.rate_per_s * p.velocity_m_per_s +
+                              r.value * p.acceleration_m_per_s2;
+    return k;
+  };
+
+  LineDynamicsSeries series;
+  series.line = name;
+  const auto n = static_cast<std::size_t>(input.motion.cols());
+  series.tension_N.resize(n);
+  try {
+    engine::FeLineDynamics dynamics(model, env, statics, options);
+    series.tension_N[0] = statics.end_B_force_N.norm();
+    for (std::size_t k = 1; k < n; ++k) {
+      dynamics.advance_to(input.t0_s + input.dt_s * static_cast<double>(k));
+      series.tension_N[k] = dynamics.end_B_force_N().norm();
+    }
+    series.solver = dynamics.statistics();
+  } catch (const engine::SolverError& e) {
+    throw engine::SolverError(fmt::format("{} {}: FE dynamics failed: {}", kind, name, e.what()));
+  }
+  series.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return series;
+}
+
+}  // namespace
+
+std::vector<LineDynamicsSeries> run_line_dynamics(const Project& project,
+                                                  const LineDynamicsInput& input) {
+  if (!(input.dt_s > 0.0) || input.motion.cols() < 2 || !(input.ramp_s >= 0.0)) {
+    throw std::invalid_argument(
+        fmt::format("line dynamics: needs dt > 0 s, >= 2 motion samples and ramp >= 0 s, "
+                    "got {} s, {}, {} s",
+                    input.dt_s, input.motion.cols(), input.ramp_s));
+  }
+  if (!input.motion.allFinite())
+    throw std::invalid_argument("line dynamics: the hull motion has non-finite samples");
+  const std::vector<LineTypeProperties> types = resolve_line_types(project);
+  std::vector<const MooringLine*> lines;
+  for (const MooringLine& l : project.mooring.lines) {
+    if (l.name != input.damaged_line) lines.push_back(&l);
+  }
+  const std::size_t risers = input.include_risers ? project.risers.size() : 0;
+  std::vector<LineDynamicsSeries> out(lines.size() + risers);
+  const int count = static_cast<int>(out.size());
+  engine::parallel_for(count, engine::worker_count(count), [&](int i) {
+    const auto k = static_cast<std::size_t>(i);
+    if (k < lines.size()) {
+      const MooringLine& line = *lines[k];
+      out[k] = run_one(project, line.name, "line", line.fairlead_b,
+                       [&](const Eigen::Vector3d& top) {
+                         return dynamic_mooring_line(project, line, types, input.current, top);
+                       },
+                       input);
+    } else {
+      const Riser& riser = project.risers[k - lines.size()];
+      const RiserDesign design = riser_design(project, riser);
+      out[k] = run_one(project, riser.name, "riser", design.hang_off_b,
+                       [&](const Eigen::Vector3d& top) {
+                         return dynamic_riser(project, design, input.current, top);
+                       },
+                       input);
+    }
+  });
+  return out;
+}
+
+}  // namespace spiral::design

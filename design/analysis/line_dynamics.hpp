@@ -1,0 +1,93 @@
+#pragma once
+// Dynamic mooring-line tensions from a prescribed hull motion (DESIGN.md §1:
+// the second half of the uncoupled analysis, and the dynamic tensions of the
+// S-C levels): every intact mooring line and every riser as a dynamic FE
+// line (engine/lines/fe_line_dynamics.hpp), started from its FE static
+// solution at the hull's static equilibrium with the case's current on it,
+// its fairlead or hang-off moved along the hull motion (low + wave
+// frequency), anchor or riser foot fixed. Risers are their FE statics model
+// (riser_model.hpp: bending, seabed) with the sections' added mass and
+// displaced area.
+//
+// The fairlead trajectory is the natural cubic spline through the fairlead
+// positions at the motion's output times (C² for the implicit integrator),
+// blended in from the static position by a quintic build-up ramp over
+// `ramp_s` (the motion at t = 0 already carries a wave-frequency offset, and
+// a line cannot start moving with a jump). Values inside the ramp are a
+// build-up transient.
+//
+// Per line: Morison drag and added mass on the velocity relative to the
+// current and the waves (input.sea: linear kinematics held at each element's
+// static midpoint — fixed_point_wave_kinematics.hpp says why and what it costs),
+// polyester with its dynamic EA at the section's mean static tension
+// (design/project/line_properties.hpp), seabed penalty from site.seabed with contact
+// damping c = c_bot · d (c_bot = 1e5 Pa·s/m, MoorDyn's default) and Coulomb
+// friction (site.seabed.friction_axial / friction_lateral, regularised below
+// 0.01 m/s). Lines run in parallel on all cores.
+//
+// Errors: a line whose dynamics fail throws engine::SolverError naming the
+// line or riser, the time reached and the cause.
+
+#include <Eigen/Core>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "design/project/line_properties.hpp"
+#include "design/project/project.hpp"
+#include "design/model/riser_model.hpp"
+#include "engine/numerics/sundials_ida.hpp"
+#include "engine/common/eigen_types.hpp"
+#include "engine/environment/current_profile.hpp"
+#include "engine/lines/fe_line_dynamics.hpp"
+
+namespace spiral::design {
+
+struct LineDynamicsInput {
+  std::string damaged_line;                       ///< excluded mooring line ("" intact)
+  std::optional<engine::CurrentProfile> current;  ///< on the lines
+  engine::Vector6d static_offset =
+      engine::Vector6d::Zero();  ///< hull equilibrium the lines start from
+  double t0_s = 0.0;
+  double dt_s = 0.5;                                ///< sample spacing of `motion`, > 0
+  Eigen::Matrix<double, 6, Eigen::Dynamic> motion;  ///< hull offset (m, rad) at t0 + k dt
+  double ramp_s = 20.0;                             ///< build-up ramp, >= 0
+  long max_steps_between_samples = 500000;          ///< integrator work limit per sample
+  bool include_risers = true;  ///< risers too (FE with bending, hang-off moving with the hull)
+  /// Waves on the lines (linear kinematics at each element's static
+  /// midpoint, engine/environment/fixed_point_wave_kinematics.hpp); null: none.
+  std::shared_ptr<const engine::WaveRealization> sea;
+};
+
+struct LineDynamicsSeries {
+  std::string line;  ///< mooring line or riser name
+  std::vector<double> tension_N;  ///< top (fairlead, hang-off) tension at the motion's sample times
+  engine::IdaStatistics solver;
+  double wall_s = 0.0;
+};
+
+/// A line ready for the dynamics: its FE model (polyester sections at their
+/// dynamic EA), dynamic environment (seabed damping and friction as above)
+/// and static solution with its top end at `top_g`.
+struct DynamicLineSetup {
+  engine::FeLineModel model;
+  engine::FeDynamicEnvironment environment;
+  engine::FeStaticsResult statics;
+};
+
+/// Throws engine::SolverError naming the line when its statics fail.
+DynamicLineSetup dynamic_mooring_line(const Project& project, const MooringLine& line,
+                                      const std::vector<LineTypeProperties>& types,
+                                      const std::optional<engine::CurrentProfile>& current,
+                                      const Eigen::Vector3d& top_g);
+/// A riser (FE with bending, from its foot to the hang-off at `top_g`).
+DynamicLineSetup dynamic_riser(const Project& project, const RiserDesign& design,
+                               const std::optional<engine::CurrentProfile>& current,
+                               const Eigen::Vector3d& top_g);
+
+/// Every intact mooring line, then (include_risers) every riser.
+std::vector<LineDynamicsSeries> run_line_dynamics(const Project& project,
+                                                  const LineDynamicsInput& input);
+
+}  // namespace spiral::design

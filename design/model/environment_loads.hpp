@@ -1,0 +1,40 @@
+#pragma once
+// Mean (static) environmental loads on the hull for one environment of the
+// project: wind and current from the hull's heading-dependent coefficient
+// tables, mean wave drift from drift coefficients and the sea spectrum.
+// Loads that the environment asks for but the project gives no data for are
+// not invented: they are listed in `notes` so the engineer sees what is missing.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "design/project/project.hpp"
+#include "engine/analysis/static_equilibrium.hpp"
+#include "engine/environment/current_profile.hpp"
+#include "engine/environment/wave_spectrum.hpp"
+#include "engine/hull/mean_environmental_loads.hpp"
+
+namespace spiral::design {
+
+struct MeanEnvironmentLoad {
+  /// Load on the hull (N, N·m, global axes) at a hull offset (yaw matters).
+  engine::ExternalLoad load;
+  std::vector<std::string> notes;  ///< loads not modelled, and why
+};
+
+/// The environment's current as an engine profile (global, direction of propagation).
+engine::CurrentProfile current_profile_of(const Current& current);
+/// The environment's current profile; none when it has no current (or an empty profile).
+std::optional<engine::CurrentProfile> current_profile_of(const Environment& environment);
+
+/// The environment's sea spectrum.
+engine::WaveSpectrum wave_spectrum_of(const Waves& waves);
+
+/// The hull's mean drift coefficients (from the .12d file or the table).
+/// Throws engine::FileFormatError for a bad .12d file.
+engine::MeanDriftTable drift_table_of(const Project& project, const MeanDrift& drift);
+/// Throws engine::FileFormatError for a bad .12d file.
+MeanEnvironmentLoad mean_environment_load(const Project& project, const Environment& environment);
+
+}  // namespace spiral::design

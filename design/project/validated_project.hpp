@@ -1,0 +1,23 @@
+#pragma once
+// One call from a project file to a project every later stage may trust:
+// parse (strict), resolve the line types, run the validation pass. Every
+// problem found on the way is reported together in one InputError.
+
+#include <filesystem>
+#include <vector>
+
+#include "design/project/input_error.hpp"
+#include "design/project/line_properties.hpp"
+#include "design/project/project.hpp"
+
+namespace spiral::design {
+
+struct ValidatedProject {
+  Project project;
+  std::vector<LineTypeProperties> line_types;  ///< resolved, in the order of project.line_types
+};
+
+/// Throws InputError listing every problem (file, line, column, field path).
+ValidatedProject load_validated_project(const std::filesystem::path& file);
+
+}  // namespace spiral::design

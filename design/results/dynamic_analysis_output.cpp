@@ -1,0 +1,204 @@
+#include "design/results/dynamic_analysis_output.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <fstream>
+#include <numbers>
+#include <stdexcept>
+
+#include "engine/numerics/statistics.hpp"
+
+namespace spiral::design {
+namespace {
+
+constexpr const char* kDofNames[6] = {"surge", "sway", "heave", "roll", "pitch", "yaw"};
+constexpr double kRadToDeg = 180.0 / std::numbers::pi;
+
+/// Output unit of a DOF: m for translations, deg for rotations (SI inside).
+double dof_scale(int dof) {
+  return dof < 3 ? 1.0 : kRadToDeg;
+}
+const char* dof_unit(int dof) {
+  return dof < 3 ? "m" : "deg";
+}
+
+nlohmann::json channel_json(const std::string& name, const std::string& unit,
+                            const std::vector<double>& x, double dt_s) {
+  nlohmann::json j;
+  j["name"] = name;
+  j["unit"] = unit;
+  const engine::ChannelMoments m = engine::channel_moments(x);
+  j["mean"] = m.mean;
+  j["std"] = m.std_dev;
+  j["min"] = m.minimum;
+  j["max"] = m.maximum;
+  if (m.std_dev <= 1e-12 * std::max(1.0, std::abs(m.mean))) {
+    j["extremes_unavailable"] = "constant channel";
+    return j;
+  }
+  try {
+    const engine::ChannelStatistics s = engine::analyze_channel(x, dt_s, engine::welch_segment_length(x.size()));
+    j["spectral_peak_period_s"] = s.spectral_peak_period_s;
+    // The Welch spectrum (one-sided S(w), unit²·s/rad) up to where it holds
+    // all but 1e-6 of the variance: the Nyquist tail of a 0.5 s record is noise.
+    const engine::Spectrum& sp = s.spectrum;
+    const Eigen::Index last = engine::spectrum_last_significant_bin(sp);
+    std::vector<double> w(static_cast<std::size_t>(last + 1)), d(static_cast<std::size_t>(last + 1));
+    for (Eigen::Index k = 0; k <= last; ++k) {
+      w[static_cast<std::size_t>(k)] = sp.frequency_rad_s(k);
+      d[static_cast<std::size_t>(k)] = sp.density(k);
+    }
+    j["spectrum"] = {{"frequency_rad_per_s", w}, {"density_per_rad_per_s", d}, {"welch_segments", sp.segments}};
+    j["zero_upcrossing_period_s"] = s.zero_upcrossing_period_s;
+    j["mpm_max_3h"] = {{"gumbel", s.maximum.mpm_gumbel},
+                       {"weibull", s.maximum.mpm_weibull},
+                       {"rayleigh", s.maximum.mpm_rayleigh}};
+    j["mpm_min_3h"] = {{"gumbel", s.minimum.mpm_gumbel},
+                       {"weibull", s.minimum.mpm_weibull},
+                       {"rayleigh", s.minimum.mpm_rayleigh}};
+  } catch (const std::exception& e) {
+    j["extremes_unavailable"] = e.what();
+  }
+  return j;
+}
+
+std::vector<double> row_of(const Eigen::Matrix<double, 6, Eigen::Dynamic>& m, int dof) {
+  std::vector<double> out(static_cast<std::size_t>(m.cols()));
+  for (Eigen::Index k = 0; k < m.cols(); ++k)
+    out[static_cast<std::size_t>(k)] = m(dof, k) * dof_scale(dof);
+  return out;
+}
+
+nlohmann::json matrix_json(const engine::Matrix6d& m) {
+  nlohmann::json rows = nlohmann::json::array();
+  for (int i = 0; i < 6; ++i) {
+    nlohmann::json row = nlohmann::json::array();
+    for (int j = 0; j < 6; ++j) row.push_back(m(i, j));
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+}  // namespace
+
+
+
+void write_dynamic_time_series_csv(const DynamicAnalysisResult& r,
+                                   const std::filesystem::path& file) {
+  std::ofstream out(file);
+  if (!out) throw std::runtime_error(fmt::format("cannot write {}", file.string()));
+  out << "time_s";
+  for (const char* suffix : {"", "_lf", "_wf"}) {
+    for (int d = 0; d < 6; ++d) out << ',' << kDofNames[d] << suffix << '_' << dof_unit(d);
+  }
+  for (const auto& t : r.tensions) out << ",tension_" << t.line << "_N";
+  for (const auto& t : r.dynamic_tensions) out << ",dynamic_tension_" << t.line << "_N";
+  for (const auto& t : r.tensions) {
+    for (const char* axis : {"x", "y", "z"}) out << ",fairlead_" << t.line << '_' << axis << "_m";
+  }
+  out << '\n';
+  for (Eigen::Index k = 0; k < r.times_s.size(); ++k) {
+    out << fmt::format("{:.3f}", r.times_s(k));
+    for (const auto* m : {&r.total, &r.low_frequency, &r.wave_frequency}) {
+      for (int d = 0; d < 6; ++d) out << fmt::format(",{:.6g}", (*m)(d, k) * dof_scale(d));
+    }
+    for (const auto& t : r.tensions)
+      out << fmt::format(",{:.7g}", t.tension_N[static_cast<std::size_t>(k)]);
+    for (const auto& t : r.dynamic_tensions)
+      out << fmt::format(",{:.7g}", t.tension_N[static_cast<std::size_t>(k)]);
+    for (const auto& t : r.tensions) {
+      const Eigen::Vector3d& f = t.fairlead_g_m[static_cast<std::size_t>(k)];
+      out << fmt::format(",{:.4f},{:.4f},{:.4f}", f.x(), f.y(), f.z());
+    }
+    out << '\n';
+  }
+  if (!out) throw std::runtime_error(fmt::format("error while writing {}", file.string()));
+}
+
+nlohmann::json dynamic_analysis_to_json(const DynamicAnalysisResult& r,
+                                        const std::string& project_name) {
+  nlohmann::json j;
+  j["format"] = "spiral.dynamic_analysis";
+  j["format_version"] = 1;
+  j["project"] = project_name;
+  j["load_case"] = r.case_name;
+  j["environment"] = r.environment;
+  j["level"] = to_string(r.level);
+  j["seed"] = r.seed;
+  const double dt = r.times_s.size() > 1 ? r.times_s(1) - r.times_s(0) : 0.0;
+  j["duration_s"] = r.times_s.size() > 0 ? r.times_s(r.times_s.size() - 1) : 0.0;
+  j["output_step_s"] = dt;
+  j["wave_frequency_motions"] = r.wave_frequency_computed;
+  nlohmann::json offset;
+  for (int d = 0; d < 6; ++d)
+    offset[fmt::format("{}_{}", kDofNames[d], dof_unit(d))] = r.static_offset(d) * dof_scale(d);
+  j["static_offset"] = offset;
+  nlohmann::json drift = nlohmann::json::array();
+  for (int d = 0; d < 6; ++d) drift.push_back(r.mean_slow_drift_force(d));
+  j["mean_slow_drift_force_N"] = drift;
+  if (r.line_added_mass) j["line_added_mass"] = matrix_json(*r.line_added_mass);
+  if (r.line_damping) j["line_damping"] = matrix_json(*r.line_damping);
+  nlohmann::json channels = nlohmann::json::array();
+  if (r.times_s.size() >= 2) {
+    for (int d = 0; d < 6; ++d) {
+      channels.push_back(channel_json(fmt::format("{}_{}", kDofNames[d], dof_unit(d)), dof_unit(d),
+                                      row_of(r.total, d), dt));
+    }
+    for (int d = 0; d < 6; ++d) {
+      channels.push_back(channel_json(fmt::format("{}_lf_{}", kDofNames[d], dof_unit(d)),
+                                      dof_unit(d), row_of(r.low_frequency, d), dt));
+    }
+    for (const auto& t : r.tensions)
+      channels.push_back(channel_json("tension_" + t.line + "_N", "N", t.tension_N, dt));
+    for (const auto& t : r.dynamic_tensions)
+      channels.push_back(channel_json("dynamic_tension_" + t.line + "_N", "N", t.tension_N, dt));
+  }
+  j["channels"] = channels;
+  j["timing_s"] = {{"equilibrium", r.equilibrium_wall_s},
+                   {"reduction", r.reduction_wall_s},
+                   {"forcing", r.forcing_wall_s},
+                   {"dynamics", r.dynamics_wall_s},
+                   {"wave_frequency", r.wave_frequency_wall_s},
+                   {"tensions", r.tensions_wall_s},
+                   {"line_dynamics", r.line_dynamics_wall_s},
+                   {"total", r.equilibrium_wall_s + r.reduction_wall_s + r.forcing_wall_s +
+                                 r.dynamics_wall_s + r.wave_frequency_wall_s + r.tensions_wall_s +
+                                 r.line_dynamics_wall_s}};
+  j["solver"] = {{"steps", r.solver.steps},
+                 {"rhs_evaluations", r.solver.rhs_evaluations},
+                 {"jacobian_evaluations", r.solver.jacobian_evaluations},
+                 {"error_test_failures", r.solver.error_test_failures},
+                 {"nonlinear_convergence_failures", r.solver.nonlinear_convergence_failures},
+                 {"last_step_s", r.solver.last_step_s}};
+  nlohmann::json line_solvers = nlohmann::json::array();
+  for (const auto& t : r.dynamic_tensions) {
+    line_solvers.push_back({{"line", t.line},
+                            {"wall_s", t.wall_s},
+                            {"steps", t.solver.steps},
+                            {"residual_evaluations", t.solver.residual_evaluations},
+                            {"jacobian_evaluations", t.solver.newton_matrix_setups},
+                            {"error_test_failures", t.solver.error_test_failures},
+                            {"nonlinear_convergence_failures", t.solver.nonlinear_convergence_failures}});
+  }
+  if (r.coupled_solver) {
+    const engine::IdaStatistics& s = *r.coupled_solver;
+    j["coupled_solver"] = {{"integrator", "IDA (BDF, order <= 2), hull + lines in one system"},
+                           {"lines", r.coupled_lines},
+                           {"states", r.coupled_state_size},
+                           {"steps", s.steps},
+                           {"residual_evaluations", s.residual_evaluations},
+                           {"jacobian_evaluations", s.newton_matrix_setups},
+                           {"partial_jacobian_updates", s.newton_matrix_updates},
+                           {"nonlinear_iterations", s.nonlinear_iterations},
+                           {"error_test_failures", s.error_test_failures},
+                           {"nonlinear_convergence_failures", s.nonlinear_convergence_failures},
+                           {"last_step_s", s.last_step_s}};
+  } else if (!r.dynamic_tensions.empty()) {
+    j["line_dynamics_solver"] = line_solvers;
+  }
+  j["notes"] = r.notes;
+  return j;
+}
+
+}  // namespace spiral::design

@@ -1,0 +1,215 @@
+#include "design/stages/advanced_stage.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+
+#include "engine/common/solver_error.hpp"
+
+namespace spiral::design {
+
+namespace {
+
+/// The output step of every stage storm (stage_dynamics.cpp): 0.5 s.
+constexpr double kOutputStep_s = 0.5;
+/// One seed for both levels, so that they see the same sea.
+constexpr std::uint64_t kSeed = 1;
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+/// The final checks of one case from its coupled level summary: every
+/// mooring line's tension and every riser's top tension are its channels
+/// tension_<name>_N (the coupled FE lines, summarize_channels).
+void final_checks(const ValidatedProject& vp, const LevelSummary& coupled, CriticalCaseVerification& v) {
+  const Project& p = vp.project;
+  const bool damaged = v.condition == "damaged";
+  for (const MooringLine& line : p.mooring.lines) {
+    const ChannelSummary* c = find_channel(coupled, "tension_" + line.name + "_N");
+    if (c == nullptr) continue;  // the damaged line is not in the coupled system
+    FinalLineCheck check;
+    check.line = line.name;
+    check.mean_N = c->mean;
+    check.max_N = c->maximum;
+    check.mpm_N = c->mpm;
+    check.mpm_fitted = c->mpm_fitted;
+    check.mbl_N = fairlead_segment_mbl(vp, line.name);
+    const DynamicTensionCheck d = dynamic_tension_check(p.criteria.mooring, damaged, c->mean, c->mpm, check.mbl_N);
+    check.dynamic_factor = d.factor;
+    check.utilization = d.utilization;
+    check.pass = d.utilization <= 1.0;
+    v.lines.push_back(check);
+  }
+  if (const ChannelSummary* o = find_channel(coupled, "offset_m")) v.mpm_offset_m = o->mpm;
+  if (p.criteria.max_offset_pct_depth) {
+    v.offset_limit_m = *p.criteria.max_offset_pct_depth / 100.0 * p.site.depth_m;
+    v.offset_limit_pass = v.mpm_offset_m <= *v.offset_limit_m;
+  }
+  if (v.coupled) v.soz_offset = v.coupled->extreme_offset;
+  for (const Riser& riser : p.risers) {
+    const ChannelSummary* c = find_channel(coupled, "tension_" + riser.name + "_N");
+    if (c == nullptr) continue;
+    FinalRiserCheck check;
+    check.riser = riser.name;
+    check.mean_N = c->mean;
+    check.max_N = c->maximum;
+    check.mpm_N = c->mpm;
+    check.limit_N = riser_criteria(p.criteria, riser).max_top_tension_N;
+    if (check.limit_N) {
+      check.utilization = check.mpm_N / *check.limit_N;
+      check.pass = check.utilization <= 1.0;
+    }
+    v.risers.push_back(check);
+  }
+  v.pass = std::all_of(v.lines.begin(), v.lines.end(), [](const FinalLineCheck& c) { return c.pass; }) &&
+           std::all_of(v.risers.begin(), v.risers.end(), [](const FinalRiserCheck& c) { return c.pass; }) &&
+           v.offset_limit_pass && (!v.soz_offset || v.soz_offset->passes) && v.static_risers_pass;
+}
+
+CriticalCaseVerification verify_case(const ValidatedProject& vp, const IntermediateStageResults& stage,
+                                     const RankedCase& ranked, const DynamicAnalysisRequest& base,
+                                     long coupled_max_steps) {
+  const auto start = std::chrono::steady_clock::now();
+  const StaticCaseResult& statics = stage.statics.cases[ranked.case_index];
+  const SozResult* zone = stage.statics.soz ? &*stage.statics.soz : nullptr;
+  const std::string selection = fmt::format("critical case #{} of the intermediate ranking", ranked.rank);
+  CriticalCaseVerification v;
+  v.rank = ranked.rank;
+  v.case_name = statics.case_name;
+  v.condition = statics.condition;
+  v.intermediate_score = ranked.score;
+  v.intermediate_governing = ranked.governing_measure;
+  // The riser criteria the coupled run does not give (stress, angles, …)
+  // stand as the stage's static equilibrium of the case checked them.
+  v.static_risers_pass = stage.statics.checks[ranked.case_index].risers_pass;
+  v.static_riser_utilization = ranked.riser_utilization;
+  v.static_riser = ranked.riser;
+  v.static_riser_criterion = ranked.riser_criterion;
+  v.comparison.case_name = statics.case_name;
+  v.comparison.seed = base.seed;
+  v.comparison.duration_s = base.duration_s;
+
+  // Coupled first: the S-C tension channel follows its most loaded line, so
+  // that the two levels' tensions compare the same line.
+  DynamicAnalysisRequest coupled = base;
+  coupled.level = AnalysisLevel::coupled;
+  coupled.coupled_max_steps_between_outputs = coupled_max_steps;
+  LevelSummary coupled_summary;
+  coupled_summary.level = AnalysisLevel::coupled;
+  auto run_start = std::chrono::steady_clock::now();
+  try {
+    const DynamicAnalysisResult r = run_dynamic_analysis(vp, coupled);
+    coupled_summary = summarize_level(r);
+    v.coupled = summarize_stage_dynamics(vp, statics, coupled, r, zone, selection);
+    v.coupled->wall_s = seconds_since(run_start);
+  } catch (const engine::SolverError& e) {
+    v.error = fmt::format("coupled: {}", e.what());
+    coupled_summary.error = e.what();
+  }
+
+  DynamicAnalysisRequest sc = base;
+  sc.level = AnalysisLevel::semi_coupled_enhanced;
+  LevelSummary sc_summary;
+  sc_summary.level = AnalysisLevel::semi_coupled_enhanced;
+  run_start = std::chrono::steady_clock::now();
+  try {
+    const DynamicAnalysisResult r = run_dynamic_analysis(vp, sc);
+    sc_summary = summarize_level(r);
+    v.sc = summarize_stage_dynamics(vp, statics, sc, r, zone, selection,
+                                    v.coupled ? v.coupled->most_loaded_line : std::string());
+    v.sc->wall_s = seconds_since(run_start);
+  } catch (const engine::SolverError& e) {
+    const std::string message = fmt::format("sc-enhanced: {}", e.what());
+    v.error = v.error ? *v.error + "; " + message : message;
+    sc_summary.error = e.what();
+  }
+  v.comparison.levels = {std::move(sc_summary), std::move(coupled_summary)};
+  if (v.coupled) final_checks(vp, v.comparison.levels.back(), v);
+  v.wall_s = seconds_since(start);
+  return v;
+}
+
+/// The failing check of largest utilization over the verified cases, else
+/// the largest utilization.
+std::string governing_of(const AdvancedStageResults& r) {
+  struct Candidate {
+    double utilization = -1.0;
+    bool pass = true;
+    std::string text;
+  };
+  Candidate worst;
+  auto consider = [&](double u, bool pass, std::string text) {
+    // A failing check outranks every passing one.
+    const bool better = worst.pass && !pass ? true : (worst.pass == pass && u > worst.utilization);
+    if (better) worst = {u, pass, std::move(text)};
+  };
+  for (const CriticalCaseVerification& c : r.cases) {
+    for (const FinalLineCheck& l : c.lines)
+      consider(l.utilization, l.pass, fmt::format("{}: dynamic tension {} {:.3f}", c.case_name, l.line, l.utilization));
+    if (c.offset_limit_m && *c.offset_limit_m > 0.0)
+      consider(c.mpm_offset_m / *c.offset_limit_m, c.offset_limit_pass,
+               fmt::format("{}: MPM offset {:.2f} m / limit {:.2f} m", c.case_name, c.mpm_offset_m, *c.offset_limit_m));
+    if (c.soz_offset)
+      consider(c.soz_offset->ratio, c.soz_offset->passes,
+               fmt::format("{}: MPM offset / SOZ {:.3f} ({})", c.case_name, c.soz_offset->ratio,
+                           c.soz_offset->governing_riser));
+    if (!c.static_riser.empty())
+      consider(c.static_riser_utilization, c.static_risers_pass,
+               fmt::format("{}: riser {} {} {:.3f} (static equilibrium)", c.case_name, c.static_riser,
+                           c.static_riser_criterion, c.static_riser_utilization));
+    for (const FinalRiserCheck& rc : c.risers)
+      if (rc.limit_N)
+        consider(rc.utilization, rc.pass,
+                 fmt::format("{}: riser {} top tension {:.3f}", c.case_name, rc.riser, rc.utilization));
+  }
+  return worst.text;
+}
+
+}  // namespace
+
+double advanced_stage_duration(const Project& project) {
+  for (const Stage& s : project.stages)
+    if (s.name == "advanced" && s.duration_s) return *s.duration_s;
+  return kAdvancedStageDuration_s;
+}
+
+AdvancedStageResults run_advanced_stage(const ValidatedProject& vp, const AdvancedStageOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  AdvancedStageResults out;
+  out.intermediate = run_intermediate_stage(vp);
+  out.intermediate.statics.stage = "advanced";
+  out.duration_s = options.duration_s.value_or(advanced_stage_duration(vp.project));
+  out.output_step_s = std::min(kOutputStep_s, out.duration_s);
+  out.seed = kSeed;
+
+  DynamicAnalysisRequest base;
+  base.duration_s = out.duration_s;
+  base.output_step_s = out.output_step_s;
+  base.seed = out.seed;
+  const auto runs_start = std::chrono::steady_clock::now();
+  // One case at a time: the coupled run already spreads its lines over the
+  // worker pool, and its memory is that of every FE line of the case.
+  for (const RankedCase& ranked : out.intermediate.ranked) {
+    if (!ranked.critical) continue;
+    base.load_case = out.intermediate.statics.cases[ranked.case_index].case_name;
+    base.statics = &out.intermediate.statics.cases[ranked.case_index];
+    const auto limit = options.coupled_max_steps_by_case.find(base.load_case);
+    const long max_steps = limit != options.coupled_max_steps_by_case.end()
+                               ? limit->second
+                               : options.coupled_max_steps_between_outputs;
+    out.cases.push_back(verify_case(vp, out.intermediate, ranked, base, max_steps));
+  }
+  out.verification_wall_s = seconds_since(runs_start);
+  for (const CriticalCaseVerification& c : out.cases) {
+    if (!c.coupled) out.failed_cases.push_back(c.case_name);
+    out.pass = out.pass && c.pass;
+  }
+  out.failed_runs = static_cast<int>(out.failed_cases.size());
+  out.governing = governing_of(out);
+  out.wall_time_s = seconds_since(start);
+  return out;
+}
+
+}  // namespace spiral::design

@@ -1,0 +1,60 @@
+#pragma once
+// The intermediate stage (DESIGN.md §2): the enhanced S-C dynamic analysis of
+// the full load-case matrix (every load case as the project lists it: its
+// headings, environments, intact or one line damaged), then the ranking of
+// the cases and the selection of the critical ones for the advanced stage.
+//
+// Per case: the static part of the preliminary stage (run_static_stage: the
+// coupled static equilibria with FE risers, the code check, the still-water
+// SOZ) and a 3-h enhanced S-C storm from that equilibrium
+// (stage_dynamics.hpp). Ranking measures, each ≤ 1 passes:
+//   tension   MPM fairlead tension of the most loaded line with the code's
+//             dynamic factor (stage_dynamics.hpp);
+//   offset    MPM horizontal offset / platform SOZ in its direction;
+//   riser     the largest riser utilization of the case's static
+//             equilibrium (FE risers with the case's current; the risers'
+//             dynamic response is not analysed at this level).
+// A case's score is the largest of the three; cases are ranked by score, and
+// the critical ones are the top kCriticalCases plus every failing case.
+// Storms run in parallel over the cases (each owns its state).
+
+#include <string>
+#include <vector>
+
+#include "design/stages/stage_dynamics.hpp"
+#include "design/stages/static_stage.hpp"
+#include "design/project/validated_project.hpp"
+
+namespace spiral::design {
+
+/// How many top-ranked cases go to the advanced stage (failing cases go too).
+inline constexpr std::size_t kCriticalCases = 3;
+
+struct RankedCase {
+  std::size_t case_index = 0;  ///< into IntermediateStageResults::statics.cases (0 is still water)
+  StageDynamics storm;
+  double tension_utilization = 0.0;
+  double offset_ratio = 0.0;  ///< 0 without risers (no zone)
+  double riser_utilization = 0.0;
+  std::string riser;            ///< the riser that sets riser_utilization
+  std::string riser_criterion;  ///< its governing criterion
+  double score = 0.0;
+  std::string governing_measure;  ///< tension | offset | riser
+  bool pass = true;
+  bool critical = false;
+  int rank = 0;  ///< 1 = most severe
+};
+
+struct IntermediateStageResults {
+  StaticStageResults statics;     ///< static cases, code check and SOZ (no storm)
+  std::vector<RankedCase> ranked;  ///< most severe first
+  bool pass = true;                ///< every case passes every measure
+  int threads = 1;
+  double storms_wall_s = 0.0;  ///< all storms, wall clock
+  double wall_time_s = 0.0;
+};
+
+/// Throws as run_static_stage and run_dynamic_analysis (the message names the case).
+IntermediateStageResults run_intermediate_stage(const ValidatedProject& project);
+
+}  // namespace spiral::design

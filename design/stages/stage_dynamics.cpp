@@ -1,0 +1,185 @@
+#include "design/stages/stage_dynamics.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <numbers>
+
+#include "engine/numerics/statistics.hpp"
+
+namespace spiral::design {
+
+namespace {
+
+constexpr double kRadToDeg = 180.0 / std::numbers::pi;
+/// The stage's storm: a 3-h sea state (the MPM's target duration) at the
+/// output step of `spiral analyze`, seed 1 (reproducible).
+constexpr double kStormDuration_s = 10800.0;
+constexpr double kStormOutputStep_s = 0.5;
+
+std::vector<double> row(const Eigen::Matrix<double, 6, Eigen::Dynamic>& m, int dof, double scale) {
+  std::vector<double> out(static_cast<std::size_t>(m.cols()));
+  for (Eigen::Index k = 0; k < m.cols(); ++k) out[static_cast<std::size_t>(k)] = m(dof, k) * scale;
+  return out;
+}
+
+}  // namespace
+
+double fairlead_segment_mbl(const ValidatedProject& vp, const std::string& line_name) {
+  for (const MooringLine& line : vp.project.mooring.lines) {
+    if (line.name != line_name || line.segments.empty()) continue;
+    for (const LineTypeProperties& t : vp.line_types)
+      if (t.name == line.segments.back().type) return t.breaking_load_N;
+  }
+  return 0.0;
+}
+
+StormChannel summarize_storm_channel(std::string name, std::string unit, std::vector<double> values,
+                                 double dt_s) {
+  StormChannel c;
+  c.name = std::move(name);
+  c.unit = std::move(unit);
+  const engine::ChannelMoments m = engine::channel_moments(values);
+  c.mean = m.mean;
+  c.std_dev = m.std_dev;
+  c.minimum = m.minimum;
+  c.maximum = m.maximum;
+  if (m.std_dev <= 1e-12 * std::max(1.0, std::abs(m.mean))) {
+    c.extremes_note = "constant channel";
+  } else {
+    try {
+      const engine::ChannelStatistics s =
+          engine::analyze_channel(values, dt_s, engine::welch_segment_length(values.size()));
+      c.mpm_max = s.maximum.mpm_gumbel;
+      c.mpm_min = s.minimum.mpm_gumbel;
+      c.mpm_max_weibull = s.maximum.mpm_weibull;
+      c.spectral_peak_period_s = s.spectral_peak_period_s;
+      c.welch_segments = s.spectrum.segments;
+      const Eigen::Index last = engine::spectrum_last_significant_bin(s.spectrum);
+      for (Eigen::Index k = 0; k <= last; ++k) {
+        c.spectrum_frequency_rad_per_s.push_back(s.spectrum.frequency_rad_s(k));
+        c.spectrum_density.push_back(s.spectrum.density(k));
+      }
+    } catch (const std::invalid_argument& e) {
+      // Too short a record for the fits: the moments stand, the reason is shown.
+      c.extremes_note = e.what();
+    }
+  }
+  c.values = std::move(values);
+  return c;
+}
+
+StageDynamics run_stage_dynamics(const ValidatedProject& vp, const StaticCaseResult& statics,
+                                 AnalysisLevel level, const SozResult* zone,
+                                 std::string selection) {
+  const auto start = std::chrono::steady_clock::now();
+  DynamicAnalysisRequest request;
+  request.load_case = statics.case_name;
+  request.level = level;
+  request.duration_s = kStormDuration_s;
+  request.output_step_s = kStormOutputStep_s;
+  request.seed = 1;
+  request.statics = &statics;
+  const DynamicAnalysisResult r = run_dynamic_analysis(vp, request);
+  StageDynamics out = summarize_stage_dynamics(vp, statics, request, r, zone, std::move(selection));
+  out.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return out;
+}
+
+StageDynamics summarize_stage_dynamics(const ValidatedProject& vp, const StaticCaseResult& statics,
+                                       const DynamicAnalysisRequest& request,
+                                       const DynamicAnalysisResult& r, const SozResult* zone,
+                                       std::string selection, const std::string& tension_line) {
+  const AnalysisLevel level = r.level;
+  StageDynamics out;
+  out.case_name = r.case_name;
+  out.condition = statics.condition;
+  out.damaged_line = statics.damaged_line;
+  out.selection = std::move(selection);
+  out.level = level;
+  out.duration_s = request.duration_s;
+  out.output_step_s = request.output_step_s;
+  out.seed = r.seed;
+  out.times_s.assign(r.times_s.data(), r.times_s.data() + r.times_s.size());
+  out.notes = r.notes;
+  out.equilibrium_wall_s = r.equilibrium_wall_s;  // 0 when the stage's static case was reused
+  out.reduction_wall_s = r.reduction_wall_s;
+  out.forcing_wall_s = r.forcing_wall_s;
+  out.dynamics_wall_s = r.dynamics_wall_s + r.wave_frequency_wall_s;
+  out.tensions_wall_s = r.tensions_wall_s;
+  out.solver_steps = r.coupled_solver ? static_cast<int>(r.coupled_solver->steps)
+                                      : static_cast<int>(r.solver.steps);
+  const double dt = request.output_step_s;
+
+  out.channels.push_back(summarize_storm_channel("surge", "m", row(r.total, 0, 1.0), dt));
+  out.channels.push_back(summarize_storm_channel("sway", "m", row(r.total, 1, 1.0), dt));
+  out.channels.push_back(summarize_storm_channel("yaw", "deg", row(r.total, 5, kRadToDeg), dt));
+  std::vector<double> offset(static_cast<std::size_t>(r.total.cols()));
+  std::size_t largest = 0;
+  for (Eigen::Index k = 0; k < r.total.cols(); ++k) {
+    offset[static_cast<std::size_t>(k)] = r.total.col(k).head<2>().norm();
+    if (offset[static_cast<std::size_t>(k)] > offset[largest]) largest = static_cast<std::size_t>(k);
+  }
+  const double largest_direction_deg =
+      offset.empty() ? 0.0
+                     : std::atan2(r.total(1, static_cast<Eigen::Index>(largest)),
+                                  r.total(0, static_cast<Eigen::Index>(largest))) *
+                           kRadToDeg;
+  out.channels.push_back(summarize_storm_channel("offset", "m", std::move(offset), dt));
+
+  // The tension records the stage checks: the coupled run's own FE line
+  // tensions (its mooring lines; the risers follow them in dynamic_tensions),
+  // else the quasi-static catenary tensions at the total motion.
+  struct Record {
+    const std::string* line;
+    const std::vector<double>* tension_N;
+  };
+  std::vector<Record> records;
+  if (level == AnalysisLevel::coupled) {
+    out.tension_source = "coupled";
+    for (const LineDynamicsSeries& t : r.dynamic_tensions) {
+      const bool mooring = std::any_of(vp.project.mooring.lines.begin(), vp.project.mooring.lines.end(),
+                                       [&](const MooringLine& l) { return l.name == t.line; });
+      if (mooring) records.push_back({&t.line, &t.tension_N});
+    }
+  } else {
+    for (const TensionSeries& t : r.tensions) records.push_back({&t.line, &t.tension_N});
+  }
+  // The requested line, else the most loaded one (largest sampled tension).
+  const Record* loaded = nullptr;
+  double peak = -1.0;
+  for (const Record& t : records) {
+    const double m = t.tension_N->empty() ? 0.0 : *std::max_element(t.tension_N->begin(), t.tension_N->end());
+    if (tension_line.empty() ? m > peak : *t.line == tension_line) peak = m, loaded = &t;
+  }
+  if (loaded) {
+    out.most_loaded_line = *loaded->line;
+    out.channels.push_back(summarize_storm_channel("tension " + *loaded->line, "N", *loaded->tension_N, dt));
+    const StormChannel& t = out.channels.back();
+    out.fairlead_mbl_N = fairlead_segment_mbl(vp, *loaded->line);
+    const DynamicTensionCheck check =
+        dynamic_tension_check(vp.project.criteria.mooring, statics.condition == "damaged", t.mean,
+                              t.mpm_max.value_or(t.maximum), out.fairlead_mbl_N);
+    out.dynamic_safety_factor = check.factor;
+    out.tension_utilization = check.utilization;
+    out.tension_pass = check.utilization <= 1.0;
+  }
+
+  if (zone && !zone->risers.empty()) {
+    const StormChannel& o = out.channels[3];
+    StaticCaseResult extreme;  // the MPM offset in the direction of the largest sample
+    extreme.case_name = out.case_name;
+    extreme.condition = out.condition;
+    extreme.damaged_line = out.damaged_line;
+    extreme.offset_summary.horizontal_m = o.mpm_max.value_or(o.maximum);
+    extreme.offset_summary.direction_deg = std::fmod(largest_direction_deg + 360.0, 360.0);
+    OffsetCheck check = check_offset(*zone, extreme, "still-water");
+    check.kind = "extreme";
+    out.extreme_offset = check;
+  }
+  return out;
+}
+
+}  // namespace spiral::design

@@ -1,0 +1,99 @@
+#pragma once
+// The time-domain part of a stage (DESIGN.md §2): one load case's S-C
+// analysis (dynamic_analysis.hpp) reduced to what a stage checks and reports —
+// the motion channels (surge, sway, yaw and the horizontal offset), the
+// quasi-static fairlead tension of the most loaded line, their statistics
+// (moments, Welch spectrum, MPM of the 3-h maximum) and the two dynamic
+// checks:
+//  - tension: the line's MPM fairlead tension against its fairlead segment's
+//    MBL with the code's dynamic factor (mooring_checks.hpp).
+//  - extreme offset: the MPM horizontal offset against the platform SOZ in
+//    the direction of the largest sampled offset (when a zone is given).
+// MPM: the Gumbel estimate of engine/numerics/statistics.hpp (segment maxima,
+// max-stable, so it scales to 3 h without assuming a narrow band).
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "design/criteria/mooring_checks.hpp"
+#include "design/analysis/dynamic_analysis.hpp"
+#include "design/soz/soz.hpp"
+#include "design/analysis/static_case.hpp"
+#include "design/project/validated_project.hpp"
+
+namespace spiral::design {
+
+/// One channel of a stage's dynamic analysis and its statistics.
+struct StormChannel {
+  std::string name;          ///< surge, sway, yaw, offset, or "tension <line>"
+  std::string unit;          ///< m, deg or N (the values below are in it)
+  std::vector<double> values;  ///< per output time
+  double mean = 0.0, std_dev = 0.0, minimum = 0.0, maximum = 0.0;
+  /// MPM of the 3-h maximum and minimum (Gumbel); absent with `extremes_note`.
+  std::optional<double> mpm_max, mpm_min;
+  std::optional<double> mpm_max_weibull;  ///< second estimate, for comparison
+  std::string extremes_note;              ///< why the extremes are missing (constant or short channel)
+  /// One-sided Welch spectrum up to its last significant bin (rad/s, unit²·s/rad).
+  std::vector<double> spectrum_frequency_rad_per_s, spectrum_density;
+  std::size_t welch_segments = 0;
+  double spectral_peak_period_s = 0.0;  ///< 0 when no spectrum
+};
+
+struct StageDynamics {
+  std::string case_name;
+  std::string condition;  ///< intact | damaged
+  std::optional<std::string> damaged_line;
+  std::string selection;  ///< why this case was analysed
+  AnalysisLevel level = AnalysisLevel::semi_coupled_enhanced;
+  double duration_s = 0.0;
+  double output_step_s = 0.0;
+  std::uint64_t seed = 1;
+  std::vector<double> times_s;
+  /// surge (m), sway (m), yaw (deg), offset (m, horizontal), tension of the most loaded line (N).
+  std::vector<StormChannel> channels;
+  std::string most_loaded_line;  ///< by its largest sampled fairlead tension
+  /// Where the tension channel comes from: "quasi-static" (catenary at the
+  /// instantaneous fairlead, the S-C levels) or "coupled" (the dynamic FE line
+  /// of the coupled run).
+  std::string tension_source = "quasi-static";
+  double fairlead_mbl_N = 0.0;   ///< MBL of that line's fairlead segment
+  double dynamic_safety_factor = 0.0;  ///< API SF_dyn, or γ_dyn for DNV
+  double tension_utilization = 0.0;    ///< see the file comment; pass when <= 1
+  bool tension_pass = true;
+  std::optional<OffsetCheck> extreme_offset;  ///< kind "extreme", with a zone
+  std::vector<std::string> notes;
+  double equilibrium_wall_s = 0.0;  ///< 0 when the stage's static case was reused
+  double reduction_wall_s = 0.0, forcing_wall_s = 0.0, dynamics_wall_s = 0.0,
+         tensions_wall_s = 0.0;
+  double wall_s = 0.0;  ///< the whole analysis and its statistics
+  int solver_steps = 0;
+};
+
+/// Channel statistics of a uniformly sampled record (dt_s > 0).
+StormChannel summarize_storm_channel(std::string name, std::string unit, std::vector<double> values,
+                                 double dt_s);
+
+/// MBL of the fairlead (top) segment of a mooring line; 0 for an unknown line.
+double fairlead_segment_mbl(const ValidatedProject& project, const std::string& line_name);
+
+/// The stage's view of one finished analysis `result` of `request` (whose
+/// `statics` is the case's static equilibrium): channels, statistics and the
+/// two dynamic checks. The tension channel is the mooring line `tension_line`
+/// (empty: the most loaded one); a coupled result's tensions are its dynamic
+/// FE tensions (risers left out), the other levels' the quasi-static ones.
+/// `wall_s` is left to the caller (it timed the analysis).
+StageDynamics summarize_stage_dynamics(const ValidatedProject& project, const StaticCaseResult& statics,
+                                       const DynamicAnalysisRequest& request,
+                                       const DynamicAnalysisResult& result, const SozResult* zone,
+                                       std::string selection, const std::string& tension_line = "");
+
+/// Runs the analysis of `statics.case_name` at `level` (3 h, 0.5 s, seed 1),
+/// reusing `statics` as its static equilibrium. `zone`: the platform SOZ for
+/// the extreme-offset check (none: no check). Throws as run_dynamic_analysis.
+StageDynamics run_stage_dynamics(const ValidatedProject& project, const StaticCaseResult& statics,
+                                 AnalysisLevel level, const SozResult* zone,
+                                 std::string selection);
+
+}  // namespace spiral::design

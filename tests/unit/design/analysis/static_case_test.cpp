@@ -1,0 +1,109 @@
+// The design-level coupled static case: mean environmental loads enter the
+// equilibrium as the coefficient tables say, the offset follows the
+// stiffness for small loads, and loads without data are reported, not dropped.
+#include <gtest/gtest.h>
+
+#include <numbers>
+
+#include "design/analysis/static_case.hpp"
+
+namespace spiral::design {
+namespace {
+
+constexpr double kDegToRad = std::numbers::pi / 180.0;
+
+ValidatedProject oc4_with_current(double speed_m_per_s) {
+  ValidatedProject p = load_validated_project(std::string(SPIRAL_SOURCE_DIR) + "/scenarios/oc4-semisubmersible.yaml");
+  HullLoadCoefficients c;
+  c.headings_rad = {0.0, 90.0 * kDegToRad, 180.0 * kDegToRad, 270.0 * kDegToRad};
+  c.surge_m2 = {1000.0, 0.0, -1000.0, 0.0};
+  c.sway_m2 = {0.0, 1000.0, 0.0, -1000.0};
+  c.yaw_m3 = {0.0, 0.0, 0.0, 0.0};
+  p.project.hull.current_coefficients = c;
+  Environment environment;
+  environment.name = "current-only";
+  environment.current = Current{90.0 * kDegToRad, {{0.0, speed_m_per_s}, {-200.0, speed_m_per_s}}};
+  environment.wind = Wind{20.0, 0.0, WindSpectrum::none, 10.0};
+  p.project.environments.push_back(environment);
+  p.project.load_cases.push_back({"current-case", "current-only", std::nullopt, DesignCondition::extreme});
+  return p;
+}
+
+TEST(StaticCase, CurrentLoadFollowsTheCoefficientTable) {
+  const auto project = oc4_with_current(0.5);
+  const auto result = run_static_case(project, {"current-case", std::nullopt, false});
+  // ½ ρ C·A V² with C·A = 1000 m² at β = 90° (the hull yaws by millidegrees only).
+  const double expected_N = 0.5 * 1025.0 * 1000.0 * 0.25;
+  EXPECT_NEAR(result.environment_force(1), expected_N, 1e-4 * expected_N);
+  EXPECT_NEAR(result.environment_force(0), 0.0, 1e-4 * expected_N);
+  // The three-line spread is mirror-symmetric about x only: a sway load gives
+  // a surge of second order (x ∝ F_y², 5 cm at 1.8 m here), so ±2°.
+  EXPECT_NEAR(result.offset_summary.direction_deg, 90.0, 2.0);
+}
+
+TEST(StaticCase, SmallLoadOffsetMatchesTheStiffness) {
+  const auto still = run_static_case(oc4_with_current(0.0), {"current-case", std::nullopt, false});
+  const auto loaded = run_static_case(oc4_with_current(0.5), {"current-case", std::nullopt, false});
+  const engine::Matrix6d k = still.hydrostatic_stiffness + still.stiffness;
+  const engine::Vector6d predicted = k.fullPivLu().solve(loaded.environment_force);
+  // 1.8 m of sway against a stiffness that changes ~1 % per 7 m: 2 % covers
+  // the second-order terms.
+  EXPECT_NEAR(loaded.offset(1) - still.offset(1), predicted(1), 0.02 * predicted(1));
+}
+
+// Cases with the same environment share their FE lines' rest solutions
+// through a RestSolutionCache: a case that takes them has exactly the results
+// of one that solves them itself.
+TEST(StaticCase, RestSolutionsTakenFromTheCacheGiveIdenticalResults) {
+  auto project = oc4_with_current(0.5);
+  for (auto& line : project.project.mooring.lines) line.model = LineModel::fe;
+  const StaticCaseRequest request{"current-case", std::nullopt, false};
+  RestSolutionCache cache;
+  run_static_case(project, request, &cache);
+  ASSERT_EQ(cache.solutions.size(), project.project.mooring.lines.size());
+  const auto cached = run_static_case(project, request, &cache);
+  const auto solved = run_static_case(project, request);
+  EXPECT_EQ(cached.offset, solved.offset);
+  EXPECT_EQ(cached.stiffness, solved.stiffness);
+  ASSERT_EQ(cached.lines.size(), solved.lines.size());
+  for (std::size_t i = 0; i < solved.lines.size(); ++i) {
+    EXPECT_EQ(cached.lines[i].fairlead_tension_N, solved.lines[i].fairlead_tension_N)
+        << solved.lines[i].name;
+  }
+}
+
+TEST(StaticCase, LoadsWithoutDataAreNoted) {
+  const auto result = run_static_case(oc4_with_current(0.5), {"current-case", std::nullopt, false});
+  bool wind_noted = false;
+  for (const auto& note : result.notes) wind_noted |= note.find("wind_coefficients") != std::string::npos;
+  EXPECT_TRUE(wind_noted);
+  EXPECT_EQ(result.environment_force(5), 0.0);  // no yaw coefficients
+}
+
+}  // namespace
+}  // namespace spiral::design
+
+namespace spiral::design {
+namespace {
+
+TEST(StaticCase, LoadTheMooringCannotHoldFailsNamingWhatAndHowFar) {
+  // 30 m/s on 1000 m² of hull is 460 MN: holding it would stretch a line
+  // beyond 30 % strain, where the catenary refuses — no equilibrium exists.
+  // 8 m/s of current on 1000 m² is 33 MN against a mooring that holds ~3 MN
+  // before its lines are stretched taut: no equilibrium exists.
+  try {
+    run_static_case(oc4_with_current(30.0), {"current-case", std::nullopt, false});
+    FAIL() << "expected SolverError";
+  } catch (const engine::SolverError& error) {
+    // Which analysis, how far it got, which line stopped it, what to check.
+    const std::string text = error.what();
+    EXPECT_NE(text.find("static equilibrium"), std::string::npos) << text;
+    EXPECT_NE(text.find("line 'L"), std::string::npos) << text;
+    EXPECT_NE(text.find("pretensions"), std::string::npos) << text;
+    EXPECT_GT(error.diagnostics().iterations, 0) << text;
+    EXPECT_GT(error.diagnostics().residual, 0.0) << text;
+  }
+}
+
+}  // namespace
+}  // namespace spiral::design
