@@ -245,18 +245,18 @@ int run_analyze(const std::string& project_file, const AnalyzeOptions& o) {
              o.seed, o.duration_s, folder.string());
   fmt::print("  equilibrium {:.3f} s, reduction {:.3f} s, forcing {:.3f} s, dynamics {:.3f} s, WF {:.3f} s, "
              "tensions {:.3f} s\n",
-             result.equilibrium_wall_s, result.reduction_wall_s, result.forcing_wall_s, result.dynamics_wall_s,
-             result.wave_frequency_wall_s, result.tensions_wall_s);
+             result.timing.equilibrium_s, result.timing.reduction_s, result.timing.forcing_s, result.timing.dynamics_s,
+             result.timing.wave_frequency_s, result.timing.tensions_s);
   if (result.coupled_solver) {
     const engine::IdaStatistics& s = *result.coupled_solver;
     fmt::print("  coupled: {} lines, {} states; {} steps, {} Newton-matrix setups ({} partial), {} residuals; "
                "{:.1f}x real time\n",
                result.coupled_lines, result.coupled_state_size, s.steps, s.newton_matrix_setups,
                s.newton_matrix_updates, s.residual_evaluations,
-               result.dynamics_wall_s > 0.0 ? o.duration_s / result.dynamics_wall_s : 0.0);
+               result.timing.dynamics_s > 0.0 ? o.duration_s / result.timing.dynamics_s : 0.0);
   }
   if (!result.dynamic_tensions.empty()) {
-    fmt::print("  line dynamics {:.3f} s; max fairlead tension, quasi-static vs dynamic:\n", result.line_dynamics_wall_s);
+    fmt::print("  line dynamics {:.3f} s; max fairlead tension, quasi-static vs dynamic:\n", result.timing.line_dynamics_s);
     for (std::size_t l = 0; l < result.dynamic_tensions.size() && l < result.tensions.size(); ++l) {
       const auto& qs = result.tensions[l].tension_N;
       const auto& dy = result.dynamic_tensions[l].tension_N;

@@ -52,9 +52,10 @@ Section final_check_section(const design::AdvancedStageResults& r, const std::st
   s.blocks.emplace_back(Paragraph{fmt::format(
       "Every check below uses the coupled run of the case. Tension: {} with every mooring line's MPM fairlead "
       "tension (Gumbel fit, most probable 3-h maximum; the sample maximum where the record is too short for the "
-      "fit) against its fairlead segment's MBL with the code's dynamic factor. Offset: the MPM horizontal "
-      "offset against the offset limit and, with risers, against the platform SOZ in the direction of the "
-      "largest sampled offset. Risers: the MPM top tension against the riser's maximum top tension where its "
+      "fit) against its fairlead segment's MBL with the code's dynamic factor. Offset: the most probable 3-h "
+      "maximum of the horizontal offset (Weibull fit to the record's peaks) against the offset limit and, with "
+      "risers, the most probable 3-h maximum of offset / SOZ allowable in the offset's direction against 1 (the "
+      "SOZ column shows it as an offset in the direction where the record comes closest to the zone). Risers: the MPM top tension against the riser's maximum top tension where its "
       "criteria give one; the other riser criteria as the static equilibrium of the case checked them.",
       code)});
   Table lines{"final-tension",

@@ -191,13 +191,15 @@ Section dynamics_section(const design::StageDynamics& d, const std::string& code
       "tensions {:.2f} s; the static equilibrium was reused from the static cases).",
       design::to_string(d.level), d.case_name, d.condition,
       d.damaged_line ? fmt::format(", {} removed", *d.damaged_line) : std::string(), d.selection, d.duration_s,
-      d.output_step_s, d.seed, d.wall_s, d.reduction_wall_s, d.forcing_wall_s, d.dynamics_wall_s, d.solver_steps,
-      d.tensions_wall_s)});
+      d.output_step_s, d.seed, d.wall_s, d.timing.reduction_s, d.timing.forcing_s,
+      d.timing.dynamics_s + d.timing.wave_frequency_s, d.solver_steps,
+      d.timing.tensions_s)});
   for (Block& b : storm_blocks(d, "storm")) s.blocks.push_back(std::move(b));
   Table checks{"storm-checks",
                fmt::format("Dynamic checks of the storm. Tension: {} with the MPM fairlead tension against the "
-                           "fairlead segment's MBL (dynamic factor {:.2f}). Offset: MPM horizontal offset "
-                           "against the platform SOZ in the direction of the largest sampled offset.",
+                           "fairlead segment's MBL (dynamic factor {:.2f}). Offset: the most probable 3-h "
+                           "maximum of offset / SOZ allowable in the offset's direction (Weibull fit to the "
+                           "record's peaks), shown as an offset where the record comes closest to the zone.",
                            code, d.dynamic_safety_factor),
                {"Check", "Item", "Value", "Limit", "Utilization", "Result"},
                {}};

@@ -2,7 +2,6 @@
 
 #include <fmt/format.h>
 
-#include <chrono>
 #include <cmath>
 
 #include "design/project/command_line_reference.hpp"
@@ -14,13 +13,10 @@
 #include "engine/analysis/line_array.hpp"
 #include "engine/numerics/sampled_trajectory.hpp"
 #include "engine/common/parallel_for.hpp"
+#include "engine/common/stopwatch.hpp"
 
 namespace spiral::design {
 namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 /// Sample spacing of the wave-frequency motion the fairleads follow: the
 /// natural cubic spline through samples 0.2 s apart reproduces a 5 s wave
@@ -68,7 +64,7 @@ DynamicAnalysisResult run_coupled_analysis(const ValidatedProject& validated,
   const Environment& environment = environment_of(project, load_case);
 
   DynamicAnalysisResult result = result_of_model(model, request, load_case.name, environment.name);
-  result.reduction_wall_s = 0.0;  // set below: the FE lines' statics
+  result.timing.reduction_s = 0.0;  // set below: the FE lines' statics
   if (model.hull.radiation_memory) {
     model.hull.radiation_memory.reset();
     model.hull.added_mass = build_hull_model(project).low_frequency_added_mass;
@@ -78,7 +74,7 @@ DynamicAnalysisResult run_coupled_analysis(const ValidatedProject& validated,
   }
 
   // The lines at the hull's static equilibrium, with the case's current.
-  auto start = std::chrono::steady_clock::now();
+  engine::Stopwatch start;
   const std::string damaged = load_case.damaged_line.value_or("");
   const std::optional<engine::CurrentProfile> current = current_profile_of(environment);
   const engine::Vector6d q0 = model.statics.offset;
@@ -113,10 +109,10 @@ DynamicAnalysisResult run_coupled_analysis(const ValidatedProject& validated,
     out.environment.sea_ramp_s = request.line_dynamics_ramp_s;
     out.initial = std::move(setup.statics);
   });
-  result.reduction_wall_s = seconds_since(start);
+  result.timing.reduction_s = start.seconds();
 
   // Wave-frequency motion at the fairleads (the S-C RAO motion of this seed).
-  start = std::chrono::steady_clock::now();
+  start.restart();
   engine::CoupledOptions options;
   const auto n_wave =
       static_cast<Eigen::Index>(std::ceil(request.duration_s / kWaveMotionSample_s)) + 2;
@@ -131,7 +127,7 @@ DynamicAnalysisResult run_coupled_analysis(const ValidatedProject& validated,
         "no wave-frequency motions: the project gives no hull.hydrodynamics.excitation_file (.3) "
         "or rao_file (.4); the fairleads follow the low-frequency motion only");
   }
-  result.wave_frequency_wall_s = seconds_since(start);
+  result.timing.wave_frequency_s = start.seconds();
 
   // Hull + lines together.
   const auto n_out = static_cast<long>(std::floor(request.duration_s / request.output_step_s + 1e-9));
@@ -172,7 +168,7 @@ DynamicAnalysisResult run_coupled_analysis(const ValidatedProject& validated,
   if (request.progress) request.progress(1.0);
   result.times_s = series.times_s;
   result.low_frequency = series.position;
-  result.dynamics_wall_s = series.wall_clock_s;
+  result.timing.dynamics_s = series.wall_clock_s;
   result.coupled_solver = series.statistics;
   result.coupled_state_size = series.state_size;
   result.coupled_lines = count;
@@ -191,10 +187,10 @@ DynamicAnalysisResult run_coupled_analysis(const ValidatedProject& validated,
     t.solver = series.statistics;
     result.dynamic_tensions.push_back(std::move(t));
   }
-  start = std::chrono::steady_clock::now();
+  start.restart();
   if (request.compute_tensions)
     result.tensions = quasi_static_fairlead_tensions(project, damaged, result.total);
-  result.tensions_wall_s = seconds_since(start);
+  result.timing.tensions_s = start.seconds();
   {
     std::size_t worst = 0;
     for (std::size_t i = 1; i < series.step_limiting_outputs.size(); ++i) {

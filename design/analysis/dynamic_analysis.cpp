@@ -6,7 +6,6 @@
 
 #include <Eigen/LU>
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <memory>
 #include <numbers>
@@ -32,6 +31,8 @@
 #include "engine/hull/radiation_memory.hpp"
 #include "engine/hull/slow_drift.hpp"
 #include "engine/hull/wamit_3.hpp"
+#include "engine/common/stopwatch.hpp"
+#include "engine/common/table_range_error.hpp"
 
 namespace spiral::design {
 namespace {
@@ -73,10 +74,6 @@ struct MorisonForcing {
   engine::MorisonFlow flow;
   engine::HullPose pose;
 };
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 engine::CoefficientTable table_of(const HullLoadCoefficients& c) {
   return {c.headings_rad, c.surge_m2, c.sway_m2, c.yaw_m3};
@@ -157,7 +154,7 @@ std::optional<Eigen::Matrix<double, 6, Eigen::Dynamic>> wave_frequency_motion(
         {ref.x() + model.statics.offset(0), ref.y() + model.statics.offset(1),
          model.statics.offset(5)});
     return engine::evaluate_first_order_many(series, times);
-  } catch (const std::invalid_argument& e) {
+  } catch (const engine::TableRangeError& e) {
     heading_error(project, environment.name, "wave-frequency RAOs (hull.hydrodynamics)", e);
   }
 }
@@ -215,14 +212,12 @@ DynamicModel build_dynamic_model(const ValidatedProject& validated,
   try {
     model.statics = request.statics ? *request.statics
                                     : run_static_case(validated, {request.load_case, std::nullopt, false});
-  } catch (const std::invalid_argument& e) {
-    if (std::string(e.what()).find("heading") != std::string::npos && environment.waves) {
-      heading_error(project, environment.name, "mean drift (hull.mean_drift)", e);
-    }
+  } catch (const engine::TableRangeError& e) {
+    if (environment.waves) heading_error(project, environment.name, "mean drift (hull.mean_drift)", e);
     throw;
   }
-  model.equilibrium_wall_s = model.statics.equilibrium_wall_s;
-  model.reduction_wall_s = model.statics.stiffness_wall_s;
+  model.timing.equilibrium_s = model.statics.equilibrium_wall_s;
+  model.timing.reduction_s = model.statics.stiffness_wall_s;
   model.notes = model.statics.notes;
   model.initial_offset = model.statics.offset;
 
@@ -303,7 +298,7 @@ DynamicModel build_dynamic_model(const ValidatedProject& validated,
   }
 
   // External force.
-  const auto forcing_start = std::chrono::steady_clock::now();
+  engine::Stopwatch forcing_start;
   std::shared_ptr<const engine::WaveRealization> sea;
   if (environment.waves) {
     sea = std::make_shared<const engine::WaveRealization>(
@@ -318,7 +313,7 @@ DynamicModel build_dynamic_model(const ValidatedProject& validated,
           *sea, table,
           {reference_point.x() + model.statics.offset(0),
            reference_point.y() + model.statics.offset(1), model.statics.offset(5)}));
-    } catch (const std::invalid_argument& e) {
+    } catch (const engine::TableRangeError& e) {
       heading_error(project, environment.name, "slow drift (hull.mean_drift)", e);
     }
     const double c = std::cos(drift->yaw_rad);
@@ -416,12 +411,12 @@ DynamicModel build_dynamic_model(const ValidatedProject& validated,
     };
   }
 
-  model.forcing_wall_s = seconds_since(forcing_start);
+  model.timing.forcing_s = forcing_start.seconds();
 
   // Enhanced S-C: line damping and added mass at the fairleads, the drag
   // linearized on the fairlead velocities of a first plain S-C run.
   if (request.level == AnalysisLevel::semi_coupled_enhanced) {
-    const auto start = std::chrono::steady_clock::now();
+    engine::Stopwatch start;
     // The plain S-C model as built so far (same forcing, same seed).
     const engine::HullTimeSeries plain =
         engine::simulate_hull(model.hull, model.loads, model.initial_offset,
@@ -442,7 +437,7 @@ DynamicModel build_dynamic_model(const ValidatedProject& validated,
     model.line_added_mass = lines.added_mass;
     model.line_damping = lines.damping;
     model.loads.lines = linearized;
-    model.reduction_wall_s += seconds_since(start);
+    model.timing.reduction_s += start.seconds();
     model.notes.push_back(
         "sc-enhanced: line damping and added mass from the quasi-static line shape derivative "
         "(normal Morison drag "
@@ -467,9 +462,7 @@ DynamicAnalysisResult result_of_model(const DynamicModel& model,
   result.line_added_mass = model.line_added_mass;
   result.line_damping = model.line_damping;
   result.notes = model.notes;
-  result.equilibrium_wall_s = model.equilibrium_wall_s;
-  result.reduction_wall_s = model.reduction_wall_s;
-  result.forcing_wall_s = model.forcing_wall_s;
+  result.timing = model.timing;
   return result;
 }
 
@@ -527,10 +520,10 @@ DynamicAnalysisResult run_dynamic_analysis(const ValidatedProject& validated,
   result.times_s = lf.times_s;
   result.low_frequency = lf.position;
   result.solver = lf.statistics;
-  result.dynamics_wall_s = lf.wall_clock_s;
+  result.timing.dynamics_s = lf.wall_clock_s;
 
   // Wave-frequency motions.
-  auto start = std::chrono::steady_clock::now();
+  engine::Stopwatch start;
   result.wave_frequency.setZero(6, lf.times_s.size());
   if (model.wave_split_frequency_rad_per_s > 0.0 && lf.times_s.size() >= 2) {
     // Morison hull: the integration carried LF and WF together.
@@ -559,18 +552,18 @@ DynamicAnalysisResult run_dynamic_analysis(const ValidatedProject& validated,
         "motions are low-frequency only");
   }
   result.total = result.low_frequency + result.wave_frequency;
-  result.wave_frequency_wall_s = seconds_since(start);
+  result.timing.wave_frequency_s = start.seconds();
 
   // Quasi-static fairlead tensions at the total motion.
-  start = std::chrono::steady_clock::now();
+  start.restart();
   if (request.compute_tensions) {
     result.tensions = quasi_static_fairlead_tensions(project, load_case.damaged_line.value_or(""),
                                                      result.total);
   }
-  result.tensions_wall_s = seconds_since(start);
+  result.timing.tensions_s = start.seconds();
 
   if (request.line_dynamics && result.times_s.size() >= 2) {
-    start = std::chrono::steady_clock::now();
+    start.restart();
     LineDynamicsInput lines;
     lines.damaged_line = load_case.damaged_line.value_or("");
     lines.current = current_profile_of(environment);
@@ -581,7 +574,7 @@ DynamicAnalysisResult run_dynamic_analysis(const ValidatedProject& validated,
     lines.ramp_s = request.line_dynamics_ramp_s;
     lines.sea = model.sea;
     result.dynamic_tensions = run_line_dynamics(project, lines);
-    result.line_dynamics_wall_s = seconds_since(start);
+    result.timing.line_dynamics_s = start.seconds();
     result.notes.push_back(
         fmt::format("dynamic tensions: FE mooring lines and risers with the total hull motion "
                     "prescribed at the fairleads and hang-offs, built up over the "

@@ -98,6 +98,24 @@ struct DynamicAnalysisRequest {
   std::function<void(double)> progress;
 };
 
+/// Wall-clock seconds of each phase of one analysis (DESIGN.md §1: every
+/// level reports its cost beside its results), JSON `timing_s`.
+struct AnalysisTimings {
+  double equilibrium_s = 0.0;     ///< static case (equilibrium); 0 when a stage's static case is reused
+  double reduction_s = 0.0;       ///< K reduction (+ line hydrodynamics for sc-enhanced; the FE statics, coupled)
+  double forcing_s = 0.0;         ///< wave/wind realizations and the tabulated forcing
+  double dynamics_s = 0.0;        ///< the time integration
+  double wave_frequency_s = 0.0;  ///< wave-frequency motions
+  double tensions_s = 0.0;        ///< fairlead tensions from the motions
+  double line_dynamics_s = 0.0;   ///< prescribed-motion FE lines (--line-dynamics, non-coupled levels)
+
+  /// The level's own cost: every phase but the prescribed-motion FE lines.
+  double level_s() const {
+    return equilibrium_s + reduction_s + forcing_s + dynamics_s + wave_frequency_s + tensions_s;
+  }
+  double total_s() const { return level_s() + line_dynamics_s; }
+};
+
 /// The low-frequency model of a case as the hull integrator takes it, with
 /// what it was built from (for tests: free decay, mean offset).
 struct DynamicModel {
@@ -119,9 +137,7 @@ struct DynamicModel {
   /// drift, the Morison hull and the dynamic lines all see this one sea.
   std::shared_ptr<const engine::WaveRealization> sea;
   std::vector<std::string> notes;
-  double equilibrium_wall_s = 0.0;  ///< static case (equilibrium)
-  double reduction_wall_s = 0.0;    ///< K reduction (+ line hydrodynamics for sc-enhanced)
-  double forcing_wall_s = 0.0;      ///< wave/wind realizations and the tabulated forcing
+  AnalysisTimings timing;  ///< equilibrium, reduction and forcing: what building the model cost
 };
 
 /// Builds the model of `request` (no integration). `fairlead_velocity_std`
@@ -160,13 +176,7 @@ struct DynamicAnalysisResult {
   long coupled_state_size = 0;
   int coupled_lines = 0;
   std::vector<std::string> notes;
-  double equilibrium_wall_s = 0.0;
-  double reduction_wall_s = 0.0;
-  double forcing_wall_s = 0.0;
-  double dynamics_wall_s = 0.0;
-  double wave_frequency_wall_s = 0.0;
-  double tensions_wall_s = 0.0;
-  double line_dynamics_wall_s = 0.0;
+  AnalysisTimings timing;
 };
 
 /// Wave-frequency hull motions (global, m, rad) of the request's case at

@@ -32,11 +32,6 @@ ChannelSummary summarize(const std::string& name, const std::string& unit,
   return c;
 }
 
-double total_wall_s(const DynamicAnalysisResult& r) {
-  return r.equilibrium_wall_s + r.reduction_wall_s + r.forcing_wall_s + r.dynamics_wall_s +
-         r.wave_frequency_wall_s + r.tensions_wall_s;
-}
-
 }  // namespace
 
 const ChannelSummary* find_channel(const LevelSummary& level, const std::string& name) {
@@ -60,8 +55,8 @@ double percent_difference(double level, double coupled) {
 LevelSummary summarize_level(const DynamicAnalysisResult& result) {
   LevelSummary s;
   s.level = result.level;
-  s.wall_s = total_wall_s(result);
-  s.line_dynamics_wall_s = result.line_dynamics_wall_s;
+  s.wall_s = result.timing.level_s();
+  s.line_dynamics_wall_s = result.timing.line_dynamics_s;
   s.channels = summarize_channels(result);
   s.notes = result.notes;
   s.coupled_solver = result.coupled_solver;

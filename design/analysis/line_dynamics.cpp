@@ -2,7 +2,6 @@
 
 #include <fmt/format.h>
 
-#include <chrono>
 #include <cmath>
 #include <numbers>
 
@@ -14,6 +13,7 @@
 #include "engine/numerics/sampled_trajectory.hpp"
 #include "engine/common/parallel_for.hpp"
 #include "engine/lines/fe_line_dynamics.hpp"
+#include "engine/common/stopwatch.hpp"
 
 namespace spiral::design {
 namespace {
@@ -93,7 +93,7 @@ template <class MakeSetup>
 LineDynamicsSeries run_one(const Project& project, const std::string& name, const char* kind,
                            const Eigen::Vector3d& attachment_b, const MakeSetup& make_setup,
                            const LineDynamicsInput& input) {
-  const auto start = std::chrono::steady_clock::now();
+  engine::Stopwatch start;
   const Eigen::Vector3d& ref = project.hull.reference_point_g;
   auto fairlead_at = [&](const engine::Vector6d& offset) {
     const engine::HullPose pose = engine::pose_from_offset(ref, offset);
@@ -144,7 +144,7 @@ LineDynamicsSeries run_one(const Project& project, const std::string& name, cons
   } catch (const engine::SolverError& e) {
     throw engine::SolverError(fmt::format("{} {}: FE dynamics failed: {}", kind, name, e.what()));
   }
-  series.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  series.wall_s = start.seconds();
   return series;
 }
 

@@ -4,7 +4,6 @@
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <numbers>
 
@@ -16,6 +15,7 @@
 #include "engine/analysis/fe_static_line.hpp"
 #include "engine/analysis/line_array.hpp"
 #include "engine/analysis/static_equilibrium.hpp"
+#include "engine/common/stopwatch.hpp"
 
 namespace spiral::design {
 
@@ -23,10 +23,6 @@ namespace {
 
 constexpr double kRadToDeg = 180.0 / std::numbers::pi;
 constexpr const char* kDofNames[6] = {"surge", "sway", "heave", "roll", "pitch", "yaw"};
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 OffsetSummary summarize_offset(const engine::Vector6d& offset, double depth_m) {
   OffsetSummary s;
@@ -117,7 +113,7 @@ StaticCaseResult run_static_case(const ValidatedProject& validated,
                               })->condition;
   }
 
-  auto start = std::chrono::steady_clock::now();
+  engine::Stopwatch start;
   if (cache) {
     // The equilibrium's first evaluation is at the rest position: take the
     // FE lines solved there in an earlier case with this environment, solve
@@ -139,7 +135,7 @@ StaticCaseResult run_static_case(const ValidatedProject& validated,
   }
   const engine::EquilibriumResult equilibrium =
       engine::solve_static_equilibrium(hull.statics, lines.lines, environment_load);
-  result.equilibrium_wall_s = seconds_since(start);
+  result.equilibrium_wall_s = start.seconds();
   result.equilibrium_iterations = equilibrium.iterations;
   result.offset = equilibrium.offset;
   result.offset_summary = summarize_offset(equilibrium.offset, project.site.depth_m);
@@ -150,7 +146,7 @@ StaticCaseResult run_static_case(const ValidatedProject& validated,
 
   // The equilibrium's last evaluation is at the converged pose: its analytic
   // tangent is the line-array K there, no extra solve needed.
-  start = std::chrono::steady_clock::now();
+  start.restart();
   const engine::LineArrayResponse& array = equilibrium.lines;
   result.line_force = array.force;
   result.stiffness = array.stiffness;
@@ -158,7 +154,7 @@ StaticCaseResult run_static_case(const ValidatedProject& validated,
     result.line_stiffness.push_back(contribution.stiffness);
     result.line_force_6dof.push_back(contribution.force);
   }
-  result.stiffness_wall_s = seconds_since(start);
+  result.stiffness_wall_s = start.seconds();
   if (request.finite_difference_check) {
     result.stiffness_finite_difference = engine::finite_difference_stiffness(lines.lines, equilibrium.pose);
     result.stiffness_check_relative_difference =

@@ -1,11 +1,11 @@
 #include "design/analysis/statics_study.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <numbers>
 
 #include "engine/analysis/line_array.hpp"
+#include "engine/common/stopwatch.hpp"
 
 namespace spiral::design {
 
@@ -64,7 +64,7 @@ std::vector<LineStaticsRow> line_statics_rows(const LineArrayModel& model,
 }
 
 StaticsResult run_statics(LineArrayModel& model, const engine::Vector6d& offset) {
-  const auto start = std::chrono::steady_clock::now();
+  engine::Stopwatch start;
   const engine::HullPose pose = engine::pose_from_offset(model.reference_point_g, offset);
   StaticsResult result;
   result.offset = offset;
@@ -77,7 +77,7 @@ StaticsResult run_statics(LineArrayModel& model, const engine::Vector6d& offset)
     result.hull_force.tail<3>() += arm.cross(states.back().top.force_g);
   }
   result.lines = line_statics_rows(model, states);
-  result.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.wall_time_s = start.seconds();
   return result;
 }
 

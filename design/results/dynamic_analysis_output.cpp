@@ -155,16 +155,14 @@ nlohmann::json dynamic_analysis_to_json(const DynamicAnalysisResult& r,
       channels.push_back(channel_json("dynamic_tension_" + t.line + "_N", "N", t.tension_N, dt));
   }
   j["channels"] = channels;
-  j["timing_s"] = {{"equilibrium", r.equilibrium_wall_s},
-                   {"reduction", r.reduction_wall_s},
-                   {"forcing", r.forcing_wall_s},
-                   {"dynamics", r.dynamics_wall_s},
-                   {"wave_frequency", r.wave_frequency_wall_s},
-                   {"tensions", r.tensions_wall_s},
-                   {"line_dynamics", r.line_dynamics_wall_s},
-                   {"total", r.equilibrium_wall_s + r.reduction_wall_s + r.forcing_wall_s +
-                                 r.dynamics_wall_s + r.wave_frequency_wall_s + r.tensions_wall_s +
-                                 r.line_dynamics_wall_s}};
+  j["timing_s"] = {{"equilibrium", r.timing.equilibrium_s},
+                   {"reduction", r.timing.reduction_s},
+                   {"forcing", r.timing.forcing_s},
+                   {"dynamics", r.timing.dynamics_s},
+                   {"wave_frequency", r.timing.wave_frequency_s},
+                   {"tensions", r.timing.tensions_s},
+                   {"line_dynamics", r.timing.line_dynamics_s},
+                   {"total", r.timing.total_s()}};
   j["solver"] = {{"steps", r.solver.steps},
                  {"rhs_evaluations", r.solver.rhs_evaluations},
                  {"jacobian_evaluations", r.solver.jacobian_evaluations},

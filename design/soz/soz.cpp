@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <atomic>
-#include <chrono>
 #include <cmath>
 #include <deque>
 #include <limits>
@@ -20,6 +19,7 @@
 #include "engine/common/rigid_body.hpp"
 #include "engine/common/parallel_for.hpp"
 #include "engine/lines/catenary.hpp"
+#include "engine/common/stopwatch.hpp"
 
 namespace spiral::design {
 
@@ -50,10 +50,6 @@ constexpr double kMarchUtilizationMargin = 2.5e-3;
 // Directions per parallel task: 72 directions × 12 risers give 144 tasks on
 // any core count, fine enough to balance 2–64 threads.
 constexpr int kDirectionsPerTask = 6;
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 /// Re-derives the governing criterion and pass flag after a check was added.
 void regovern(RiserStaticsRow& row) {
@@ -493,7 +489,7 @@ void validate_soz_options(const Project& project, const SozOptions& o) {
 SozResult compute_soz(const Project& project, const std::vector<RiserDesign>& risers,
                       const SozConditions& conditions, const SozOptions& options) {
   validate_soz_options(project, options);
-  const auto start = std::chrono::steady_clock::now();
+  engine::Stopwatch start;
   SozResult result;
   result.project = project.name;
   result.depth_m = project.site.depth_m;
@@ -670,7 +666,7 @@ SozResult compute_soz(const Project& project, const std::vector<RiserDesign>& ri
     }
   }
   if (risers.empty()) result.notes.push_back("the project has no risers: no SOZ");
-  result.zone_wall_s = seconds_since(start);
+  result.zone_wall_s = start.seconds();
   return result;
 }
 

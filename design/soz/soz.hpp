@@ -275,6 +275,26 @@ SozResult run_soz(const ValidatedProject& project, const SozOptions& options);
 OffsetCheck check_offset(const SozResult& zone, const StaticCaseResult& static_case,
                          const std::string& zone_name);
 
+/// spiral's one extreme-offset rule (soz_check.cpp says why), used by `spiral
+/// soz --extreme` and every stage: on a motion record (global surge and sway
+/// in rows 0-1, at `times_s`), the utilization channel r(t) = |d(t)| /
+/// A(θ(t)) against the platform zone, its 3-h MPM by the Weibull fit to the
+/// record's peaks as the ratio, reported as an offset in the direction of the
+/// record's largest r(t). A record too short for the fit keeps its largest
+/// sample and says why in `fit_note` (empty when fitted).
+OffsetCheck extreme_offset_check(const SozResult& zone, const StaticCaseResult& static_case,
+                                 const Eigen::Matrix<double, 6, Eigen::Dynamic>& motion,
+                                 const Eigen::VectorXd& times_s, const std::string& zone_name, std::string& fit_note);
+
+/// The 3-h MPM of the horizontal offset |d(t)| by the same rule (Weibull fit
+/// to the peaks), for the offset limit, which has no direction.
+struct OffsetMpm {
+  double offset_m = 0.0;  ///< the MPM, or the record's largest sample when not fitted
+  bool fitted = false;    ///< false: constant record, or too short for the fit (`note`)
+  std::string note;
+};
+OffsetMpm horizontal_offset_mpm(const std::vector<double>& offset_m, double dt_s);
+
 /// Allowable offset of a polar polygon (grid `directions_deg`, uniform step)
 /// in `direction_deg`, by linear interpolation in angle.
 double polygon_allowable(const std::vector<double>& directions_deg,

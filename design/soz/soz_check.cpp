@@ -36,7 +36,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -48,6 +47,7 @@
 #include "design/analysis/static_case.hpp"
 #include "engine/numerics/statistics.hpp"
 #include "engine/common/parallel_for.hpp"
+#include "engine/common/stopwatch.hpp"
 
 namespace spiral::design {
 
@@ -58,10 +58,6 @@ constexpr double kRadToDeg = 180.0 / std::numbers::pi;
 // is constant (no waves, no gusts): it has no extreme-value distribution, its
 // extreme is its value (the criterion of sc_analysis_output's summary).
 constexpr double kConstantChannel = 1e-12;
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 /// The platform zone as a function of direction: each riser's polygon
 /// interpolated in the direction, the smallest of them and its riser.
@@ -133,27 +129,24 @@ double direction_deg_of(double x, double y) {
   return deg < 0.0 ? deg + 360.0 : deg;
 }
 
-OffsetCheck extreme_check(const Project& project, const StaticCaseResult& c,
-                          const DynamicAnalysisResult& run, const PlatformPolygon& zone,
-                          const std::string& zone_name, const SozExtremeOptions& options) {
+/// The extreme-offset rule (the file comment) on one motion record. A record
+/// too short for the extreme-value fit keeps its largest sample, with
+/// `fit_note` saying why (the caller decides whether that is acceptable).
+OffsetCheck extreme_offset_of(const StaticCaseResult& c, const Eigen::Matrix<double, 6, Eigen::Dynamic>& motion,
+                              const Eigen::VectorXd& times_s, const PlatformPolygon& zone,
+                              const std::string& zone_name, std::string& fit_note) {
   OffsetCheck check = check_of(c, zone_name);
   check.kind = "extreme";
   OffsetExtreme e;
-  e.duration_s = options.duration_s;
-  e.seed = options.seed;
-  const Eigen::Index n = run.total.cols();
-  if (n < 2) {
-    throw command_line_error(project, "--duration",
-                             fmt::format("load case '{}': the record has {} samples; a longer "
-                                         "--duration is needed for the extreme offset",
-                                         c.case_name, n),
-                             "soz_extreme_record");
-  }
-  const double dt_s = run.times_s(1) - run.times_s(0);
+  const Eigen::Index n = motion.cols();
+  if (n < 2 || times_s.size() != n)
+    throw std::invalid_argument(fmt::format("load case '{}': the record has {} samples", c.case_name, n));
+  e.duration_s = times_s(n - 1) - times_s(0);
+  const double dt_s = times_s(1) - times_s(0);
   std::vector<double> ratio(static_cast<std::size_t>(n)), offset(static_cast<std::size_t>(n));
   Eigen::Index worst = 0;
   for (Eigen::Index k = 0; k < n; ++k) {
-    const double x = run.total(0, k), y = run.total(1, k);
+    const double x = motion(0, k), y = motion(1, k);
     const double d = std::hypot(x, y);
     const double a = zone.at(direction_deg_of(x, y)).allowable_m;
     offset[static_cast<std::size_t>(k)] = d;
@@ -161,25 +154,27 @@ OffsetCheck extreme_check(const Project& project, const StaticCaseResult& c,
     if (ratio[static_cast<std::size_t>(k)] > ratio[static_cast<std::size_t>(worst)]) worst = k;
   }
   e.record_max_ratio = ratio[static_cast<std::size_t>(worst)];
-  e.record_max_ratio_time_s = run.times_s(worst);
+  e.record_max_ratio_time_s = times_s(worst);
   const engine::ChannelMoments m_offset = engine::channel_moments(offset);
   e.mean_offset_m = m_offset.mean;
-  check.direction_deg = direction_deg_of(run.total(0, worst), run.total(1, worst));
+  check.direction_deg = direction_deg_of(motion(0, worst), motion(1, worst));
   const PlatformPolygon::At at = zone.at(check.direction_deg);
   check.allowable_m = at.allowable_m;
   if (at.riser) check.governing_riser = *at.riser;
 
-  if (!std::isfinite(e.record_max_ratio)) {
-    // The zone is empty in a direction the hull visits: no extreme statistics needed.
+  const auto keep_record_maximum = [&] {
     e.ratio_mpm_gumbel = e.ratio_mpm_weibull = e.ratio_mpm_rayleigh = e.record_max_ratio;
     e.offset_mpm_m = m_offset.maximum;
+  };
+  if (!std::isfinite(e.record_max_ratio)) {
+    // The zone is empty in a direction the hull visits: no extreme statistics needed.
+    keep_record_maximum();
     check.ratio = e.record_max_ratio;
     check.offset_m = m_offset.maximum;
   } else {
     const engine::ChannelMoments m_ratio = engine::channel_moments(ratio);
     if (m_ratio.std_dev <= kConstantChannel * std::max(1.0, std::abs(m_ratio.mean))) {
-      e.ratio_mpm_gumbel = e.ratio_mpm_weibull = e.ratio_mpm_rayleigh = m_ratio.maximum;
-      e.offset_mpm_m = m_offset.maximum;
+      keep_record_maximum();
     } else {
       try {
         const engine::ExtremeEstimate r = engine::most_probable_maximum(ratio, dt_s);
@@ -189,12 +184,8 @@ OffsetCheck extreme_check(const Project& project, const StaticCaseResult& c,
         e.ratio_mpm_rayleigh = r.mpm_rayleigh;
         e.offset_mpm_m = d.mpm_weibull;
       } catch (const std::invalid_argument& error) {
-        throw command_line_error(
-            project, "--duration",
-            fmt::format("load case '{}': no extreme-value fit on a {:g} s record ({}); "
-                        "simulate longer (3 h = 10800 s is the design sea state)",
-                        c.case_name, options.duration_s, error.what()),
-            "soz_extreme_record");
+        fit_note = error.what();
+        keep_record_maximum();
       }
     }
     check.ratio = e.ratio_mpm_weibull;
@@ -202,6 +193,33 @@ OffsetCheck extreme_check(const Project& project, const StaticCaseResult& c,
   }
   check.extreme = e;
   finish(check);
+  return check;
+}
+
+/// `spiral soz --extreme`: the rule on the case's enhanced S-C run; a record
+/// too short for the fit is an error of the requested duration.
+OffsetCheck extreme_check(const Project& project, const StaticCaseResult& c,
+                          const DynamicAnalysisResult& run, const PlatformPolygon& zone,
+                          const std::string& zone_name, const SozExtremeOptions& options) {
+  if (run.total.cols() < 2) {
+    throw command_line_error(project, "--duration",
+                             fmt::format("load case '{}': the record has {} samples; a longer "
+                                         "--duration is needed for the extreme offset",
+                                         c.case_name, run.total.cols()),
+                             "soz_extreme_record");
+  }
+  std::string fit_note;
+  OffsetCheck check = extreme_offset_of(c, run.total, run.times_s, zone, zone_name, fit_note);
+  if (!fit_note.empty()) {
+    throw command_line_error(
+        project, "--duration",
+        fmt::format("load case '{}': no extreme-value fit on a {:g} s record ({}); "
+                    "simulate longer (3 h = 10800 s is the design sea state)",
+                    c.case_name, options.duration_s, fit_note),
+        "soz_extreme_record");
+  }
+  check.extreme->duration_s = options.duration_s;
+  check.extreme->seed = options.seed;
   return check;
 }
 
@@ -271,12 +289,33 @@ OffsetCheck check_offset(const SozResult& zone, const StaticCaseResult& static_c
   return static_check(static_case, PlatformPolygon(zone.directions_deg, zone.risers), zone_name);
 }
 
+OffsetCheck extreme_offset_check(const SozResult& zone, const StaticCaseResult& static_case,
+                                 const Eigen::Matrix<double, 6, Eigen::Dynamic>& motion,
+                                 const Eigen::VectorXd& times_s, const std::string& zone_name, std::string& fit_note) {
+  return extreme_offset_of(static_case, motion, times_s, PlatformPolygon(zone.directions_deg, zone.risers), zone_name,
+                           fit_note);
+}
+
+OffsetMpm horizontal_offset_mpm(const std::vector<double>& offset_m, double dt_s) {
+  OffsetMpm out;
+  const engine::ChannelMoments m = engine::channel_moments(offset_m);
+  out.offset_m = m.maximum;
+  if (m.std_dev <= kConstantChannel * std::max(1.0, std::abs(m.mean))) return out;
+  try {
+    out.offset_m = engine::most_probable_maximum(offset_m, dt_s).mpm_weibull;
+    out.fitted = true;
+  } catch (const std::invalid_argument& error) {
+    out.note = error.what();
+  }
+  return out;
+}
+
 SozResult run_soz(const ValidatedProject& validated, const SozOptions& options) {
   const Project& project = validated.project;
   validate_soz_options(project, options);
   SozConditions conditions;
   conditions.condition = options.condition;
-  const auto check_start = std::chrono::steady_clock::now();
+  engine::Stopwatch check_start;
   const std::vector<std::string> case_names = checked_case_names(project, options);
   // Static equilibria of the load cases: the offsets to check, and (with
   // --case) the mean heave/rotations the zone is computed at.
@@ -302,7 +341,7 @@ SozResult run_soz(const ValidatedProject& validated, const SozOptions& options) 
       runs[static_cast<std::size_t>(i)] = run_dynamic_analysis(validated, request);
     });
   }
-  const double check_wall_s = seconds_since(check_start);
+  const double check_wall_s = check_start.seconds();
   if (options.load_case) {
     const StaticCaseResult& c = cases.front();
     const LoadCase& lc = find_load_case(project, *options.load_case);

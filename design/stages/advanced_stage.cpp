@@ -3,9 +3,9 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <chrono>
 
 #include "engine/common/solver_error.hpp"
+#include "engine/common/stopwatch.hpp"
 
 namespace spiral::design {
 
@@ -15,10 +15,6 @@ namespace {
 constexpr double kOutputStep_s = 0.5;
 /// One seed for both levels, so that they see the same sea.
 constexpr std::uint64_t kSeed = 1;
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 /// The final checks of one case from its coupled level summary: every
 /// mooring line's tension and every riser's top tension are its channels
@@ -42,7 +38,14 @@ void final_checks(const ValidatedProject& vp, const LevelSummary& coupled, Criti
     check.pass = d.utilization <= 1.0;
     v.lines.push_back(check);
   }
-  if (const ChannelSummary* o = find_channel(coupled, "offset_m")) v.mpm_offset_m = o->mpm;
+  // The offset limit takes the extreme-offset rule's MPM of |d(t)| (soz.hpp), like the SOZ check.
+  if (v.coupled) {
+    const auto o = std::find_if(v.coupled->channels.begin(), v.coupled->channels.end(),
+                                [](const StormChannel& c) { return c.name == "offset"; });
+    if (o != v.coupled->channels.end()) v.mpm_offset_m = horizontal_offset_mpm(o->values, v.coupled->output_step_s).offset_m;
+  } else if (const ChannelSummary* o = find_channel(coupled, "offset_m")) {
+    v.mpm_offset_m = o->mpm;
+  }
   if (p.criteria.max_offset_pct_depth) {
     v.offset_limit_m = *p.criteria.max_offset_pct_depth / 100.0 * p.site.depth_m;
     v.offset_limit_pass = v.mpm_offset_m <= *v.offset_limit_m;
@@ -71,7 +74,7 @@ void final_checks(const ValidatedProject& vp, const LevelSummary& coupled, Criti
 CriticalCaseVerification verify_case(const ValidatedProject& vp, const IntermediateStageResults& stage,
                                      const RankedCase& ranked, const DynamicAnalysisRequest& base,
                                      long coupled_max_steps) {
-  const auto start = std::chrono::steady_clock::now();
+  engine::Stopwatch start;
   const StaticCaseResult& statics = stage.statics.cases[ranked.case_index];
   const SozResult* zone = stage.statics.soz ? &*stage.statics.soz : nullptr;
   const std::string selection = fmt::format("critical case #{} of the intermediate ranking", ranked.rank);
@@ -98,12 +101,12 @@ CriticalCaseVerification verify_case(const ValidatedProject& vp, const Intermedi
   coupled.coupled_max_steps_between_outputs = coupled_max_steps;
   LevelSummary coupled_summary;
   coupled_summary.level = AnalysisLevel::coupled;
-  auto run_start = std::chrono::steady_clock::now();
+  engine::Stopwatch run_start;
   try {
     const DynamicAnalysisResult r = run_dynamic_analysis(vp, coupled);
     coupled_summary = summarize_level(r);
     v.coupled = summarize_stage_dynamics(vp, statics, coupled, r, zone, selection);
-    v.coupled->wall_s = seconds_since(run_start);
+    v.coupled->wall_s = run_start.seconds();
   } catch (const engine::SolverError& e) {
     v.error = fmt::format("coupled: {}", e.what());
     coupled_summary.error = e.what();
@@ -113,13 +116,13 @@ CriticalCaseVerification verify_case(const ValidatedProject& vp, const Intermedi
   sc.level = AnalysisLevel::semi_coupled_enhanced;
   LevelSummary sc_summary;
   sc_summary.level = AnalysisLevel::semi_coupled_enhanced;
-  run_start = std::chrono::steady_clock::now();
+  run_start.restart();
   try {
     const DynamicAnalysisResult r = run_dynamic_analysis(vp, sc);
     sc_summary = summarize_level(r);
     v.sc = summarize_stage_dynamics(vp, statics, sc, r, zone, selection,
                                     v.coupled ? v.coupled->most_loaded_line : std::string());
-    v.sc->wall_s = seconds_since(run_start);
+    v.sc->wall_s = run_start.seconds();
   } catch (const engine::SolverError& e) {
     const std::string message = fmt::format("sc-enhanced: {}", e.what());
     v.error = v.error ? *v.error + "; " + message : message;
@@ -127,7 +130,7 @@ CriticalCaseVerification verify_case(const ValidatedProject& vp, const Intermedi
   }
   v.comparison.levels = {std::move(sc_summary), std::move(coupled_summary)};
   if (v.coupled) final_checks(vp, v.comparison.levels.back(), v);
-  v.wall_s = seconds_since(start);
+  v.wall_s = start.seconds();
   return v;
 }
 
@@ -176,7 +179,7 @@ double advanced_stage_duration(const Project& project) {
 }
 
 AdvancedStageResults run_advanced_stage(const ValidatedProject& vp, const AdvancedStageOptions& options) {
-  const auto start = std::chrono::steady_clock::now();
+  engine::Stopwatch start;
   AdvancedStageResults out;
   out.intermediate = run_intermediate_stage(vp);
   out.intermediate.statics.stage = "advanced";
@@ -188,7 +191,7 @@ AdvancedStageResults run_advanced_stage(const ValidatedProject& vp, const Advanc
   base.duration_s = out.duration_s;
   base.output_step_s = out.output_step_s;
   base.seed = out.seed;
-  const auto runs_start = std::chrono::steady_clock::now();
+  engine::Stopwatch runs_start;
   // One case at a time: the coupled run already spreads its lines over the
   // worker pool, and its memory is that of every FE line of the case.
   for (const RankedCase& ranked : out.intermediate.ranked) {
@@ -201,14 +204,14 @@ AdvancedStageResults run_advanced_stage(const ValidatedProject& vp, const Advanc
                                : options.coupled_max_steps_between_outputs;
     out.cases.push_back(verify_case(vp, out.intermediate, ranked, base, max_steps));
   }
-  out.verification_wall_s = seconds_since(runs_start);
+  out.verification_wall_s = runs_start.seconds();
   for (const CriticalCaseVerification& c : out.cases) {
     if (!c.coupled) out.failed_cases.push_back(c.case_name);
     out.pass = out.pass && c.pass;
   }
   out.failed_runs = static_cast<int>(out.failed_cases.size());
   out.governing = governing_of(out);
-  out.wall_time_s = seconds_since(start);
+  out.wall_time_s = start.seconds();
   return out;
 }
 

@@ -82,7 +82,7 @@ struct CriticalCaseVerification {
 
   std::vector<FinalLineCheck> lines;      ///< every intact mooring line (coupled)
   std::optional<OffsetCheck> soz_offset;  ///< MPM offset vs the platform SOZ (with risers)
-  double mpm_offset_m = 0.0;              ///< coupled
+  double mpm_offset_m = 0.0;              ///< coupled: 3-h MPM of |d(t)| by the extreme-offset rule (soz.hpp)
   std::optional<double> offset_limit_m;   ///< criteria.max_offset_pct_depth · depth
   bool offset_limit_pass = true;
   std::vector<FinalRiserCheck> risers;

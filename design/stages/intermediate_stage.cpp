@@ -2,14 +2,14 @@
 #include "design/criteria/riser_checks.hpp"
 
 #include <algorithm>
-#include <chrono>
 
 #include "engine/common/parallel_for.hpp"
+#include "engine/common/stopwatch.hpp"
 
 namespace spiral::design {
 
 IntermediateStageResults run_intermediate_stage(const ValidatedProject& vp) {
-  const auto start = std::chrono::steady_clock::now();
+  engine::Stopwatch start;
   IntermediateStageResults out;
   StaticStageOptions options;
   options.dynamics = false;  // every case gets its storm below
@@ -18,7 +18,7 @@ IntermediateStageResults run_intermediate_stage(const ValidatedProject& vp) {
   const std::size_t n = out.statics.cases.size() - 1;  // load cases, after still water
   out.ranked.resize(n);
   out.threads = engine::worker_count(static_cast<int>(n));
-  const auto storms_start = std::chrono::steady_clock::now();
+  engine::Stopwatch storms_start;
   const SozResult* zone = out.statics.soz ? &*out.statics.soz : nullptr;
   engine::parallel_for(static_cast<int>(n), out.threads, [&](int i) {
     RankedCase& c = out.ranked[static_cast<std::size_t>(i)];
@@ -26,7 +26,7 @@ IntermediateStageResults run_intermediate_stage(const ValidatedProject& vp) {
     c.storm = run_stage_dynamics(vp, out.statics.cases[c.case_index], AnalysisLevel::semi_coupled_enhanced,
                                  zone, "every case of the matrix");
   });
-  out.storms_wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - storms_start).count();
+  out.storms_wall_s = storms_start.seconds();
 
   for (RankedCase& c : out.ranked) {
     c.tension_utilization = c.storm.tension_utilization;
@@ -52,7 +52,7 @@ IntermediateStageResults run_intermediate_stage(const ValidatedProject& vp) {
     out.ranked[i].rank = static_cast<int>(i) + 1;
     out.ranked[i].critical = i < kCriticalCases || !out.ranked[i].pass;
   }
-  out.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  out.wall_time_s = start.seconds();
   return out;
 }
 

@@ -3,11 +3,11 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <numbers>
 
 #include "engine/numerics/statistics.hpp"
+#include "engine/common/stopwatch.hpp"
 
 namespace spiral::design {
 
@@ -74,7 +74,7 @@ StormChannel summarize_storm_channel(std::string name, std::string unit, std::ve
 StageDynamics run_stage_dynamics(const ValidatedProject& vp, const StaticCaseResult& statics,
                                  AnalysisLevel level, const SozResult* zone,
                                  std::string selection) {
-  const auto start = std::chrono::steady_clock::now();
+  engine::Stopwatch start;
   DynamicAnalysisRequest request;
   request.load_case = statics.case_name;
   request.level = level;
@@ -84,7 +84,7 @@ StageDynamics run_stage_dynamics(const ValidatedProject& vp, const StaticCaseRes
   request.statics = &statics;
   const DynamicAnalysisResult r = run_dynamic_analysis(vp, request);
   StageDynamics out = summarize_stage_dynamics(vp, statics, request, r, zone, std::move(selection));
-  out.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  out.wall_s = start.seconds();
   return out;
 }
 
@@ -104,11 +104,7 @@ StageDynamics summarize_stage_dynamics(const ValidatedProject& vp, const StaticC
   out.seed = r.seed;
   out.times_s.assign(r.times_s.data(), r.times_s.data() + r.times_s.size());
   out.notes = r.notes;
-  out.equilibrium_wall_s = r.equilibrium_wall_s;  // 0 when the stage's static case was reused
-  out.reduction_wall_s = r.reduction_wall_s;
-  out.forcing_wall_s = r.forcing_wall_s;
-  out.dynamics_wall_s = r.dynamics_wall_s + r.wave_frequency_wall_s;
-  out.tensions_wall_s = r.tensions_wall_s;
+  out.timing = r.timing;
   out.solver_steps = r.coupled_solver ? static_cast<int>(r.coupled_solver->steps)
                                       : static_cast<int>(r.solver.steps);
   const double dt = request.output_step_s;
@@ -117,16 +113,7 @@ StageDynamics summarize_stage_dynamics(const ValidatedProject& vp, const StaticC
   out.channels.push_back(summarize_storm_channel("sway", "m", row(r.total, 1, 1.0), dt));
   out.channels.push_back(summarize_storm_channel("yaw", "deg", row(r.total, 5, kRadToDeg), dt));
   std::vector<double> offset(static_cast<std::size_t>(r.total.cols()));
-  std::size_t largest = 0;
-  for (Eigen::Index k = 0; k < r.total.cols(); ++k) {
-    offset[static_cast<std::size_t>(k)] = r.total.col(k).head<2>().norm();
-    if (offset[static_cast<std::size_t>(k)] > offset[largest]) largest = static_cast<std::size_t>(k);
-  }
-  const double largest_direction_deg =
-      offset.empty() ? 0.0
-                     : std::atan2(r.total(1, static_cast<Eigen::Index>(largest)),
-                                  r.total(0, static_cast<Eigen::Index>(largest))) *
-                           kRadToDeg;
+  for (Eigen::Index k = 0; k < r.total.cols(); ++k) offset[static_cast<std::size_t>(k)] = r.total.col(k).head<2>().norm();
   out.channels.push_back(summarize_storm_channel("offset", "m", std::move(offset), dt));
 
   // The tension records the stage checks: the coupled run's own FE line
@@ -168,15 +155,15 @@ StageDynamics summarize_stage_dynamics(const ValidatedProject& vp, const StaticC
   }
 
   if (zone && !zone->risers.empty()) {
-    const StormChannel& o = out.channels[3];
-    StaticCaseResult extreme;  // the MPM offset in the direction of the largest sample
+    StaticCaseResult extreme;  // names the case; the offset comes from the record
     extreme.case_name = out.case_name;
     extreme.condition = out.condition;
     extreme.damaged_line = out.damaged_line;
-    extreme.offset_summary.horizontal_m = o.mpm_max.value_or(o.maximum);
-    extreme.offset_summary.direction_deg = std::fmod(largest_direction_deg + 360.0, 360.0);
-    OffsetCheck check = check_offset(*zone, extreme, "still-water");
-    check.kind = "extreme";
+    std::string fit_note;
+    OffsetCheck check = extreme_offset_check(*zone, extreme, r.total, r.times_s, "still-water", fit_note);
+    if (!fit_note.empty())
+      out.notes.push_back("extreme offset: the record's largest offset/allowable (no extreme-value fit: " + fit_note +
+                          ")");
     out.extreme_offset = check;
   }
   return out;

@@ -7,10 +7,12 @@
 // checks:
 //  - tension: the line's MPM fairlead tension against its fairlead segment's
 //    MBL with the code's dynamic factor (mooring_checks.hpp).
-//  - extreme offset: the MPM horizontal offset against the platform SOZ in
-//    the direction of the largest sampled offset (when a zone is given).
-// MPM: the Gumbel estimate of engine/numerics/statistics.hpp (segment maxima,
-// max-stable, so it scales to 3 h without assuming a narrow band).
+//  - extreme offset: spiral's one extreme-offset rule against the platform
+//    SOZ (extreme_offset_check, soz.hpp: the 3-h MPM of offset/allowable,
+//    Weibull), when a zone is given.
+// Channel MPMs (and so the tension check): the Gumbel estimate of
+// engine/numerics/statistics.hpp (segment maxima, max-stable, so it scales to
+// 3 h without assuming a narrow band); the Weibull one beside it.
 
 #include <cstdint>
 #include <optional>
@@ -64,9 +66,7 @@ struct StageDynamics {
   bool tension_pass = true;
   std::optional<OffsetCheck> extreme_offset;  ///< kind "extreme", with a zone
   std::vector<std::string> notes;
-  double equilibrium_wall_s = 0.0;  ///< 0 when the stage's static case was reused
-  double reduction_wall_s = 0.0, forcing_wall_s = 0.0, dynamics_wall_s = 0.0,
-         tensions_wall_s = 0.0;
+  AnalysisTimings timing;  ///< of the analysis (equilibrium 0 when the stage's static case was reused)
   double wall_s = 0.0;  ///< the whole analysis and its statistics
   int solver_steps = 0;
 };

@@ -1,7 +1,6 @@
 #include "design/stages/static_stage.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <numbers>
 
@@ -11,6 +10,7 @@
 #include "design/criteria/riser_checks.hpp"
 #include "engine/analysis/line_array.hpp"
 #include "engine/common/solver_error.hpp"
+#include "engine/common/stopwatch.hpp"
 
 namespace spiral::design {
 
@@ -141,7 +141,7 @@ StageSoz preliminary_soz_settings(const Project& project) {
 
 StaticStageResults run_static_stage(const ValidatedProject& validated,
                                     const StaticStageOptions& options) {
-  const auto start = std::chrono::steady_clock::now();
+  engine::Stopwatch start;
   const Project& project = validated.project;
   StaticStageResults out;
   out.code = to_string(project.criteria.mooring.code);
@@ -213,7 +213,7 @@ StaticStageResults run_static_stage(const ValidatedProject& validated,
     }
   }
   out.governing = governing_check(out);
-  out.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  out.wall_time_s = start.seconds();
   return out;
 }
 

@@ -7,13 +7,13 @@
 
 #include <Eigen/LU>
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <stdexcept>
 
 #include "engine/analysis/line_array.hpp"
 #include "engine/common/worker_pool.hpp"
 #include "engine/lines/fe_dynamic_line.hpp"
+#include "engine/common/stopwatch.hpp"
 
 namespace spiral::engine {
 namespace {
@@ -320,7 +320,7 @@ CoupledTimeSeries simulate_coupled(const HullDynamicsModel& hull, const HullLoad
                                    const Vector6d& initial_offset,
                                    const std::vector<CoupledLine>& lines,
                                    const CoupledOptions& options) {
-  const auto start = std::chrono::steady_clock::now();
+  Stopwatch start;
   validate(hull, loads, lines, options);
   CoupledSystem system(hull, loads, reference_point_at_rest_g, lines, options);
   std::vector<LineBlock>& blocks = system.blocks();
@@ -445,7 +445,7 @@ CoupledTimeSeries simulate_coupled(const HullDynamicsModel& hull, const HullLoad
   }
   out.statistics = ida.statistics();
   out.wall_clock_s =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      start.seconds();
   return out;
 }
 

@@ -1,9 +1,9 @@
 #include "engine/analysis/hull_dynamics.hpp"
+#include "engine/common/stopwatch.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -129,7 +129,7 @@ CvodeOptions default_hull_integrator_options() {
 HullTimeSeries simulate_hull(const HullDynamicsModel& model, const HullLoads& loads,
                              const Vector6d& initial_position, const Vector6d& initial_velocity,
                              const HullSimulationOptions& options) {
-  const auto wall_start = std::chrono::steady_clock::now();
+  Stopwatch wall_start;
   require_finite(initial_position, "initial_position");
   require_finite(initial_velocity, "initial_velocity");
   const HullEquations eq = make_hull_equations(model, loads);
@@ -200,7 +200,7 @@ HullTimeSeries simulate_hull(const HullDynamicsModel& model, const HullLoads& lo
   }
   out.statistics = integrator.statistics();
   out.wall_clock_s =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+      wall_start.seconds();
   return out;
 }
 

@@ -1,4 +1,5 @@
 #include "engine/hull/mean_environmental_loads.hpp"
+#include "engine/common/table_range_error.hpp"
 
 #include <fmt/format.h>
 
@@ -54,7 +55,7 @@ Bracket heading_bracket(const std::vector<double>& h, double beta, const char* t
   }
   if (b - last <= kHeadingEndHold_rad) return {n - 1, n - 1, 0.0};
   if (first + kTwoPi - b <= kHeadingEndHold_rad) return {0, 0, 0.0};
-  throw std::invalid_argument(fmt::format(
+  throw TableRangeError(fmt::format(
       "{}: relative heading {:.6g} deg lies outside the tabulated headings {:.6g}..{:.6g} deg "
       "and the table does not cover the circle (no extrapolation in heading)",
       table_name, b * 180.0 / std::numbers::pi, first * 180.0 / std::numbers::pi,

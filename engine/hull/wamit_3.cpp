@@ -1,4 +1,5 @@
 #include "engine/hull/wamit_3.hpp"
+#include "engine/common/table_range_error.hpp"
 
 #include <fmt/format.h>
 
@@ -237,13 +238,13 @@ Vector6cd transfer_at(const WaveTransferTable& table, double omega_rad_per_s, do
   if (h.size() == 1) {
     const double gap = std::min(std::abs(b - h_min), std::abs(b - h_min - 2.0 * kPi));
     if (gap > kHeadingEndHold_rad) {
-      throw std::invalid_argument(fmt::format(
+      throw TableRangeError(fmt::format(
           "heading {:.6g} deg outside the database range [{:.6g}, {:.6g}] deg (table {})",
           heading_rad / kDeg, h_min / kDeg, h_max / kDeg, table.file));
     }
     b = h_min;
   } else if (b > h_max + kHeadingEndHold_rad && b < h_min + 2.0 * kPi - kHeadingEndHold_rad) {
-    throw std::invalid_argument(
+    throw TableRangeError(
         fmt::format("heading {:.6g} deg outside the database range [{:.6g}, {:.6g}] deg (table {})",
                     heading_rad / kDeg, h_min / kDeg, h_max / kDeg, table.file));
   }

@@ -80,7 +80,25 @@ TEST(StaticStage, DefaultScenarioCasesChecksAndCurves) {
   EXPECT_NEAR(d.tension_utilization, *t.mpm_max * sf_dynamic / d.fairlead_mbl_N, 1e-12);
   ASSERT_TRUE(d.extreme_offset.has_value());
   EXPECT_EQ(d.extreme_offset->kind, "extreme");
-  EXPECT_DOUBLE_EQ(d.extreme_offset->offset_m, *d.channels[3].mpm_max);
+  // The one extreme-offset rule (soz.hpp), the same as `spiral soz --extreme`
+  // applies: the Weibull 3-h MPM of offset/allowable, shown as an offset.
+  ASSERT_TRUE(d.extreme_offset->extreme.has_value());
+  EXPECT_DOUBLE_EQ(d.extreme_offset->ratio, d.extreme_offset->extreme->ratio_mpm_weibull);
+  EXPECT_DOUBLE_EQ(d.extreme_offset->offset_m, d.extreme_offset->ratio * d.extreme_offset->allowable_m);
+  ASSERT_TRUE(r.soz.has_value());
+  Eigen::Matrix<double, 6, Eigen::Dynamic> motion = Eigen::Matrix<double, 6, Eigen::Dynamic>::Zero(6, d.times_s.size());
+  for (std::size_t k = 0; k < d.times_s.size(); ++k) {
+    motion(0, static_cast<Eigen::Index>(k)) = d.channels[0].values[k];  // surge
+    motion(1, static_cast<Eigen::Index>(k)) = d.channels[1].values[k];  // sway
+  }
+  const Eigen::VectorXd times = Eigen::Map<const Eigen::VectorXd>(d.times_s.data(), static_cast<Eigen::Index>(d.times_s.size()));
+  StaticCaseResult named;
+  named.case_name = d.case_name;
+  std::string fit_note;
+  const OffsetCheck same = extreme_offset_check(*r.soz, named, motion, times, "still-water", fit_note);
+  EXPECT_TRUE(fit_note.empty()) << fit_note;
+  EXPECT_DOUBLE_EQ(same.ratio, d.extreme_offset->ratio);
+  EXPECT_DOUBLE_EQ(same.direction_deg, d.extreme_offset->direction_deg);
 
   // The verdict's governing check is a failing one when the stage fails.
   EXPECT_EQ(r.governing.pass, r.pass);
