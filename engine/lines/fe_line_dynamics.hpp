@@ -219,8 +219,6 @@ class FeLineDynamics {
   Eigen::Vector3d end_B_force_N() const;
   FeLineEnergy energy() const;
   IdaStatistics statistics() const;
-  int node_count() const;
-  int dof_count() const;
 
  private:
   struct Impl;
