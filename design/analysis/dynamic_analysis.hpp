@@ -30,10 +30,10 @@
 //     realization of the environment's spectrum (NPD or API; none = steady),
 //     with the relative velocity U(t) e_w − (x', y').
 // The slow drift and the gust depend on time only: they are tabulated once at
-// 0.1 s and read by Catmull-Rom interpolation (dynamic_analysis.cpp, ForcingTable;
-// on the 3-h deep-water storm the surge std changes by 1e-5 m against the
-// direct sums, for 7x less dynamics time). The integrator runs at rtol 1e-7,
-// atol 1e-6 m / 1e-8 rad (forced runs; free decays keep the 1e-10 defaults).
+// 0.1 s and read by Catmull-Rom interpolation (engine/analysis/forcing_table.hpp;
+// accuracy and cost against the direct sums: docs/decisions/forcing-table.md).
+// The integrator runs at rtol 1e-7, atol 1e-6 m / 1e-8 rad (forced runs; free
+// decays keep the 1e-10 defaults).
 // Wave-frequency motions are superposed on the low-frequency ones (total = LF
 // + WF) from the .4 RAOs, or RAOs computed from .1 + .3 as
 //   xi(w) = [−w² (M + A(w)) + i w (B(w) + B_lin) + C_hydro + K_lines]^-1 X(w)

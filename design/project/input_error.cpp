@@ -2,6 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <utility>
+
 namespace spiral::design {
 
 std::string format_issue(const InputIssue& issue) {
@@ -13,6 +16,13 @@ std::string format_issue(const InputIssue& issue) {
   if (!issue.path.empty()) out += issue.path + ": ";
   out += issue.message;
   return out;
+}
+
+void sort_in_file_order(std::vector<InputIssue>& issues) {
+  std::stable_sort(issues.begin(), issues.end(), [](const InputIssue& a, const InputIssue& b) {
+    return std::pair(a.line.value_or(0), a.column.value_or(0)) <
+           std::pair(b.line.value_or(0), b.column.value_or(0));
+  });
 }
 
 namespace {

@@ -29,6 +29,10 @@ struct InputIssue {
 /// `file:line:col: path: message` (parts that are unknown are left out).
 std::string format_issue(const InputIssue& issue);
 
+/// Sorts `issues` into file order (line, then column; an issue without a
+/// position first), keeping the order found among issues at one position.
+void sort_in_file_order(std::vector<InputIssue>& issues);
+
 /// Thrown by the project loader and the validation pass. `what()` lists every
 /// issue, one per line, in the order found (file order for parse errors).
 class InputError : public std::runtime_error {

@@ -98,9 +98,8 @@ struct SozOptions {
   double step_deg = 5.0;     ///< direction step, > 0, must divide 360
   double tolerance_m = 0.1;  ///< bracket width of each allowable offset, > 0
   /// Coarse march step, % of depth, > 0. 2.5 % (45 m in 1800 m): the FE
-  /// Newton solve warm-started 45 m away converges in ≈ 5 iterations
-  /// (≈ 3.6 Jacobians), 90 m away it needs a continuation and ≈ 100
-  /// (measured on the default SCR).
+  /// Newton solve warm-started one step away still converges without a
+  /// continuation, twice as far it does not (docs/decisions/soz-search-speed.md).
   double march_step_pct_depth = 2.5;
   double search_limit_pct_depth = 20.0;  ///< largest offset searched, % of depth, > march step
   /// Load case: its current on the risers, the mean heave/rotations of its

@@ -36,45 +36,20 @@
 // setup, both halves of the solve; each line writes its own slots, the hull sums in line order, so
 // the result does not depend on the thread count).
 //
-// Measured while building it (deep-water scenario, lc1 storm, hull + 16
-// mooring lines + 12 SCRs = 171,660 states; OC4 for the free decays; the
-// 2-core EPYC shared with other builds, load 4–5, so CPU time where given):
-//  * one WRMS norm over all states let a line's or the hull's error through
-//    diluted by √(N/n): the OC4 heave free decay erred by 0.87 % in period;
-//    block norms (IdaOptions::error_group_starts): 0.05 %;
-//  * lines evaluated on threads started per loop: OC4 600 s 5.2 s wall; the
-//    worker pool: 1.44 s;
-//  * refactoring every line at every partial update (some line's seabed
-//    contact changes nearly every step): 30 s in 16.1 s wall; only the
-//    stale lines: 11.1 s; keeping their end-B condensation from the last
-//    full setup: 60 s in 8.1 s CPU instead of 9.8 s;
-//  * hull tolerance 1e-5 m: the hull set the step at 113 of 120 outputs
-//    (gust-driven accelerations), 595 steps for 60 s; 1e-4 m: 306, the
-//    lines set it;
-//  * the waves on the lines (fixed_point_wave_kinematics.hpp) cost 7 %.
-//  * IDA's vector operations (N_Vector, 171,660 entries) ran on the main
-//    thread while the pool's worker waited, and the adapter copied y, y'
-//    and r (1.4 MB each) serially at every residual and solve: main thread
-//    58 %, worker 40 % of the samples. Now the operations are split over
-//    the pool (IdaOptions::vector_pool; bit-identical) and the system works
-//    on IDA's vectors in place (ImplicitSystem takes Eigen::Ref): 52 / 46 %;
-//  * the outputs evaluated every line's wave kinematics at each output time
-//    for the end element's force alone (a third of all kinematics
-//    evaluations); now that element's own (evaluate_point).
-//  The 3-h lc1 storm (default scenario): 610 s → 467 s, 23× real time, the
-//  same 35,815 steps.
-// What remains per step (perf, 600 s): wave kinematics 15 %, element forces
-// 15 %, Newton-matrix updates of the lines whose contact changed 11 %, band
-// solves 7 %; the 12 risers (1 m elements over their 400 m touchdown zone)
-// hold 70 % of the states. Tried and not kept: refreshing a line's matrix on
-// 1 m of contact-length change instead of 10 % of an element (6× fewer
-// factorisations, 25 % faster on 600 s) — the std of surge, heave and the
-// tensions moved by 0.6–3.7 % where three runs with the present refresh
-// (rtol 2e-6, 5e-7, 1e-7: different step sequences) agree within
-// 0.2–0.9 %: the stale-matrix Newton iterates leave their error in the
-// motion; `#pragma omp simd` and an
-// Eigen-array form of the kinematics sums (SSE2): 1.4–1.9× slower than the
-// scalar loop.
+// Choices that set the cost (docs/decisions/coupled-dynamics-performance.md
+// has the measurements behind each, and what was tried and not kept):
+//  * the error norm is per block (above): one WRMS norm over all states let
+//    a line's or the hull's error through, diluted by √(N/n);
+//  * the lines run on a persistent worker pool, not on threads started per
+//    loop, and so do IDA's vector operations (IdaOptions::vector_pool;
+//    bit-identical); the system works on IDA's vectors in place
+//    (ImplicitSystem takes Eigen::Ref);
+//  * a partial Newton-matrix update refactors only the lines whose seabed
+//    contact changed by 10 % of an element, and keeps the other lines' end-B
+//    condensation from the last full setup; a coarser contact refresh leaves
+//    the stale-matrix Newton iterates' error in the motion;
+//  * at an output time the end force comes from the end element's own wave
+//    kinematics (evaluate_point), not from every element's.
 //
 // Not modelled: the hull's radiation memory (Cummins) — the hull takes
 // A(ω_LF) and B_lin (a model with a kernel is rejected). Waves on the lines
@@ -116,8 +91,8 @@ using PrescribedHullMotionFn = std::function<PrescribedHullMotion(double t_s)>;
 struct CoupledOptions {
   double start_time_s = 0.0;
   std::vector<double> output_times_s;  ///< strictly increasing, > start_time_s
-  /// Integrator tolerances: the lines' (FeDynamicsOptions' defaults, measured
-  /// there) and the hull's absolute ones.
+  /// Integrator tolerances: the lines' (FeDynamicsOptions' defaults) and the
+  /// hull's absolute ones.
   double relative_tolerance = 2e-6;
   double position_tolerance_m = 1e-4;
   double slope_tolerance = 2e-6;
@@ -126,9 +101,9 @@ struct CoupledOptions {
   /// BDF2's period error grows as (ω h)²: where only the hull limits the
   /// step (a free decay), 1e-4 m gives 0.39 % on OC4's 17.6 s heave and
   /// 1e-5 m 0.07 % (coupled_dynamics_test); in a storm the lines limit the
-  /// step (h ≈ 0.2 s: ≤ 0.2 % on a 17 s period). On the deep-water storm
-  /// 1e-5 m made the hull set the step at 60 % of the outputs (gust-driven
-  /// accelerations) and cost 1.35× the steps of 1e-4 m.
+  /// step (h ≈ 0.2 s: ≤ 0.2 % on a 17 s period), where 1e-5 m would let the
+  /// gust-driven hull accelerations set it instead
+  /// (docs/decisions/coupled-dynamics-performance.md).
   double hull_position_tolerance_m = 1e-4;
   double hull_rotation_tolerance_rad = 1e-6;
   int max_order = 2;

@@ -137,10 +137,10 @@ void hull_state_derivative(const HullEquations& eq, const VelocityHistory* histo
 /// order pays; rtol 1e-10, atol 1e-10 m and m/s, 1e-12 rad and rad/s. The
 /// integration error is then far below any engineering resolution (measured
 /// in tests/validation/engine/analysis/hull_free_decay_test.cpp: period error ~1e-6, energy
-/// drift 7e-7 over 20 surge periods of OC4) and a 3-hour S-C run takes
-/// milliseconds. With a NonlinearLineForce from catenary solves, the force
-/// carries the line solvers' closure noise (~1e-9 relative): raise rtol to
-/// 1e-7..1e-8, above that noise, or the error test fails repeatedly.
+/// drift 7e-7 over 20 surge periods of OC4). With a NonlinearLineForce from
+/// catenary solves, the force carries the line solvers' closure noise (~1e-9
+/// relative): raise rtol to 1e-7..1e-8, above that noise, or the error test
+/// fails repeatedly.
 CvodeOptions default_hull_integrator_options();
 
 struct HullSimulationOptions {
@@ -162,10 +162,9 @@ struct HullTimeSeries {
 /// integration advances in history steps (CVODE stops exactly at each, no
 /// restart) and appends q' to the history after each. Cost with memory: at
 /// least one step per history step, each RHS ~n_kernel × 72 flops; the
-/// memory force is only piecewise smooth in t, so use rtol ~1e-7 (not the
-/// 1e-10 default): measured on a 3-h OC4 run with a 60 s / 0.1 s kernel,
-/// 2.7–3.9 s at rtol 1e-7 against 22 s at 1e-10 and 0.12 s without memory
-/// (tests/bench/hull_dynamics_bench.cpp).
+/// memory force is only piecewise smooth in t, so use rtol ~1e-7: the 1e-10
+/// default costs several times as much for no gain (timings in
+/// docs/decisions/hull-dynamics-tolerances.md).
 HullTimeSeries simulate_hull(const HullDynamicsModel& model, const HullLoads& loads,
                              const Vector6d& initial_position, const Vector6d& initial_velocity,
                              const HullSimulationOptions& options);

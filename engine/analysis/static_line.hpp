@@ -81,8 +81,6 @@ class CatenaryStaticLine final : public StaticLine {
   LineEndResponse solve(const Eigen::Vector3d& attachment_g) override;
   LineState state(const Eigen::Vector3d& attachment_g, int points_per_segment) override;
   void reset() override { warm_start_.reset(); }
-  /// The full catenary solution of the last solve.
-  const CatenarySolution& last_solution() const { return last_; }
 
  private:
   std::string name_;

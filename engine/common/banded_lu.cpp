@@ -24,14 +24,6 @@ void BandMatrix::set_identity_row(int i) {
   at(i, i) = 1.0;
 }
 
-Eigen::VectorXd BandMatrix::multiply(const Eigen::VectorXd& x) const {
-  Eigen::VectorXd y = Eigen::VectorXd::Zero(n_);
-  for (int j = 0; j < n_; ++j) {
-    for (int i = std::max(0, j - ku_); i <= std::min(n_ - 1, j + kl_); ++i) y[i] += at(i, j) * x[j];
-  }
-  return y;
-}
-
 // dgbtf2, 0-based.
 bool BandMatrix::factorize() {
   ipiv_.assign(static_cast<std::size_t>(n_), 0);
@@ -84,15 +76,6 @@ void BandMatrix::solve_in_place(Eigen::Ref<Eigen::VectorXd> b) const {
     b[j] /= at(j, j);
     for (int i = std::max(0, j - kv_); i < j; ++i) b[i] -= at(i, j) * b[j];
   }
-}
-
-double BandMatrix::pivot_ratio() const {
-  double lo = INFINITY, hi = 0.0;
-  for (int j = 0; j < n_; ++j) {
-    lo = std::min(lo, std::abs(at(j, j)));
-    hi = std::max(hi, std::abs(at(j, j)));
-  }
-  return hi > 0.0 ? lo / hi : 0.0;
 }
 
 }  // namespace spiral::engine

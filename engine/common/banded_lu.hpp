@@ -26,15 +26,11 @@ class BandMatrix {
   bool in_band(int i, int j) const { return i - j <= kl_ && j - i <= ku_ && i >= 0 && j >= 0 && i < n_ && j < n_; }
   /// Replaces row i by the identity row (for a prescribed DOF).
   void set_identity_row(int i);
-  /// y = A x, before factorisation.
-  Eigen::VectorXd multiply(const Eigen::VectorXd& x) const;
 
   /// In-place LU. Returns false if a zero pivot is met (singular matrix).
   bool factorize();
   /// Solves A x = b in place after factorize().
   void solve_in_place(Eigen::Ref<Eigen::VectorXd> b) const;
-  /// Smallest |pivot| / largest |pivot| of the factorisation (rough conditioning indicator).
-  double pivot_ratio() const;
 
  private:
   int n_ = 0, kl_ = 0, ku_ = 0, kv_ = 0, ld_ = 0;

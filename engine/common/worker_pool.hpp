@@ -80,8 +80,8 @@ class WorkerPool {
 
   // A short spin before sleeping on the condition variable: the loops come
   // every few hundred microseconds, and a futex sleep and wake-up costs tens
-  // of microseconds each way (measured: 51 s of system time in a 645 s
-  // coupled storm before the spin). Bounded, so an idle pool sleeps.
+  // of microseconds each way (docs/decisions/coupled-dynamics-performance.md).
+  // Bounded, so an idle pool sleeps.
   template <class Ready>
   static void spin_until(const Ready& ready) {
     for (int i = 0; i < kSpinChecks && !ready(); ++i) std::this_thread::yield();

@@ -5,9 +5,9 @@
 //
 // Why fixed points: a direct sum over the realization's components (2200
 // for a short-crested 3-h sea: 200 frequencies × 11 directions) at every
-// Gauss point and Newton iteration costs ≈ 100 µs per point — 5× the whole
-// line residual of the deep-water storm. At a fixed point x0 the phase of
-// each component splits into a time part and a space part,
+// Gauss point and Newton iteration costs several times the whole line
+// residual (docs/decisions/coupled-dynamics-performance.md). At a fixed point
+// x0 the phase of each component splits into a time part and a space part,
 //   cos(ω t − k·x0 + φ) = cos ω t · cos ψ − sin ω t · sin ψ,  ψ = φ − k·x0,
 // so the amplitudes a ω f(z0) cos ψ, a ω f(z0) sin ψ are computed once and
 // each time costs one sin/cos per component for all points plus ≈ 20

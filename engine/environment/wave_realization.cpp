@@ -342,15 +342,4 @@ WaveKinematics wave_kinematics(const WaveRealization& sea, const Eigen::Vector3d
   return out;
 }
 
-std::vector<WaveKinematics> wave_kinematics_many(const WaveRealization& sea,
-                                                 const Eigen::Vector3d& point_g_m,
-                                                 const Eigen::VectorXd& times_s) {
-  std::vector<WaveKinematics> out;
-  out.reserve(static_cast<std::size_t>(times_s.size()));
-  for (Eigen::Index i = 0; i < times_s.size(); ++i) {
-    out.push_back(wave_kinematics(sea, point_g_m, times_s(i)));
-  }
-  return out;
-}
-
 }  // namespace spiral::engine

@@ -189,9 +189,4 @@ struct WaveKinematics {
 WaveKinematics wave_kinematics(const WaveRealization& sea, const Eigen::Vector3d& point_g_m,
                                double t_s);
 
-/// Kinematics at one point for many times.
-std::vector<WaveKinematics> wave_kinematics_many(const WaveRealization& sea,
-                                                 const Eigen::Vector3d& point_g_m,
-                                                 const Eigen::VectorXd& times_s);
-
 }  // namespace spiral::engine

@@ -193,31 +193,6 @@ Vector6cd morison_excitation(const MorisonHull& hull, const Seawater& water,
   return X;
 }
 
-ExcitationTable morison_excitation_table(const MorisonHull& hull, const Seawater& water,
-                                         std::optional<double> depth,
-                                         const std::vector<double>& omega,
-                                         const std::vector<double>& headings) {
-  ExcitationTable table;
-  table.quantity = TransferQuantity::excitation;
-  table.omega_rad_per_s = omega;
-  table.headings_rad = headings;
-  table.file = "Morison member model";
-  const auto nh = static_cast<Eigen::Index>(headings.size());
-  const auto nw = static_cast<Eigen::Index>(omega.size());
-  for (int d = 0; d < 6; ++d) {
-    table.values[static_cast<std::size_t>(d)] = Eigen::MatrixXcd::Zero(nh, nw);
-    table.dof_present[static_cast<std::size_t>(d)] = true;
-  }
-  for (Eigen::Index h = 0; h < nh; ++h) {
-    for (Eigen::Index w = 0; w < nw; ++w) {
-      const Vector6cd X = morison_excitation(hull, water, depth, omega[static_cast<std::size_t>(w)],
-                                             headings[static_cast<std::size_t>(h)]);
-      for (int d = 0; d < 6; ++d) table.values[static_cast<std::size_t>(d)](h, w) = X(d);
-    }
-  }
-  return table;
-}
-
 MorisonLoad morison_load(const MorisonHull& hull, const MorisonFlow& flow,
                          const Eigen::Vector3d& reference_g, const Eigen::Matrix3d& rotation,
                          double t_s, const Vector6d& velocity) {

@@ -123,12 +123,6 @@ Vector6cd morison_excitation(const MorisonHull& hull, const Seawater& water,
                              std::optional<double> water_depth_m, double omega_rad_per_s,
                              double heading_rad);
 
-/// morison_excitation on a grid (rows headings, columns frequencies).
-ExcitationTable morison_excitation_table(const MorisonHull& hull, const Seawater& water,
-                                         std::optional<double> water_depth_m,
-                                         const std::vector<double>& omega_rad_per_s,
-                                         const std::vector<double>& headings_rad);
-
 /// What the time-domain load needs besides the hull.
 struct MorisonFlow {
   const WaveRealization* sea = nullptr;     ///< empty: no waves

@@ -353,8 +353,9 @@ inline void strain_energy_hessian(const ElementProperties& e, const V3<double>& 
 /// density in (a, b) = (r', r''), mapped through the shape functions; the
 /// drag's derivatives in (z, r') by forward differentiation of drag_load
 /// (4 seeds instead of 12); the contact's from its linear integrand. Same
-/// result as element_forces<Dual<12>> to round-off (tests/unit), ≈ 10×
-/// cheaper. With ctx.drag_jacobian false the drag is a dead load in K.
+/// result as element_forces<Dual<12>> to round-off (tests/unit), at a
+/// fraction of its cost (docs/decisions/fe-line-statics.md). With
+/// ctx.drag_jacobian false the drag is a dead load in K.
 ///
 /// Hessian of W = EA/2 (|a| − 1)² + EI/2 (|a|²|b|² − (a·b)²)/|a|⁶ (the
 /// energy whose gradient element_forces uses), with A = a·a, B = b·b,

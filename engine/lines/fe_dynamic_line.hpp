@@ -28,9 +28,9 @@ namespace spiral::engine::fe_detail {
 
 // A change of an element's seabed contact by this fraction of its length
 // since the Newton matrix was factored refreshes the matrix (see
-// newton_matrix_stale). Measured on the OC4 benchmark (80 elements, rtol
-// 1e-6): never 14.2k steps, 269 Newton convergence failures; 0.2 12.7k,
-// 183; 0.1 11.4k, 65; 0.05 11.1k, none, but 4.7k refreshes (2.8k at 0.1).
+// newton_matrix_stale). 0.1: fewer steps and Newton convergence failures
+// than a coarser threshold, fewer refreshes than a finer one
+// (docs/decisions/fe-line-dynamics-integrator.md).
 constexpr double kContactChangeForRefresh = 0.1;
 
 
@@ -246,7 +246,7 @@ struct DynamicLine final : ImplicitSystem {
   // The contact stiffness k ∫ S Sᵀ of an element near the touchdown point
   // (k L ≈ 1e7 N/m for the OC4 chain) dwarfs c² M at the step sizes of the
   // line's motion: a Newton matrix factored before an element's contact
-  // changed makes the iteration diverge (rate > 0.9, measured) until the
+  // changed makes the iteration diverge (rate > 0.9) until the
   // next refresh.
   // Only those elements are re-evaluated (update_newton_matrix).
   bool newton_matrix_stale() override {

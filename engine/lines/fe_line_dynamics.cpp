@@ -273,12 +273,6 @@ double FeLineDynamics::time_s() const {
 IdaStatistics FeLineDynamics::statistics() const {
   return impl_->ida->statistics();
 }
-int FeLineDynamics::node_count() const {
-  return impl_->line.p.n_nodes;
-}
-int FeLineDynamics::dof_count() const {
-  return impl_->line.n;
-}
 
 Eigen::Vector3d FeLineDynamics::end_B_force_N() const {
   fe_detail::DynamicLine& m = impl_->line;

@@ -39,52 +39,15 @@
 // after a convergence failure, and updated — new c_j, re-evaluated elements
 // — when c_j changed by 25 % or an element's seabed contact by 10 % of its
 // length (the contact stiffness k L ≈ 1e7 N/m of an OC4 element dwarfs
-// c² M: a matrix factored before the change made the Newton iteration
+// c² M: a matrix factored before the change makes the Newton iteration
 // diverge).
 //
-// Measured (OC4 chain, tests/bench/fe_dynamics_bench: 80 elements, 600 s,
-// surge 5 m @ 100 s + 1 m @ 10 s; tension error: largest fairlead-tension
-// difference after the ramp against a 160-element rtol-1e-8 reference, in %
-// of its peak; CPU s on the 2-core AMD EPYC under load 4–11; 2026-12-01):
-//   as first merged, rtol 1e-6:                 13.9k steps  2.4–2.5 s  0.39 %
-//   + vector operations compiled here (the
-//     Debian SUNDIALS libraries are -O0):       13.9k        1.6 s
-//   + one-pass residual, end force from the
-//     end element only:                         14.1k        1.0 s      0.28 %
-//   + IDA's convergence test with its resets
-//     (sundials_ida.hpp), contact-triggered
-//     and partial updates, Cholesky:            11.6k        0.80–0.88  0.15 %
-//   + band kernels with a compile-time band and
-//     four partial sums in the band products:
-//     rtol 1e-6                                 11.7k        0.76 s     0.15 %
-//     rtol 2e-6 (the default)                    8.8k        0.60–0.64  0.21–0.32 %
-//   rtol 3.2e-6: 7.3k, 0.52 s, 0.40–0.78 %; 1e-5: 5.4k, 0.43 s, 2.1–2.5 %.
-//   40 elements, rtol 1e-6: 12.3k steps, 0.40 s, 0.17–0.26 %. (The spread is
-//   the error's sensitivity to round-off: runs that differ only in the order
-//   of floating-point sums differ by that much.)
-//   ARKODE ARKStep (an experiment outside the repository: ODE form with the
-//   mass of the static state, the same reduced Newton solve, matrix-embedded):
-//   ARK436L2SA_DIRK_6_3_4 at rtol 2e-6 took 4.8k steps and 90k right-hand sides for the first 200 s
-//   (IDA: 2.5k steps, 2.9k residuals), 4.7 s against 0.17 s; the ESDIRK tables (ESDIRK324L2SA,
-//   ESDIRK436L2SA, ESDIRK547L2SA2) and Kvaerno 4-2-3 / 5-3-4 took 800–1200 steps for the first 60 s
-//   against IDA's 390, their error estimates limiting the step while the lightly damped modes ring.
-//   Not pursued (nor was its large tension error, 2–55 %, investigated).
-// What limits the step: 97 % of IDA's weighted local error sits in the
-// vertical slopes of the nodes from the touchdown point to ≈ 150 m above it
-// — a ≈ 2.5 s in-plane mode of the lower catenary (slope amplitude ≈ 2.5e-4)
-// that also carries most of the tension error; BDF2 resolves it with ≈ 50
-// steps per period at rtol 1e-6. Tried and not kept:
-//  - BDF order 3: 167k steps for the first 60 s (the lightly damped modes
-//    fall in its instability region); order 5: 300k steps for 600 s.
-//  - tolerances along the line only (slope tolerance / |t_k| per component,
-//    position tolerance / h across): 10.9k steps at rtol 1e-6 but 0.58 %:
-//    the transverse slopes carry the 2.5 s mode — no better than a looser
-//    rtol.
-//  - a refresh at every step: 11.2k steps but 2.5 s; a c_j threshold of
-//    50 %: the mass-dominated modes' Newton iteration diverges (their matrix
-//    is off by (c/c₀)² ≈ 2.25): 35k steps, 10 % error.
-//  - the seabed law is the statics' and stays: penalty ×0.1 would take 9.6k
-//    steps, ×10 24.8k (seabed damping ×0 or ×3: ±5 %).
+// What limits the step: a ≈ 2.5 s in-plane mode of the lower catenary, in
+// the vertical slopes of the nodes from the touchdown point to ≈ 150 m above
+// it; BDF2 resolves it with ≈ 50 steps per period at rtol 1e-6. The
+// benchmark behind the defaults, and what was tried and not kept (BDF order
+// > 2, tolerances along the line, other refresh rules, ARKODE's DIRK and
+// ESDIRK methods), are in docs/decisions/fe-line-dynamics-integrator.md.
 //
 // Why implicit: an explicit step must resolve the highest axial frequency,
 // ω ≈ 2 √(EA/(m h²)) — for the OC4 chain with 80 elements (h = 10.4 m)
@@ -158,12 +121,12 @@ struct FeDynamicsOptions {
   /// follow by central differences.
   std::function<Eigen::Vector3d(double arc_length_m)> initial_velocity;
   // Integrator (IDA). Local error per step: rtol |y| + atol per component.
-  // Defaults measured on the OC4 line benchmark (tests/bench/fe_dynamics_bench,
-  // 80 elements, 600 s; numbers in the header comment): fairlead tension
-  // within 0.3 % of a 160-element rtol-1e-8 reference. The slopes carry the
-  // strain (|r'| − 1 = T/EA ≈ 1e-3), so their error sets the tension error:
-  // rtol = slope tolerance 1e-5 gives 2–2.5 %. Velocities follow from the
-  // positions (0.01 m/s: 2 % more steps, no gain in tension).
+  // Defaults chosen on the OC4 line benchmark (tests/bench/fe_dynamics_bench,
+  // 80 elements, 600 s; docs/decisions/fe-line-dynamics-integrator.md):
+  // fairlead tension within 0.3 % of a 160-element rtol-1e-8 reference. The
+  // slopes carry the strain (|r'| − 1 = T/EA ≈ 1e-3), so their error sets the
+  // tension error. Velocities follow from the positions: their tolerance is
+  // loose.
   double relative_tolerance = 2e-6;
   double position_tolerance_m = 1e-4;  ///< node positions
   double slope_tolerance = 2e-6;       ///< slopes r'
@@ -219,8 +182,6 @@ class FeLineDynamics {
   Eigen::Vector3d end_B_force_N() const;
   FeLineEnergy energy() const;
   IdaStatistics statistics() const;
-  int node_count() const;
-  int dof_count() const;
 
  private:
   struct Impl;

@@ -79,8 +79,8 @@ struct Tangent {
   /// through continuations (seabed stiffness, current, axial stiffness)
   /// whose stage decisions depend on how far below the tolerance each stage
   /// lands and on the per-stage iteration budgets; chord steps change both
-  /// and made some cold solves take more stages (measured: SCR with
-  /// 1.5 m/s current, 33 → 67 stages), so cold solves keep full Newton.
+  /// and made some cold solves take more stages
+  /// (docs/decisions/fe-line-statics.md), so cold solves keep full Newton.
   bool chord_steps = false;
   int evaluations = 0;  // Jacobian assemblies + factorisations
 };

@@ -20,27 +20,13 @@
 // clump or buoy kinks a cable. Joints between two bending sections share the
 // slope (moment continuity).
 //
-// Why this element — measured (tests/validation/fe_statics_catenary_test):
-//  - fully suspended OC4 line, fairlead tension vs the exact elastic
-//    catenary: 10 el 1.8e-7 · 20 el 4.7e-9 · 40 el 9e-11 · 80 el 1.4e-12
-//    (order ≈ 5.5);
-//  - OC4 line with 242 m on the seabed (k = 1e7 N/m²): 10 el 1.6e-5 ·
-//    20 el 1.2e-5 · 40 el 5.6e-7 · 80 el 8.7e-7 — the curvature jump at the
-//    touchdown point and the penalty (error O(w/k)) limit it; target was
-//    5e-4 at 20 elements (the brief quotes ≈ 2e-3 for a plain lumped-mass
-//    model, not re-measured here);
-//  - chain–polyester–chain (83 el) vs solve_catenary: 1e-9 suspended, 1e-5
-//    with 368 m laid;
-//  - Low & Langley flexible riser (EI, 34 el) vs OrcaFlex: all six end
-//    reactions within 0.1 %; SCR touchdown: peak curvature 0.94 % below w/H
-//    with 1 m elements near the TDP (λ = √(EI/H) = 7.4 m), and the curvature's
-//    approach to the cable value decays over 1.003 λ (Pesce et al. 1998);
-//  - end-B stiffness (condensed Jacobian) vs central differences of
-//    re-solved equilibria on a fixed mesh: 1e-8 at a 0.2 mm step
-//    (tests/validation/fe_static_line_test).
-// Exact elastic-catenary elements (Peyrot & Goulois 1979) are exact only
-// under a uniform load per element and would need a separate beam element
-// for risers; this element handles drag, contact and bending in one.
+// Why this element: against the exact elastic catenary it converges fast
+// with the element count (order ≈ 5.5 on the fully suspended OC4 line;
+// tests/validation/engine/lines/fe_statics_catenary_test), and one element
+// carries drag, seabed contact and (for risers) bending. Exact
+// elastic-catenary elements (Peyrot & Goulois 1979) are exact only under a
+// uniform load per element and would need a separate beam element for
+// risers. The accuracy figures are in docs/decisions/fe-line-statics.md.
 //
 // Touchdown: a cubic element cannot follow "flat, then curved" inside itself,
 // so the node nearest the touchdown point is moved onto it (r-adaptivity) and
@@ -82,18 +68,12 @@
 // Under current a cold start is first swung rigidly about its chord until
 // the loads have no moment about it (no strain, so none of the spurious
 // stretch of a linear rotation step): most cold solves under current then
-// converge without continuation (default scenario, 28 lines × 4 currents × 3
-// hull offsets: 22,458 → 4,164 Newton iterations, end forces equal to 1e-8).
+// converge without continuation (docs/decisions/fe-line-statics.md).
 // A warm start is predicted to first order with the previous solution's
 // tangent and solved by Newton at the full current; if that fails, the
 // solve starts cold (a continuation from a warm state would restart from
 // zero current).
-// Timings (Release, one core, shared machine; tests/bench/fe_statics_bench):
-// OC4 20/80 el ≈ 5 ms; 2740 m chain–polyester–chain, 83 el: 2 ms (no
-// current), 3.5 ms (1.5 m/s at 30°), 0.8 ms warm-started after a 1 m offset;
-// SCR 225 el 8–12 ms cold, 2.5–3.5 ms warm after a 0.5 m hang-off move (with
-// or without a 1.5 m/s current); with that current cold ≈ 30 ms (swung
-// start, seabed continuation; 0.2–0.3 s before the swing).
+// Cost: tests/bench/fe_statics_bench (timings in docs/decisions/fe-line-statics.md).
 // Frames and units: global frame, z up, SI. End A is the anchor / riser
 // bottom, end B the fairlead / hang-off.
 

@@ -1,0 +1,121 @@
+// Validation of the sections environments, load_cases, criteria and stages
+// (project_validation_checks.hpp).
+
+#include <cmath>
+
+#include "design/project/project_validation_checks.hpp"
+
+namespace spiral::design::validation_detail {
+
+void check_environments(const Project& p, Reporter& r) {
+  unique_names(r, p.environments, "environments", "environment", "environment_name_unique");
+  for (std::size_t i = 0; i < p.environments.size(); ++i) {
+    const Environment& e = p.environments[i];
+    const std::string at = fmt::format("environments[{}]", i);
+    if (e.waves) {
+      positive(r, at + ".waves.hs", e.waves->hs_m, "m", "hs_positive");
+      positive(r, at + ".waves.tp", e.waves->tp_s, "s", "tp_positive");
+      at_least(r, at + ".waves.gamma", e.waves->gamma, 1.0, "", "gamma_at_least_one");
+      if (e.waves->gamma && e.waves->spectrum != WaveSpectrum::jonswap) {
+        r.fail(at + ".waves.gamma", "key_not_applicable",
+               fmt::format("applies to the jonswap spectrum only, got spectrum {}",
+                           to_string(e.waves->spectrum)));
+      }
+      positive(r, at + ".waves.spreading_s", e.waves->spreading_s, "", "spreading_positive");
+    }
+    if (e.wind) {
+      at_least(r, at + ".wind.speed", e.wind->speed_m_per_s, 0.0, "m/s", "wind_speed_non_negative");
+      positive(r, at + ".wind.reference_height", e.wind->reference_height_m, "m",
+               "reference_height_positive");
+    }
+    if (e.current) {
+      const auto& profile = e.current->profile;
+      if (profile.empty()) {
+        r.fail(at + ".current.profile", "current_profile_valid",
+               "needs at least one [z m, speed m/s] point");
+      }
+      for (std::size_t k = 0; k < profile.size(); ++k) {
+        const std::string pat = fmt::format("{}.current.profile[{}]", at, k);
+        const double z = profile[k].z_m;
+        if (z > 0.0 || z < -p.site.depth_m - kSeabedTolerance_m) {
+          r.fail(pat + "[0]", "current_profile_valid",
+                 fmt::format("z must be in [{}, 0] m (seabed to surface), got {} m",
+                             -p.site.depth_m, z));
+        }
+        if (k > 0 && !(z < profile[k - 1].z_m)) {
+          r.fail(pat + "[0]", "current_profile_valid",
+                 fmt::format("z must decrease from the surface down, got {} m after {} m", z,
+                             profile[k - 1].z_m));
+        }
+        at_least(r, pat + "[1]", profile[k].speed_m_per_s, 0.0, "m/s", "current_profile_valid");
+      }
+    }
+  }
+}
+
+void check_load_cases(const Project& p, Reporter& r) {
+  unique_names(r, p.load_cases, "load_cases", "load case", "load_case_name_unique");
+  for (std::size_t i = 0; i < p.load_cases.size(); ++i) {
+    const LoadCase& c = p.load_cases[i];
+    const std::string at = fmt::format("load_cases[{}]", i);
+    if (!defined(p.environments, c.environment)) {
+      r.fail(at + ".environment", "environment_defined",
+             fmt::format("undefined environment \"{}\"{}", c.environment,
+                         defined_list(p.environments)));
+    }
+    if (c.damaged_line && !defined(p.mooring.lines, *c.damaged_line)) {
+      r.fail(at + ".damaged_line", "line_defined",
+             fmt::format("undefined mooring line \"{}\"{}", *c.damaged_line,
+                         defined_list(p.mooring.lines)));
+    }
+  }
+}
+
+void check_criteria(const Project& p, Reporter& r) {
+  const MooringCriteria& m = p.criteria.mooring;
+  const char* c = "safety_factor_at_least_one";
+  if (m.api_rp_2sk) {
+    const std::string at = "criteria.mooring.safety_factors";
+    at_least(r, at + ".intact_quasi_static", m.api_rp_2sk->intact_quasi_static, 1.0, "", c);
+    at_least(r, at + ".intact_dynamic", m.api_rp_2sk->intact_dynamic, 1.0, "", c);
+    at_least(r, at + ".damaged_quasi_static", m.api_rp_2sk->damaged_quasi_static, 1.0, "", c);
+    at_least(r, at + ".damaged_dynamic", m.api_rp_2sk->damaged_dynamic, 1.0, "", c);
+  }
+  if (m.dnv_os_e301) {
+    const std::string at = "criteria.mooring.partial_factors";
+    at_least(r, at + ".uls_mean", m.dnv_os_e301->uls_mean, 1.0, "", c);
+    at_least(r, at + ".uls_dynamic", m.dnv_os_e301->uls_dynamic, 1.0, "", c);
+    at_least(r, at + ".als_mean", m.dnv_os_e301->als_mean, 1.0, "", c);
+    at_least(r, at + ".als_dynamic", m.dnv_os_e301->als_dynamic, 1.0, "", c);
+  }
+  check_riser_criteria(r, "criteria.risers", p.criteria.risers);
+  positive(r, "criteria.max_offset_pct_depth", p.criteria.max_offset_pct_depth, "%",
+           "offset_limit_positive");
+}
+
+void check_stages(const Project& p, Reporter& r) {
+  unique_names(r, p.stages, "stages", "stage", "stage_name_unique");
+  for (std::size_t i = 0; i < p.stages.size(); ++i) {
+    // The zone is a polar polygon on a uniform grid closed at 360°.
+    const double step = p.stages[i].soz.step_deg;
+    const double count = 360.0 / step;
+    if (!(step > 0.0) || std::abs(count - std::round(count)) > 1e-9 * count) {
+      r.fail(fmt::format("stages[{}].soz.step_deg", i), "soz_step_divides_360",
+             fmt::format("must be > 0 and divide 360, got {} deg", step));
+    }
+    if (const std::optional<double> duration = p.stages[i].duration_s) {
+      const std::string path = fmt::format("stages[{}].duration", i);
+      if (p.stages[i].name != "advanced") {
+        // The preliminary and intermediate storms are 3 h by design (their
+        // MPM extremes rank the cases); a duration there would be ignored.
+        r.fail(path, "stage_duration_advanced_only",
+               fmt::format("only the advanced stage takes a duration, got it on stage '{}'",
+                           p.stages[i].name));
+      } else if (!(*duration > 0.0)) {
+        r.fail(path, "stage_duration_positive", fmt::format("must be > 0, got {} s", *duration));
+      }
+    }
+  }
+}
+
+}  // namespace spiral::design::validation_detail

@@ -1,0 +1,62 @@
+// The value checks of the validation pass and the checks shared by several
+// sections (project_validation_checks.hpp).
+
+#include "design/project/project_validation_checks.hpp"
+
+namespace spiral::design::validation_detail {
+namespace {
+
+std::string unit_suffix(std::string_view unit) {
+  return unit.empty() ? std::string() : fmt::format(" {}", unit);
+}
+
+}  // namespace
+
+void positive(Reporter& r, const std::string& path, double value, std::string_view unit,
+              const char* condition) {
+  if (!(value > 0.0)) {
+    r.fail(path, condition,
+           fmt::format("must be > 0{}, got {}{}", unit_suffix(unit), value, unit_suffix(unit)));
+  }
+}
+
+void positive(Reporter& r, const std::string& path, const std::optional<double>& value,
+              std::string_view unit, const char* condition) {
+  if (value) positive(r, path, *value, unit, condition);
+}
+
+void at_least(Reporter& r, const std::string& path, double value, double minimum,
+              std::string_view unit, const char* condition) {
+  if (!(value >= minimum)) {
+    r.fail(path, condition,
+           fmt::format("must be >= {}{}, got {}{}", minimum, unit_suffix(unit), value,
+                       unit_suffix(unit)));
+  }
+}
+
+void at_least(Reporter& r, const std::string& path, const std::optional<double>& value,
+              double minimum, std::string_view unit, const char* condition) {
+  if (value) at_least(r, path, *value, minimum, unit, condition);
+}
+
+void check_fe_mesh(Reporter& r, const std::string& at, const FeMesh& mesh) {
+  const char* c = "fe_mesh_positive";
+  positive(r, at + ".element_length", mesh.element_length_m, "m", c);
+  if (const auto& t = mesh.touchdown_refinement) {
+    positive(r, at + ".touchdown_refinement.length", t->length_m, "m", c);
+    positive(r, at + ".touchdown_refinement.element_length", t->element_length_m, "m", c);
+    if (t->element_length_m > mesh.element_length_m) {
+      r.fail(at + ".touchdown_refinement.element_length", "touchdown_refinement_finer",
+             fmt::format("must be <= element_length {} m (a refinement), got {} m",
+                         mesh.element_length_m, t->element_length_m));
+    }
+  }
+}
+
+void check_file(Reporter& r, const std::string& at, const std::filesystem::path& file) {
+  if (!std::filesystem::is_regular_file(file)) {
+    r.fail(at, "file_exists", fmt::format("file not found: {}", file.string()));
+  }
+}
+
+}  // namespace spiral::design::validation_detail
