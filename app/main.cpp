@@ -17,6 +17,7 @@
 #include <fmt/format.h>
 
 #include "app/exit_codes.hpp"
+#include "app/version.hpp"
 #include "design/project/command_line_reference.hpp"
 #include "design/project/input_error.hpp"
 #include "design/analysis/level_comparison.hpp"
@@ -118,8 +119,6 @@ int run_soz_command(const std::string& project_file, const design::SozOptions& o
   return failed ? app::kExitBadInput : app::kExitOk;
 }
 
-constexpr const char* kVersion = "0.1.0";
-
 /// UTC date of the report; SOURCE_DATE_EPOCH (reproducible-builds.org) fixes it.
 std::string report_date() {
   std::time_t now = std::time(nullptr);
@@ -154,7 +153,7 @@ int run_report(const std::string& project_file, const std::string& stage, const 
   info.project_file = project_file;
   info.model_hash = design::model_hash(project_file);
   info.date = report_date();
-  info.version = kVersion;
+  info.version = app::kVersion;
   bool pass = true;
   report::ReportDocument document;
   bool solver_failed = false;
@@ -343,7 +342,7 @@ int main(int argc, char** argv) {
   CLI::App cli{"spiral: integrated mooring-riser design spiral for floating production systems"};
   cli.footer(kExitCodeHelp);
   cli.require_subcommand(1);
-  cli.set_version_flag("--version", "spiral 0.1.0");
+  cli.set_version_flag("--version", fmt::format("spiral {} (commit {})", app::kVersion, app::kGitCommit));
 
   std::string project_file;
   CLI::App* validate = cli.add_subcommand("validate", "Check a project file and print a summary");
