@@ -6,7 +6,6 @@
 #include <cstdlib>
 #include <ctime>
 #include <filesystem>
-#include <fstream>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -16,7 +15,9 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "app/atomic_file.hpp"
 #include "app/exit_codes.hpp"
+#include "app/output_folder.hpp"
 #include "app/version.hpp"
 #include "design/project/command_line_reference.hpp"
 #include "design/project/input_error.hpp"
@@ -173,10 +174,7 @@ int run_report(const std::string& project_file, const std::string& stage, const 
     pass = results.pass;
     document = report::static_stage_report(loaded, results, info);
   }
-  const std::filesystem::path folder =
-      out.empty() ? std::filesystem::path("out") / std::filesystem::path(project_file).stem() / stage
-                  : std::filesystem::path(out);
-  const report::WrittenReport written = report::write_report(document, folder);
+  const report::WrittenReport written = report::write_report(document, app::output_folder(out, project_file, stage));
   fmt::print("{} stage report of '{}' ({}): {}\n", stage, loaded.project.name, pass ? "PASS" : "FAIL",
              written.folder.string());
   fmt::print("  {} ({} pages)\n  {}\n  written in {:.2f} s\n", written.pdf.string(), written.pages,
@@ -227,15 +225,13 @@ int run_analyze(const std::string& project_file, const AnalyzeOptions& o) {
     return app::kExitBadInput;
   }
   const std::filesystem::path folder =
-      o.out.empty() ? std::filesystem::path("out") / std::filesystem::path(project_file).stem() / "analyze" /
-                          fmt::format("{}-{}-seed{}", o.case_name, o.level, o.seed)
-                    : std::filesystem::path(o.out);
+      app::output_folder(o.out, project_file,
+                         std::filesystem::path("analyze") / fmt::format("{}-{}-seed{}", o.case_name, o.level, o.seed));
   try {
     std::filesystem::create_directories(folder);
-    design::write_dynamic_time_series_csv(result, folder / "time_series.csv");
-    std::ofstream json_out(folder / "summary.json");
-    json_out << design::dynamic_analysis_to_json(result, loaded.project.name).dump(2) << "\n";
-    if (!json_out) throw std::runtime_error("cannot write " + (folder / "summary.json").string());
+    app::write_file_atomically(folder / "time_series.csv", design::dynamic_time_series_csv(result));
+    app::write_file_atomically(folder / "summary.json",
+                               design::dynamic_analysis_to_json(result, loaded.project.name).dump(2) + "\n");
   } catch (const std::exception& error) {
     fmt::print(stderr, "output error: {}\n", error.what());
     return app::kExitOutputError;
@@ -305,23 +301,13 @@ int run_compare(const std::string& project_file, const CompareOptions& o) {
     fmt::print(stderr, "{}\n", error.what());
     return app::kExitBadInput;
   }
-  const std::filesystem::path folder =
-      o.out.empty() ? std::filesystem::path("out") / std::filesystem::path(project_file).stem() / "compare" /
-                          fmt::format("{}-seed{}", o.case_name, o.seed)
-                    : std::filesystem::path(o.out);
+  const std::filesystem::path folder = app::output_folder(
+      o.out, project_file, std::filesystem::path("compare") / fmt::format("{}-seed{}", o.case_name, o.seed));
   const std::string table = design::comparison_table(comparison);
   try {
     std::filesystem::create_directories(folder);
-    const std::filesystem::path tmp = folder / "comparison.json.tmp";
-    {
-      std::ofstream json_out(tmp);
-      json_out << design::comparison_to_json(comparison).dump(2) << "\n";
-      if (!json_out) throw std::runtime_error("cannot write " + tmp.string());
-    }
-    std::filesystem::rename(tmp, folder / "comparison.json");
-    std::ofstream table_out(folder / "comparison.txt");
-    table_out << table;
-    if (!table_out) throw std::runtime_error("cannot write " + (folder / "comparison.txt").string());
+    app::write_file_atomically(folder / "comparison.json", design::comparison_to_json(comparison).dump(2) + "\n");
+    app::write_file_atomically(folder / "comparison.txt", table);
   } catch (const std::exception& error) {
     fmt::print(stderr, "output error: {}\n", error.what());
     fmt::print("{}", table);  // the finished comparison is not lost
