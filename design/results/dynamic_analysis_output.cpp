@@ -3,9 +3,8 @@
 #include <fmt/format.h>
 
 #include <cmath>
-#include <fstream>
 #include <numbers>
-#include <stdexcept>
+#include <sstream>
 
 #include "engine/numerics/statistics.hpp"
 
@@ -82,12 +81,8 @@ nlohmann::json matrix_json(const engine::Matrix6d& m) {
 
 }  // namespace
 
-
-
-void write_dynamic_time_series_csv(const DynamicAnalysisResult& r,
-                                   const std::filesystem::path& file) {
-  std::ofstream out(file);
-  if (!out) throw std::runtime_error(fmt::format("cannot write {}", file.string()));
+std::string dynamic_time_series_csv(const DynamicAnalysisResult& r) {
+  std::ostringstream out;
   out << "time_s";
   for (const char* suffix : {"", "_lf", "_wf"}) {
     for (int d = 0; d < 6; ++d) out << ',' << kDofNames[d] << suffix << '_' << dof_unit(d);
@@ -113,7 +108,7 @@ void write_dynamic_time_series_csv(const DynamicAnalysisResult& r,
     }
     out << '\n';
   }
-  if (!out) throw std::runtime_error(fmt::format("error while writing {}", file.string()));
+  return out.str();
 }
 
 nlohmann::json dynamic_analysis_to_json(const DynamicAnalysisResult& r,

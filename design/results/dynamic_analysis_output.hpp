@@ -7,7 +7,6 @@
 //   * JSON summary: per channel mean/std/min/max, MPM of the 3-h maximum
 //     (Gumbel, Weibull, Rayleigh) and minimum, spectral peak period; the
 //     wall-clock time of each step and the integrator statistics.
-#include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -16,9 +15,8 @@
 
 namespace spiral::design {
 
-/// Writes the CSV; throws std::runtime_error naming the file if it cannot.
-void write_dynamic_time_series_csv(const DynamicAnalysisResult& result,
-                                   const std::filesystem::path& file);
+/// The time series CSV (the caller writes it, as every output file of the app).
+std::string dynamic_time_series_csv(const DynamicAnalysisResult& result);
 
 /// Statistics of every channel (total motions, LF motions, tensions) and the
 /// run's metadata. Channels too short for an extreme-value fit carry
