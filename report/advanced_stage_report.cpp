@@ -55,7 +55,8 @@ Section final_check_section(const design::AdvancedStageResults& r, const std::st
       "fit) against its fairlead segment's MBL with the code's dynamic factor. Offset: the most probable 3-h "
       "maximum of the horizontal offset (Weibull fit to the record's peaks) against the offset limit and, with "
       "risers, the most probable 3-h maximum of offset / SOZ allowable in the offset's direction against 1 (the "
-      "SOZ column shows it as an offset in the direction where the record comes closest to the zone). Risers: the MPM top tension against the riser's maximum top tension where its "
+      "SOZ column shows it as an offset in the direction where the record comes closest to the zone). Risers: the MPM "
+      "top tension against the riser's maximum top tension where its "
       "criteria give one; the other riser criteria as the static equilibrium of the case checked them.",
       code)});
   Table lines{"final-tension",
@@ -65,16 +66,16 @@ Section final_check_section(const design::AdvancedStageResults& r, const std::st
   for (const auto& c : r.cases) {
     for (const auto& l : c.lines) {
       lines.rows.push_back({text(c.case_name), text(l.line), num(l.mean_N, 1, kN), num(l.max_N, 1, kN),
-                            num(l.mpm_N, 1, kN), num(l.mbl_N, 0, kN), num(l.dynamic_factor, 2),
-                            num(l.utilization, 3), verdict(l.pass)});
+                            num(l.mpm_N, 1, kN), num(l.mbl_N, 0, kN), num(l.dynamic_factor, 2), num(l.utilization, 3),
+                            verdict(l.pass)});
     }
   }
   s.blocks.emplace_back(lines);
-  Table offsets{"final-offset",
-                "Offsets: coupled MPM horizontal offset against the offset limit and the platform SOZ.",
-                {"Case", "MPM offset (m)", "Limit (m)", "Offset/limit", "SOZ allowable (m)", "Offset/SOZ", "Riser",
-                 "Check"},
-                {}};
+  Table offsets{
+      "final-offset",
+      "Offsets: coupled MPM horizontal offset against the offset limit and the platform SOZ.",
+      {"Case", "MPM offset (m)", "Limit (m)", "Offset/limit", "SOZ allowable (m)", "Offset/SOZ", "Riser", "Check"},
+      {}};
   for (const auto& c : r.cases) {
     if (!c.coupled) continue;
     const bool pass = c.offset_limit_pass && (!c.soz_offset || c.soz_offset->passes);
@@ -108,26 +109,25 @@ Section final_check_section(const design::AdvancedStageResults& r, const std::st
 }
 
 /// One quantity at both levels: the S-C channel `sc_name` against the coupled `coupled_name`.
-void comparison_rows(Table& t, const design::LevelComparison& cmp, const std::string& label,
-                     const std::string& sc_name, const std::string& coupled_name, double scale, int decimals) {
+void comparison_rows(Table& t, const design::LevelComparison& cmp, const std::string& label, const std::string& sc_name,
+                     const std::string& coupled_name, double scale, int decimals) {
   const design::LevelSummary& sc = cmp.levels.front();
   const design::LevelSummary& coupled = cmp.levels.back();
   const design::ChannelSummary* ref = design::find_channel(coupled, coupled_name);
   for (const design::LevelSummary* level : {&sc, &coupled}) {
     const design::ChannelSummary* c = design::find_channel(*level, level == &sc ? sc_name : coupled_name);
     if (c == nullptr) {
-      t.rows.push_back({text(label), text(design::to_string(level->level)), text("–"), text("–"), text("–"),
-                        text("–"), text("–"), text("–"), text("–"), text("–")});
+      t.rows.push_back({text(label), text(design::to_string(level->level)), text("–"), text("–"), text("–"), text("–"),
+                        text("–"), text("–"), text("–"), text("–")});
       continue;
     }
     auto diff = [&](double v, double r) {
       return level != &coupled && ref ? num(design::percent_difference(v, r), 1) : text("–");
     };
     t.rows.push_back({text(label), text(design::to_string(level->level)), num(c->mean, decimals, scale),
-                      num(c->std_dev, decimals, scale), num(c->maximum, decimals, scale),
-                      num(c->mpm, decimals, scale), diff(c->mean, ref ? ref->mean : 0.0),
-                      diff(c->std_dev, ref ? ref->std_dev : 0.0), diff(c->maximum, ref ? ref->maximum : 0.0),
-                      diff(c->mpm, ref ? ref->mpm : 0.0)});
+                      num(c->std_dev, decimals, scale), num(c->maximum, decimals, scale), num(c->mpm, decimals, scale),
+                      diff(c->mean, ref ? ref->mean : 0.0), diff(c->std_dev, ref ? ref->std_dev : 0.0),
+                      diff(c->maximum, ref ? ref->maximum : 0.0), diff(c->mpm, ref ? ref->mpm : 0.0)});
   }
 }
 
@@ -217,7 +217,8 @@ Section case_section(const design::CriticalCaseVerification& c) {
   const std::string line = c.coupled ? c.coupled->most_loaded_line : std::string();
   Table t{id + "-comparison",
           fmt::format("Case {}: sc-enhanced against coupled, {} on seed {}. MPM: most probable 3-h maximum "
-                      "(Gumbel; the sample maximum where the record is too short for the fit). Δ: 100 (S-C − coupled) / |coupled|. The S-C tension is the quasi-static "
+                      "(Gumbel; the sample maximum where the record is too short for the fit). Δ: 100 (S-C − coupled) "
+                      "/ |coupled|. The S-C tension is the quasi-static "
                       "catenary at the S-C fairlead motion, the coupled one the FE line's top tension.",
                       c.case_name, duration_text(c.comparison.duration_s), c.comparison.seed),
           {"Quantity", "Level", "Mean", "Std", "Max", "MPM", "Δ mean (%)", "Δ std (%)", "Δ max (%)", "Δ MPM (%)"},
@@ -225,8 +226,8 @@ Section case_section(const design::CriticalCaseVerification& c) {
   comparison_rows(t, c.comparison, "offset (m)", "offset_m", "offset_m", 1.0, 3);
   comparison_rows(t, c.comparison, "surge (m)", "surge_m", "surge_m", 1.0, 3);
   if (!line.empty())
-    comparison_rows(t, c.comparison, "tension " + line + " (kN)", "qs_tension_" + line + "_N",
-                    "tension_" + line + "_N", kN, 1);
+    comparison_rows(t, c.comparison, "tension " + line + " (kN)", "qs_tension_" + line + "_N", "tension_" + line + "_N",
+                    kN, 1);
   s.blocks.emplace_back(t);
 
   Table cost{id + "-cost",
@@ -240,19 +241,18 @@ Section case_section(const design::CriticalCaseVerification& c) {
       cost.rows.push_back({text(design::to_string(l->level)), text("failed"), text("–"), text("–"), text("–")});
       continue;
     }
-    cost.rows.push_back(
-        {text(design::to_string(l->level)), num(l->wall_s, 3),
-         l->wall_s > 0 ? num(c.comparison.duration_s / l->wall_s, 1) : text("–"),
-         !coupled.error && l->wall_s > 0 ? num(coupled.wall_s / l->wall_s, 1) : text("–"),
-         num((*d)->solver_steps, 0)});
+    cost.rows.push_back({text(design::to_string(l->level)), num(l->wall_s, 3),
+                         l->wall_s > 0 ? num(c.comparison.duration_s / l->wall_s, 1) : text("–"),
+                         !coupled.error && l->wall_s > 0 ? num(coupled.wall_s / l->wall_s, 1) : text("–"),
+                         num((*d)->solver_steps, 0)});
   }
   s.blocks.emplace_back(cost);
   if (c.sc || c.coupled) s.blocks.emplace_back(overlay_figure(c, id));
   if (c.coupled) {
-    s.blocks.emplace_back(Paragraph{fmt::format(
-        "The coupled storm of case {}: motions, spectra and statistics ({} integrator steps, {:.2f} s wall "
-        "clock).",
-        c.case_name, c.coupled->solver_steps, c.coupled->wall_s)});
+    s.blocks.emplace_back(Paragraph{
+        fmt::format("The coupled storm of case {}: motions, spectra and statistics ({} integrator steps, {:.2f} s wall "
+                    "clock).",
+                    c.case_name, c.coupled->solver_steps, c.coupled->wall_s)});
     for (Block& b : storm_blocks(*c.coupled, id + "-coupled")) s.blocks.push_back(std::move(b));
     for (const std::string& note : c.coupled->notes) s.blocks.emplace_back(Paragraph{"Note: " + note + "."});
   }
@@ -265,11 +265,11 @@ ReportDocument advanced_stage_report(const design::ValidatedProject& vp, const d
                                      const ReportInfo& info) {
   const design::Project& p = vp.project;
   const auto& statics = r.intermediate.statics;
-  ReportDocument doc = stage_document(
-      p, info, "advanced", statics.code,
-      fmt::format("{:.3f} s (intermediate ranking {:.3f} s, coupled and S-C verification {:.3f} s)", r.wall_time_s,
-                  r.intermediate.wall_time_s, r.verification_wall_s),
-      statics.soz ? &*statics.soz : nullptr);
+  ReportDocument doc =
+      stage_document(p, info, "advanced", statics.code,
+                     fmt::format("{:.3f} s (intermediate ranking {:.3f} s, coupled and S-C verification {:.3f} s)",
+                                 r.wall_time_s, r.intermediate.wall_time_s, r.verification_wall_s),
+                     statics.soz ? &*statics.soz : nullptr);
   doc.title.title = "Advanced stage report";
   doc.title.subtitle = "Fully coupled verification of the critical cases";
   doc.title.facts.emplace_back(
@@ -294,9 +294,10 @@ ReportDocument advanced_stage_report(const design::ValidatedProject& vp, const d
   if (!r.governing.empty()) parts.push_back("governing: " + r.governing);
   std::string reasons;
   for (const auto& p_ : parts) reasons += (reasons.empty() ? "" : "; ") + p_;
-  doc.title.verdict = r.pass ? fmt::format("PASS — all {} critical cases verified fully coupled pass the final "
-                                           "criteria; governing: {}",
-                                           r.cases.size(), r.governing)
+  doc.title.verdict = r.pass ? fmt::format(
+                                   "PASS — all {} critical cases verified fully coupled pass the final "
+                                   "criteria; governing: {}",
+                                   r.cases.size(), r.governing)
                              : "FAIL — " + reasons;
   doc.sections.push_back(model_summary_section(vp, statics.code));
   doc.sections.push_back(load_cases_section(p));

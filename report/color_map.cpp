@@ -32,8 +32,6 @@ Rgb viridis(double t) {
           ((1 - f) * a[2] + f * b[2]) / 255.0};
 }
 
-Rgb utilization_color(double utilization) {
-  return utilization > 1.0 ? kFailColor : viridis(utilization);
-}
+Rgb utilization_color(double utilization) { return utilization > 1.0 ? kFailColor : viridis(utilization); }
 
 }  // namespace spiral::report

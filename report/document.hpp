@@ -67,9 +67,8 @@ struct TitlePage {
   std::string subtitle;  ///< e.g. "Static analyses"
   std::string project;   ///< project name
   std::string description;
-  std::vector<std::pair<std::string, std::string>>
-      facts;            ///< project file, date, version, model hash, ...
-  std::string verdict;  ///< one line, e.g. "PASS: every case meets API RP 2SK"
+  std::vector<std::pair<std::string, std::string>> facts;  ///< project file, date, version, model hash, ...
+  std::string verdict;                                     ///< one line, e.g. "PASS: every case meets API RP 2SK"
   bool pass = true;
 };
 

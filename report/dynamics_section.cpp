@@ -20,12 +20,8 @@ constexpr std::size_t kEnvelopeBins = 1500;
 constexpr double kShownVarianceFraction = 0.999;
 
 /// Display scale of a channel: tensions in kN, the rest as stored.
-double display_scale(const design::StormChannel& c) {
-  return c.unit == "N" ? 1e-3 : 1.0;
-}
-std::string display_unit(const design::StormChannel& c) {
-  return c.unit == "N" ? "kN" : c.unit;
-}
+double display_scale(const design::StormChannel& c) { return c.unit == "N" ? 1e-3 : 1.0; }
+std::string display_unit(const design::StormChannel& c) { return c.unit == "N" ? "kN" : c.unit; }
 
 Plot time_plot(const design::StageDynamics& d, const design::StormChannel& c, std::size_t color) {
   Plot p;
@@ -37,12 +33,19 @@ Plot time_plot(const design::StageDynamics& d, const design::StormChannel& c, st
   s.color = palette(color);
   p.series.push_back(std::move(s));
   const double k = display_scale(c);
-  Series mean{"mean", {d.times_s.front(), d.times_s.back()}, {c.mean * k, c.mean * k}, {0.2, 0.2, 0.2}, 0.8, true,
-              false, false};
+  Series mean{
+      "mean", {d.times_s.front(), d.times_s.back()}, {c.mean * k, c.mean * k}, {0.2, 0.2, 0.2}, 0.8, true, false,
+      false};
   p.series.push_back(mean);
   if (c.mpm_max) {
-    p.series.push_back({"MPM max (3 h)", {d.times_s.front(), d.times_s.back()}, {*c.mpm_max * k, *c.mpm_max * k},
-                        {0.84, 0.15, 0.16}, 0.8, true, false, false});
+    p.series.push_back({"MPM max (3 h)",
+                        {d.times_s.front(), d.times_s.back()},
+                        {*c.mpm_max * k, *c.mpm_max * k},
+                        {0.84, 0.15, 0.16},
+                        0.8,
+                        true,
+                        false,
+                        false});
   }
   p.x_range = std::pair{d.times_s.front(), d.times_s.back()};
   p.legend = false;  // one key for all panels, in the caption: the legend would hide the record
@@ -58,9 +61,9 @@ Plot spectrum_plot(const design::StormChannel& c, std::size_t color) {
   Series s;
   s.x = c.spectrum_frequency_rad_per_s;
   for (const double v : c.spectrum_density) s.y.push_back(v * k * k);
-  s.label = c.spectral_peak_period_s > 0 ? fmt::format("Welch, {} segments; Tp {:.1f} s", c.welch_segments,
-                                                       c.spectral_peak_period_s)
-                                         : "Welch";
+  s.label = c.spectral_peak_period_s > 0
+                ? fmt::format("Welch, {} segments; Tp {:.1f} s", c.welch_segments, c.spectral_peak_period_s)
+                : "Welch";
   s.color = palette(color);
   s.line_width = 1.1;
   p.series.push_back(std::move(s));
@@ -74,8 +77,8 @@ Plot spectrum_plot(const design::StormChannel& c, std::size_t color) {
   for (std::size_t i = 0; i < c.spectrum_density.size(); ++i) {
     cumulative += c.spectrum_density[i];
     if (cumulative >= kShownVarianceFraction * total) {
-      p.x_range = std::pair{0.0, std::min(c.spectrum_frequency_rad_per_s.back(),
-                                          2.0 * c.spectrum_frequency_rad_per_s[i])};
+      p.x_range =
+          std::pair{0.0, std::min(c.spectrum_frequency_rad_per_s.back(), 2.0 * c.spectrum_frequency_rad_per_s[i])};
       break;
     }
   }
@@ -98,8 +101,8 @@ Series time_envelope(const std::vector<double>& t, const std::vector<double>& v,
   const std::size_t per = envelope_bin_samples(n);
   for (std::size_t b = 0; b < n; b += per) {
     const std::size_t e = std::min(n, b + per);
-    const auto [lo, hi] = std::minmax_element(v.begin() + static_cast<std::ptrdiff_t>(b),
-                                              v.begin() + static_cast<std::ptrdiff_t>(e));
+    const auto [lo, hi] =
+        std::minmax_element(v.begin() + static_cast<std::ptrdiff_t>(b), v.begin() + static_cast<std::ptrdiff_t>(e));
     // In time order within the bin, so the polyline does not fold back.
     const bool lo_first = lo < hi;
     const auto first = lo_first ? lo : hi, second = lo_first ? hi : lo;
@@ -117,8 +120,8 @@ Series time_envelope(const std::vector<double>& t, const std::vector<double>& v,
 Figure plot_panels(std::string id, std::string caption, double aspect, std::vector<Plot> plots, int cols) {
   Figure f{std::move(id), std::move(caption), aspect, std::nullopt, nullptr};
   f.draw = [plots = std::move(plots), cols](cairo_t* cr, double w, double h) {
-    const int rows = static_cast<int>((plots.size() + static_cast<std::size_t>(cols) - 1) /
-                                      static_cast<std::size_t>(cols));
+    const int rows =
+        static_cast<int>((plots.size() + static_cast<std::size_t>(cols) - 1) / static_cast<std::size_t>(cols));
     const double pw = w / cols, ph = h / std::max(1, rows);
     for (std::size_t i = 0; i < plots.size(); ++i) {
       cairo_save(cr);
@@ -147,9 +150,9 @@ std::vector<Block> storm_blocks(const design::StageDynamics& d, const std::strin
                   d.output_step_s * static_cast<double>(envelope_bin_samples(d.times_s.size()))),
       1.25, std::move(motion), 2));
   out.emplace_back(plot_panels(id + "-spectra",
-                          "One-sided Welch spectra of the same channels (Hann window, 50 % overlap), up to "
-                          "the frequency beyond which less than 1e-6 of the variance lies.",
-                          1.3, std::move(spectra), 2));
+                               "One-sided Welch spectra of the same channels (Hann window, 50 % overlap), up to "
+                               "the frequency beyond which less than 1e-6 of the variance lies.",
+                               1.3, std::move(spectra), 2));
   if (d.channels.size() > 4) {
     const design::StormChannel& t = d.channels[4];
     Plot series = time_plot(d, t, 4);  // not red: the MPM line is
@@ -192,8 +195,7 @@ Section dynamics_section(const design::StageDynamics& d, const std::string& code
       design::to_string(d.level), d.case_name, d.condition,
       d.damaged_line ? fmt::format(", {} removed", *d.damaged_line) : std::string(), d.selection, d.duration_s,
       d.output_step_s, d.seed, d.wall_s, d.timing.reduction_s, d.timing.forcing_s,
-      d.timing.dynamics_s + d.timing.wave_frequency_s, d.solver_steps,
-      d.timing.tensions_s)});
+      d.timing.dynamics_s + d.timing.wave_frequency_s, d.solver_steps, d.timing.tensions_s)});
   for (Block& b : storm_blocks(d, "storm")) s.blocks.push_back(std::move(b));
   Table checks{"storm-checks",
                fmt::format("Dynamic checks of the storm. Tension: {} with the MPM fairlead tension against the "

@@ -49,9 +49,7 @@ void write_text(const std::filesystem::path& file, const std::string& text) {
   if (!out) throw std::runtime_error(fmt::format("{}: cannot write", file.string()));
 }
 
-std::string figure_file(const Figure& f) {
-  return "figures/" + f.id + (f.image ? ".png" : ".svg");
-}
+std::string figure_file(const Figure& f) { return "figures/" + f.id + (f.image ? ".png" : ".svg"); }
 
 void write_figure(const Figure& f, const std::filesystem::path& folder) {
   const auto path = folder / figure_file(f);
@@ -119,16 +117,12 @@ void write_html(const ReportDocument& doc, const std::string& folder_name) {
   std::filesystem::create_directories(folder / "tables");
   const TitlePage& t = doc.title;
   std::string html = "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n<title>" +
-                     escape(t.title + " — " + t.project) + "</title>\n<style>" + kStyle +
-                     "</style></head><body>\n";
-  html += "<header><div class=\"sub\">spiral · integrated mooring–riser design</div><h1>" +
-          escape(t.title) + "</h1><div class=\"sub\">" + escape(t.subtitle) +
-          "</div><h2 style=\"border:0;color:#1a1c24\">" + escape(t.project) + "</h2><p>" +
-          escape(t.description) + "</p><table class=\"facts\">";
-  for (const auto& [k, v] : t.facts)
-    html += "<tr><td>" + escape(k) + "</td><td>" + escape(v) + "</td></tr>";
-  html += "</table><div class=\"verdict " + std::string(t.pass ? "pass" : "fail") + "\">" +
-          escape(t.verdict) +
+                     escape(t.title + " — " + t.project) + "</title>\n<style>" + kStyle + "</style></head><body>\n";
+  html += "<header><div class=\"sub\">spiral · integrated mooring–riser design</div><h1>" + escape(t.title) +
+          "</h1><div class=\"sub\">" + escape(t.subtitle) + "</div><h2 style=\"border:0;color:#1a1c24\">" +
+          escape(t.project) + "</h2><p>" + escape(t.description) + "</p><table class=\"facts\">";
+  for (const auto& [k, v] : t.facts) html += "<tr><td>" + escape(k) + "</td><td>" + escape(v) + "</td></tr>";
+  html += "</table><div class=\"verdict " + std::string(t.pass ? "pass" : "fail") + "\">" + escape(t.verdict) +
           "</div><p><a href=\"report.pdf\">PDF report</a></p></header>\n<nav><h2>Contents</h2><ol>";
   for (std::size_t i = 0; i < doc.sections.size(); ++i) {
     html += fmt::format("<li><a href=\"#s{}\">{}</a></li>", i + 1, escape(doc.sections[i].title));
@@ -143,14 +137,12 @@ void write_html(const ReportDocument& doc, const std::string& folder_name) {
         html += "<p>" + escape(p->text) + "</p>\n";
       } else if (const auto* kv = std::get_if<KeyValues>(&block)) {
         html += "<dl class=\"kv\">";
-        for (const auto& [k, v] : kv->items)
-          html += "<dt>" + escape(k) + "</dt><dd>" + escape(v) + "</dd>";
+        for (const auto& [k, v] : kv->items) html += "<dt>" + escape(k) + "</dt><dd>" + escape(v) + "</dd>";
         html += "</dl>\n";
       } else if (const auto* table = std::get_if<Table>(&block)) {
         write_text(folder / "tables" / (table->id + ".csv"), table_csv(*table));
-        html +=
-            fmt::format("<p class=\"caption\">Table {}. {} <a href=\"tables/{}.csv\">(CSV)</a></p>",
-                        ++tables, escape(table->caption), table->id);
+        html += fmt::format("<p class=\"caption\">Table {}. {} <a href=\"tables/{}.csv\">(CSV)</a></p>", ++tables,
+                            escape(table->caption), table->id);
         html += "<table class=\"data\"><tr>";
         for (const auto& h : table->headers) html += "<th>" + escape(h) + "</th>";
         html += "</tr>\n";
@@ -167,9 +159,8 @@ void write_html(const ReportDocument& doc, const std::string& folder_name) {
         html += "</table>\n";
       } else if (const auto* figure = std::get_if<Figure>(&block)) {
         write_figure(*figure, folder);
-        html += fmt::format(
-            "<figure><img src=\"{}\" alt=\"{}\"><figcaption>Figure {}. {}</figcaption></figure>\n",
-            figure_file(*figure), escape(figure->caption), ++figures, escape(figure->caption));
+        html += fmt::format("<figure><img src=\"{}\" alt=\"{}\"><figcaption>Figure {}. {}</figcaption></figure>\n",
+                            figure_file(*figure), escape(figure->caption), ++figures, escape(figure->caption));
       }
     }
     html += "</section>\n";

@@ -29,8 +29,7 @@ std::vector<std::uint8_t> encode_png(const Image& image) {
 void write_png(const Image& image, const std::filesystem::path& file) {
   const std::vector<std::uint8_t> bytes = encode_png(image);
   std::ofstream out(file, std::ios::binary);
-  out.write(reinterpret_cast<const char*>(bytes.data()),
-            static_cast<std::streamsize>(bytes.size()));
+  out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
   if (!out) throw std::runtime_error(fmt::format("{}: cannot write the image", file.string()));
 }
 

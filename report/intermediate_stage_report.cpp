@@ -20,15 +20,15 @@ const design::StaticCaseResult& case_of(const design::IntermediateStageResults& 
 
 Section ranking_section(const design::IntermediateStageResults& r) {
   Section s{"Ranking of the load cases", {}, true};
-  s.blocks.emplace_back(Paragraph{fmt::format(
-      "Every load case analysed at the sc-enhanced level for 3 h (seed 1) from its coupled static "
-      "equilibrium; {} storms in {:.1f} s wall clock on {} threads. Measures (≤ 1 passes): tension — MPM "
-      "fairlead tension of the most loaded line with the {} dynamic factor against the fairlead segment's "
-      "MBL; offset — MPM horizontal offset against the still-water platform SOZ in its direction; riser — "
-      "largest riser utilization at the case's static equilibrium (FE risers with its current; riser "
-      "dynamics are not analysed at this level). The score is the largest measure; the critical cases "
-      "(the top {} and every failing case) go to the advanced stage.",
-      r.ranked.size(), r.storms_wall_s, r.threads, r.statics.code, design::kCriticalCases)});
+  s.blocks.emplace_back(Paragraph{
+      fmt::format("Every load case analysed at the sc-enhanced level for 3 h (seed 1) from its coupled static "
+                  "equilibrium; {} storms in {:.1f} s wall clock on {} threads. Measures (≤ 1 passes): tension — MPM "
+                  "fairlead tension of the most loaded line with the {} dynamic factor against the fairlead segment's "
+                  "MBL; offset — MPM horizontal offset against the still-water platform SOZ in its direction; riser — "
+                  "largest riser utilization at the case's static equilibrium (FE risers with its current; riser "
+                  "dynamics are not analysed at this level). The score is the largest measure; the critical cases "
+                  "(the top {} and every failing case) go to the advanced stage.",
+                  r.ranked.size(), r.storms_wall_s, r.threads, r.statics.code, design::kCriticalCases)});
   Table t{"ranking",
           "Load cases ranked by score (most severe first).",
           {"Rank", "Case", "Condition", "Tension util.", "Line", "Offset/SOZ", "Riser util.", "Riser", "Score",
@@ -52,7 +52,8 @@ Section ranking_section(const design::IntermediateStageResults& r) {
     chart.bars.push_back({fmt::format("#{}", c.rank), c.score, utilization_color(c.score),
                           fmt::format("{:.2f} {}", c.score, c.governing_measure)});
   std::string key;
-  for (const auto& c : r.ranked) key += fmt::format("{}#{} {}", key.empty() ? "" : "; ", c.rank, case_of(r, c).case_name);
+  for (const auto& c : r.ranked)
+    key += fmt::format("{}#{} {}", key.empty() ? "" : "; ", c.rank, case_of(r, c).case_name);
   Figure f{"ranking-scores", "Score of each load case by rank (" + key + ").", 2.0, std::nullopt, nullptr};
   f.draw = [chart](cairo_t* cr, double w, double h) { draw_bar_chart(cr, chart, w, h); };
   s.blocks.emplace_back(f);
@@ -76,12 +77,12 @@ Section ranking_section(const design::IntermediateStageResults& r) {
 
 }  // namespace
 
-ReportDocument intermediate_stage_report(const design::ValidatedProject& vp,
-                                         const design::IntermediateStageResults& r, const ReportInfo& info) {
+ReportDocument intermediate_stage_report(const design::ValidatedProject& vp, const design::IntermediateStageResults& r,
+                                         const ReportInfo& info) {
   const design::Project& p = vp.project;
-  ReportDocument doc = stage_document(
-      p, info, "intermediate", r.statics.code,
-      fmt::format("{:.3f} s (storms {:.3f} s)", r.wall_time_s, r.storms_wall_s), r.statics.soz ? &*r.statics.soz : nullptr);
+  ReportDocument doc = stage_document(p, info, "intermediate", r.statics.code,
+                                      fmt::format("{:.3f} s (storms {:.3f} s)", r.wall_time_s, r.storms_wall_s),
+                                      r.statics.soz ? &*r.statics.soz : nullptr);
   doc.title.title = "Intermediate stage report";
   doc.title.subtitle = "Enhanced S-C dynamics of the load-case matrix and ranking";
   int failed = 0, critical = 0;
@@ -97,9 +98,10 @@ ReportDocument intermediate_stage_report(const design::ValidatedProject& vp,
   const std::string governing =
       top ? fmt::format("{} ({} {:.3f})", case_of(r, *top).case_name, top->governing_measure, top->score) : "–";
   doc.title.verdict =
-      r.pass ? fmt::format("PASS — all {} load cases pass the dynamic tension, extreme offset and riser measures "
-                           "and the static checks; most severe: {}",
-                           r.ranked.size(), governing)
+      r.pass ? fmt::format(
+                   "PASS — all {} load cases pass the dynamic tension, extreme offset and riser measures "
+                   "and the static checks; most severe: {}",
+                   r.ranked.size(), governing)
              : fmt::format("FAIL — {} of {} load cases fail; most severe: {}", failed, r.ranked.size(), governing);
   doc.sections.push_back(model_summary_section(vp, r.statics.code));
   doc.sections.push_back(load_cases_section(p));
@@ -115,9 +117,9 @@ ReportDocument intermediate_stage_report(const design::ValidatedProject& vp,
   for (const auto& c : r.ranked) {
     if (!c.critical) continue;
     Section s{fmt::format("Critical case #{}: {}", c.rank, c.storm.case_name), {}, true};
-    s.blocks.emplace_back(Paragraph{fmt::format(
-        "Score {:.3f} ({}); {} storm, {:.2f} s wall clock, {} integrator steps.", c.score, c.governing_measure,
-        design::to_string(c.storm.level), c.storm.wall_s, c.storm.solver_steps)});
+    s.blocks.emplace_back(Paragraph{
+        fmt::format("Score {:.3f} ({}); {} storm, {:.2f} s wall clock, {} integrator steps.", c.score,
+                    c.governing_measure, design::to_string(c.storm.level), c.storm.wall_s, c.storm.solver_steps)});
     for (Block& b : storm_blocks(c.storm, "storm-" + slug(c.storm.case_name))) s.blocks.push_back(std::move(b));
     for (const std::string& note : c.storm.notes) s.blocks.emplace_back(Paragraph{"Note: " + note + "."});
     doc.sections.push_back(std::move(s));

@@ -12,7 +12,6 @@
 namespace spiral::report {
 
 ReportDocument intermediate_stage_report(const design::ValidatedProject& project,
-                                         const design::IntermediateStageResults& results,
-                                         const ReportInfo& info);
+                                         const design::IntermediateStageResults& results, const ReportInfo& info);
 
 }  // namespace spiral::report

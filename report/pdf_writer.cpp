@@ -27,9 +27,7 @@ constexpr double kTableFont = 7.8, kRowH = 11.5;
 constexpr Rgb kInk{0.10, 0.11, 0.14};
 constexpr Rgb kAccent{0.08, 0.25, 0.45};
 
-void ink(cairo_t* cr, const Rgb& c) {
-  cairo_set_source_rgb(cr, c.r, c.g, c.b);
-}
+void ink(cairo_t* cr, const Rgb& c) { cairo_set_source_rgb(cr, c.r, c.g, c.b); }
 
 std::vector<std::string> wrap(cairo_t* cr, const std::string& text, double width) {
   std::vector<std::string> lines;
@@ -50,13 +48,8 @@ std::vector<std::string> wrap(cairo_t* cr, const std::string& text, double width
 
 class Layout {
  public:
-  Layout(cairo_t* cr, bool draw, const ReportDocument& doc, int total_pages,
-         std::map<std::size_t, int> section_pages)
-      : cr_(cr),
-        draw_(draw),
-        doc_(doc),
-        total_pages_(total_pages),
-        section_pages_(std::move(section_pages)) {}
+  Layout(cairo_t* cr, bool draw, const ReportDocument& doc, int total_pages, std::map<std::size_t, int> section_pages)
+      : cr_(cr), draw_(draw), doc_(doc), total_pages_(total_pages), section_pages_(std::move(section_pages)) {}
 
   int pages() const { return page_; }
   const std::map<std::size_t, int>& section_pages() const { return found_pages_; }
@@ -88,8 +81,7 @@ class Layout {
     cairo_line_to(cr_, kPageW - kMarginX, 46);
     cairo_stroke(cr_);
     draw_text(cr_, kMarginX, kPageH - 30, doc_.running_footer);
-    draw_text_right(cr_, kPageW - kMarginX, kPageH - 30,
-                    fmt::format("Page {} of {}", page_, total_pages_));
+    draw_text_right(cr_, kPageW - kMarginX, kPageH - 30, fmt::format("Page {} of {}", page_, total_pages_));
   }
 
   void ensure(double height) {
@@ -138,8 +130,7 @@ class Layout {
       ink(cr_, box);
       cairo_set_line_width(cr_, 1.2);
       cairo_stroke(cr_);
-      for (std::size_t i = 0; i < verdict.size(); ++i)
-        draw_text(cr_, kMarginX + 12, y + 20 + 15.0 * i, verdict[i]);
+      for (std::size_t i = 0; i < verdict.size(); ++i) draw_text(cr_, kMarginX + 12, y + 20 + 15.0 * i, verdict[i]);
       y += box_h + 30;
       set_font(cr_, 12, true);
       ink(cr_, kInk);
@@ -150,8 +141,7 @@ class Layout {
         const std::string entry = fmt::format("{}  {}", i + 1, doc_.sections[i].title);
         draw_text(cr_, kMarginX + 8, y, entry);
         const auto it = section_pages_.find(i);
-        if (it != section_pages_.end())
-          draw_text_right(cr_, kPageW - kMarginX, y, std::to_string(it->second));
+        if (it != section_pages_.end()) draw_text_right(cr_, kPageW - kMarginX, y, std::to_string(it->second));
         y += kLineH + 1;
       }
     }
@@ -207,8 +197,7 @@ class Layout {
         set_font(cr_, kBodyFont, true);
         draw_text(cr_, kMarginX, y_ + 10, k);
         set_font(cr_, kBodyFont, false);
-        for (std::size_t i = 0; i < lines.size(); ++i)
-          draw_text(cr_, kMarginX + key_w, y_ + 10 + i * kLineH, lines[i]);
+        for (std::size_t i = 0; i < lines.size(); ++i) draw_text(cr_, kMarginX + key_w, y_ + 10 + i * kLineH, lines[i]);
       }
       y_ += kLineH * static_cast<double>(std::max<std::size_t>(1, lines.size()));
     }
@@ -235,14 +224,12 @@ class Layout {
 
     // Caption, header, rows; the header repeats on a new page.
     set_font(cr_, 8.5, true);  // measured in the bold face it is drawn in
-    const auto caption =
-        wrap(cr_, fmt::format("Table {}. {}", table_number_, t.caption), kContentW);
+    const auto caption = wrap(cr_, fmt::format("Table {}. {}", table_number_, t.caption), kContentW);
     ensure(caption.size() * 11.0 + 2 * kRowH + 8);
     if (draw_) {
       ink(cr_, kInk);
       set_font(cr_, 8.5, true);
-      for (std::size_t i = 0; i < caption.size(); ++i)
-        draw_text(cr_, kMarginX, y_ + 9 + i * 11.0, caption[i]);
+      for (std::size_t i = 0; i < caption.size(); ++i) draw_text(cr_, kMarginX, y_ + 9 + i * 11.0, caption[i]);
     }
     y_ += caption.size() * 11.0 + 4;
     auto header = [&] {
@@ -279,9 +266,7 @@ class Layout {
         for (std::size_t c = 0; c < n && c < t.rows[r].size(); ++c) {
           const TableCell& cell = t.rows[r][c];
           set_font(cr_, font, cell.status != CellStatus::none);
-          ink(cr_, cell.status == CellStatus::pass   ? kPassColor
-                   : cell.status == CellStatus::fail ? kFailColor
-                                                     : kInk);
+          ink(cr_, cell.status == CellStatus::pass ? kPassColor : cell.status == CellStatus::fail ? kFailColor : kInk);
           if (c == 0)
             draw_text(cr_, x + 4, y_ + kRowH - 2.5, cell.text);
           else
@@ -307,8 +292,7 @@ class Layout {
     const double max_h = (kPageH - kTop - kBottom) * 0.62;
     if (h > max_h) h = max_h, w = h * f.aspect;
     set_font(cr_, 8.5, false);
-    const auto caption =
-        wrap(cr_, fmt::format("Figure {}. {}", figure_number_, f.caption), kContentW);
+    const auto caption = wrap(cr_, fmt::format("Figure {}. {}", figure_number_, f.caption), kContentW);
     ensure(h + caption.size() * 11.0 + 10);
     const double x = kMarginX + (kContentW - w) / 2;
     if (draw_) {
@@ -335,8 +319,7 @@ class Layout {
     if (draw_) {
       ink(cr_, kInk);
       set_font(cr_, 8.5, false);
-      for (std::size_t i = 0; i < caption.size(); ++i)
-        draw_text(cr_, kMarginX, y_ + 9 + i * 11.0, caption[i]);
+      for (std::size_t i = 0; i < caption.size(); ++i) draw_text(cr_, kMarginX, y_ + 9 + i * 11.0, caption[i]);
     }
     y_ += caption.size() * 11.0 + 12;
   }
@@ -359,8 +342,7 @@ class Layout {
 int write_pdf(const ReportDocument& document, const std::string& file) {
   // Pass 1: paginate on a PDF surface that writes nowhere (same font metrics).
   cairo_surface_t* null_surface = cairo_pdf_surface_create_for_stream(
-      [](void*, const unsigned char*, unsigned int) { return CAIRO_STATUS_SUCCESS; }, nullptr,
-      kPageW, kPageH);
+      [](void*, const unsigned char*, unsigned int) { return CAIRO_STATUS_SUCCESS; }, nullptr, kPageW, kPageH);
   const SurfacePtr measure_surface(null_surface);
   const ContextPtr measure(cairo_create(measure_surface.get()));
   Layout pass1(measure.get(), false, document, 0, {});
@@ -380,9 +362,8 @@ int write_pdf(const ReportDocument& document, const std::string& file) {
   }
   cairo_surface_finish(surface.get());
   if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS) {
-    throw std::runtime_error(
-        fmt::format("{}: cannot write the PDF ({})", file,
-                    cairo_status_to_string(cairo_surface_status(surface.get()))));
+    throw std::runtime_error(fmt::format("{}: cannot write the PDF ({})", file,
+                                         cairo_status_to_string(cairo_surface_status(surface.get()))));
   }
   return pass1.pages();
 }

@@ -25,9 +25,7 @@ std::string tick_label(double v, double step) {
   return fmt::format("{:.{}f}", v, decimals);
 }
 
-void set_color(cairo_t* cr, const Rgb& c) {
-  cairo_set_source_rgb(cr, c.r, c.g, c.b);
-}
+void set_color(cairo_t* cr, const Rgb& c) { cairo_set_source_rgb(cr, c.r, c.g, c.b); }
 
 void dash(cairo_t* cr, bool on, double unit) {
   if (on) {
@@ -38,8 +36,7 @@ void dash(cairo_t* cr, bool on, double unit) {
   }
 }
 
-void title_and_frame(cairo_t* cr, const std::string& title, double width, double font,
-                     double& top) {
+void title_and_frame(cairo_t* cr, const std::string& title, double width, double font, double& top) {
   top = 4;
   if (!title.empty()) {
     set_font(cr, font * 1.15, true);
@@ -69,8 +66,7 @@ void axes(cairo_t* cr, const Frame& f, const std::vector<double>& xt, const std:
   cairo_rectangle(cr, f.x0, f.y0, f.w, f.h);
   cairo_stroke(cr);
   set_font(cr, font, false);
-  const double xstep = xt.size() > 1 ? xt[1] - xt[0] : 1.0,
-               ystep = yt.size() > 1 ? yt[1] - yt[0] : 1.0;
+  const double xstep = xt.size() > 1 ? xt[1] - xt[0] : 1.0, ystep = yt.size() > 1 ? yt[1] - yt[0] : 1.0;
   for (const double x : xt) {
     cairo_move_to(cr, f.px(x), f.y0 + f.h);
     cairo_line_to(cr, f.px(x), f.y0 + f.h + 3);
@@ -130,8 +126,7 @@ void path_series(cairo_t* cr, const Frame& f, const Series& s) {
   }
 }
 
-void legend(cairo_t* cr, const Frame& f,
-            const std::vector<std::pair<std::string, const Series*>>& entries,
+void legend(cairo_t* cr, const Frame& f, const std::vector<std::pair<std::string, const Series*>>& entries,
             const std::vector<const PlotCircle*>& circles, double font, int columns, bool left) {
   const std::size_t n = entries.size() + circles.size();
   if (n == 0) return;
@@ -153,8 +148,7 @@ void legend(cairo_t* cr, const Frame& f,
   cairo_stroke(cr);
   for (std::size_t i = 0; i < n; ++i) {
     const double ix = x + 4 + static_cast<double>(i / static_cast<std::size_t>(rows)) * item_w;
-    const double iy =
-        y + 3 + static_cast<double>(i % static_cast<std::size_t>(rows)) * row_h + row_h / 2;
+    const double iy = y + 3 + static_cast<double>(i % static_cast<std::size_t>(rows)) * row_h + row_h / 2;
     if (i < entries.size()) {
       const Series& s = *entries[i].second;
       set_color(cr, s.color);
@@ -198,8 +192,7 @@ std::vector<double> nice_ticks(double lo, double hi, int target) {
     }
   }
   std::vector<double> ticks;
-  for (double t = std::ceil(lo / step - 1e-9) * step; t <= hi + 1e-9 * step; t += step)
-    ticks.push_back(t);
+  for (double t = std::ceil(lo / step - 1e-9) * step; t <= hi + 1e-9 * step; t += step) ticks.push_back(t);
   return ticks;
 }
 
@@ -330,8 +323,7 @@ void draw_plot(cairo_t* cr, const Plot& plot, double width, double height, const
   cairo_restore(cr);
 }
 
-void draw_bar_chart(cairo_t* cr, const BarChart& chart, double width, double height,
-                    const PlotStyle& style) {
+void draw_bar_chart(cairo_t* cr, const BarChart& chart, double width, double height, const PlotStyle& style) {
   const double font = style.font_size;
   cairo_save(cr);
   double top = 0;
@@ -341,8 +333,7 @@ void draw_bar_chart(cairo_t* cr, const BarChart& chart, double width, double hei
   ymax = chart.y_max.value_or(ymax * 1.12);
   if (!(ymax > 0)) ymax = 1;
   const double left = 3.4 * font + 28, bottom = 3.4 * font + 6, right = 8;
-  const Frame f{left, top + 4, width - left - right, height - top - 4 - bottom, 0.0, 1.0,
-                0.0,  ymax};
+  const Frame f{left, top + 4, width - left - right, height - top - 4 - bottom, 0.0, 1.0, 0.0, ymax};
   const auto yt = nice_ticks(0, ymax, std::max(3, static_cast<int>(f.h / (font * 4))));
   axes(cr, f, {}, yt, "", chart.y_label, font);
   const std::size_t n = chart.bars.size();

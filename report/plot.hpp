@@ -52,7 +52,7 @@ struct Plot {
   std::vector<PlotLabel> labels;
   std::vector<std::pair<double, std::string>> x_lines;        ///< vertical reference lines (dashed)
   std::optional<std::pair<double, double>> x_range, y_range;  ///< default: the data, padded
-  bool equal_aspect = false;  ///< 1 data unit is as long on both axes
+  bool equal_aspect = false;                                  ///< 1 data unit is as long on both axes
   bool legend = true;
   int legend_columns = 0;    ///< 0: automatic
   bool legend_left = false;  ///< top-left instead of top-right
@@ -79,10 +79,8 @@ struct PlotStyle {
 };
 
 /// Draws into the rectangle (0, 0, width, height) of the current user space.
-void draw_plot(cairo_t* cr, const Plot& plot, double width, double height,
-               const PlotStyle& style = {});
-void draw_bar_chart(cairo_t* cr, const BarChart& chart, double width, double height,
-                    const PlotStyle& style = {});
+void draw_plot(cairo_t* cr, const Plot& plot, double width, double height, const PlotStyle& style = {});
+void draw_bar_chart(cairo_t* cr, const BarChart& chart, double width, double height, const PlotStyle& style = {});
 
 /// "Nice" tick values (1, 2, 2.5, 5 × 10^k steps) covering [lo, hi], about `target` of them.
 std::vector<double> nice_ticks(double lo, double hi, int target);

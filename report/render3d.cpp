@@ -38,15 +38,9 @@ struct ContextDeleter {
   void operator()(osmesa_context* c) const { OSMesaDestroyContext(c); }
 };
 
-void color(const Rgb& c, double alpha = 1.0) {
-  glColor4d(c.r, c.g, c.b, alpha);
-}
-void vertex(const Vector3d& p) {
-  glVertex3d(p.x(), p.y(), p.z());
-}
-void normal(const Vector3d& n) {
-  glNormal3d(n.x(), n.y(), n.z());
-}
+void color(const Rgb& c, double alpha = 1.0) { glColor4d(c.r, c.g, c.b, alpha); }
+void vertex(const Vector3d& p) { glVertex3d(p.x(), p.y(), p.z()); }
+void normal(const Vector3d& n) { glNormal3d(n.x(), n.y(), n.z()); }
 
 Vector3d any_perpendicular(const Vector3d& axis) {
   const Vector3d a = std::abs(axis.z()) < 0.9 ? Vector3d::UnitZ() : Vector3d::UnitX();
@@ -187,9 +181,7 @@ void draw_background(const Camera& camera) {
 
 void draw_hull(const SceneHull& hull) {
   color(kHullColor);
-  auto g = [&](const Vector3d& b) -> Vector3d {
-    return hull.reference_point_g + hull.rotation * b;
-  };
+  auto g = [&](const Vector3d& b) -> Vector3d { return hull.reference_point_g + hull.rotation * b; };
   if (!hull.panels_b.empty()) {
     // Flat shading per panel; the normal from the diagonals also holds for a
     // triangle written with a repeated vertex (two-sided lighting is on, so
@@ -206,12 +198,11 @@ void draw_hull(const SceneHull& hull) {
   }
   if (hull.geometry && (!hull.geometry->columns.empty() || !hull.geometry->pontoons.empty())) {
     for (const auto& c : hull.geometry->columns) {
-      draw_cylinder(g({c.center_b.x(), c.center_b.y(), c.z_bottom_m}),
-                    g({c.center_b.x(), c.center_b.y(), c.z_top_m}), c.diameter_m / 2, 40);
+      draw_cylinder(g({c.center_b.x(), c.center_b.y(), c.z_bottom_m}), g({c.center_b.x(), c.center_b.y(), c.z_top_m}),
+                    c.diameter_m / 2, 40);
     }
     color({0.80, 0.56, 0.16});
-    for (const auto& p : hull.geometry->pontoons)
-      draw_cylinder(g(p.from_b), g(p.to_b), p.diameter_m / 2, 20);
+    for (const auto& p : hull.geometry->pontoons) draw_cylinder(g(p.from_b), g(p.to_b), p.diameter_m / 2, 20);
     return;
   }
   // A box: six lit faces.
@@ -220,8 +211,7 @@ void draw_hull(const SceneHull& hull) {
   const Vector3d c[8] = {g({-h.x(), -h.y(), z0}), g({h.x(), -h.y(), z0}),  g({h.x(), h.y(), z0}),
                          g({-h.x(), h.y(), z0}),  g({-h.x(), -h.y(), z1}), g({h.x(), -h.y(), z1}),
                          g({h.x(), h.y(), z1}),   g({-h.x(), h.y(), z1})};
-  const int faces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
-                           {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+  const int faces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
   glBegin(GL_QUADS);
   for (const auto& f : faces) {
     normal((c[f[1]] - c[f[0]]).cross(c[f[2]] - c[f[1]]).normalized());
@@ -235,9 +225,7 @@ void draw_ribbon(const SceneLine& line, const Basis& basis, double width) {
   const auto& pts = line.points_g;
   if (pts.size() < 2) return;
   auto col = [&](std::size_t i) {
-    return line.values.empty()
-               ? line.color
-               : utilization_color(line.values[std::min(i, line.values.size() - 1)]);
+    return line.values.empty() ? line.color : utilization_color(line.values[std::min(i, line.values.size() - 1)]);
   };
   const double r = width / 2;
   glBegin(GL_QUADS);
@@ -357,8 +345,7 @@ void draw_scene(const Scene& scene, const Camera& camera, const Basis& basis, do
 
   glDisable(GL_LIGHTING);
   for (const SceneLine& line : scene.lines) {
-    draw_ribbon(line, basis,
-                (line.riser ? options.riser_width_px : options.line_width_px) * m_per_px);
+    draw_ribbon(line, basis, (line.riser ? options.riser_width_px : options.line_width_px) * m_per_px);
   }
 
   // Sea surface, translucent, after every opaque object (iso views only:
@@ -370,8 +357,8 @@ void draw_scene(const Scene& scene, const Camera& camera, const Basis& basis, do
     color({0.25, 0.50, 0.78}, kSeaAlpha);
     if (closeup) {
       const double r = camera.half_width_m * 1.5;
-      draw_horizontal_rect(camera.target_g.x() - r, camera.target_g.x() + r,
-                           camera.target_g.y() - r, camera.target_g.y() + r, 0.0);
+      draw_horizontal_rect(camera.target_g.x() - r, camera.target_g.x() + r, camera.target_g.y() - r,
+                           camera.target_g.y() + r, 0.0);
     } else {
       draw_horizontal_rect(x0, x1, y0, y1, 0.0);
     }
@@ -382,12 +369,10 @@ void draw_scene(const Scene& scene, const Camera& camera, const Basis& basis, do
   // Anchors and fairleads on top of everything: markers, not geometry.
   glDisable(GL_DEPTH_TEST);
   if (!closeup) {
-    for (const Vector3d& a : scene.anchors_g)
-      draw_square_marker(a, basis, 4.0 * m_per_px, kAnchorColor);
+    for (const Vector3d& a : scene.anchors_g) draw_square_marker(a, basis, 4.0 * m_per_px, kAnchorColor);
   }
   if (closeup) {
-    for (const Vector3d& f : scene.fairleads_g)
-      draw_square_marker(f, basis, 3.5 * m_per_px, kFairleadColor);
+    for (const Vector3d& f : scene.fairleads_g) draw_square_marker(f, basis, 3.5 * m_per_px, kFairleadColor);
   }
   glEnable(GL_DEPTH_TEST);
 }
@@ -425,8 +410,7 @@ Camera frame_view(const Scene& scene, ViewKind kind, double aspect) {
   camera.half_width_m = half_w / 0.86;
   const double shift_right = 0.09 * camera.half_width_m;        // colour bar strip
   const double shift_up = 0.05 * camera.half_width_m / aspect;  // title strip
-  camera.target_g =
-      ((r0 + r1) / 2 + shift_right) * basis.right + ((u0 + u1) / 2 + shift_up) * basis.up;
+  camera.target_g = ((r0 + r1) / 2 + shift_right) * basis.right + ((u0 + u1) / 2 + shift_up) * basis.up;
   return camera;
 }
 
@@ -434,12 +418,10 @@ Image render_view(const Scene& scene, const Camera& camera, const ViewOptions& o
   const int s = std::max(1, options.supersample);
   const int W = options.width * s, H = options.height * s;
   if (options.width < 16 || options.height < 16 || W > 8192 || H > 8192) {
-    throw std::runtime_error(
-        fmt::format("render_view: image size {}x{} (x{} supersampling) out of range", options.width,
-                    options.height, s));
+    throw std::runtime_error(fmt::format("render_view: image size {}x{} (x{} supersampling) out of range",
+                                         options.width, options.height, s));
   }
-  std::unique_ptr<osmesa_context, ContextDeleter> context(
-      OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, nullptr));
+  std::unique_ptr<osmesa_context, ContextDeleter> context(OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, nullptr));
   if (!context) throw std::runtime_error("render_view: cannot create an OSMesa context");
   std::vector<GLubyte> buffer(static_cast<std::size_t>(W) * H * 4);
   if (!OSMesaMakeCurrent(context.get(), buffer.data(), GL_UNSIGNED_BYTE, W, H)) {
@@ -480,8 +462,7 @@ Image render_view(const Scene& scene, const Camera& camera, const ViewOptions& o
     for (int x = 0; x < options.width; ++x) {
       double acc[3] = {0, 0, 0};
       for (int j = 0; j < s; ++j) {
-        const GLubyte* row =
-            &buffer[(static_cast<std::size_t>(H - 1 - (y * s + j)) * W + x * s) * 4];
+        const GLubyte* row = &buffer[(static_cast<std::size_t>(H - 1 - (y * s + j)) * W + x * s) * 4];
         for (int i = 0; i < s; ++i)
           for (int c = 0; c < 3; ++c) acc[c] += row[i * 4 + c];
       }

@@ -21,14 +21,14 @@ WrittenReport write_report(const ReportDocument& document, const fs::path& reque
   std::error_code ec;
   fs::create_directories(folder.parent_path(), ec);
   if (ec) {
-    throw OutputError(fmt::format("cannot write the report to '{}': cannot create '{}' ({})",
-                                  requested.string(), folder.parent_path().string(), ec.message()));
+    throw OutputError(fmt::format("cannot write the report to '{}': cannot create '{}' ({})", requested.string(),
+                                  folder.parent_path().string(), ec.message()));
   }
   fs::remove_all(tmp, ec);
   if (!fs::create_directory(tmp, ec) || ec) {
-    throw OutputError(fmt::format(
-        "cannot write the report to '{}': cannot create a folder in '{}' ({})", requested.string(),
-        folder.parent_path().string(), ec ? ec.message() : "it already exists"));
+    throw OutputError(fmt::format("cannot write the report to '{}': cannot create a folder in '{}' ({})",
+                                  requested.string(), folder.parent_path().string(),
+                                  ec ? ec.message() : "it already exists"));
   }
   WrittenReport written;
   try {
@@ -36,8 +36,7 @@ WrittenReport write_report(const ReportDocument& document, const fs::path& reque
     write_html(document, tmp.string());
   } catch (const std::exception& error) {
     fs::remove_all(tmp, ec);
-    throw OutputError(
-        fmt::format("cannot write the report to '{}': {}", requested.string(), error.what()));
+    throw OutputError(fmt::format("cannot write the report to '{}': {}", requested.string(), error.what()));
   }
   // Swap in the complete folder; the old one goes only once the new one is in place.
   const fs::path old = sibling(folder, ".old-");
@@ -47,16 +46,14 @@ WrittenReport write_report(const ReportDocument& document, const fs::path& reque
     fs::rename(folder, old, ec);
     if (ec) {
       fs::remove_all(tmp);
-      throw OutputError(fmt::format("cannot replace the report folder '{}' ({})",
-                                    requested.string(), ec.message()));
+      throw OutputError(fmt::format("cannot replace the report folder '{}' ({})", requested.string(), ec.message()));
     }
   }
   fs::rename(tmp, folder, ec);
   if (ec) {
     if (had_old) fs::rename(old, folder);
     fs::remove_all(tmp);
-    throw OutputError(
-        fmt::format("cannot write the report to '{}' ({})", requested.string(), ec.message()));
+    throw OutputError(fmt::format("cannot write the report to '{}' ({})", requested.string(), ec.message()));
   }
   if (had_old) fs::remove_all(old, ec);
   written.folder = folder;

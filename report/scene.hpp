@@ -20,9 +20,9 @@ namespace spiral::report {
 struct SceneLine {
   std::string name;
   std::vector<Eigen::Vector3d> points_g;  ///< m, anchor (or riser end) to the hull
-  std::vector<double> values;   ///< per point, mapped by utilization_color(); empty: `color`
-  Rgb color{0.55, 0.55, 0.58};  ///< used when `values` is empty
-  bool riser = false;           ///< drawn thinner (and with its own key in the legend)
+  std::vector<double> values;             ///< per point, mapped by utilization_color(); empty: `color`
+  Rgb color{0.55, 0.55, 0.58};            ///< used when `values` is empty
+  bool riser = false;                     ///< drawn thinner (and with its own key in the legend)
 };
 
 /// The hull: member geometry in the body frame and the body pose.

@@ -37,10 +37,11 @@ const std::string& criterion_near(const design::SozResult& z, const design::Rise
 }
 
 std::string model_text(const design::SozResult& z) {
-  return fmt::format("{} model, {:g}° direction step, tolerance {:g} m, search limit {:g} % of depth "
-                     "({:.0f} m)",
-                     design::to_string(z.options.model), z.options.step_deg, z.options.tolerance_m,
-                     z.options.search_limit_pct_depth, z.options.search_limit_pct_depth / 100.0 * z.depth_m);
+  return fmt::format(
+      "{} model, {:g}° direction step, tolerance {:g} m, search limit {:g} % of depth "
+      "({:.0f} m)",
+      design::to_string(z.options.model), z.options.step_deg, z.options.tolerance_m, z.options.search_limit_pct_depth,
+      z.options.search_limit_pct_depth / 100.0 * z.depth_m);
 }
 
 Figure plan_figure(const design::SozResult& z, const std::vector<design::OffsetCheck>& extremes,
@@ -62,8 +63,8 @@ Figure plan_figure(const design::SozResult& z, const std::vector<design::OffsetC
     // Where every riser reaches the search limit the "governing" riser is just the first one.
     bool governs = false;
     for (std::size_t k = 0; k < z.platform.governing_riser.size(); ++k)
-      governs = governs || (z.platform.governing_riser[k] == riser.name &&
-                            z.platform.governing_criterion[k] != "search_limit");
+      governs = governs ||
+                (z.platform.governing_riser[k] == riser.name && z.platform.governing_criterion[k] != "search_limit");
     if (governs) {
       s.label = riser.name + " (governs)";
       s.color = palette(coloured++);
@@ -113,8 +114,8 @@ Figure plan_figure(const design::SozResult& z, const std::vector<design::OffsetC
     plot.series.push_back(std::move(s));
   }
   if (offset_limit_m) {
-    plot.circles.push_back({0, 0, *offset_limit_m, fmt::format("offset limit {:.0f} m", *offset_limit_m),
-                            {0.5, 0.5, 0.5}, true});
+    plot.circles.push_back(
+        {0, 0, *offset_limit_m, fmt::format("offset limit {:.0f} m", *offset_limit_m), {0.5, 0.5, 0.5}, true});
   }
   std::string key;
   for (std::size_t i = 0; i < z.offset_checks.size(); ++i)
@@ -124,8 +125,7 @@ Figure plan_figure(const design::SozResult& z, const std::vector<design::OffsetC
                        "(bold: the intersection), still water, {}; a zone drawn at the search limit "
                        "found no failure within it. Markers: static offsets of the load cases ({}), "
                        "circles intact, triangles damaged{}.",
-                       model_text(z), key,
-                       extremes.empty() ? "" : ", diamonds the MPM offsets of the S-C storms"),
+                       model_text(z), key, extremes.empty() ? "" : ", diamonds the MPM offsets of the S-C storms"),
            1.2, std::nullopt, nullptr};
   f.draw = [plot](cairo_t* cr, double w, double h) { draw_plot(cr, plot, w, h); };
   return f;
@@ -136,34 +136,33 @@ Figure plan_figure(const design::SozResult& z, const std::vector<design::OffsetC
 Section soz_section(const design::SozResult& z, const std::vector<design::OffsetCheck>& extremes,
                     std::optional<double> offset_limit_m) {
   Section s{"Riser safe operational zones", {}, true};
-  s.blocks.emplace_back(Paragraph{fmt::format(
-      "For each riser, the largest horizontal hull offset per direction for which every riser "
-      "criterion holds (DESIGN.md §7), from riser statics with the hang-off displaced by the "
-      "offset: {}. Zones in still water (no current on the risers, no mean heave or rotations) "
-      "with the normal design condition; {} riser solves in {:.2f} s on {} threads. The platform "
-      "zone is their intersection; each load case's static offset is checked against it "
-      "(margin = allowable − offset, ratio = offset / allowable ≤ 1 passes).",
-      model_text(z), z.solves, z.zone_wall_s, z.threads)});
+  s.blocks.emplace_back(
+      Paragraph{fmt::format("For each riser, the largest horizontal hull offset per direction for which every riser "
+                            "criterion holds (DESIGN.md §7), from riser statics with the hang-off displaced by the "
+                            "offset: {}. Zones in still water (no current on the risers, no mean heave or rotations) "
+                            "with the normal design condition; {} riser solves in {:.2f} s on {} threads. The platform "
+                            "zone is their intersection; each load case's static offset is checked against it "
+                            "(margin = allowable − offset, ratio = offset / allowable ≤ 1 passes).",
+                            model_text(z), z.solves, z.zone_wall_s, z.threads)});
   if (z.options.model == design::SozModel::catenary) {
-    s.blocks.emplace_back(Paragraph{
-        "Screening model: the catenary carries no current and no bending stiffness (TDP curvature "
-        "from the boundary-layer estimate). The static-case riser checks above use FE risers with "
-        "each case's current; set stages[].soz.model: fe for the FE zones."});
+    s.blocks.emplace_back(
+        Paragraph{"Screening model: the catenary carries no current and no bending stiffness (TDP curvature "
+                  "from the boundary-layer estimate). The static-case riser checks above use FE risers with "
+                  "each case's current; set stages[].soz.model: fe for the FE zones."});
   }
   s.blocks.emplace_back(plan_figure(z, extremes, offset_limit_m));
 
   Table groups{"soz-riser-directions",
                "Allowable offset of each riser at its near (towards its azimuth), far and cross "
                "positions, with the governing criterion there.",
-               {"Riser", "Azimuth (°)", "At rest", "Near (m)", "Near crit.", "Far (m)", "Far crit.",
-                "Cross +90° (m)", "Cross −90° (m)", "Cross crit."},
+               {"Riser", "Azimuth (°)", "At rest", "Near (m)", "Near crit.", "Far (m)", "Far crit.", "Cross +90° (m)",
+                "Cross −90° (m)", "Cross crit."},
                {}};
   for (const auto& x : z.risers) {
     const std::string& cross = x.cross_left_m <= x.cross_right_m ? criterion_near(z, x, x.azimuth_deg + 90.0)
                                                                  : criterion_near(z, x, x.azimuth_deg - 90.0);
     groups.rows.push_back({text(x.name), num(x.azimuth_deg, 1),
-                           text(fmt::format("{} {:.3f}", x.zero_offset_governing_criterion,
-                                            x.zero_offset_utilization)),
+                           text(fmt::format("{} {:.3f}", x.zero_offset_governing_criterion, x.zero_offset_utilization)),
                            num(x.near_m, 1), text(x.near_governing), num(x.far_m, 1), text(x.far_governing),
                            num(x.cross_left_m, 1), num(x.cross_right_m, 1), text(cross)});
   }
@@ -184,8 +183,8 @@ Section soz_section(const design::SozResult& z, const std::vector<design::Offset
   Table check{"soz-offset-check",
               "Offset check against the platform zone: static (mean) offsets of every load case"
               " and the MPM offsets of the S-C storms where they ran.",
-              {"Case", "Condition", "Kind", "Offset (m)", "Dir (°)", "Allowable (m)", "Margin (m)",
-               "Ratio", "Governing riser", "Check"},
+              {"Case", "Condition", "Kind", "Offset (m)", "Dir (°)", "Allowable (m)", "Margin (m)", "Ratio",
+               "Governing riser", "Check"},
               {}};
   std::vector<design::OffsetCheck> rows = z.offset_checks;
   rows.insert(rows.end(), extremes.begin(), extremes.end());

@@ -12,8 +12,7 @@ Scene stage_scene(const design::Project& project, const design::StaticCaseResult
   Scene scene;
   scene.depth_m = project.site.depth_m;
   scene.value_label = "Utilization";
-  const engine::HullPose pose =
-      engine::pose_from_offset(project.hull.reference_point_g, result.offset);
+  const engine::HullPose pose = engine::pose_from_offset(project.hull.reference_point_g, result.offset);
   scene.hull.reference_point_g = pose.reference_point_g;
   scene.hull.rotation = pose.rotation;
   scene.hull.geometry = project.hull.geometry;
@@ -35,8 +34,7 @@ Scene stage_scene(const design::Project& project, const design::StaticCaseResult
     for (const engine::LineProfilePoint& p : row.profile) {
       line.points_g.push_back(p.position_g);
       const auto seg = static_cast<std::size_t>(p.segment);
-      const double mbl =
-          strength && seg < strength->segment_mbl_N.size() ? strength->segment_mbl_N[seg] : 0.0;
+      const double mbl = strength && seg < strength->segment_mbl_N.size() ? strength->segment_mbl_N[seg] : 0.0;
       line.values.push_back(mbl > 0.0 ? p.tension_N * safety_factor / mbl : 0.0);
     }
     if (!line.points_g.empty()) {

@@ -22,15 +22,13 @@ constexpr double kRadToDeg = 180.0 / std::numbers::pi;
 constexpr double kN = 1e-3;  // N -> kN
 
 std::string case_label(const design::StaticCaseResult& c) {
-  return c.damaged_line ? fmt::format("{} (damaged: {})", c.case_name, *c.damaged_line)
-                        : c.case_name;
+  return c.damaged_line ? fmt::format("{} (damaged: {})", c.case_name, *c.damaged_line) : c.case_name;
 }
 
-Figure view_figure(const design::Project& project, const design::StaticStageResults& r,
-                   std::size_t case_index, ViewKind kind, const StaticStageReportOptions& options) {
+Figure view_figure(const design::Project& project, const design::StaticStageResults& r, std::size_t case_index,
+                   ViewKind kind, const StaticStageReportOptions& options) {
   const design::StaticCaseResult& result = r.cases[case_index];
-  const Scene scene =
-      stage_scene(project, result, r.strengths, r.checks[case_index].safety_factor, r.hull_panels_b);
+  const Scene scene = stage_scene(project, result, r.strengths, r.checks[case_index].safety_factor, r.hull_panels_b);
   ViewOptions view;
   view.width = options.view_width;
   view.height = options.view_height;
@@ -55,8 +53,8 @@ Figure view_figure(const design::Project& project, const design::StaticStageResu
       "steel wall with the condition's design factor; curvature × minimum bending radius for "
       "flexible pipes). Line "
       "thickness is exaggerated for visibility.",
-      kind_title, case_label(result), result.offset_summary.horizontal_m,
-      result.offset_summary.direction_deg, r.checks[case_index].safety_factor);
+      kind_title, case_label(result), result.offset_summary.horizontal_m, result.offset_summary.direction_deg,
+      r.checks[case_index].safety_factor);
   return f;
 }
 
@@ -69,59 +67,49 @@ Section model_summary_section(const design::ValidatedProject& vp, const std::str
   kv.items.reserve(16);  // also keeps GCC 12's -Warray-bounds false positive on the first emplace away
   kv.items.emplace_back("Water depth", fmt::format("{:g} m", p.site.depth_m));
   kv.items.emplace_back("Water density, gravity",
-                        fmt::format("{:g} kg/m³, {:g} m/s²", p.site.water_density_kg_per_m3,
-                                    p.site.gravity_m_per_s2));
-  kv.items.emplace_back(
-      "Seabed friction (axial, lateral)",
-      fmt::format("{:g}, {:g}", p.site.seabed.friction_axial, p.site.seabed.friction_lateral));
+                        fmt::format("{:g} kg/m³, {:g} m/s²", p.site.water_density_kg_per_m3, p.site.gravity_m_per_s2));
+  kv.items.emplace_back("Seabed friction (axial, lateral)",
+                        fmt::format("{:g}, {:g}", p.site.seabed.friction_axial, p.site.seabed.friction_lateral));
   kv.items.emplace_back("Hull mass", fmt::format("{:.0f} t", p.hull.mass_kg / 1000.0));
   if (p.hull.displaced_volume_m3)
-    kv.items.emplace_back("Displaced volume",
-                          fmt::format("{:.0f} m³", *p.hull.displaced_volume_m3));
+    kv.items.emplace_back("Displaced volume", fmt::format("{:.0f} m³", *p.hull.displaced_volume_m3));
   kv.items.emplace_back("Hull reference point",
-                        fmt::format("({:g}, {:g}, {:g}) m", p.hull.reference_point_g.x(),
-                                    p.hull.reference_point_g.y(), p.hull.reference_point_g.z()));
-  kv.items.emplace_back("Hull geometry", p.hull.geometry
-                                             ? fmt::format("{} columns, {} pontoons/braces",
-                                                           p.hull.geometry->columns.size(),
-                                                           p.hull.geometry->pontoons.size())
-                                             : std::string("none given (drawn as a box)"));
+                        fmt::format("({:g}, {:g}, {:g}) m", p.hull.reference_point_g.x(), p.hull.reference_point_g.y(),
+                                    p.hull.reference_point_g.z()));
+  kv.items.emplace_back("Hull geometry",
+                        p.hull.geometry ? fmt::format("{} columns, {} pontoons/braces", p.hull.geometry->columns.size(),
+                                                      p.hull.geometry->pontoons.size())
+                                        : std::string("none given (drawn as a box)"));
   if (p.hull.geometry && p.hull.geometry->panel_mesh) {
     kv.items.emplace_back("Hull panel mesh", fmt::format("{} (drawn as the hull in the 3D views)",
                                                          p.hull.geometry->panel_mesh->filename().string()));
   }
-  kv.items.emplace_back(
-      "Mooring", fmt::format("{} lines, {} risers", p.mooring.lines.size(), p.risers.size()));
-  kv.items.emplace_back("Mooring code",
-                        fmt::format("{}: SF intact {:.2f}, damaged {:.2f} (quasi-static)", code,
-                                    design::mooring_safety_factor(p.criteria.mooring, false),
-                                    design::mooring_safety_factor(p.criteria.mooring, true)));
+  kv.items.emplace_back("Mooring", fmt::format("{} lines, {} risers", p.mooring.lines.size(), p.risers.size()));
+  kv.items.emplace_back("Mooring code", fmt::format("{}: SF intact {:.2f}, damaged {:.2f} (quasi-static)", code,
+                                                    design::mooring_safety_factor(p.criteria.mooring, false),
+                                                    design::mooring_safety_factor(p.criteria.mooring, true)));
   if (p.criteria.max_offset_pct_depth) {
-    kv.items.emplace_back(
-        "Offset limit", fmt::format("{:g} % of depth = {:.1f} m", *p.criteria.max_offset_pct_depth,
-                                    *p.criteria.max_offset_pct_depth / 100.0 * p.site.depth_m));
+    kv.items.emplace_back("Offset limit", fmt::format("{:g} % of depth = {:.1f} m", *p.criteria.max_offset_pct_depth,
+                                                      *p.criteria.max_offset_pct_depth / 100.0 * p.site.depth_m));
   }
   s.blocks.emplace_back(kv);
 
-  Table types{
-      "line-types",
-      "Line types (resolved properties; formulas in docs/line-types.md).",
-      {"Type", "Kind", "D nom (mm)", "Mass (kg/m)", "Wet weight (N/m)", "EA (MN)", "MBL (kN)"},
-      {}};
+  Table types{"line-types",
+              "Line types (resolved properties; formulas in docs/line-types.md).",
+              {"Type", "Kind", "D nom (mm)", "Mass (kg/m)", "Wet weight (N/m)", "EA (MN)", "MBL (kN)"},
+              {}};
   for (const auto& t : vp.line_types) {
-    types.rows.push_back({text(t.name), text(design::to_string(t.kind)),
-                          num(t.nominal_diameter_m, 0, 1000.0), num(t.mass_per_length_kg_per_m, 1),
-                          num(t.submerged_weight_N_per_m, 0), num(t.axial_stiffness_N, 0, 1e-6),
-                          num(t.breaking_load_N, 0, kN)});
+    types.rows.push_back({text(t.name), text(design::to_string(t.kind)), num(t.nominal_diameter_m, 0, 1000.0),
+                          num(t.mass_per_length_kg_per_m, 1), num(t.submerged_weight_N_per_m, 0),
+                          num(t.axial_stiffness_N, 0, 1e-6), num(t.breaking_load_N, 0, kN)});
   }
   s.blocks.emplace_back(types);
 
-  Table lines{
-      "mooring-lines",
-      "Mooring lines: anchor (global) and fairlead (hull body frame), segments anchor to fairlead.",
-      {"Line", "Anchor x (m)", "Anchor y (m)", "Anchor z (m)", "Fairlead x (m)", "Fairlead y (m)",
-       "Fairlead z (m)", "Length (m)", "Segments"},
-      {}};
+  Table lines{"mooring-lines",
+              "Mooring lines: anchor (global) and fairlead (hull body frame), segments anchor to fairlead.",
+              {"Line", "Anchor x (m)", "Anchor y (m)", "Anchor z (m)", "Fairlead x (m)", "Fairlead y (m)",
+               "Fairlead z (m)", "Length (m)", "Segments"},
+              {}};
   for (const auto& l : p.mooring.lines) {
     double length = 0;
     std::string segs;
@@ -129,9 +117,8 @@ Section model_summary_section(const design::ValidatedProject& vp, const std::str
       length += seg.length_m;
       segs += (segs.empty() ? "" : " + ") + fmt::format("{} {:g}", seg.type, seg.length_m);
     }
-    lines.rows.push_back({text(l.name), num(l.anchor_g.x(), 1), num(l.anchor_g.y(), 1),
-                          num(l.anchor_g.z(), 1), num(l.fairlead_b.x(), 2),
-                          num(l.fairlead_b.y(), 2), num(l.fairlead_b.z(), 2), num(length, 1),
+    lines.rows.push_back({text(l.name), num(l.anchor_g.x(), 1), num(l.anchor_g.y(), 1), num(l.anchor_g.z(), 1),
+                          num(l.fairlead_b.x(), 2), num(l.fairlead_b.y(), 2), num(l.fairlead_b.z(), 2), num(length, 1),
                           text(segs)});
   }
   s.blocks.emplace_back(lines);
@@ -139,17 +126,15 @@ Section model_summary_section(const design::ValidatedProject& vp, const std::str
   if (!p.risers.empty()) {
     Table risers{"risers",
                  "Risers.",
-                 {"Riser", "Kind", "Azimuth (°)", "Top angle (°)", "Length (m)", "OD (mm)",
-                  "Hang-off z (m)"},
+                 {"Riser", "Kind", "Azimuth (°)", "Top angle (°)", "Length (m)", "OD (mm)", "Hang-off z (m)"},
                  {}};
     for (const auto& rr : p.risers) {
       double length = 0;
       for (const auto& sec : rr.sections) length += sec.length_m;
-      risers.rows.push_back(
-          {text(rr.name), text(design::to_string(rr.kind)), num(rr.azimuth_rad * kRadToDeg, 1),
-           num(rr.top_angle_rad * kRadToDeg, 1), num(length, 0),
-           num(rr.sections.empty() ? 0.0 : rr.sections.front().outer_diameter_m, 1, 1000.0),
-           num(rr.hang_off_b.z(), 1)});
+      risers.rows.push_back({text(rr.name), text(design::to_string(rr.kind)), num(rr.azimuth_rad * kRadToDeg, 1),
+                             num(rr.top_angle_rad * kRadToDeg, 1), num(length, 0),
+                             num(rr.sections.empty() ? 0.0 : rr.sections.front().outer_diameter_m, 1, 1000.0),
+                             num(rr.hang_off_b.z(), 1)});
     }
     s.blocks.emplace_back(risers);
   }
@@ -163,20 +148,18 @@ Section load_cases_section(const design::Project& p) {
                 "Current: surface speed of the profile."});
   Table t{"load-cases",
           "Load cases and their environments.",
-          {"Case", "Environment", "Damaged line", "Riser condition", "Hs (m)", "Tp (s)",
-           "Wave dir (°)", "Wind (m/s)", "Wind dir (°)", "Current (m/s)", "Current dir (°)"},
+          {"Case", "Environment", "Damaged line", "Riser condition", "Hs (m)", "Tp (s)", "Wave dir (°)", "Wind (m/s)",
+           "Wind dir (°)", "Current (m/s)", "Current dir (°)"},
           {}};
   for (const auto& lc : p.load_cases) {
     const design::Environment* env = nullptr;
     for (const auto& e : p.environments)
       if (e.name == lc.environment) env = &e;
     auto opt = [](bool has, double v, int d) { return has ? num(v, d) : text("–"); };
-    const bool w = env && env->waves, wi = env && env->wind,
-               c = env && env->current && !env->current->profile.empty();
+    const bool w = env && env->waves, wi = env && env->wind, c = env && env->current && !env->current->profile.empty();
     t.rows.push_back({text(lc.name), text(lc.environment), text(lc.damaged_line.value_or("–")),
                       text(design::to_string(lc.condition)), opt(w, w ? env->waves->hs_m : 0, 1),
-                      opt(w, w ? env->waves->tp_s : 0, 1),
-                      opt(w, w ? env->waves->heading_rad * kRadToDeg : 0, 0),
+                      opt(w, w ? env->waves->tp_s : 0, 1), opt(w, w ? env->waves->heading_rad * kRadToDeg : 0, 0),
                       opt(wi, wi ? env->wind->speed_m_per_s : 0, 1),
                       opt(wi, wi ? env->wind->heading_rad * kRadToDeg : 0, 0),
                       opt(c, c ? env->current->profile.front().speed_m_per_s : 0, 2),
@@ -188,8 +171,7 @@ Section load_cases_section(const design::Project& p) {
 
 namespace {
 
-Figure profile_figure(const design::StaticsResult& pre, const design::StaticStageResults& r,
-                      const design::Project& p) {
+Figure profile_figure(const design::StaticsResult& pre, const design::StaticStageResults& r, const design::Project& p) {
   Plot plot;
   plot.title = "Line profiles at zero offset";
   plot.x_label = "Horizontal distance from the hull reference point (m)";
@@ -221,8 +203,7 @@ Figure profile_figure(const design::StaticsResult& pre, const design::StaticStag
   seabed.x = {0.0, 0.0};
   seabed.y = {-p.site.depth_m, -p.site.depth_m};
   for (const auto& s : plot.series)
-    seabed.x[1] =
-        std::max(seabed.x[1], s.x.empty() ? 0.0 : *std::max_element(s.x.begin(), s.x.end()));
+    seabed.x[1] = std::max(seabed.x[1], s.x.empty() ? 0.0 : *std::max_element(s.x.begin(), s.x.end()));
   seabed.color = {0.55, 0.45, 0.3};
   seabed.line_width = 1.6;
   seabed.label = "seabed";
@@ -249,21 +230,14 @@ Figure tension_figure(const design::StaticStageResults& r, const design::Project
   plot.x_label = "Unstretched arc length from the anchor (m)";
   plot.y_label = "Tension (kN)";
   Series t{"tension", {}, {}, {0.12, 0.47, 0.71}, 1.5, false, false, false};
-  Series allow{fmt::format("allowable MBL/SF (SF {:.2f})", check.safety_factor),
-               {},
-               {},
-               kFailColor,
-               1.0,
-               true,
-               false,
-               false};
+  Series allow{
+      fmt::format("allowable MBL/SF (SF {:.2f})", check.safety_factor), {}, {}, kFailColor, 1.0, true, false, false};
   int last_segment = -1;
   for (const auto& q : row.profile) {
     t.x.push_back(q.arc_length_m);
     t.y.push_back(q.tension_N * kN);
     if (strength && q.segment < static_cast<int>(strength->segment_mbl_N.size())) {
-      const double a =
-          strength->segment_mbl_N[static_cast<std::size_t>(q.segment)] / check.safety_factor * kN;
+      const double a = strength->segment_mbl_N[static_cast<std::size_t>(q.segment)] / check.safety_factor * kN;
       if (q.segment != last_segment && !allow.x.empty()) {
         allow.x.push_back(q.arc_length_m);
         allow.y.push_back(allow.y.back());
@@ -279,14 +253,12 @@ Figure tension_figure(const design::StaticStageResults& r, const design::Project
   for (const double v : t.y) ymax = std::max(ymax, v);
   plot.y_range = std::pair{0.0, ymax * 1.08};
   (void)p;
-  Figure f{
-      "tension-most-loaded-line",
-      fmt::format(
-          "Effective tension along the most utilized line, {}, in the governing case {} (code "
-          "utilization {:.3f}), with the allowable tension of each segment's line type.",
-          row.name, case_label(result),
-          check.lines[static_cast<std::size_t>(std::max(0, check.governing_line))].utilization),
-      1.8, std::nullopt, nullptr};
+  Figure f{"tension-most-loaded-line",
+           fmt::format("Effective tension along the most utilized line, {}, in the governing case {} (code "
+                       "utilization {:.3f}), with the allowable tension of each segment's line type.",
+                       row.name, case_label(result),
+                       check.lines[static_cast<std::size_t>(std::max(0, check.governing_line))].utilization),
+           1.8, std::nullopt, nullptr};
   f.draw = [plot](cairo_t* cr, double w, double h) { draw_plot(cr, plot, w, h); };
   return f;
 }
@@ -308,8 +280,7 @@ Figure restoring_figure(const design::StaticStageResults& r, const design::Proje
     plot.series.push_back(std::move(s));
   }
   if (p.criteria.max_offset_pct_depth) {
-    plot.x_lines.emplace_back(*p.criteria.max_offset_pct_depth / 100.0 * p.site.depth_m,
-                              "offset limit");
+    plot.x_lines.emplace_back(*p.criteria.max_offset_pct_depth / 100.0 * p.site.depth_m, "offset limit");
   }
   plot.legend_left = true;
   Figure f{"restoring-curves",
@@ -377,8 +348,7 @@ Figure offsets_figure(const design::StaticStageResults& r, const design::Project
   plot.series.push_back(pts);
   if (p.criteria.max_offset_pct_depth) {
     const double limit = *p.criteria.max_offset_pct_depth / 100.0 * p.site.depth_m;
-    plot.circles.push_back(
-        {0, 0, limit, fmt::format("offset limit {:.0f} m", limit), kFailColor, true});
+    plot.circles.push_back({0, 0, limit, fmt::format("offset limit {:.0f} m", limit), kFailColor, true});
   }
   Figure f{"offsets-plan",
            "Horizontal static offset of the hull reference point in each case, with the allowable "
@@ -394,20 +364,18 @@ Section pretension_section(const design::ValidatedProject& vp, const design::Sta
   Section s{"Pretensions (zero offset)", {}, true};
   Table t{"pretensions",
           "Every line solved as a multi-segment elastic catenary with the hull at rest.",
-          {"Line", "T fair (kN)", "H fair (kN)", "V fair (kN)", "Angle (°)", "T anchor (kN)",
-           "Uplift (°)", "Laid (m)", "T/MBL (–)", "Regime"},
+          {"Line", "T fair (kN)", "H fair (kN)", "V fair (kN)", "Angle (°)", "T anchor (kN)", "Uplift (°)", "Laid (m)",
+           "T/MBL (–)", "Regime"},
           {}};
   for (const auto& l : r.pretension.lines) {
-    t.rows.push_back({text(l.name), num(l.fairlead_tension_N, 1, kN),
-                      num(l.fairlead_horizontal_N, 1, kN), num(l.fairlead_vertical_N, 1, kN),
-                      num(l.fairlead_angle_deg, 2), num(l.anchor_tension_N, 1, kN),
-                      num(l.anchor_uplift_angle_deg, 2), num(l.laid_length_m, 1),
-                      num(l.utilization, 3), text(l.regime)});
+    t.rows.push_back({text(l.name), num(l.fairlead_tension_N, 1, kN), num(l.fairlead_horizontal_N, 1, kN),
+                      num(l.fairlead_vertical_N, 1, kN), num(l.fairlead_angle_deg, 2), num(l.anchor_tension_N, 1, kN),
+                      num(l.anchor_uplift_angle_deg, 2), num(l.laid_length_m, 1), num(l.utilization, 3),
+                      text(l.regime)});
   }
   s.blocks.emplace_back(t);
   s.blocks.emplace_back(profile_figure(r.pretension, r, vp.project));
-  for (const ViewKind kind :
-       {ViewKind::iso, ViewKind::plan, ViewKind::elevation, ViewKind::hull_closeup}) {
+  for (const ViewKind kind : {ViewKind::iso, ViewKind::plan, ViewKind::elevation, ViewKind::hull_closeup}) {
     s.blocks.emplace_back(view_figure(vp.project, r, 0, kind, options));
   }
   return s;
@@ -429,28 +397,26 @@ Section results_section(const design::ValidatedProject& vp, const design::Static
                             design::mooring_safety_factor(p.criteria.mooring, true))});
   Table off{"offsets",
             "Static offsets of the hull reference point and the offset check.",
-            {"Case", "Condition", "Env. force (kN)", "Offset (m)", "% depth", "Dir (°)",
-             "Heave (m)", "Roll (°)", "Pitch (°)", "Yaw (°)", "Limit (m)", "Offset"},
+            {"Case", "Condition", "Env. force (kN)", "Offset (m)", "% depth", "Dir (°)", "Heave (m)", "Roll (°)",
+             "Pitch (°)", "Yaw (°)", "Limit (m)", "Offset"},
             {}};
   Table summary{"code-check-summary",
                 "Mooring code check per case: the governing line.",
-                {"Case", "Condition", "SF", "Governing line", "T max (kN)", "T/MBL", "Utilization",
-                 "Lines", "Case"},
+                {"Case", "Condition", "SF", "Governing line", "T max (kN)", "T/MBL", "Utilization", "Lines", "Case"},
                 {}};
   for (std::size_t i = 0; i < r.cases.size(); ++i) {
     const auto& c = r.cases[i];
     const auto& k = r.checks[i];
     const auto& o = c.offset_summary;
-    off.rows.push_back(
-        {text(c.case_name), text(c.condition), num(c.environment_force.head<2>().norm(), 1, kN),
-         num(o.horizontal_m, 2), num(o.horizontal_pct_depth, 3), num(o.direction_deg, 1),
-         num(o.heave_m, 3), num(o.roll_deg, 3), num(o.pitch_deg, 3), num(o.yaw_deg, 3),
-         k.offset_limit_m ? num(*k.offset_limit_m, 1) : text("–"), verdict(k.offset_pass)});
+    off.rows.push_back({text(c.case_name), text(c.condition), num(c.environment_force.head<2>().norm(), 1, kN),
+                        num(o.horizontal_m, 2), num(o.horizontal_pct_depth, 3), num(o.direction_deg, 1),
+                        num(o.heave_m, 3), num(o.roll_deg, 3), num(o.pitch_deg, 3), num(o.yaw_deg, 3),
+                        k.offset_limit_m ? num(*k.offset_limit_m, 1) : text("–"), verdict(k.offset_pass)});
     if (k.governing_line >= 0) {
       const auto& g = k.lines[static_cast<std::size_t>(k.governing_line)];
-      summary.rows.push_back({text(c.case_name), text(c.condition), num(k.safety_factor, 2),
-                              text(g.line), num(g.max_tension_N, 1, kN), num(g.utilization_mbl, 3),
-                              num(g.utilization, 3), verdict(k.lines_pass), verdict(k.pass)});
+      summary.rows.push_back({text(c.case_name), text(c.condition), num(k.safety_factor, 2), text(g.line),
+                              num(g.max_tension_N, 1, kN), num(g.utilization_mbl, 3), num(g.utilization, 3),
+                              verdict(k.lines_pass), verdict(k.pass)});
     }
   }
   s.blocks.emplace_back(off);
@@ -461,18 +427,15 @@ Section results_section(const design::ValidatedProject& vp, const design::Static
   for (std::size_t i = 0; i < r.cases.size(); ++i) {
     const auto& c = r.cases[i];
     const auto& k = r.checks[i];
-    Table t{
-        fmt::format("lines-{}", slug(c.case_name)),
-        fmt::format("Line tensions and code check, case {} (SF {:.2f}).", case_label(c),
-                    k.safety_factor),
-        {"Line", "Pretension (kN)", "T fair (kN)", "T max (kN)", "T/MBL", "Utilization", "Check"},
-        {}};
+    Table t{fmt::format("lines-{}", slug(c.case_name)),
+            fmt::format("Line tensions and code check, case {} (SF {:.2f}).", case_label(c), k.safety_factor),
+            {"Line", "Pretension (kN)", "T fair (kN)", "T max (kN)", "T/MBL", "Utilization", "Check"},
+            {}};
     for (std::size_t l = 0; l < c.lines.size(); ++l) {
       double pre = 0;
       for (const auto& pl : r.pretension.lines)
         if (pl.name == c.lines[l].name) pre = pl.fairlead_tension_N;
-      t.rows.push_back({text(c.lines[l].name), num(pre, 1, kN),
-                        num(c.lines[l].fairlead_tension_N, 1, kN),
+      t.rows.push_back({text(c.lines[l].name), num(pre, 1, kN), num(c.lines[l].fairlead_tension_N, 1, kN),
                         num(k.lines[l].max_tension_N, 1, kN), num(k.lines[l].utilization_mbl, 3),
                         num(k.lines[l].utilization, 3), verdict(k.lines[l].pass)});
     }
@@ -484,25 +447,23 @@ Section results_section(const design::ValidatedProject& vp, const design::Static
       s.blocks.emplace_back(view_figure(p, r, worst, kind, options));
     }
   } else {
-    s.blocks.emplace_back(Paragraph{
-        "The governing case is still water: its 3D views are in the pretension section."});
+    s.blocks.emplace_back(Paragraph{"The governing case is still water: its 3D views are in the pretension section."});
   }
   return s;
 }
 
 Section riser_section(const design::StaticStageResults& r) {
   Section s{"Riser static results", {}, true};
-  s.blocks.emplace_back(Paragraph{
-      "Every riser solved by FE statics (bending, current, seabed contact) in each case, at the "
-      "hull's equilibrium, and checked against the riser criteria of the project: von Mises "
-      "utilization with the design factor of the case's condition (API RP 2RD style), minimum "
-      "effective tension (a floor: pass/fail), top tension, top angle, flex-joint rotation and "
-      "minimum bending radius where given. Utilization ≤ 1 passes; the governing criterion is "
-      "the one closest to its limit."});
+  s.blocks.emplace_back(
+      Paragraph{"Every riser solved by FE statics (bending, current, seabed contact) in each case, at the "
+                "hull's equilibrium, and checked against the riser criteria of the project: von Mises "
+                "utilization with the design factor of the case's condition (API RP 2RD style), minimum "
+                "effective tension (a floor: pass/fail), top tension, top angle, flex-joint rotation and "
+                "minimum bending radius where given. Utilization ≤ 1 passes; the governing criterion is "
+                "the one closest to its limit."});
   Table summary{"riser-summary",
                 "Riser checks per case: the governing riser and whether every riser passes.",
-                {"Case", "Condition", "Design condition", "Governing riser", "Criterion", "Utilization",
-                 "Risers"},
+                {"Case", "Condition", "Design condition", "Governing riser", "Criterion", "Utilization", "Risers"},
                 {}};
   for (const auto& c : r.cases) {
     if (c.risers.empty()) continue;
@@ -522,12 +483,11 @@ Section riser_section(const design::StaticStageResults& r) {
              "Utilization", "Check"},
             {}};
     for (const auto& x : c.risers) {
-      t.rows.push_back(
-          {text(x.name), num(x.top_tension_N, 1, kN), num(x.top_angle_deg, 2),
-           num(x.touchdown_distance_m, 1), num(x.min_effective_tension_N, 1, kN),
-           num(x.min_bending_radius_m, 1),
-           x.max_von_mises_utilization ? num(*x.max_von_mises_utilization, 3) : text("–"),
-           text(x.governing_criterion), num(x.utilization, 3), verdict(x.passes)});
+      t.rows.push_back({text(x.name), num(x.top_tension_N, 1, kN), num(x.top_angle_deg, 2),
+                        num(x.touchdown_distance_m, 1), num(x.min_effective_tension_N, 1, kN),
+                        num(x.min_bending_radius_m, 1),
+                        x.max_von_mises_utilization ? num(*x.max_von_mises_utilization, 3) : text("–"),
+                        text(x.governing_criterion), num(x.utilization, 3), verdict(x.passes)});
     }
     s.blocks.emplace_back(t);
   }
@@ -548,29 +508,26 @@ Section stiffness_section(const design::StaticStageResults& r, const design::Pro
     std::vector<TableCell> row{text(dof[i])};
     for (int j = 0; j < 6; ++j) {
       const double v = c.stiffness(i, j) * kN;
-      row.push_back(
-          {std::abs(v) < 1e-6 ? std::string("0") : fmt::format("{:.4g}", v), v, CellStatus::none});
+      row.push_back({std::abs(v) < 1e-6 ? std::string("0") : fmt::format("{:.4g}", v), v, CellStatus::none});
     }
     k.rows.push_back(std::move(row));
   }
   s.blocks.emplace_back(k);
   if (c.stiffness_check_relative_difference) {
-    s.blocks.emplace_back(Paragraph{fmt::format(
-        "Cross-check by central finite differences of the line forces: ‖K − K_fd‖/‖K_fd‖ = {:.2e}.",
-        *c.stiffness_check_relative_difference)});
+    s.blocks.emplace_back(Paragraph{
+        fmt::format("Cross-check by central finite differences of the line forces: ‖K − K_fd‖/‖K_fd‖ = {:.2e}.",
+                    *c.stiffness_check_relative_difference)});
   }
-  Table periods{
-      "natural-periods",
-      fmt::format("Undamped natural periods of the moored hull (s) and their dominant DOF{}.",
-                  c.added_mass_included ? ", added mass included" : ", without added mass"),
-      {"Case", "Mode 1", "Mode 2", "Mode 3", "Mode 4", "Mode 5", "Mode 6"},
-      {}};
+  Table periods{"natural-periods",
+                fmt::format("Undamped natural periods of the moored hull (s) and their dominant DOF{}.",
+                            c.added_mass_included ? ", added mass included" : ", without added mass"),
+                {"Case", "Mode 1", "Mode 2", "Mode 3", "Mode 4", "Mode 5", "Mode 6"},
+                {}};
   for (const auto& cs : r.cases) {
     std::vector<TableCell> row{text(cs.case_name)};
     for (std::size_t m = 0; m < 6; ++m) {
       if (m < cs.natural_modes.size()) {
-        row.push_back({fmt::format("{:.1f} {}", cs.natural_modes[m].period_s,
-                                   cs.natural_modes[m].dominant_dof),
+        row.push_back({fmt::format("{:.1f} {}", cs.natural_modes[m].period_s, cs.natural_modes[m].dominant_dof),
                        cs.natural_modes[m].period_s, CellStatus::none});
       } else {
         row.push_back(text("–"));
@@ -582,8 +539,8 @@ Section stiffness_section(const design::StaticStageResults& r, const design::Pro
   s.blocks.emplace_back(restoring_figure(r, p));
   for (const auto& curve : r.restoring) {
     if (curve.stopped) {
-      s.blocks.emplace_back(Paragraph{fmt::format("The sweep towards {:g}° stopped early: {}",
-                                                  curve.direction_deg, *curve.stopped)});
+      s.blocks.emplace_back(
+          Paragraph{fmt::format("The sweep towards {:g}° stopped early: {}", curve.direction_deg, *curve.stopped)});
     }
   }
   return s;
@@ -592,8 +549,7 @@ Section stiffness_section(const design::StaticStageResults& r, const design::Pro
 }  // namespace
 
 ReportDocument stage_document(const design::Project& p, const ReportInfo& info, const std::string& stage,
-                              const std::string& code, const std::string& wall_time,
-                              const design::SozResult* soz) {
+                              const std::string& code, const std::string& wall_time, const design::SozResult* soz) {
   ReportDocument doc;
   doc.title.project = p.name;
   doc.title.description = p.description.value_or("");
@@ -605,9 +561,9 @@ ReportDocument stage_document(const design::Project& p, const ReportInfo& info, 
                      {"Mooring code", code},
                      {"Analysis wall time", wall_time}};
   if (soz) {
-    doc.title.facts.emplace_back("Riser SOZ", fmt::format("{} model, {:g}° step, still water",
-                                                          design::to_string(soz->options.model),
-                                                          soz->options.step_deg));
+    doc.title.facts.emplace_back(
+        "Riser SOZ",
+        fmt::format("{} model, {:g}° step, still water", design::to_string(soz->options.model), soz->options.step_deg));
   }
   doc.running_header = fmt::format("spiral — {}", p.name);
   doc.running_footer =
@@ -615,23 +571,20 @@ ReportDocument stage_document(const design::Project& p, const ReportInfo& info, 
   return doc;
 }
 
-ReportDocument static_stage_report(const design::ValidatedProject& vp,
-                                   const design::StaticStageResults& r, const ReportInfo& info,
-                                   const StaticStageReportOptions& options) {
+ReportDocument static_stage_report(const design::ValidatedProject& vp, const design::StaticStageResults& r,
+                                   const ReportInfo& info, const StaticStageReportOptions& options) {
   const design::Project& p = vp.project;
-  ReportDocument doc = stage_document(p, info, r.stage, r.code, fmt::format("{:.3f} s", r.wall_time_s),
-                                      r.soz ? &*r.soz : nullptr);
+  ReportDocument doc =
+      stage_document(p, info, r.stage, r.code, fmt::format("{:.3f} s", r.wall_time_s), r.soz ? &*r.soz : nullptr);
   std::string stage = r.stage;
-  if (!stage.empty())
-    stage[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(stage[0])));
+  if (!stage.empty()) stage[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(stage[0])));
   doc.title.title = stage + " stage report";
   doc.title.subtitle = r.dynamics ? "Static cases, mooring code check, riser SOZ, S-C storm"
                                   : "Static analyses: pretensions, static cases, mooring code check";
   if (r.dynamics) {
-    doc.title.facts.emplace_back("S-C storm", fmt::format("{}, {} ({:.0f} s, {:.2f} s wall)",
-                                                          design::to_string(r.dynamics->level),
-                                                          r.dynamics->case_name, r.dynamics->duration_s,
-                                                          r.dynamics->wall_s));
+    doc.title.facts.emplace_back("S-C storm",
+                                 fmt::format("{}, {} ({:.0f} s, {:.2f} s wall)", design::to_string(r.dynamics->level),
+                                             r.dynamics->case_name, r.dynamics->duration_s, r.dynamics->wall_s));
   }
   for (const std::string& note : r.notes) doc.title.facts.emplace_back("Note", note);
   int failed = 0, failed_lines = 0, failed_offset = 0, failed_risers = 0, failed_soz = 0;
@@ -648,19 +601,21 @@ ReportDocument static_stage_report(const design::ValidatedProject& vp,
                   g.criterion.empty() ? "" : " " + g.criterion, g.utilization, g.case_name);
   std::string storm;
   if (r.dynamics) {
-    const bool storm_pass = r.dynamics->tension_pass &&
-                            (!r.dynamics->extreme_offset || r.dynamics->extreme_offset->passes);
+    const bool storm_pass =
+        r.dynamics->tension_pass && (!r.dynamics->extreme_offset || r.dynamics->extreme_offset->passes);
     storm = fmt::format("; S-C storm of {}: {}", r.dynamics->case_name, storm_pass ? "PASS" : "FAIL");
   }
   doc.title.pass = r.pass;
-  doc.title.verdict =
-      r.pass ? fmt::format("PASS — all {} cases meet {}, the offset limit, the riser criteria{}{}; largest "
-                           "utilization: {}",
-                           r.checks.size(), r.code, r.soz ? " and the riser SOZ" : "", storm, governing)
-             : fmt::format("FAIL — {} of {} cases fail (mooring code: {}, offset limit: {}, riser criteria: "
-                           "{}{}){}; governing failing check: {}",
-                           failed, r.checks.size(), failed_lines, failed_offset, failed_risers,
-                           r.soz ? fmt::format(", riser SOZ: {}", failed_soz) : std::string(), storm, governing);
+  doc.title.verdict = r.pass
+                          ? fmt::format(
+                                "PASS — all {} cases meet {}, the offset limit, the riser criteria{}{}; largest "
+                                "utilization: {}",
+                                r.checks.size(), r.code, r.soz ? " and the riser SOZ" : "", storm, governing)
+                          : fmt::format(
+                                "FAIL — {} of {} cases fail (mooring code: {}, offset limit: {}, riser criteria: "
+                                "{}{}){}; governing failing check: {}",
+                                failed, r.checks.size(), failed_lines, failed_offset, failed_risers,
+                                r.soz ? fmt::format(", riser SOZ: {}", failed_soz) : std::string(), storm, governing);
   doc.sections.push_back(model_summary_section(vp, r.code));
   doc.sections.push_back(load_cases_section(p));
   doc.sections.push_back(pretension_section(vp, r, options));

@@ -34,14 +34,11 @@ Section load_cases_section(const design::Project& project);
 /// version, model hash, stage, code, wall time, SOZ model), running header and
 /// footer; the caller adds the title, verdict and sections.
 ReportDocument stage_document(const design::Project& project, const ReportInfo& info, const std::string& stage,
-                              const std::string& code, const std::string& wall_time,
-                              const design::SozResult* soz);
+                              const std::string& code, const std::string& wall_time, const design::SozResult* soz);
 
 /// Builds the document (renders the 3D views). Throws std::runtime_error
 /// when a view cannot be rendered.
-ReportDocument static_stage_report(const design::ValidatedProject& project,
-                                   const design::StaticStageResults& results,
-                                   const ReportInfo& info,
-                                   const StaticStageReportOptions& options = {});
+ReportDocument static_stage_report(const design::ValidatedProject& project, const design::StaticStageResults& results,
+                                   const ReportInfo& info, const StaticStageReportOptions& options = {});
 
 }  // namespace spiral::report

@@ -14,16 +14,13 @@ namespace spiral::report {
 inline TableCell num(double value, int decimals, double scale = 1.0) {
   return {fmt::format("{:.{}f}", value * scale, decimals), value * scale, CellStatus::none};
 }
-inline TableCell text(std::string s) {
-  return {std::move(s), std::nullopt, CellStatus::none};
-}
+inline TableCell text(std::string s) { return {std::move(s), std::nullopt, CellStatus::none}; }
 inline TableCell verdict(bool pass) {
   return {pass ? "PASS" : "FAIL", std::nullopt, pass ? CellStatus::pass : CellStatus::fail};
 }
 /// A file-stem-safe id: [a-z0-9-].
 inline std::string slug(std::string s) {
-  for (char& c : s)
-    c = std::isalnum(static_cast<unsigned char>(c)) ? static_cast<char>(std::tolower(c)) : '-';
+  for (char& c : s) c = std::isalnum(static_cast<unsigned char>(c)) ? static_cast<char>(std::tolower(c)) : '-';
   return s;
 }
 

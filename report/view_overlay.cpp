@@ -108,8 +108,7 @@ void scale_bar(cairo_t* cr, double m_per_px, double H, double f) {
 void axes_triad(cairo_t* cr, const OverlayGeometry& g, double W, double H, double f) {
   const double cx = W - 180 * f, cy = H - 70 * f, len = 44 * f;
   const char* names[3] = {"x", "y", "z"};
-  const Eigen::Vector3d axes[3] = {Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(),
-                                   Eigen::Vector3d::UnitZ()};
+  const Eigen::Vector3d axes[3] = {Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(), Eigen::Vector3d::UnitZ()};
   cairo_set_line_width(cr, 2.0 * f);
   set_font(cr, 15 * f, true);
   const Rgb colors[3] = {{0.75, 0.1, 0.1}, {0.1, 0.55, 0.1}, {0.1, 0.2, 0.75}};
@@ -124,8 +123,7 @@ void axes_triad(cairo_t* cr, const OverlayGeometry& g, double W, double H, doubl
   }
 }
 
-void depth_scale(cairo_t* cr, const Scene& scene, const OverlayGeometry& g, double W, double H,
-                 double f) {
+void depth_scale(cairo_t* cr, const Scene& scene, const OverlayGeometry& g, double W, double H, double f) {
   // z axis on the left edge: the world z of a pixel row is up·target − (row − H/2)·m_per_px.
   auto row_of = [&](double z) { return H / 2 - (z - g.target_g.z()) / g.m_per_px; };
   const double step = nice_length(scene.depth_m / 6.0);
@@ -144,23 +142,22 @@ void depth_scale(cairo_t* cr, const Scene& scene, const OverlayGeometry& g, doub
   }
   set_font(cr, 13 * f, true);
   draw_text(cr, x, row_of(-scene.depth_m) + 4 * f, fmt::format("{:g}", -scene.depth_m));
-  draw_text(cr, x, row_of(-scene.depth_m) + 24 * f,
-            fmt::format("seabed, depth {:g} m", scene.depth_m));
+  draw_text(cr, x, row_of(-scene.depth_m) + 24 * f, fmt::format("seabed, depth {:g} m", scene.depth_m));
   draw_text(cr, x + 60 * f, row_of(0) - 8 * f, "mean water level, z = 0");
   (void)W;
 }
 
 }  // namespace
 
-void draw_view_overlay(Image& image, const Scene& scene, const Camera& camera,
-                       const OverlayGeometry& geometry, const ViewOptions& options) {
+void draw_view_overlay(Image& image, const Scene& scene, const Camera& camera, const OverlayGeometry& geometry,
+                       const ViewOptions& options) {
   const SurfacePtr surface = to_surface(image);
   const ContextPtr context(cairo_create(surface.get()));
   cairo_t* cr = context.get();
   // Type sized for the figure printed at text width (~17 cm): 14 f px is ~6 pt there.
   const double W = image.width, H = image.height, f = W / 1100.0;
-  const bool has_risers = std::any_of(scene.lines.begin(), scene.lines.end(),
-                                      [](const SceneLine& l) { return l.riser; });
+  const bool has_risers =
+      std::any_of(scene.lines.begin(), scene.lines.end(), [](const SceneLine& l) { return l.riser; });
   if (!options.title.empty()) {
     set_font(cr, 24 * f, true);
     const double tw = text_width(cr, options.title);
@@ -183,11 +180,10 @@ void draw_view_overlay(Image& image, const Scene& scene, const Camera& camera,
     case ViewKind::hull_closeup: {
       axes_triad(cr, geometry, W, H, f);
       set_font(cr, 14 * f, false);
-      const std::string note =
-          camera.kind == ViewKind::iso
-              ? fmt::format("Orthographic view; water depth {:g} m; seabed grid {:g} m",
-                            scene.depth_m, geometry.grid_step_m)
-              : "Hull close-up: fairleads marked; lines continue to their anchors";
+      const std::string note = camera.kind == ViewKind::iso
+                                   ? fmt::format("Orthographic view; water depth {:g} m; seabed grid {:g} m",
+                                                 scene.depth_m, geometry.grid_step_m)
+                                   : "Hull close-up: fairleads marked; lines continue to their anchors";
       panel(cr, 18 * f, H - 44 * f, text_width(cr, note) + 24 * f, 30 * f);
       cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
       draw_text(cr, 30 * f, H - 23 * f, note);

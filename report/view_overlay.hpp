@@ -17,7 +17,7 @@ struct OverlayGeometry {
   double grid_step_m = 0.0;  ///< seabed grid spacing
 };
 
-void draw_view_overlay(Image& image, const Scene& scene, const Camera& camera,
-                       const OverlayGeometry& geometry, const ViewOptions& options);
+void draw_view_overlay(Image& image, const Scene& scene, const Camera& camera, const OverlayGeometry& geometry,
+                       const ViewOptions& options);
 
 }  // namespace spiral::report

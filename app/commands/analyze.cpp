@@ -34,17 +34,18 @@ void print_progress(double fraction) {
 
 /// Where the time went, the coupled integrator's work and the line tensions, on the terminal.
 void print_run_summary(const design::DynamicAnalysisResult& result, double duration_s) {
-  fmt::print("  equilibrium {:.3f} s, reduction {:.3f} s, forcing {:.3f} s, dynamics {:.3f} s, WF {:.3f} s, "
-             "tensions {:.3f} s\n",
-             result.timing.equilibrium_s, result.timing.reduction_s, result.timing.forcing_s, result.timing.dynamics_s,
-             result.timing.wave_frequency_s, result.timing.tensions_s);
+  fmt::print(
+      "  equilibrium {:.3f} s, reduction {:.3f} s, forcing {:.3f} s, dynamics {:.3f} s, WF {:.3f} s, "
+      "tensions {:.3f} s\n",
+      result.timing.equilibrium_s, result.timing.reduction_s, result.timing.forcing_s, result.timing.dynamics_s,
+      result.timing.wave_frequency_s, result.timing.tensions_s);
   if (result.coupled_solver) {
     const engine::IdaStatistics& s = *result.coupled_solver;
-    fmt::print("  coupled: {} lines, {} states; {} steps, {} Newton-matrix setups ({} partial), {} residuals; "
-               "{:.1f}x real time\n",
-               result.coupled_lines, result.coupled_state_size, s.steps, s.newton_matrix_setups,
-               s.newton_matrix_updates, s.residual_evaluations,
-               result.timing.dynamics_s > 0.0 ? duration_s / result.timing.dynamics_s : 0.0);
+    fmt::print(
+        "  coupled: {} lines, {} states; {} steps, {} Newton-matrix setups ({} partial), {} residuals; "
+        "{:.1f}x real time\n",
+        result.coupled_lines, result.coupled_state_size, s.steps, s.newton_matrix_setups, s.newton_matrix_updates,
+        s.residual_evaluations, result.timing.dynamics_s > 0.0 ? duration_s / result.timing.dynamics_s : 0.0);
   }
   if (!result.dynamic_tensions.empty()) {
     fmt::print("  line dynamics {:.3f} s; max fairlead tension, quasi-static vs dynamic:\n",
@@ -68,8 +69,8 @@ void print_run_summary(const design::DynamicAnalysisResult& result, double durat
 class AnalyzeCommand : public Command {
  public:
   AnalyzeCommand()
-      : Command("analyze",
-                "Time-domain analysis of a load case (uncoupled | sc | sc-enhanced | coupled): CSV + JSON") {}
+      : Command("analyze", "Time-domain analysis of a load case (uncoupled | sc | sc-enhanced | coupled): CSV + JSON") {
+  }
 
   int run() const override {
     const design::ValidatedProject loaded = design::load_validated_project(project_file_);
@@ -93,8 +94,8 @@ class AnalyzeCommand : public Command {
       fmt::print(stderr, "output error: {}\n", error.what());
       return kExitOutputError;
     }
-    fmt::print("{} analysis of '{}', case {} (seed {}, {:.0f} s): {}\n", level_, loaded.project.name, case_name_,
-               seed_, duration_s_, folder.string());
+    fmt::print("{} analysis of '{}', case {} (seed {}, {:.0f} s): {}\n", level_, loaded.project.name, case_name_, seed_,
+               duration_s_, folder.string());
     print_run_summary(result, duration_s_);
     return kExitOk;
   }

@@ -55,8 +55,8 @@ class CompareCommand : public Command {
       fmt::print("{}", table);  // the finished comparison is not lost
       return kExitOutputError;
     }
-    fmt::print("levels of '{}', case {} (seed {}, {:.0f} s): {}\n", loaded.project.name, case_name_, seed_,
-               duration_s_, folder.string());
+    fmt::print("levels of '{}', case {} (seed {}, {:.0f} s): {}\n", loaded.project.name, case_name_, seed_, duration_s_,
+               folder.string());
     fmt::print("{}", table);
     for (const auto& level : comparison.levels) {
       if (level.error) return kExitSolverFailure;  // the other levels are written above

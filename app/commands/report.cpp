@@ -69,13 +69,11 @@ class ReportCommand : public Command {
       pass = results.pass;
       document = report::static_stage_report(loaded, results, info);
     }
-    const report::WrittenReport written =
-        report::write_report(document, output_folder(out_, project_file_, stage_));
+    const report::WrittenReport written = report::write_report(document, output_folder(out_, project_file_, stage_));
     fmt::print("{} stage report of '{}' ({}): {}\n", stage_, loaded.project.name, pass ? "PASS" : "FAIL",
                written.folder.string());
     fmt::print("  {} ({} pages)\n  {}\n  written in {:.2f} s\n", written.pdf.string(), written.pages,
-               written.html.string(),
-               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+               written.html.string(), std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     // As `spiral compare`: the report of every other case is written; the exit
     // code says a solver failed.
     return solver_failed ? kExitSolverFailure : kExitOk;

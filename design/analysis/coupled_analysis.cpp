@@ -25,8 +25,8 @@ constexpr double kWaveMotionSample_s = 0.2;
 
 /// The RAO motion as a C² function of time with its rates, built up by the
 /// quintic ramp (translations and rotations as two 3-vector splines).
-engine::PrescribedHullMotionFn ramped_wave_motion(
-    const Eigen::Matrix<double, 6, Eigen::Dynamic>& samples, double dt_s, double ramp_s) {
+engine::PrescribedHullMotionFn ramped_wave_motion(const Eigen::Matrix<double, 6, Eigen::Dynamic>& samples, double dt_s,
+                                                  double ramp_s) {
   std::vector<Eigen::Vector3d> translation, rotation;
   for (Eigen::Index k = 0; k < samples.cols(); ++k) {
     translation.emplace_back(samples.col(k).head<3>());
@@ -39,10 +39,8 @@ engine::PrescribedHullMotionFn ramped_wave_motion(
     engine::PrescribedHullMotion m;
     const engine::TrajectoryPoint a = lin->at(t), b = rot->at(t);
     const engine::Vector6d x = (engine::Vector6d() << a.position_m, b.position_m).finished();
-    const engine::Vector6d v =
-        (engine::Vector6d() << a.velocity_m_per_s, b.velocity_m_per_s).finished();
-    const engine::Vector6d acc =
-        (engine::Vector6d() << a.acceleration_m_per_s2, b.acceleration_m_per_s2).finished();
+    const engine::Vector6d v = (engine::Vector6d() << a.velocity_m_per_s, b.velocity_m_per_s).finished();
+    const engine::Vector6d acc = (engine::Vector6d() << a.acceleration_m_per_s2, b.acceleration_m_per_s2).finished();
     m.position = r.value * x;
     m.velocity = r.rate_per_s * x + r.value * v;
     m.acceleration = r.rate2_per_s2 * x + 2.0 * r.rate_per_s * v + r.value * acc;
@@ -52,8 +50,7 @@ engine::PrescribedHullMotionFn ramped_wave_motion(
 
 }  // namespace
 
-DynamicAnalysisResult run_coupled_analysis(const ValidatedProject& validated,
-                                           const DynamicAnalysisRequest& request) {
+DynamicAnalysisResult run_coupled_analysis(const ValidatedProject& validated, const DynamicAnalysisRequest& request) {
   const Project& project = validated.project;
   // The S-C model of the case: statics, hull, external force on the same
   // realizations; its linearized lines are replaced by the FE lines below.
@@ -100,8 +97,7 @@ DynamicAnalysisResult run_coupled_analysis(const ValidatedProject& validated,
       const RiserDesign design = riser_design(project, riser);
       out.name = riser.name;
       out.attachment_b_m = design.hang_off_b;
-      setup = dynamic_riser(project, design, current,
-                            pose0.reference_point_g + pose0.rotation * design.hang_off_b);
+      setup = dynamic_riser(project, design, current, pose0.reference_point_g + pose0.rotation * design.hang_off_b);
     }
     out.model = std::move(setup.model);
     out.environment = std::move(setup.environment);
@@ -114,13 +110,11 @@ DynamicAnalysisResult run_coupled_analysis(const ValidatedProject& validated,
   // Wave-frequency motion at the fairleads (the S-C RAO motion of this seed).
   start.restart();
   engine::CoupledOptions options;
-  const auto n_wave =
-      static_cast<Eigen::Index>(std::ceil(request.duration_s / kWaveMotionSample_s)) + 2;
+  const auto n_wave = static_cast<Eigen::Index>(std::ceil(request.duration_s / kWaveMotionSample_s)) + 2;
   const Eigen::VectorXd wave_times =
       Eigen::VectorXd::LinSpaced(n_wave, 0.0, kWaveMotionSample_s * static_cast<double>(n_wave - 1));
   if (auto wf = wave_frequency_motions(validated, model, request, wave_times)) {
-    options.wave_frequency_motion =
-        ramped_wave_motion(*wf, kWaveMotionSample_s, request.line_dynamics_ramp_s);
+    options.wave_frequency_motion = ramped_wave_motion(*wf, kWaveMotionSample_s, request.line_dynamics_ramp_s);
     result.wave_frequency_computed = true;
   } else if (environment.waves && model.wave_split_frequency_rad_per_s == 0.0) {
     result.notes.push_back(
@@ -131,8 +125,7 @@ DynamicAnalysisResult run_coupled_analysis(const ValidatedProject& validated,
 
   // Hull + lines together.
   const auto n_out = static_cast<long>(std::floor(request.duration_s / request.output_step_s + 1e-9));
-  for (long k = 1; k <= n_out; ++k)
-    options.output_times_s.push_back(static_cast<double>(k) * request.output_step_s);
+  for (long k = 1; k <= n_out; ++k) options.output_times_s.push_back(static_cast<double>(k) * request.output_step_s);
   options.threads = engine::worker_count(count);
   options.max_steps_between_outputs = request.coupled_max_steps_between_outputs;
   engine::HullLoads loads;
@@ -142,8 +135,8 @@ DynamicAnalysisResult run_coupled_analysis(const ValidatedProject& validated,
     auto next = std::make_shared<double>(0.0);
     const auto progress = request.progress;
     const double duration = request.duration_s;
-    loads.external = [inner = loads.external, next, progress, duration](
-                         double t, const engine::Vector6d& q, const engine::Vector6d& qd) {
+    loads.external = [inner = loads.external, next, progress, duration](double t, const engine::Vector6d& q,
+                                                                        const engine::Vector6d& qd) {
       if (t >= *next) {
         progress(std::min(1.0, t / duration));
         *next = t + 0.01 * duration;
@@ -153,17 +146,14 @@ DynamicAnalysisResult run_coupled_analysis(const ValidatedProject& validated,
   }
   engine::CoupledTimeSeries series;
   try {
-    series = engine::simulate_coupled(model.hull, loads, project.hull.reference_point_g, q0, lines,
-                                      options);
+    series = engine::simulate_coupled(model.hull, loads, project.hull.reference_point_g, q0, lines, options);
   } catch (const engine::IntegrationError& e) {
-    throw engine::SolverError(
-        fmt::format("load case {}: coupled analysis failed at t = {:.6g} s: {}", load_case.name,
-                    e.time_reached_s(), e.what()),
-        e.diagnostics());
+    throw engine::SolverError(fmt::format("load case {}: coupled analysis failed at t = {:.6g} s: {}", load_case.name,
+                                          e.time_reached_s(), e.what()),
+                              e.diagnostics());
   } catch (const engine::SolverError& e) {
-    throw engine::SolverError(
-        fmt::format("load case {}: coupled analysis: {}", load_case.name, e.what()),
-        e.diagnostics());
+    throw engine::SolverError(fmt::format("load case {}: coupled analysis: {}", load_case.name, e.what()),
+                              e.diagnostics());
   }
   if (request.progress) request.progress(1.0);
   result.times_s = series.times_s;
@@ -188,8 +178,7 @@ DynamicAnalysisResult run_coupled_analysis(const ValidatedProject& validated,
     result.dynamic_tensions.push_back(std::move(t));
   }
   start.restart();
-  if (request.compute_tensions)
-    result.tensions = quasi_static_fairlead_tensions(project, damaged, result.total);
+  if (request.compute_tensions) result.tensions = quasi_static_fairlead_tensions(project, damaged, result.total);
   result.timing.tensions_s = start.seconds();
   {
     std::size_t worst = 0;
@@ -197,16 +186,14 @@ DynamicAnalysisResult run_coupled_analysis(const ValidatedProject& validated,
       if (series.step_limiting_outputs[i] > series.step_limiting_outputs[worst]) worst = i;
     }
     const std::string part = worst < lines.size() ? "line " + lines[worst].name : "the hull";
-    result.notes.push_back(fmt::format(
-        "coupled: {} had the largest local error at {} of {} outputs (it sets the step)", part,
-        series.step_limiting_outputs[worst], series.times_s.size() - 1));
+    result.notes.push_back(fmt::format("coupled: {} had the largest local error at {} of {} outputs (it sets the step)",
+                                       part, series.step_limiting_outputs[worst], series.times_s.size() - 1));
   }
-  result.notes.push_back(fmt::format(
-      "coupled: hull and {} dynamic FE lines ({} mooring lines, {} risers) in one IDA system of "
-      "{} states; wave-frequency motion built up over the first {:g} s; current on the lines{}",
-      count, moorings.size(), project.risers.size(), series.state_size,
-      request.line_dynamics_ramp_s,
-      model.sea ? ", linear wave kinematics at each element's static midpoint" : ""));
+  result.notes.push_back(
+      fmt::format("coupled: hull and {} dynamic FE lines ({} mooring lines, {} risers) in one IDA system of "
+                  "{} states; wave-frequency motion built up over the first {:g} s; current on the lines{}",
+                  count, moorings.size(), project.risers.size(), series.state_size, request.line_dynamics_ramp_s,
+                  model.sea ? ", linear wave kinematics at each element's static midpoint" : ""));
   return result;
 }
 

@@ -34,7 +34,6 @@
 
 namespace spiral::design {
 
-DynamicAnalysisResult run_coupled_analysis(const ValidatedProject& project,
-                                           const DynamicAnalysisRequest& request);
+DynamicAnalysisResult run_coupled_analysis(const ValidatedProject& project, const DynamicAnalysisRequest& request);
 
 }  // namespace spiral::design

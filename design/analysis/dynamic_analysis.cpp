@@ -87,20 +87,18 @@ std::string environment_path(const Project& project, const std::string& name, co
 }
 
 /// Heading outside a hydrodynamic database: an input error at the environment.
-[[noreturn]] void heading_error(const Project& project, const std::string& environment,
-                                const std::string& what, const std::exception& e) {
+[[noreturn]] void heading_error(const Project& project, const std::string& environment, const std::string& what,
+                                const std::exception& e) {
   throw InputError({make_issue(project, environment_path(project, environment, "waves.heading_deg"),
                                "heading_in_database", fmt::format("{}: {}", what, e.what()))});
 }
 
-engine::WaveRealization realize_sea(const Project& project, const Waves& waves, double duration_s,
-                                    std::uint64_t seed) {
+engine::WaveRealization realize_sea(const Project& project, const Waves& waves, double duration_s, std::uint64_t seed) {
   engine::WaveRealizationInput input;
   input.spectrum = wave_spectrum_of(waves);
   input.mean_heading_rad = waves.heading_rad;
   if (waves.spreading_s) {
-    input.spreading =
-        engine::DirectionalSpreading{engine::SpreadingForm::cos_2s, *waves.spreading_s};
+    input.spreading = engine::DirectionalSpreading{engine::SpreadingForm::cos_2s, *waves.spreading_s};
     input.direction_count = kSpreadingDirections;
   }
   input.components_per_direction = kWaveComponents;
@@ -123,36 +121,32 @@ engine::HullSimulationOptions forced_run_options(const DynamicAnalysisRequest& r
   options.output_times_s = output_times(request.duration_s, request.output_step_s);
   options.integrator.relative_tolerance = kForcedRunRelTol;
   Eigen::VectorXd atol(12);
-  for (int i = 0; i < 12; ++i)
-    atol(i) = (i % 6) < 3 ? kForcedRunAbsTolTranslation : kForcedRunAbsTolRotation;
+  for (int i = 0; i < 12; ++i) atol(i) = (i % 6) < 3 ? kForcedRunAbsTolTranslation : kForcedRunAbsTolRotation;
   options.integrator.absolute_tolerances = atol;
   return options;
 }
 
 /// Wave-frequency motions (global, m, rad) at `times` from the .4 RAOs or
 /// from .1 + .3; empty when the project has neither (or no waves).
-std::optional<Eigen::Matrix<double, 6, Eigen::Dynamic>> wave_frequency_motion(
-    const Project& project, const Environment& environment, const DynamicModel& model,
-    const DynamicAnalysisRequest& request, const Eigen::VectorXd& times) {
+std::optional<Eigen::Matrix<double, 6, Eigen::Dynamic>> wave_frequency_motion(const Project& project,
+                                                                              const Environment& environment,
+                                                                              const DynamicModel& model,
+                                                                              const DynamicAnalysisRequest& request,
+                                                                              const Eigen::VectorXd& times) {
   const auto& hydro = project.hull.hydrodynamics;
-  if (!environment.waves || !hydro || !(hydro->rao_file || hydro->excitation_file))
-    return std::nullopt;
+  if (!environment.waves || !hydro || !(hydro->rao_file || hydro->excitation_file)) return std::nullopt;
   const HullModel hull = build_hull_model(project);
   const engine::WamitReadOptions read = wamit_options_of(project, *hydro);
   const engine::MotionRaoTable raos =
       hydro->rao_file ? engine::read_wamit_4(*hydro->rao_file, read)
                       : engine::motion_raos_from_excitation(
-                            engine::read_wamit_3(*hydro->excitation_file, read), *hull.radiation,
-                            hull.mass_matrix, model.hull.linear_damping,
-                            hull.statics.hydrostatic_stiffness + model.statics.stiffness);
-  const engine::WaveRealization sea =
-      realize_sea(project, *environment.waves, request.duration_s, request.seed);
+                            engine::read_wamit_3(*hydro->excitation_file, read), *hull.radiation, hull.mass_matrix,
+                            model.hull.linear_damping, hull.statics.hydrostatic_stiffness + model.statics.stiffness);
+  const engine::WaveRealization sea = realize_sea(project, *environment.waves, request.duration_s, request.seed);
   const Eigen::Vector3d& ref = project.hull.reference_point_g;
   try {
     const engine::FirstOrderWaveSeries series = engine::prepare_first_order_series(
-        sea, raos,
-        {ref.x() + model.statics.offset(0), ref.y() + model.statics.offset(1),
-         model.statics.offset(5)});
+        sea, raos, {ref.x() + model.statics.offset(0), ref.y() + model.statics.offset(1), model.statics.offset(5)});
     return engine::evaluate_first_order_many(series, times);
   } catch (const engine::TableRangeError& e) {
     heading_error(project, environment.name, "wave-frequency RAOs (hull.hydrodynamics)", e);
@@ -161,13 +155,13 @@ std::optional<Eigen::Matrix<double, 6, Eigen::Dynamic>> wave_frequency_motion(
 
 }  // namespace
 
-std::optional<Eigen::Matrix<double, 6, Eigen::Dynamic>> wave_frequency_motions(
-    const ValidatedProject& validated, const DynamicModel& model,
-    const DynamicAnalysisRequest& request, const Eigen::VectorXd& times_s) {
+std::optional<Eigen::Matrix<double, 6, Eigen::Dynamic>> wave_frequency_motions(const ValidatedProject& validated,
+                                                                               const DynamicModel& model,
+                                                                               const DynamicAnalysisRequest& request,
+                                                                               const Eigen::VectorXd& times_s) {
   const Project& project = validated.project;
   const LoadCase& load_case = find_load_case(project, request.load_case);
-  return wave_frequency_motion(project, environment_of(project, load_case), model,
-                               request, times_s);
+  return wave_frequency_motion(project, environment_of(project, load_case), model, request, times_s);
 }
 
 const char* to_string(AnalysisLevel level) {
@@ -191,27 +185,23 @@ AnalysisLevel parse_analysis_level(const std::string& name, const Project& proje
   }
   throw command_line_error(
       project, "--level",
-      fmt::format("unknown analysis level \"{}\"; allowed: uncoupled | sc | sc-enhanced | coupled",
-                  name));
+      fmt::format("unknown analysis level \"{}\"; allowed: uncoupled | sc | sc-enhanced | coupled", name));
 }
 
-DynamicModel build_dynamic_model(const ValidatedProject& validated,
-                                 const DynamicAnalysisRequest& request) {
+DynamicModel build_dynamic_model(const ValidatedProject& validated, const DynamicAnalysisRequest& request) {
   const Project& project = validated.project;
-  if (!(request.duration_s > 0.0) || !(request.output_step_s > 0.0) ||
-      request.output_step_s > request.duration_s) {
-    throw command_line_error(
-        project, "--duration",
-        fmt::format("need duration > 0 s and 0 < output step <= duration, got {} s and {} s",
-                    request.duration_s, request.output_step_s));
+  if (!(request.duration_s > 0.0) || !(request.output_step_s > 0.0) || request.output_step_s > request.duration_s) {
+    throw command_line_error(project, "--duration",
+                             fmt::format("need duration > 0 s and 0 < output step <= duration, got {} s and {} s",
+                                         request.duration_s, request.output_step_s));
   }
   const LoadCase& load_case = find_load_case(project, request.load_case);
   const Environment& environment = environment_of(project, load_case);
 
   DynamicModel model;
   try {
-    model.statics = request.statics ? *request.statics
-                                    : run_static_case(validated, {request.load_case, std::nullopt, false});
+    model.statics =
+        request.statics ? *request.statics : run_static_case(validated, {request.load_case, std::nullopt, false});
   } catch (const engine::TableRangeError& e) {
     if (environment.waves) heading_error(project, environment.name, "mean drift (hull.mean_drift)", e);
     throw;
@@ -236,38 +226,35 @@ DynamicModel build_dynamic_model(const ValidatedProject& validated,
       // (engine/hull/radiation_memory.hpp); the data must reach the
       // frequencies where B(w) has decayed, else an input error.
       try {
-        model.radiation_memory = engine::make_radiation_memory(
-            *hull.radiation, {hydro.memory_duration_s, hydro.memory_time_step_s});
+        model.radiation_memory =
+            engine::make_radiation_memory(*hull.radiation, {hydro.memory_duration_s, hydro.memory_time_step_s});
       } catch (const engine::RadiationDataError& e) {
-        throw InputError({make_issue(project, "hull.hydrodynamics.radiation",
-                                     "radiation_memory_data", e.what())});
+        throw InputError({make_issue(project, "hull.hydrodynamics.radiation", "radiation_memory_data", e.what())});
       }
       model.hull.added_mass = model.radiation_memory->added_mass_infinite;
       model.hull.radiation_memory = model.radiation_memory->kernel;
-      model.notes.push_back(fmt::format(
-          "radiation memory: A(inf) {} and a {:g} s retardation kernel at {:g} s (Cummins 1962) "
-          "instead of A(w_LF)",
-          model.radiation_memory->added_mass_infinite_from_file
-              ? "from the file's zero-period row"
-              : fmt::format("from Ogilvie's relation over {} frequencies >= {:.3g} rad/s",
-                            model.radiation_memory->ogilvie_frequencies,
-                            model.radiation_memory->ogilvie_omega_min_rad_per_s),
-          hydro.memory_duration_s, hydro.memory_time_step_s));
+      model.notes.push_back(
+          fmt::format("radiation memory: A(inf) {} and a {:g} s retardation kernel at {:g} s (Cummins 1962) "
+                      "instead of A(w_LF)",
+                      model.radiation_memory->added_mass_infinite_from_file
+                          ? "from the file's zero-period row"
+                          : fmt::format("from Ogilvie's relation over {} frequencies >= {:.3g} rad/s",
+                                        model.radiation_memory->ogilvie_frequencies,
+                                        model.radiation_memory->ogilvie_omega_min_rad_per_s),
+                      hydro.memory_duration_s, hydro.memory_time_step_s));
     }
   } else {
-    model.notes.push_back(
-        "no hull.hydrodynamics: the hull has no added mass and no wave-frequency motions");
+    model.notes.push_back("no hull.hydrodynamics: the hull has no added mass and no wave-frequency motions");
   }
 
   // Lines.
   const Eigen::Vector3d reference_point = project.hull.reference_point_g;
   const std::string damaged = load_case.damaged_line.value_or("");
-  engine::LinearizedLines linearized{model.statics.line_force, model.statics.stiffness,
-                                     model.statics.offset, std::nullopt, std::nullopt};
+  engine::LinearizedLines linearized{model.statics.line_force, model.statics.stiffness, model.statics.offset,
+                                     std::nullopt, std::nullopt};
   if (request.level == AnalysisLevel::uncoupled) {
     auto mooring = std::make_shared<LineArrayModel>(build_mooring_model(project, damaged));
-    const engine::HullPose pose_eq =
-        engine::pose_from_offset(reference_point, model.statics.offset);
+    const engine::HullPose pose_eq = engine::pose_from_offset(reference_point, model.statics.offset);
     // The rest of the array (risers; current drag on model: fe lines) held at
     // its linearization about the S-C equilibrium: F_rest0 − K_rest (q − q0).
     const engine::Vector6d rest_force =
@@ -277,8 +264,7 @@ DynamicModel build_dynamic_model(const ValidatedProject& validated,
       rest_stiffness += model.statics.line_stiffness[i];
     }
     if (!model.statics.risers.empty()) {
-      model.notes.push_back(
-          "uncoupled: risers enter linearized about the static equilibrium (F0 − K (q − q0))");
+      model.notes.push_back("uncoupled: risers enter linearized about the static equilibrium (F0 − K (q − q0))");
     }
     const engine::Vector6d q0 = model.statics.offset;
     model.loads.lines = engine::NonlinearLineForce(
@@ -309,18 +295,18 @@ DynamicModel build_dynamic_model(const ValidatedProject& validated,
   if (environment.waves && project.hull.mean_drift) {
     const engine::MeanDriftTable table = drift_table_of(project, *project.hull.mean_drift);
     try {
-      drift = std::make_shared<const engine::SlowDriftSeries>(engine::prepare_slow_drift(
-          *sea, table,
-          {reference_point.x() + model.statics.offset(0),
-           reference_point.y() + model.statics.offset(1), model.statics.offset(5)}));
+      drift = std::make_shared<const engine::SlowDriftSeries>(
+          engine::prepare_slow_drift(*sea, table,
+                                     {reference_point.x() + model.statics.offset(0),
+                                      reference_point.y() + model.statics.offset(1), model.statics.offset(5)}));
     } catch (const engine::TableRangeError& e) {
       heading_error(project, environment.name, "slow drift (hull.mean_drift)", e);
     }
     const double c = std::cos(drift->yaw_rad);
     const double s = std::sin(drift->yaw_rad);
     const engine::Vector6d& b = drift->mean_force_b;
-    model.mean_slow_drift_force << c * b(0) - s * b(1), s * b(0) + c * b(1), b(2),
-        c * b(3) - s * b(4), s * b(3) + c * b(4), b(5);
+    model.mean_slow_drift_force << c * b(0) - s * b(1), s * b(0) + c * b(1), b(2), c * b(3) - s * b(4),
+        s * b(3) + c * b(4), b(5);
     model.slow_drift = [drift](double t) { return engine::slow_drift_force(*drift, t); };
   }
   std::optional<engine::CoefficientTable> current_table;
@@ -372,8 +358,8 @@ DynamicModel build_dynamic_model(const ValidatedProject& validated,
         const engine::NpdSpectrumInput npd{wind.speed_m_per_s, height};
         input.spectrum = [npd](double f) { return engine::npd_wind_spectrum(npd, f); };
       } else {
-        const engine::ApiSpectrumInput api{
-            wind_speed, height, engine::api_turbulence_intensity(height) * wind_speed, 0.025};
+        const engine::ApiSpectrumInput api{wind_speed, height, engine::api_turbulence_intensity(height) * wind_speed,
+                                           0.025};
         input.spectrum = [api](double f) { return engine::api_wind_spectrum(api, f); };
       }
       gust = std::make_shared<const engine::WindRealization>(engine::make_wind_realization(input));
@@ -392,19 +378,15 @@ DynamicModel build_dynamic_model(const ValidatedProject& validated,
       if (drift) f += tabulated.head<6>();
       const Eigen::Vector3d hull_velocity(qd(0), qd(1), 0.0);
       if (current_table) {
-        f += engine::coefficient_load(*current_table,
-                                      {rho_w, current_velocity - hull_velocity, q(5)})
-                 .load_g;
+        f += engine::coefficient_load(*current_table, {rho_w, current_velocity - hull_velocity, q(5)}).load_g;
       }
       if (wind_table) {
         const double u = wind_speed + tabulated(6);
-        f +=
-            engine::coefficient_load(*wind_table, {rho_a, u * wind_direction - hull_velocity, q(5)})
-                .load_g;
+        f += engine::coefficient_load(*wind_table, {rho_a, u * wind_direction - hull_velocity, q(5)}).load_g;
       }
       if (members) {
-        f += engine::morison_load(members->hull, members->flow, members->pose.reference_point_g,
-                                  members->pose.rotation, t, qd)
+        f += engine::morison_load(members->hull, members->flow, members->pose.reference_point_g, members->pose.rotation,
+                                  t, qd)
                  .force;
       }
       return f;
@@ -418,20 +400,17 @@ DynamicModel build_dynamic_model(const ValidatedProject& validated,
   if (request.level == AnalysisLevel::semi_coupled_enhanced) {
     engine::Stopwatch start;
     // The plain S-C model as built so far (same forcing, same seed).
-    const engine::HullTimeSeries plain =
-        engine::simulate_hull(model.hull, model.loads, model.initial_offset,
-                              engine::Vector6d::Zero(), forced_run_options(request));
+    const engine::HullTimeSeries plain = engine::simulate_hull(model.hull, model.loads, model.initial_offset,
+                                                               engine::Vector6d::Zero(), forced_run_options(request));
     Eigen::Matrix<double, 6, Eigen::Dynamic> motion = plain.position;
-    if (const auto wf = wave_frequency_motion(project, environment, model, request, plain.times_s))
-      motion += *wf;
+    if (const auto wf = wave_frequency_motion(project, environment, model, request, plain.times_s)) motion += *wf;
     LineArrayModel mooring = build_mooring_model(project, damaged);
     std::vector<Eigen::Vector3d> fairleads_b;
     for (const auto& line : mooring.lines) fairleads_b.push_back(line->attachment_b());
     const auto covariance =
         engine::fairlead_velocity_covariance(fairleads_b, reference_point, motion, request.output_step_s);
     const LineHydrodynamicsResult lines =
-        line_hydrodynamics(mooring, engine::pose_from_offset(reference_point, model.statics.offset),
-                           covariance, rho_w);
+        line_hydrodynamics(mooring, engine::pose_from_offset(reference_point, model.statics.offset), covariance, rho_w);
     linearized.added_mass = lines.added_mass;
     linearized.damping = lines.damping;
     model.line_added_mass = lines.added_mass;
@@ -448,10 +427,8 @@ DynamicModel build_dynamic_model(const ValidatedProject& validated,
   return model;
 }
 
-DynamicAnalysisResult result_of_model(const DynamicModel& model,
-                                      const DynamicAnalysisRequest& request,
-                                      const std::string& case_name,
-                                      const std::string& environment_name) {
+DynamicAnalysisResult result_of_model(const DynamicModel& model, const DynamicAnalysisRequest& request,
+                                      const std::string& case_name, const std::string& environment_name) {
   DynamicAnalysisResult result;
   result.case_name = case_name;
   result.environment = environment_name;
@@ -466,17 +443,15 @@ DynamicAnalysisResult result_of_model(const DynamicModel& model,
   return result;
 }
 
-std::vector<TensionSeries> quasi_static_fairlead_tensions(
-    const Project& project, const std::string& damaged_line,
-    const Eigen::Matrix<double, 6, Eigen::Dynamic>& total) {
+std::vector<TensionSeries> quasi_static_fairlead_tensions(const Project& project, const std::string& damaged_line,
+                                                          const Eigen::Matrix<double, 6, Eigen::Dynamic>& total) {
   std::vector<TensionSeries> tensions;
   LineArrayModel mooring = build_mooring_model(project, damaged_line);
   const Eigen::Index n = total.cols();
   for (const auto& line : mooring.lines)
     tensions.push_back({line->name(), std::vector<double>(n), std::vector<Eigen::Vector3d>(n)});
   for (Eigen::Index k = 0; k < n; ++k) {
-    const engine::HullPose pose =
-        engine::pose_from_offset(project.hull.reference_point_g, total.col(k));
+    const engine::HullPose pose = engine::pose_from_offset(project.hull.reference_point_g, total.col(k));
     for (std::size_t l = 0; l < mooring.lines.size(); ++l) {
       const auto& line = mooring.lines[l];
       const Eigen::Vector3d fairlead = pose.reference_point_g + pose.rotation * line->attachment_b();
@@ -487,8 +462,7 @@ std::vector<TensionSeries> quasi_static_fairlead_tensions(
   return tensions;
 }
 
-DynamicAnalysisResult run_dynamic_analysis(const ValidatedProject& validated,
-                                           const DynamicAnalysisRequest& request) {
+DynamicAnalysisResult run_dynamic_analysis(const ValidatedProject& validated, const DynamicAnalysisRequest& request) {
   if (request.level == AnalysisLevel::coupled) return run_coupled_analysis(validated, request);
   const Project& project = validated.project;
   DynamicModel model = build_dynamic_model(validated, request);
@@ -505,8 +479,8 @@ DynamicAnalysisResult run_dynamic_analysis(const ValidatedProject& validated,
     auto next = std::make_shared<double>(0.0);
     const auto progress = request.progress;
     const double duration = request.duration_s;
-    model.loads.external = [inner = model.loads.external, next, progress, duration](
-                               double t, const engine::Vector6d& q, const engine::Vector6d& qd) {
+    model.loads.external = [inner = model.loads.external, next, progress, duration](double t, const engine::Vector6d& q,
+                                                                                    const engine::Vector6d& qd) {
       if (t >= *next) {
         progress(std::min(1.0, t / duration));
         *next = t + 0.01 * duration;
@@ -514,8 +488,8 @@ DynamicAnalysisResult run_dynamic_analysis(const ValidatedProject& validated,
       return inner(t, q, qd);
     };
   }
-  const engine::HullTimeSeries lf = engine::simulate_hull(
-      model.hull, model.loads, model.initial_offset, engine::Vector6d::Zero(), options);
+  const engine::HullTimeSeries lf =
+      engine::simulate_hull(model.hull, model.loads, model.initial_offset, engine::Vector6d::Zero(), options);
   if (request.progress) request.progress(1.0);
   result.times_s = lf.times_s;
   result.low_frequency = lf.position;
@@ -529,19 +503,19 @@ DynamicAnalysisResult run_dynamic_analysis(const ValidatedProject& validated,
     // Morison hull: the integration carried LF and WF together.
     for (int d = 0; d < 6; ++d) {
       const Eigen::VectorXd total = lf.position.row(d).transpose();
-      const std::vector<double> low = engine::low_pass_dft(
-          std::span<const double>(total.data(), static_cast<std::size_t>(total.size())),
-          request.output_step_s, model.wave_split_frequency_rad_per_s);
+      const std::vector<double> low =
+          engine::low_pass_dft(std::span<const double>(total.data(), static_cast<std::size_t>(total.size())),
+                               request.output_step_s, model.wave_split_frequency_rad_per_s);
       for (Eigen::Index k = 0; k < total.size(); ++k) {
         result.low_frequency(d, k) = low[static_cast<std::size_t>(k)];
         result.wave_frequency(d, k) = total(k) - low[static_cast<std::size_t>(k)];
       }
     }
     result.wave_frequency_computed = true;
-    result.notes.push_back(fmt::format(
-        "Morison hull: low- and wave-frequency motions integrated together with the member "
-        "loads; split by a zero-phase low-pass at {:.3g} rad/s ({:g} x the lowest wave frequency)",
-        model.wave_split_frequency_rad_per_s, kMorisonSplitFraction));
+    result.notes.push_back(
+        fmt::format("Morison hull: low- and wave-frequency motions integrated together with the member "
+                    "loads; split by a zero-phase low-pass at {:.3g} rad/s ({:g} x the lowest wave frequency)",
+                    model.wave_split_frequency_rad_per_s, kMorisonSplitFraction));
   } else if (auto wf = wave_frequency_motion(project, environment, model, request, lf.times_s)) {
     result.wave_frequency = std::move(*wf);
     result.wave_frequency_computed = true;
@@ -557,8 +531,7 @@ DynamicAnalysisResult run_dynamic_analysis(const ValidatedProject& validated,
   // Quasi-static fairlead tensions at the total motion.
   start.restart();
   if (request.compute_tensions) {
-    result.tensions = quasi_static_fairlead_tensions(project, load_case.damaged_line.value_or(""),
-                                                     result.total);
+    result.tensions = quasi_static_fairlead_tensions(project, load_case.damaged_line.value_or(""), result.total);
   }
   result.timing.tensions_s = start.seconds();
 

@@ -121,10 +121,10 @@ struct AnalysisTimings {
 struct DynamicModel {
   engine::HullDynamicsModel hull;
   engine::HullLoads loads;
-  engine::Vector6d initial_offset = engine::Vector6d::Zero();         ///< static equilibrium q0
-  StaticCaseResult statics;                                           ///< the S-C static case
-  std::optional<engine::Matrix6d> line_added_mass;                    ///< sc-enhanced
-  std::optional<engine::Matrix6d> line_damping;                       ///< sc-enhanced
+  engine::Vector6d initial_offset = engine::Vector6d::Zero();  ///< static equilibrium q0
+  StaticCaseResult statics;                                    ///< the S-C static case
+  std::optional<engine::Matrix6d> line_added_mass;             ///< sc-enhanced
+  std::optional<engine::Matrix6d> line_damping;                ///< sc-enhanced
   /// hull.hydrodynamics.radiation: memory — A(inf), the kernel and their diagnostics.
   std::optional<engine::RadiationMemory> radiation_memory;
   /// Morison hull in waves: the LF/WF split frequency of the integrated
@@ -143,8 +143,7 @@ struct DynamicModel {
 /// Builds the model of `request` (no integration). `fairlead_velocity_std`
 /// (m/s, per line and global axis), when given, sets the velocity amplitude of
 /// the enhanced S-C drag linearization; else a first sc pass supplies it.
-DynamicModel build_dynamic_model(const ValidatedProject& project,
-                                 const DynamicAnalysisRequest& request);
+DynamicModel build_dynamic_model(const ValidatedProject& project, const DynamicAnalysisRequest& request);
 
 struct TensionSeries {
   std::string line;
@@ -162,7 +161,7 @@ struct DynamicAnalysisResult {
   Eigen::Matrix<double, 6, Eigen::Dynamic> wave_frequency;  ///< m, rad (zero without RAOs)
   Eigen::Matrix<double, 6, Eigen::Dynamic> total;           ///< LF + WF
   bool wave_frequency_computed = false;
-  std::vector<TensionSeries> tensions;               ///< quasi-static
+  std::vector<TensionSeries> tensions;  ///< quasi-static
   /// With request.line_dynamics (mooring lines), or from the coupled run
   /// (mooring lines, then risers: their top tension).
   std::vector<LineDynamicsSeries> dynamic_tensions;
@@ -181,25 +180,22 @@ struct DynamicAnalysisResult {
 
 /// Wave-frequency hull motions (global, m, rad) of the request's case at
 /// `times_s`, from the .4 RAOs or .1 + .3; empty without them or without waves.
-std::optional<Eigen::Matrix<double, 6, Eigen::Dynamic>> wave_frequency_motions(
-    const ValidatedProject& project, const DynamicModel& model,
-    const DynamicAnalysisRequest& request, const Eigen::VectorXd& times_s);
+std::optional<Eigen::Matrix<double, 6, Eigen::Dynamic>> wave_frequency_motions(const ValidatedProject& project,
+                                                                               const DynamicModel& model,
+                                                                               const DynamicAnalysisRequest& request,
+                                                                               const Eigen::VectorXd& times_s);
 
 /// A result that carries the model's case data, notes and set-up timings
 /// (no series yet) at `request.level`.
-DynamicAnalysisResult result_of_model(const DynamicModel& model,
-                                      const DynamicAnalysisRequest& request,
-                                      const std::string& case_name,
-                                      const std::string& environment_name);
+DynamicAnalysisResult result_of_model(const DynamicModel& model, const DynamicAnalysisRequest& request,
+                                      const std::string& case_name, const std::string& environment_name);
 
 /// Quasi-static fairlead tension of every intact mooring line (catenary) at
 /// each column of `total` (hull offsets, m, rad).
-std::vector<TensionSeries> quasi_static_fairlead_tensions(
-    const Project& project, const std::string& damaged_line,
-    const Eigen::Matrix<double, 6, Eigen::Dynamic>& total);
+std::vector<TensionSeries> quasi_static_fairlead_tensions(const Project& project, const std::string& damaged_line,
+                                                          const Eigen::Matrix<double, 6, Eigen::Dynamic>& total);
 
 /// Any level; coupled goes to run_coupled_analysis (coupled_analysis.hpp).
-DynamicAnalysisResult run_dynamic_analysis(const ValidatedProject& project,
-                                           const DynamicAnalysisRequest& request);
+DynamicAnalysisResult run_dynamic_analysis(const ValidatedProject& project, const DynamicAnalysisRequest& request);
 
 }  // namespace spiral::design

@@ -10,8 +10,7 @@
 namespace spiral::design {
 namespace {
 
-ChannelSummary summarize(const std::string& name, const std::string& unit,
-                         const std::vector<double>& x, double dt_s) {
+ChannelSummary summarize(const std::string& name, const std::string& unit, const std::vector<double>& x, double dt_s) {
   ChannelSummary c;
   c.name = name;
   c.unit = unit;

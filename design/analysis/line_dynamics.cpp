@@ -42,14 +42,12 @@ DynamicLineSetup dynamic_mooring_line(const Project& project, const MooringLine&
   DynamicLineSetup setup;
   setup.model = fe_line_model(project, line, types);
   engine::FeLineModel& model = setup.model;
-  setup.environment =
-      dynamic_environment(project, current, model.sections.front().hydro_diameter_m);
+  setup.environment = dynamic_environment(project, current, model.sections.front().hydro_diameter_m);
   try {
-    setup.statics =
-        engine::solve_fe_line_statics(model, setup.environment.statics, {line.anchor_g, fairlead_g});
+    setup.statics = engine::solve_fe_line_statics(model, setup.environment.statics, {line.anchor_g, fairlead_g});
   } catch (const engine::SolverError& e) {
-    throw engine::SolverError(fmt::format(
-        "line {}: FE statics at the static equilibrium failed: {}", line.name, e.what()));
+    throw engine::SolverError(
+        fmt::format("line {}: FE statics at the static equilibrium failed: {}", line.name, e.what()));
   }
   // Polyester: the dynamic EA at each section's mean static tension.
   const std::vector<int> node_section = engine::node_sections(model, setup.statics);
@@ -71,14 +69,13 @@ DynamicLineSetup dynamic_riser(const Project& project, const RiserDesign& design
                                const Eigen::Vector3d& hang_off_g) {
   DynamicLineSetup setup;
   setup.model = design.fe_model;
-  setup.environment = dynamic_environment(
-      project, current, design.sections.front().properties.hydrodynamic_diameter_m);
+  setup.environment = dynamic_environment(project, current, design.sections.front().properties.hydrodynamic_diameter_m);
   const std::unique_ptr<engine::FeStaticLine> line = riser_static_line(project, design, current);
   try {
     line->solve(hang_off_g);
   } catch (const engine::SolverError& e) {
-    throw engine::SolverError(fmt::format(
-        "riser {}: FE statics at the static equilibrium failed: {}", design.name, e.what()));
+    throw engine::SolverError(
+        fmt::format("riser {}: FE statics at the static equilibrium failed: {}", design.name, e.what()));
   }
   setup.statics = *line->last_result();
   return setup;
@@ -109,10 +106,8 @@ LineDynamicsSeries run_one(const Project& project, const std::string& name, cons
 
   std::vector<Eigen::Vector3d> samples;
   samples.reserve(static_cast<std::size_t>(input.motion.cols()));
-  for (Eigen::Index k = 0; k < input.motion.cols(); ++k)
-    samples.push_back(fairlead_at(input.motion.col(k)));
-  const auto trajectory =
-      std::make_shared<const engine::SampledTrajectory>(input.t0_s, input.dt_s, std::move(samples));
+  for (Eigen::Index k = 0; k < input.motion.cols(); ++k) samples.push_back(fairlead_at(input.motion.col(k)));
+  const auto trajectory = std::make_shared<const engine::SampledTrajectory>(input.t0_s, input.dt_s, std::move(samples));
   engine::FeDynamicsOptions options;
   options.start_time_s = input.t0_s;
   options.max_steps_between_outputs = input.max_steps_between_samples;
@@ -124,8 +119,8 @@ LineDynamicsSeries run_one(const Project& project, const std::string& name, cons
     engine::EndKinematics k;
     k.position_m = rest + r.value * d;
     k.velocity_m_per_s = r.rate_per_s * d + r.value * p.velocity_m_per_s;
-    k.acceleration_m_per_s2 = r.rate2_per_s2 * d + 2.0 * r.rate_per_s * p.velocity_m_per_s +
-                              r.value * p.acceleration_m_per_s2;
+    k.acceleration_m_per_s2 =
+        r.rate2_per_s2 * d + 2.0 * r.rate_per_s * p.velocity_m_per_s + r.value * p.acceleration_m_per_s2;
     return k;
   };
 
@@ -150,16 +145,14 @@ LineDynamicsSeries run_one(const Project& project, const std::string& name, cons
 
 }  // namespace
 
-std::vector<LineDynamicsSeries> run_line_dynamics(const Project& project,
-                                                  const LineDynamicsInput& input) {
+std::vector<LineDynamicsSeries> run_line_dynamics(const Project& project, const LineDynamicsInput& input) {
   if (!(input.dt_s > 0.0) || input.motion.cols() < 2 || !(input.ramp_s >= 0.0)) {
     throw std::invalid_argument(
         fmt::format("line dynamics: needs dt > 0 s, >= 2 motion samples and ramp >= 0 s, "
                     "got {} s, {}, {} s",
                     input.dt_s, input.motion.cols(), input.ramp_s));
   }
-  if (!input.motion.allFinite())
-    throw std::invalid_argument("line dynamics: the hull motion has non-finite samples");
+  if (!input.motion.allFinite()) throw std::invalid_argument("line dynamics: the hull motion has non-finite samples");
   const std::vector<LineTypeProperties> types = resolve_line_types(project);
   std::vector<const MooringLine*> lines;
   for (const MooringLine& l : project.mooring.lines) {
@@ -172,19 +165,16 @@ std::vector<LineDynamicsSeries> run_line_dynamics(const Project& project,
     const auto k = static_cast<std::size_t>(i);
     if (k < lines.size()) {
       const MooringLine& line = *lines[k];
-      out[k] = run_one(project, line.name, "line", line.fairlead_b,
-                       [&](const Eigen::Vector3d& top) {
-                         return dynamic_mooring_line(project, line, types, input.current, top);
-                       },
-                       input);
+      out[k] = run_one(
+          project, line.name, "line", line.fairlead_b,
+          [&](const Eigen::Vector3d& top) { return dynamic_mooring_line(project, line, types, input.current, top); },
+          input);
     } else {
       const Riser& riser = project.risers[k - lines.size()];
       const RiserDesign design = riser_design(project, riser);
-      out[k] = run_one(project, riser.name, "riser", design.hang_off_b,
-                       [&](const Eigen::Vector3d& top) {
-                         return dynamic_riser(project, design, input.current, top);
-                       },
-                       input);
+      out[k] = run_one(
+          project, riser.name, "riser", design.hang_off_b,
+          [&](const Eigen::Vector3d& top) { return dynamic_riser(project, design, input.current, top); }, input);
     }
   });
   return out;

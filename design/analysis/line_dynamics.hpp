@@ -45,23 +45,22 @@
 namespace spiral::design {
 
 struct LineDynamicsInput {
-  std::string damaged_line;                       ///< excluded mooring line ("" intact)
-  std::optional<engine::CurrentProfile> current;  ///< on the lines
-  engine::Vector6d static_offset =
-      engine::Vector6d::Zero();  ///< hull equilibrium the lines start from
+  std::string damaged_line;                                   ///< excluded mooring line ("" intact)
+  std::optional<engine::CurrentProfile> current;              ///< on the lines
+  engine::Vector6d static_offset = engine::Vector6d::Zero();  ///< hull equilibrium the lines start from
   double t0_s = 0.0;
   double dt_s = 0.5;                                ///< sample spacing of `motion`, > 0
   Eigen::Matrix<double, 6, Eigen::Dynamic> motion;  ///< hull offset (m, rad) at t0 + k dt
   double ramp_s = 20.0;                             ///< build-up ramp, >= 0
   long max_steps_between_samples = 500000;          ///< integrator work limit per sample
-  bool include_risers = true;  ///< risers too (FE with bending, hang-off moving with the hull)
+  bool include_risers = true;                       ///< risers too (FE with bending, hang-off moving with the hull)
   /// Waves on the lines (linear kinematics at each element's static
   /// midpoint, engine/environment/fixed_point_wave_kinematics.hpp); null: none.
   std::shared_ptr<const engine::WaveRealization> sea;
 };
 
 struct LineDynamicsSeries {
-  std::string line;  ///< mooring line or riser name
+  std::string line;               ///< mooring line or riser name
   std::vector<double> tension_N;  ///< top (fairlead, hang-off) tension at the motion's sample times
   engine::IdaStatistics solver;
   double wall_s = 0.0;
@@ -83,11 +82,9 @@ DynamicLineSetup dynamic_mooring_line(const Project& project, const MooringLine&
                                       const Eigen::Vector3d& top_g);
 /// A riser (FE with bending, from its foot to the hang-off at `top_g`).
 DynamicLineSetup dynamic_riser(const Project& project, const RiserDesign& design,
-                               const std::optional<engine::CurrentProfile>& current,
-                               const Eigen::Vector3d& top_g);
+                               const std::optional<engine::CurrentProfile>& current, const Eigen::Vector3d& top_g);
 
 /// Every intact mooring line, then (include_risers) every riser.
-std::vector<LineDynamicsSeries> run_line_dynamics(const Project& project,
-                                                  const LineDynamicsInput& input);
+std::vector<LineDynamicsSeries> run_line_dynamics(const Project& project, const LineDynamicsInput& input);
 
 }  // namespace spiral::design

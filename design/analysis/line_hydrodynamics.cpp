@@ -39,11 +39,9 @@ Eigen::Vector3d position_at_arc(const std::vector<engine::LineProfilePoint>& pro
 }  // namespace
 
 LineHydrodynamicsResult line_hydrodynamics(LineArrayModel& model, const engine::HullPose& pose,
-                                           const std::vector<Eigen::Matrix3d>& covariance,
-                                           double rho) {
+                                           const std::vector<Eigen::Matrix3d>& covariance, double rho) {
   if (covariance.size() != model.lines.size() || model.designs.size() != model.lines.size()) {
-    throw std::invalid_argument(
-        "line_hydrodynamics: one covariance per catenary mooring line is needed");
+    throw std::invalid_argument("line_hydrodynamics: one covariance per catenary mooring line is needed");
   }
   LineHydrodynamicsResult out;
   for (std::size_t l = 0; l < model.lines.size(); ++l) {
@@ -59,8 +57,8 @@ LineHydrodynamicsResult line_hydrodynamics(LineArrayModel& model, const engine::
       const engine::LineState minus = line.state(x_f - step, kPointsPerSegment);
       for (std::size_t j = 0; j < n; ++j) {
         const double arc = base.profile[j].arc_length_m;
-        J[j].col(i) = (position_at_arc(plus.profile, arc) - position_at_arc(minus.profile, arc)) /
-                      (2.0 * kFairleadStep_m);
+        J[j].col(i) =
+            (position_at_arc(plus.profile, arc) - position_at_arc(minus.profile, arc)) / (2.0 * kFairleadStep_m);
       }
     }
     line.solve(x_f);  // leave the warm start at the equilibrium
@@ -76,15 +74,13 @@ LineHydrodynamicsResult line_hydrodynamics(LineArrayModel& model, const engine::
       if (t.norm() <= 0.0) continue;
       t.normalize();
       const Eigen::Matrix3d Pn = Eigen::Matrix3d::Identity() - t * t.transpose();
-      const auto& type =
-          model.designs[l].segment_types.at(static_cast<std::size_t>(base.profile[j].segment));
+      const auto& type = model.designs[l].segment_types.at(static_cast<std::size_t>(base.profile[j].segment));
       const double d = type.hydrodynamic_diameter_m;
       const Eigen::Matrix3d PJ = Pn * J[j];
       const double sigma = std::sqrt(std::max(0.0, (PJ * covariance[l] * PJ.transpose()).trace()));
       sigma_sum += sigma;
       const double c_eq = std::sqrt(8.0 / std::numbers::pi) * sigma;
-      A_f += J[j].transpose() *
-             (rho * type.added_mass_normal * 0.25 * std::numbers::pi * d * d * ds * Pn) * J[j];
+      A_f += J[j].transpose() * (rho * type.added_mass_normal * 0.25 * std::numbers::pi * d * d * ds * Pn) * J[j];
       B_f += J[j].transpose() * (0.5 * rho * type.drag_normal * d * ds * c_eq * Pn) * J[j];
     }
     out.line_drag_velocity_std_m_per_s.push_back(n > 0 ? sigma_sum / static_cast<double>(n) : 0.0);

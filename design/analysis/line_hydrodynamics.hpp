@@ -45,9 +45,8 @@ struct LineHydrodynamicsResult {
 
 /// `model` holds catenary mooring lines only (build_mooring_model);
 /// `fairlead_velocity_covariance` one 3x3 (m²/s², global) per line of model.
-LineHydrodynamicsResult line_hydrodynamics(
-    LineArrayModel& model, const engine::HullPose& pose,
-    const std::vector<Eigen::Matrix3d>& fairlead_velocity_covariance,
-    double water_density_kg_per_m3);
+LineHydrodynamicsResult line_hydrodynamics(LineArrayModel& model, const engine::HullPose& pose,
+                                           const std::vector<Eigen::Matrix3d>& fairlead_velocity_covariance,
+                                           double water_density_kg_per_m3);
 
 }  // namespace spiral::design

@@ -50,8 +50,7 @@ std::vector<NaturalMode> natural_modes(const engine::Matrix6d& stiffness, const 
     const double omega_squared = solver.eigenvalues()(i);
     if (!(omega_squared > 0.0)) continue;  // no restoring in this mode: no period
     // The dominant DOF by kinetic-energy share: |x_j| sqrt(M_jj).
-    const engine::Vector6d shape = solver.eigenvectors().col(i).cwiseAbs().cwiseProduct(
-        mass.diagonal().cwiseSqrt());
+    const engine::Vector6d shape = solver.eigenvectors().col(i).cwiseAbs().cwiseProduct(mass.diagonal().cwiseSqrt());
     Eigen::Index dominant = 0;
     shape.maxCoeff(&dominant);
     modes.push_back({2.0 * std::numbers::pi / std::sqrt(omega_squared), kDofNames[dominant]});
@@ -63,8 +62,8 @@ std::vector<NaturalMode> natural_modes(const engine::Matrix6d& stiffness, const 
 
 }  // namespace
 
-StaticCaseResult run_static_case(const ValidatedProject& validated,
-                                 const StaticCaseRequest& request, RestSolutionCache* cache) {
+StaticCaseResult run_static_case(const ValidatedProject& validated, const StaticCaseRequest& request,
+                                 RestSolutionCache* cache) {
   const Project& project = validated.project;
   StaticCaseResult result;
   result.case_name = "still-water";
@@ -81,7 +80,7 @@ StaticCaseResult run_static_case(const ValidatedProject& validated,
     std::string names;
     for (const MooringLine& l : project.mooring.lines) names += (names.empty() ? "" : ", ") + l.name;
     throw command_line_error(project, "--damaged",
-                         fmt::format("no mooring line named \"{}\" (defined: {})", *damaged, names));
+                             fmt::format("no mooring line named \"{}\" (defined: {})", *damaged, names));
   }
   result.damaged_line = damaged;
   result.condition = damaged ? "damaged" : "intact";
@@ -108,9 +107,10 @@ StaticCaseResult run_static_case(const ValidatedProject& validated,
   const HullModel hull = build_hull_model(project);
   LineArrayModel lines = build_line_array(project, line_options);
   if (request.load_case) {
-    result.design_condition = std::find_if(project.load_cases.begin(), project.load_cases.end(), [&](const LoadCase& c) {
-                                return c.name == *request.load_case;
-                              })->condition;
+    result.design_condition =
+        std::find_if(project.load_cases.begin(), project.load_cases.end(), [&](const LoadCase& c) {
+          return c.name == *request.load_case;
+        })->condition;
   }
 
   engine::Stopwatch start;
@@ -118,8 +118,7 @@ StaticCaseResult run_static_case(const ValidatedProject& validated,
     // The equilibrium's first evaluation is at the rest position: take the
     // FE lines solved there in an earlier case with this environment, solve
     // the others now (the equilibrium then finds them solved), keep them all.
-    const engine::HullPose rest =
-        engine::pose_from_offset(lines.reference_point_g, engine::Vector6d::Zero());
+    const engine::HullPose rest = engine::pose_from_offset(lines.reference_point_g, engine::Vector6d::Zero());
     std::vector<engine::FeStaticLine*> fe_lines;
     for (const auto& line : lines.lines) {
       auto* fe = dynamic_cast<engine::FeStaticLine*>(line.get());
@@ -158,15 +157,13 @@ StaticCaseResult run_static_case(const ValidatedProject& validated,
   if (request.finite_difference_check) {
     result.stiffness_finite_difference = engine::finite_difference_stiffness(lines.lines, equilibrium.pose);
     result.stiffness_check_relative_difference =
-        (result.stiffness - *result.stiffness_finite_difference).norm() /
-        result.stiffness_finite_difference->norm();
+        (result.stiffness - *result.stiffness_finite_difference).norm() / result.stiffness_finite_difference->norm();
   }
 
   std::vector<engine::LineState> states;
   for (std::size_t i = 0; i < lines.designs.size(); ++i) {
     const auto& line = lines.lines[i];
-    states.push_back(line->state(equilibrium.pose.reference_point_g +
-                                     equilibrium.pose.rotation * line->attachment_b(),
+    states.push_back(line->state(equilibrium.pose.reference_point_g + equilibrium.pose.rotation * line->attachment_b(),
                                  kResultProfilePointsPerSegment));
   }
   result.lines = line_statics_rows(lines, states);

@@ -52,15 +52,15 @@ struct StaticCaseResult {
 
   engine::Vector6d offset = engine::Vector6d::Zero();  ///< m, rad
   OffsetSummary offset_summary;
-  std::vector<LineStaticsRow> lines;       ///< mooring lines
+  std::vector<LineStaticsRow> lines;  ///< mooring lines
   std::vector<RiserStaticsRow> risers;
   DesignCondition design_condition = DesignCondition::normal;  ///< selects the riser design factor
 
-  engine::Vector6d line_force = engine::Vector6d::Zero();         ///< F of the line array, N, N·m
-  engine::Matrix6d stiffness = engine::Matrix6d::Zero();          ///< analytic K of the line array
-  std::optional<engine::Matrix6d> stiffness_finite_difference;    ///< central differences
-  std::optional<double> stiffness_check_relative_difference;      ///< ‖K − K_fd‖ / ‖K_fd‖
-  std::vector<engine::Matrix6d> line_stiffness;                   ///< per line: mooring lines, then risers
+  engine::Vector6d line_force = engine::Vector6d::Zero();       ///< F of the line array, N, N·m
+  engine::Matrix6d stiffness = engine::Matrix6d::Zero();        ///< analytic K of the line array
+  std::optional<engine::Matrix6d> stiffness_finite_difference;  ///< central differences
+  std::optional<double> stiffness_check_relative_difference;    ///< ‖K − K_fd‖ / ‖K_fd‖
+  std::vector<engine::Matrix6d> line_stiffness;                 ///< per line: mooring lines, then risers
   /// Per line, same order: its 6-DOF force on the hull (about the displaced
   /// reference point, global axes); they sum to line_force, as the
   /// line_stiffness sum to stiffness.

@@ -18,17 +18,17 @@ struct LineStaticsRow {
   double fairlead_tension_N = 0.0;
   double fairlead_horizontal_N = 0.0;
   double fairlead_vertical_N = 0.0;
-  double fairlead_angle_deg = 0.0;       ///< line angle at the fairlead, from horizontal
+  double fairlead_angle_deg = 0.0;  ///< line angle at the fairlead, from horizontal
   double anchor_tension_N = 0.0;
   double anchor_horizontal_N = 0.0;
   double anchor_vertical_N = 0.0;
   double anchor_uplift_angle_deg = 0.0;  ///< from the seabed; > 0 pulls the anchor up
   double laid_length_m = 0.0;
-  double touchdown_distance_m = 0.0;     ///< horizontal, from the anchor
-  double max_tension_N = 0.0;            ///< largest along the line
-  double utilization = 0.0;              ///< max over segments of (max tension in segment / segment MBL)
-  std::string governing_segment_type;    ///< line type of the segment that sets the utilization
-  std::string regime;                    ///< suspended | touchdown | slack
+  double touchdown_distance_m = 0.0;   ///< horizontal, from the anchor
+  double max_tension_N = 0.0;          ///< largest along the line
+  double utilization = 0.0;            ///< max over segments of (max tension in segment / segment MBL)
+  std::string governing_segment_type;  ///< line type of the segment that sets the utilization
+  std::string regime;                  ///< suspended | touchdown | slack
   int iterations = 0;
   /// Points along the line, anchor to fairlead: positions and effective
   /// tension (for profile plots, 3D views and tension-along-line plots).
@@ -41,7 +41,7 @@ struct LineStaticsRow {
 inline constexpr int kResultProfilePointsPerSegment = 20;
 
 struct StaticsResult {
-  engine::Vector6d offset = engine::Vector6d::Zero();      ///< m, rad
+  engine::Vector6d offset = engine::Vector6d::Zero();  ///< m, rad
   std::vector<LineStaticsRow> lines;
   engine::Vector6d hull_force = engine::Vector6d::Zero();  ///< N, N·m about the displaced reference point
   double wall_time_s = 0.0;

@@ -29,7 +29,7 @@ struct DynamicTensionCheck {
   double factor = 0.0;
   double utilization = 0.0;
 };
-DynamicTensionCheck dynamic_tension_check(const MooringCriteria& criteria, bool damaged,
-                                          double mean_N, double mpm_N, double mbl_N);
+DynamicTensionCheck dynamic_tension_check(const MooringCriteria& criteria, bool damaged, double mean_N, double mpm_N,
+                                          double mbl_N);
 
 }  // namespace spiral::design

@@ -21,8 +21,7 @@ Eigen::Vector3d flex_joint_axis_b(const RiserDesign& design) {
   // The joint is installed along the riser's at-rest top tangent: the design
   // top angle from the downward vertical, in the vertical plane of the azimuth.
   const double s = std::sin(design.design_top_angle_rad);
-  return {s * std::cos(design.azimuth_rad), s * std::sin(design.azimuth_rad),
-          -std::cos(design.design_top_angle_rad)};
+  return {s * std::cos(design.azimuth_rad), s * std::sin(design.azimuth_rad), -std::cos(design.design_top_angle_rad)};
 }
 
 RiserStaticsRow riser_statics_row(const Project& project, const RiserDesign& design,
@@ -43,8 +42,7 @@ RiserStaticsRow riser_statics_row(const Project& project, const RiserDesign& des
   // atan2 of |a × t| and a · t keeps small angles accurate.
   const Eigen::Vector3d axis_g = hull_rotation * flex_joint_axis_b(design);
   const Eigen::Vector3d tangent_g = top.normalized();
-  row.flex_joint_rotation_deg =
-      std::atan2(axis_g.cross(tangent_g).norm(), axis_g.dot(tangent_g)) * kRadToDeg;
+  row.flex_joint_rotation_deg = std::atan2(axis_g.cross(tangent_g).norm(), axis_g.dot(tangent_g)) * kRadToDeg;
   const Eigen::Vector3d hang_off_g = solution.node_position_m.back();
   if (solution.touchdown) row.touchdown_distance_m = (solution.touchdown->position_m - hang_off_g).head<2>().norm();
 
@@ -68,9 +66,8 @@ RiserStaticsRow riser_statics_row(const Project& project, const RiserDesign& des
     // the sea's hydrostatic head; T_w = T_e + p_i A_i − p_e A_o (Sparks 1984),
     // for a steel wall and a flexible's layered wall alike.
     const double z = q.position_g.z();
-    const engine::PipePressures pressures{
-        engine::internal_pressure_Pa(internal, z, water.gravity_m_per_s2),
-        engine::external_pressure_Pa(z, water)};
+    const engine::PipePressures pressures{engine::internal_pressure_Pa(internal, z, water.gravity_m_per_s2),
+                                          engine::external_pressure_Pa(z, water)};
     q.wall_tension_N = engine::wall_tension_N(q.effective_tension_N, pressures, sd.properties);
     if (sd.steel) {
       engine::StressCheckInput input;
@@ -86,15 +83,15 @@ RiserStaticsRow riser_statics_row(const Project& project, const RiserDesign& des
       row.min_effective_tension_arc_m = q.arc_length_m;
     }
     row.max_curvature_per_m = std::max(row.max_curvature_per_m, q.curvature_per_m);
-    if (q.von_mises_utilization && (!row.max_von_mises_utilization ||
-                                    *q.von_mises_utilization > *row.max_von_mises_utilization)) {
+    if (q.von_mises_utilization &&
+        (!row.max_von_mises_utilization || *q.von_mises_utilization > *row.max_von_mises_utilization)) {
       row.max_von_mises_utilization = q.von_mises_utilization;
       row.max_von_mises_arc_m = q.arc_length_m;
     }
     row.profile.push_back(q);
   }
-  row.min_bending_radius_m = row.max_curvature_per_m > 0.0 ? 1.0 / row.max_curvature_per_m
-                                                           : std::numeric_limits<double>::infinity();
+  row.min_bending_radius_m =
+      row.max_curvature_per_m > 0.0 ? 1.0 / row.max_curvature_per_m : std::numeric_limits<double>::infinity();
 
   const RiserCriteria& c = design.criteria;
   const auto add = [&](std::string name, double value, double limit, std::string unit, double utilization) {
@@ -109,7 +106,8 @@ RiserStaticsRow riser_statics_row(const Project& project, const RiserDesign& des
   const double deficit_N = c.min_effective_tension_N - row.min_effective_tension_N;
   add("min_effective_tension", row.min_effective_tension_N, c.min_effective_tension_N, "N",
       deficit_N >= 0.0 ? 1.0 + deficit_N / row.top_tension_N : 0.0);
-  if (c.max_top_tension_N) add("max_top_tension", row.top_tension_N, *c.max_top_tension_N, "N", row.top_tension_N / *c.max_top_tension_N);
+  if (c.max_top_tension_N)
+    add("max_top_tension", row.top_tension_N, *c.max_top_tension_N, "N", row.top_tension_N / *c.max_top_tension_N);
   if (c.max_top_angle_rad) {
     add("max_top_angle", row.top_angle_deg, *c.max_top_angle_rad * kRadToDeg, "deg",
         row.top_angle_deg / (*c.max_top_angle_rad * kRadToDeg));

@@ -20,7 +20,8 @@ namespace spiral::design {
 /// effective tension is a floor, checked pass/fail: its utilization is 0 while
 /// T_min > limit and 1 + (limit − T_min)/T_top at or below it.
 struct RiserCriterionCheck {
-  std::string criterion;  ///< von_mises | min_effective_tension | max_top_tension | max_top_angle | flex_joint_rotation | min_bending_radius
+  std::string criterion;  ///< von_mises | min_effective_tension | max_top_tension | max_top_angle | flex_joint_rotation
+                          ///< | min_bending_radius
   double value = 0.0;     ///< in `unit`
   double limit = 0.0;     ///< in `unit`
   std::string unit;
@@ -32,7 +33,7 @@ struct RiserCriterionCheck {
 struct RiserProfilePoint {
   Eigen::Vector3d position_g = Eigen::Vector3d::Zero();  ///< m, global
   double arc_length_m = 0.0;                             ///< unstretched, from the foot
-  int section = 0;  ///< index into the project's Riser::sections (listed from the hang-off down)
+  int section = 0;         ///< index into the project's Riser::sections (listed from the hang-off down)
   bool on_seabed = false;  ///< at or before the touchdown point
   double effective_tension_N = 0.0;
   /// True wall tension T_w = T_e + p_i A_i − p_e A_o (Sparks 1984), with the
@@ -50,24 +51,24 @@ struct RiserStaticsRow {
   std::string name;
   std::string kind;
   double top_tension_N = 0.0;
-  double top_angle_deg = 0.0;            ///< from vertical
+  double top_angle_deg = 0.0;  ///< from vertical
   /// Angle between the top tangent and the flex-joint axis (the at-rest top
   /// tangent at the design top angle in the riser's azimuth plane, fixed to
   /// the hull and turned with it), deg; includes the azimuthal swing.
   double flex_joint_rotation_deg = 0.0;
-  double touchdown_distance_m = 0.0;     ///< horizontal, hang-off to touchdown point (0: none)
+  double touchdown_distance_m = 0.0;  ///< horizontal, hang-off to touchdown point (0: none)
   double min_effective_tension_N = 0.0;
   double min_effective_tension_arc_m = 0.0;  ///< from the foot
   double max_curvature_per_m = 0.0;
-  double min_bending_radius_m = 0.0;     ///< 1 / max curvature
+  double min_bending_radius_m = 0.0;  ///< 1 / max curvature
   /// Largest von Mises utilization over the steel sections and where (arc
   /// from the foot); empty when no section has a steel wall (a flexible pipe
   /// is checked by its bending radius and tensions instead).
   std::optional<double> max_von_mises_utilization;
   std::optional<double> max_von_mises_arc_m;
   std::vector<RiserCriterionCheck> checks;
-  std::string governing_criterion;       ///< the check with the largest utilization
-  double utilization = 0.0;              ///< of the governing check
+  std::string governing_criterion;  ///< the check with the largest utilization
+  double utilization = 0.0;         ///< of the governing check
   bool passes = true;
   std::vector<RiserProfilePoint> profile;  ///< every FE node, foot first
 };

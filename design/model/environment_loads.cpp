@@ -19,8 +19,7 @@ engine::CoefficientTable table_of(const HullLoadCoefficients& c) {
 engine::MeanDriftTable drift_table_of(const Project& project, const MeanDrift& drift) {
   if (const auto* file = std::get_if<MeanDriftFile>(&drift)) {
     return engine::read_wamit_12d_mean_drift(file->file, project.site.water_density_kg_per_m3,
-                                             project.site.gravity_m_per_s2, file->ulen_m,
-                                             file->period_scale);
+                                             project.site.gravity_m_per_s2, file->ulen_m, file->period_scale);
   }
   const auto& t = std::get<design::MeanDriftTable>(drift);
   engine::MeanDriftTable table;
@@ -29,7 +28,8 @@ engine::MeanDriftTable drift_table_of(const Project& project, const MeanDrift& d
   const auto fill = [&](int dof, const std::vector<std::vector<double>>& rows) {
     Eigen::MatrixXd m(t.frequencies_rad_per_s.size(), t.headings_rad.size());
     for (std::size_t j = 0; j < rows.size(); ++j)
-      for (std::size_t k = 0; k < rows[j].size(); ++k) m(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(j)) = rows[j][k];
+      for (std::size_t k = 0; k < rows[j].size(); ++k)
+        m(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(j)) = rows[j][k];
     table.coefficient[static_cast<std::size_t>(dof)] = m;
     table.present[static_cast<std::size_t>(dof)] = true;
   };
@@ -37,9 +37,8 @@ engine::MeanDriftTable drift_table_of(const Project& project, const MeanDrift& d
   fill(1, t.sway_N_per_m2);
   fill(5, t.yaw_N_m_per_m2);
   for (int dof : {2, 3, 4}) {
-    table.coefficient[static_cast<std::size_t>(dof)] =
-        Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(t.frequencies_rad_per_s.size()),
-                              static_cast<Eigen::Index>(t.headings_rad.size()));
+    table.coefficient[static_cast<std::size_t>(dof)] = Eigen::MatrixXd::Zero(
+        static_cast<Eigen::Index>(t.frequencies_rad_per_s.size()), static_cast<Eigen::Index>(t.headings_rad.size()));
   }
   return table;
 }
@@ -83,9 +82,9 @@ MeanEnvironmentLoad mean_environment_load(const Project& project, const Environm
           {environment.wind->speed_m_per_s, hull.wind_coefficients->reference_height_m});
       wind_heading = environment.wind->heading_rad;
     } else {
-      result.notes.push_back(fmt::format(
-          "wind {:.1f} m/s: no hull.wind_coefficients in the project, wind load on the hull not modelled",
-          environment.wind->speed_m_per_s));
+      result.notes.push_back(
+          fmt::format("wind {:.1f} m/s: no hull.wind_coefficients in the project, wind load on the hull not modelled",
+                      environment.wind->speed_m_per_s));
     }
   }
 
@@ -95,7 +94,8 @@ MeanEnvironmentLoad mean_environment_load(const Project& project, const Environm
     if (hull.current_coefficients) {
       current_table = table_of(*hull.current_coefficients);
     } else {
-      result.notes.push_back("current: no hull.current_coefficients in the project, current load on the hull not modelled");
+      result.notes.push_back(
+          "current: no hull.current_coefficients in the project, current load on the hull not modelled");
     }
   }
 
@@ -112,9 +112,9 @@ MeanEnvironmentLoad mean_environment_load(const Project& project, const Environm
       }
       drift_input = input;
     } else {
-      result.notes.push_back(fmt::format(
-          "waves Hs {:.1f} m: no hull.mean_drift in the project, mean wave drift not modelled",
-          environment.waves->hs_m));
+      result.notes.push_back(
+          fmt::format("waves Hs {:.1f} m: no hull.mean_drift in the project, mean wave drift not modelled",
+                      environment.waves->hs_m));
     }
   }
 
@@ -123,7 +123,8 @@ MeanEnvironmentLoad mean_environment_load(const Project& project, const Environm
   result.load = [=](const engine::Vector6d& offset) {
     engine::Vector6d load = engine::Vector6d::Zero();
     const double yaw = offset(5);
-    if (wind_table) load += engine::wind_load(*wind_table, wind_speed_at_table_height, wind_heading, yaw, air_density).load_g;
+    if (wind_table)
+      load += engine::wind_load(*wind_table, wind_speed_at_table_height, wind_heading, yaw, air_density).load_g;
     if (current_table) load += engine::current_load(*current_table, *current, water_density, yaw).load_g;
     if (drift_table) {
       engine::MeanDriftInput input = *drift_input;

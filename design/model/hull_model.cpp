@@ -88,15 +88,13 @@ HullModel build_hull_model(const Project& project) {
   model.mass_matrix = engine::rigid_body_mass_matrix(hull.mass_kg, hull.center_of_gravity_b, inertia);
   if (hull.hydrodynamics && hull.hydrodynamics->model == HullHydrodynamicsModel::morison) {
     model.morison = morison_hull_of(project);
-    model.low_frequency_added_mass =
-        engine::morison_added_mass(*model.morison, project.site.water_density_kg_per_m3);
+    model.low_frequency_added_mass = engine::morison_added_mass(*model.morison, project.site.water_density_kg_per_m3);
   } else if (hull.hydrodynamics) {
-    model.radiation = engine::read_wamit_1(hull.hydrodynamics->radiation_file,
-                                           wamit_options_of(project, *hull.hydrodynamics));
-    model.added_mass_frequency_rad_per_s = hull.hydrodynamics->added_mass_frequency_rad_per_s.value_or(
-        model.radiation->omega_rad_per_s.front());
-    model.low_frequency_added_mass =
-        engine::added_mass_at(*model.radiation, model.added_mass_frequency_rad_per_s);
+    model.radiation =
+        engine::read_wamit_1(hull.hydrodynamics->radiation_file, wamit_options_of(project, *hull.hydrodynamics));
+    model.added_mass_frequency_rad_per_s =
+        hull.hydrodynamics->added_mass_frequency_rad_per_s.value_or(model.radiation->omega_rad_per_s.front());
+    model.low_frequency_added_mass = engine::added_mass_at(*model.radiation, model.added_mass_frequency_rad_per_s);
   }
   return model;
 }

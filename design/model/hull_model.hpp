@@ -15,7 +15,7 @@
 namespace spiral::design {
 
 struct HullModel {
-  engine::HullStaticModel statics;      ///< restoring (buoyancy + gravity) and rest force
+  engine::HullStaticModel statics;  ///< restoring (buoyancy + gravity) and rest force
   engine::HydrostaticRestoring restoring;
   engine::Matrix6d mass_matrix = engine::Matrix6d::Zero();  ///< rigid body, about the reference point
   /// A(w), B(w) from hull.hydrodynamics.radiation_file (absent without it).

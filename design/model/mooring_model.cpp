@@ -10,10 +10,8 @@
 
 namespace spiral::design {
 
-const LineTypeProperties& find_type(const std::vector<LineTypeProperties>& types,
-                                    const std::string& name) {
-  const auto it = std::find_if(types.begin(), types.end(),
-                               [&](const LineTypeProperties& t) { return t.name == name; });
+const LineTypeProperties& find_type(const std::vector<LineTypeProperties>& types, const std::string& name) {
+  const auto it = std::find_if(types.begin(), types.end(), [&](const LineTypeProperties& t) { return t.name == name; });
   if (it == types.end()) throw std::invalid_argument(fmt::format("unknown line type '{}'", name));
   return *it;
 }
@@ -22,8 +20,7 @@ std::vector<LineTypeProperties> resolve_line_types(const Project& project) {
   std::vector<LineTypeProperties> resolved;
   resolved.reserve(project.line_types.size());
   for (const LineTypeInput& input : project.line_types) {
-    resolved.push_back(resolve_line_type(input, project.site.water_density_kg_per_m3,
-                                         project.site.gravity_m_per_s2));
+    resolved.push_back(resolve_line_type(input, project.site.water_density_kg_per_m3, project.site.gravity_m_per_s2));
   }
   return resolved;
 }
@@ -80,21 +77,19 @@ engine::FeLineModel fe_model_of(const Project& project, const MooringLine& line,
                                            fairlead_g.z() - line.anchor_g.z(),
                                            std::max(0.0, line.anchor_g.z() + project.site.depth_m)};
     try {
-      model.refinement = touchdown_refinement_zone(
-          line.fe, engine::solve_catenary(catenary, at_rest).laid_length_m);
+      model.refinement = touchdown_refinement_zone(line.fe, engine::solve_catenary(catenary, at_rest).laid_length_m);
     } catch (const engine::SolverError& error) {
-      throw engine::SolverError(fmt::format(
-          "line '{}': fe.touchdown_refinement needs the touchdown point of the line at rest: {}",
-          line.name, error.what()));
+      throw engine::SolverError(
+          fmt::format("line '{}': fe.touchdown_refinement needs the touchdown point of the line at rest: {}", line.name,
+                      error.what()));
     }
   }
   return model;
 }
 
 void check_excluded_line(const Project& project, const std::string& excluded_line) {
-  if (!excluded_line.empty() &&
-      std::none_of(project.mooring.lines.begin(), project.mooring.lines.end(),
-                   [&](const MooringLine& l) { return l.name == excluded_line; })) {
+  if (!excluded_line.empty() && std::none_of(project.mooring.lines.begin(), project.mooring.lines.end(),
+                                             [&](const MooringLine& l) { return l.name == excluded_line; })) {
     throw std::invalid_argument(fmt::format("no mooring line named '{}'", excluded_line));
   }
 }
@@ -147,8 +142,8 @@ LineArrayModel build_line_array(const Project& project, const LineArrayOptions& 
         model.risers.push_back(riser_design(project, riser));
       } catch (const engine::SolverError& error) {
         // A riser that cannot take its design top angle is an input problem.
-        throw InputError({make_issue(project, fmt::format("risers[{}].sections", i), "riser_geometry_feasible",
-                                     error.what())});
+        throw InputError(
+            {make_issue(project, fmt::format("risers[{}].sections", i), "riser_geometry_feasible", error.what())});
       }
       model.lines.push_back(riser_static_line(project, model.risers.back(), options.current));
     }

@@ -16,7 +16,6 @@ namespace spiral::design {
 
 namespace {
 
-
 engine::PipeSection pipe_section_of(const RiserSection& s) {
   engine::PipeSection p;
   p.outer_diameter_m = s.outer_diameter_m;
@@ -34,8 +33,7 @@ engine::PipeSection pipe_section_of(const RiserSection& s) {
   if (s.buoyancy_outer_diameter_m && s.buoyancy_density_kg_per_m3) {
     p.buoyancy = engine::SmearedBuoyancy{*s.buoyancy_outer_diameter_m, *s.buoyancy_density_kg_per_m3};
   }
-  p.explicit_properties = {s.axial_stiffness_N, s.bending_stiffness_N_m2,
-                           s.mass_per_length_kg_per_m};
+  p.explicit_properties = {s.axial_stiffness_N, s.bending_stiffness_N_m2, s.mass_per_length_kg_per_m};
   return p;
 }
 
@@ -54,9 +52,9 @@ void check_suspended_above_seabed(const std::string& name, const engine::Catenar
                                   const engine::TopAngleCatenary& placement, double z_span_m) {
   engine::CatenaryOptions options;
   options.profile_points_per_segment = kSeabedCheckPointsPerSection;
-  const auto solution = engine::solve_catenary(
-      catenary, {placement.horizontal_span_m, z_span_m, 0.0}, options,
-      engine::CatenaryGuess{placement.fairlead_horizontal_N, placement.fairlead_vertical_N});
+  const auto solution =
+      engine::solve_catenary(catenary, {placement.horizontal_span_m, z_span_m, 0.0}, options,
+                             engine::CatenaryGuess{placement.fairlead_horizontal_N, placement.fairlead_vertical_N});
   double lowest_m = std::numeric_limits<double>::infinity();
   double lowest_arc_m = 0.0;
   for (const engine::CatenaryProfilePoint& p : solution.profile) {
@@ -95,8 +93,7 @@ engine::FeEnvironment fe_environment(const Project& project, const std::optional
   return environment;
 }
 
-std::optional<engine::FeRefinementZone> touchdown_refinement_zone(const FeMesh& mesh,
-                                                                  double laid_length_m) {
+std::optional<engine::FeRefinementZone> touchdown_refinement_zone(const FeMesh& mesh, double laid_length_m) {
   if (!mesh.touchdown_refinement || !(laid_length_m > 0.0)) return std::nullopt;
   const TouchdownRefinement& zone = *mesh.touchdown_refinement;
   return engine::FeRefinementZone{std::max(0.0, laid_length_m - 0.5 * zone.length_m), zone.length_m,
@@ -120,8 +117,7 @@ RiserDesign riser_design(const Project& project, const Riser& riser) {
     section.properties = engine::pipe_section_properties(pipe_section_of(*it), water);
     // Von Mises applies to a steel wall; a flexible pipe (even one given by
     // steel-like properties) is checked by its bending radius and tensions.
-    section.steel = riser.kind != RiserKind::flexible &&
-                    section.properties.wall == engine::PipeWall::homogeneous;
+    section.steel = riser.kind != RiserKind::flexible && section.properties.wall == engine::PipeWall::homogeneous;
     design.sections.push_back(section);
   }
 
@@ -136,9 +132,10 @@ RiserDesign riser_design(const Project& project, const Riser& riser) {
   const Eigen::Vector3d hang_off_g = project.hull.reference_point_g + riser.hang_off_b;
   const double z_span_m = hang_off_g.z() + project.site.depth_m;
   if (length_m <= z_span_m) {
-    throw engine::SolverError(fmt::format("riser '{}': length {:.1f} m does not reach the seabed {:.1f} m below "
-                                          "the hang-off",
-                                          riser.name, length_m, z_span_m));
+    throw engine::SolverError(
+        fmt::format("riser '{}': length {:.1f} m does not reach the seabed {:.1f} m below "
+                    "the hang-off",
+                    riser.name, length_m, z_span_m));
   }
   // With the top angle given, the catenary's unknown is the top vertical force
   // (engine/lines/catenary_top_angle.hpp); a lazy wave's buoyant section then
@@ -147,9 +144,8 @@ RiserDesign riser_design(const Project& project, const Riser& riser) {
   try {
     placement = engine::solve_catenary_for_top_angle(catenary, z_span_m, riser.top_angle_rad);
   } catch (const engine::SolverError& error) {
-    throw engine::SolverError(
-        fmt::format("riser '{}' ({:.1f} m): {}; change top_angle_deg or the section lengths",
-                    riser.name, length_m, error.what()));
+    throw engine::SolverError(fmt::format("riser '{}' ({:.1f} m): {}; change top_angle_deg or the section lengths",
+                                          riser.name, length_m, error.what()));
   }
   const double foot_distance_m = placement.horizontal_span_m;
   check_suspended_above_seabed(riser.name, catenary, placement, z_span_m);

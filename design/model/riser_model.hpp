@@ -59,8 +59,7 @@ engine::FeEnvironment fe_environment(const Project& project, const std::optional
 /// centred on the touchdown point of the at-rest static shape, which lies
 /// `laid_length_m` (unstretched) from end A; none when no refinement is asked
 /// for or nothing lies on the seabed at rest (there is no touchdown to refine).
-std::optional<engine::FeRefinementZone> touchdown_refinement_zone(const FeMesh& mesh,
-                                                                  double laid_length_m);
+std::optional<engine::FeRefinementZone> touchdown_refinement_zone(const FeMesh& mesh, double laid_length_m);
 
 std::unique_ptr<engine::FeStaticLine> riser_static_line(const Project& project, const RiserDesign& design,
                                                         const std::optional<engine::CurrentProfile>& current);

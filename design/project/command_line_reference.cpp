@@ -22,8 +22,7 @@ const LoadCase& find_load_case(const Project& project, const std::string& name) 
   if (it == project.load_cases.end()) {
     std::string names;
     for (const LoadCase& c : project.load_cases) names += (names.empty() ? "" : ", ") + c.name;
-    throw command_line_error(project, "--case",
-                             fmt::format("no load case named \"{}\" (defined: {})", name, names));
+    throw command_line_error(project, "--case", fmt::format("no load case named \"{}\" (defined: {})", name, names));
   }
   return *it;
 }

@@ -20,8 +20,7 @@ std::string format_issue(const InputIssue& issue) {
 
 void sort_in_file_order(std::vector<InputIssue>& issues) {
   std::stable_sort(issues.begin(), issues.end(), [](const InputIssue& a, const InputIssue& b) {
-    return std::pair(a.line.value_or(0), a.column.value_or(0)) <
-           std::pair(b.line.value_or(0), b.column.value_or(0));
+    return std::pair(a.line.value_or(0), a.column.value_or(0)) < std::pair(b.line.value_or(0), b.column.value_or(0));
   });
 }
 

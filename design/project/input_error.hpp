@@ -19,8 +19,8 @@ struct InputIssue {
   std::string file;           ///< the file as the user named it
   std::optional<int> line;    ///< 1-based; absent when the issue has no position (missing file)
   std::optional<int> column;  ///< 1-based; absent together with `line`
-  std::string path;     ///< field path, e.g. `mooring.lines[3].segments[1].length`; may be empty
-  std::string message;  ///< the problem, with the value and unit that were found
+  std::string path;           ///< field path, e.g. `mooring.lines[3].segments[1].length`; may be empty
+  std::string message;        ///< the problem, with the value and unit that were found
   /// Machine-readable name of the violated condition (`unknown_key`, `wrong_type`,
   /// `segment_length_positive`, ...); tests and tools key on it, users read `message`.
   std::string condition;

@@ -110,8 +110,7 @@ constexpr double kSpiralStrandVolumeDiameter = 1.18;
 // 1.021 x 1.18 = 1.205 (the familiar ~1.2 on nominal d), moved onto its own
 // d_vol = 0.80 d [D].
 constexpr Hydro kSpiralStrandHydro{1.021, 0.0, 1.0, 0.0};
-constexpr Hydro kSixStrandHydro{1.021 * kSpiralStrandVolumeDiameter / kSixStrandVolumeDiameter, 0.0,
-                                1.0, 0.0};
+constexpr Hydro kSixStrandHydro{1.021 * kSpiralStrandVolumeDiameter / kSixStrandVolumeDiameter, 0.0, 1.0, 0.0};
 
 // --- user -------------------------------------------------------------------
 
@@ -129,19 +128,15 @@ std::string fmt_double(double v) {
   return buf;
 }
 
-void require_positive(const LineTypeInput& in, const std::optional<double>& value, const char* key,
-                      const char* unit) {
+void require_positive(const LineTypeInput& in, const std::optional<double>& value, const char* key, const char* unit) {
   if (value && !(*value > 0.0 && std::isfinite(*value))) {
-    throw std::invalid_argument(prefix(in) + ": " + key + " must be > 0 (" + unit + "), got " +
-                                fmt_double(*value));
+    throw std::invalid_argument(prefix(in) + ": " + key + " must be > 0 (" + unit + "), got " + fmt_double(*value));
   }
 }
 
-void require_non_negative(const LineTypeInput& in, const std::optional<double>& value,
-                          const char* key) {
+void require_non_negative(const LineTypeInput& in, const std::optional<double>& value, const char* key) {
   if (value && !(*value >= 0.0 && std::isfinite(*value))) {
-    throw std::invalid_argument(prefix(in) + ": " + key + " must be >= 0 (-), got " +
-                                fmt_double(*value));
+    throw std::invalid_argument(prefix(in) + ": " + key + " must be >= 0 (-), got " + fmt_double(*value));
   }
 }
 
@@ -154,20 +149,15 @@ void reject_foreign_inputs(const LineTypeInput& in) {
     }
   };
   reject(in.kind != LineKind::chain && in.grade.has_value(), "grade", "chain");
-  reject(in.kind != LineKind::chain && in.chain_construction.has_value(), "construction (chain)",
-         "chain");
-  reject(in.kind != LineKind::wire && in.wire_construction.has_value(), "construction (wire)",
-         "wire");
-  reject(in.kind != LineKind::polyester && in.static_stiffness_mbl.has_value(),
-         "static_stiffness_mbl", "polyester");
-  reject(in.kind != LineKind::polyester && in.dynamic_stiffness_mbl.has_value(),
-         "dynamic_stiffness_mbl", "polyester");
+  reject(in.kind != LineKind::chain && in.chain_construction.has_value(), "construction (chain)", "chain");
+  reject(in.kind != LineKind::wire && in.wire_construction.has_value(), "construction (wire)", "wire");
+  reject(in.kind != LineKind::polyester && in.static_stiffness_mbl.has_value(), "static_stiffness_mbl", "polyester");
+  reject(in.kind != LineKind::polyester && in.dynamic_stiffness_mbl.has_value(), "dynamic_stiffness_mbl", "polyester");
 }
 
 void validate(const LineTypeInput& in, double rho, double g) {
   if (!(rho > 0.0 && std::isfinite(rho))) {
-    throw std::invalid_argument(prefix(in) + ": water density must be > 0 (kg/m^3), got " +
-                                fmt_double(rho));
+    throw std::invalid_argument(prefix(in) + ": water density must be > 0 (kg/m^3), got " + fmt_double(rho));
   }
   if (!(g > 0.0 && std::isfinite(g))) {
     throw std::invalid_argument(prefix(in) + ": gravity must be > 0 (m/s^2), got " + fmt_double(g));
@@ -184,9 +174,8 @@ void validate(const LineTypeInput& in, double rho, double g) {
   if (in.dynamic_stiffness_mbl) {
     const auto& ab = *in.dynamic_stiffness_mbl;
     if (!(ab[0] > 0.0 && std::isfinite(ab[0]) && ab[1] >= 0.0 && std::isfinite(ab[1]))) {
-      throw std::invalid_argument(prefix(in) + ": dynamic_stiffness_mbl [a, b] needs a > 0 and " +
-                                  "b >= 0 (-), got [" + fmt_double(ab[0]) + ", " +
-                                  fmt_double(ab[1]) + "]");
+      throw std::invalid_argument(prefix(in) + ": dynamic_stiffness_mbl [a, b] needs a > 0 and " + "b >= 0 (-), got [" +
+                                  fmt_double(ab[0]) + ", " + fmt_double(ab[1]) + "]");
     }
   }
   require_non_negative(in, in.drag_normal, "drag_normal");
@@ -194,8 +183,7 @@ void validate(const LineTypeInput& in, double rho, double g) {
   require_non_negative(in, in.added_mass_normal, "added_mass_normal");
   require_non_negative(in, in.added_mass_axial, "added_mass_axial");
   if (in.kind != LineKind::user && !(in.diameter_m > 0.0 && std::isfinite(in.diameter_m))) {
-    throw std::invalid_argument(prefix(in) + ": diameter must be > 0 (m), got " +
-                                fmt_double(in.diameter_m));
+    throw std::invalid_argument(prefix(in) + ": diameter must be > 0 (m), got " + fmt_double(in.diameter_m));
   }
 }
 
@@ -210,14 +198,13 @@ struct Formula {
 Formula chain_formula(const LineTypeInput& in) {
   const double d = in.diameter_m;
   const double d_mm = d * 1000.0;
-  const bool studlink =
-      in.chain_construction.value_or(ChainConstruction::studless) == ChainConstruction::studlink;
+  const bool studlink = in.chain_construction.value_or(ChainConstruction::studless) == ChainConstruction::studlink;
   Formula f;
   // Mass and volume-equivalent diameter: OrcaFlex "Chain"; MoorPy [S].
   f.mass = (studlink ? 21.9e3 : 19.9e3) * d * d;
   f.has_mass = true;
-  f.mass_src = studlink ? "chain studlink 21.9 d^2 t/m (OrcaFlex Chain)"
-                        : "chain studless 19.9 d^2 t/m (OrcaFlex Chain)";
+  f.mass_src =
+      studlink ? "chain studlink 21.9 d^2 t/m (OrcaFlex Chain)" : "chain studless 19.9 d^2 t/m (OrcaFlex Chain)";
   f.d_vol = (studlink ? 1.89 : 1.80) * d;
   f.hydro = studlink ? kStudlinkChainHydro : kStudlessChainHydro;
   f.hydro_src = studlink ? "chain studlink: d_vol 1.89 d; Cd 1.376, Cd_ax 0.741, Ca 1.0, Ca_ax 0.5 "
@@ -234,8 +221,8 @@ Formula chain_formula(const LineTypeInput& in) {
     const StudlessModulus m = studless_modulus(*in.grade);
     f.EA = (m.a - m.b * d_mm) * 1e10 * area;
     f.has_EA = true;
-    f.EA_src = std::string("DNV-OS-E301 studless ") + m.label + ": E = (" + fmt_double(m.a) +
-               " - " + fmt_double(m.b) + " d[mm]) 1e10 Pa x 2 pi d^2/4";
+    f.EA_src = std::string("DNV-OS-E301 studless ") + m.label + ": E = (" + fmt_double(m.a) + " - " + fmt_double(m.b) +
+               " d[mm]) 1e10 Pa x 2 pi d^2/4";
   }
   if (in.grade) {
     const double c = chain_mbl_coefficient(*in.grade);
@@ -244,16 +231,14 @@ Formula chain_formula(const LineTypeInput& in) {
     f.MBL_src = std::string("chain ") + to_string(*in.grade) + ": " + fmt_double(c) +
                 " d^2 (44 - 0.08 d) kN, d in mm (DNV-OS-E301 via ddjokic)";
   }
-  const bool need_grade =
-      (!f.has_MBL && !in.breaking_load_N) || (!f.has_EA && !in.axial_stiffness_N);
+  const bool need_grade = (!f.has_MBL && !in.breaking_load_N) || (!f.has_EA && !in.axial_stiffness_N);
   if (need_grade) {
     throw std::invalid_argument(prefix(in) + " needs grade (R3 | R3S | R4 | R4S | R5) " +
                                 "unless breaking_load and axial_stiffness are given");
   }
-  if ((f.has_EA && !in.axial_stiffness_N && !(f.EA > 0.0)) ||
-      (f.has_MBL && !in.breaking_load_N && !(f.MBL > 0.0))) {
-    throw std::invalid_argument(prefix(in) + ": the chain formulas give no positive EA/MBL at " +
-                                "diameter " + fmt_double(d) + " m; give them explicitly");
+  if ((f.has_EA && !in.axial_stiffness_N && !(f.EA > 0.0)) || (f.has_MBL && !in.breaking_load_N && !(f.MBL > 0.0))) {
+    throw std::invalid_argument(prefix(in) + ": the chain formulas give no positive EA/MBL at " + "diameter " +
+                                fmt_double(d) + " m; give them explicitly");
   }
   return f;
 }
@@ -280,8 +265,7 @@ Formula polyester_formula(const LineTypeInput& in) {
 
 Formula wire_formula(const LineTypeInput& in) {
   const double d = in.diameter_m;
-  const bool spiral = in.wire_construction.value_or(WireConstruction::six_strand) ==
-                      WireConstruction::spiral_strand;
+  const bool spiral = in.wire_construction.value_or(WireConstruction::six_strand) == WireConstruction::spiral_strand;
   Formula f;
   f.has_mass = f.has_EA = f.has_MBL = true;
   if (spiral) {
@@ -320,12 +304,10 @@ Formula user_formula(const LineTypeInput& in) {
   const bool has_diameter = in.diameter_m > 0.0 && std::isfinite(in.diameter_m);
   if (!has_diameter && !in.hydrodynamic_diameter_m) missing("diameter", "m");
   if (in.diameter_m < 0.0 || !std::isfinite(in.diameter_m)) {
-    throw std::invalid_argument(prefix(in) + ": diameter must be > 0 (m), got " +
-                                fmt_double(in.diameter_m));
+    throw std::invalid_argument(prefix(in) + ": diameter must be > 0 (m), got " + fmt_double(in.diameter_m));
   }
   Formula f;
-  f.d_vol =
-      has_diameter ? in.diameter_m : 0.0;  // for user types `diameter` is the hydrodynamic one
+  f.d_vol = has_diameter ? in.diameter_m : 0.0;  // for user types `diameter` is the hydrodynamic one
   f.hydro = kUserDefaultHydro;
   f.hydro_src = "user: diameter as given; default Cd 1.2, Cd_ax 0, Ca 1.0, Ca_ax 0 (C)";
   return f;
@@ -333,8 +315,7 @@ Formula user_formula(const LineTypeInput& in) {
 
 }  // namespace
 
-LineTypeProperties resolve_line_type(const LineTypeInput& in, double water_density_kg_per_m3,
-                                     double gravity_m_per_s2) {
+LineTypeProperties resolve_line_type(const LineTypeInput& in, double water_density_kg_per_m3, double gravity_m_per_s2) {
   validate(in, water_density_kg_per_m3, gravity_m_per_s2);
 
   Formula f;
@@ -381,24 +362,21 @@ LineTypeProperties resolve_line_type(const LineTypeInput& in, double water_densi
   p.drag_axial = in.drag_axial.value_or(f.hydro.drag_axial);
   p.added_mass_normal = in.added_mass_normal.value_or(f.hydro.added_mass_normal);
   p.added_mass_axial = in.added_mass_axial.value_or(f.hydro.added_mass_axial);
-  const bool any_hydro_explicit = in.hydrodynamic_diameter_m || in.drag_normal || in.drag_axial ||
-                                  in.added_mass_normal || in.added_mass_axial;
-  p.hydrodynamics_source =
-      any_hydro_explicit ? f.hydro_src + "; explicit values override" : f.hydro_src;
+  const bool any_hydro_explicit =
+      in.hydrodynamic_diameter_m || in.drag_normal || in.drag_axial || in.added_mass_normal || in.added_mass_axial;
+  p.hydrodynamics_source = any_hydro_explicit ? f.hydro_src + "; explicit values override" : f.hydro_src;
 
   // Archimedes on the volume-equivalent diameter.
   const double d_h = p.hydrodynamic_diameter_m;
   p.submerged_weight_N_per_m = in.submerged_weight_N_per_m.value_or(
-      (p.mass_per_length_kg_per_m - water_density_kg_per_m3 * kPi / 4.0 * d_h * d_h) *
-      gravity_m_per_s2);
+      (p.mass_per_length_kg_per_m - water_density_kg_per_m3 * kPi / 4.0 * d_h * d_h) * gravity_m_per_s2);
   return p;
 }
 
 double dynamic_axial_stiffness_N(const LineTypeProperties& properties, double mean_tension_N) {
   if (!(mean_tension_N >= 0.0 && std::isfinite(mean_tension_N))) {
     throw std::invalid_argument("dynamic_axial_stiffness_N: line type '" + properties.name +
-                                "': mean tension must be >= 0 (N), got " +
-                                fmt_double(mean_tension_N));
+                                "': mean tension must be >= 0 (N), got " + fmt_double(mean_tension_N));
   }
   const auto& [a, b] = properties.dynamic_stiffness_mbl;
   if (properties.kind != LineKind::polyester || (a == 0.0 && b == 0.0)) {

@@ -22,18 +22,18 @@ enum class WireConstruction { six_strand, spiral_strand };
 struct LineTypeInput {
   std::string name;
   LineKind kind = LineKind::user;
-  double diameter_m = 0.0;  ///< nominal diameter (chain bar, rope/wire); for `user`, the hydrodynamic one
-  std::optional<ChainGrade> grade;                     ///< chain only
-  std::optional<ChainConstruction> chain_construction;  ///< chain only (default studless)
-  std::optional<WireConstruction> wire_construction;    ///< wire only (default six_strand)
-  std::optional<double> mass_per_length_kg_per_m;       ///< in air
-  std::optional<double> submerged_weight_N_per_m;       ///< wet weight per length
-  std::optional<double> hydrodynamic_diameter_m;        ///< volume-equivalent diameter
-  std::optional<double> axial_stiffness_N;              ///< EA (polyester: static EA)
-  std::optional<double> breaking_load_N;                ///< MBL
-  std::optional<double> static_stiffness_mbl;           ///< polyester: EA_static / MBL
+  double diameter_m = 0.0;          ///< nominal diameter (chain bar, rope/wire); for `user`, the hydrodynamic one
+  std::optional<ChainGrade> grade;  ///< chain only
+  std::optional<ChainConstruction> chain_construction;         ///< chain only (default studless)
+  std::optional<WireConstruction> wire_construction;           ///< wire only (default six_strand)
+  std::optional<double> mass_per_length_kg_per_m;              ///< in air
+  std::optional<double> submerged_weight_N_per_m;              ///< wet weight per length
+  std::optional<double> hydrodynamic_diameter_m;               ///< volume-equivalent diameter
+  std::optional<double> axial_stiffness_N;                     ///< EA (polyester: static EA)
+  std::optional<double> breaking_load_N;                       ///< MBL
+  std::optional<double> static_stiffness_mbl;                  ///< polyester: EA_static / MBL
   std::optional<std::array<double, 2>> dynamic_stiffness_mbl;  ///< polyester: EA_dyn/MBL = a + b * (mean load, % MBL)
-  std::optional<double> drag_normal;                    ///< Cd on the hydrodynamic diameter
+  std::optional<double> drag_normal;                           ///< Cd on the hydrodynamic diameter
   std::optional<double> drag_axial;
   std::optional<double> added_mass_normal;
   std::optional<double> added_mass_axial;

@@ -44,9 +44,7 @@ const char* to_string(FrequencyColumnKind column) {
   return column == FrequencyColumnKind::period ? "period" : "angular_frequency";
 }
 
-const char* to_string(RadiationModel model) {
-  return model == RadiationModel::memory ? "memory" : "low_frequency";
-}
+const char* to_string(RadiationModel model) { return model == RadiationModel::memory ? "memory" : "low_frequency"; }
 
 const char* to_string(HullHydrodynamicsModel model) {
   return model == HullHydrodynamicsModel::morison ? "morison" : "bem";
@@ -152,8 +150,7 @@ RiserCriteria with_overrides(RiserCriteria base, const RiserCriteriaOverrides& o
   out.min_effective_tension_N = o.min_effective_tension_N.value_or(out.min_effective_tension_N);
   if (o.max_top_tension_N) out.max_top_tension_N = o.max_top_tension_N;
   if (o.max_top_angle_rad) out.max_top_angle_rad = o.max_top_angle_rad;
-  if (o.max_flex_joint_rotation_rad)
-    out.max_flex_joint_rotation_rad = o.max_flex_joint_rotation_rad;
+  if (o.max_flex_joint_rotation_rad) out.max_flex_joint_rotation_rad = o.max_flex_joint_rotation_rad;
   if (o.min_bending_radius_m) out.min_bending_radius_m = o.min_bending_radius_m;
   if (o.max_touchdown_excursion_m) out.max_touchdown_excursion_m = o.max_touchdown_excursion_m;
   return out;

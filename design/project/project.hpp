@@ -42,9 +42,9 @@ struct Seabed {
 };
 
 struct Site {
-  double depth_m = 0.0;                  ///< water depth, > 0; seabed at z_g = -depth_m
-  double water_density_kg_per_m3 = 0.0;  ///< > 0
-  double gravity_m_per_s2 = 0.0;         ///< > 0
+  double depth_m = 0.0;                                          ///< water depth, > 0; seabed at z_g = -depth_m
+  double water_density_kg_per_m3 = 0.0;                          ///< > 0
+  double gravity_m_per_s2 = 0.0;                                 ///< > 0
   double air_density_kg_per_m3 = kStandardAirDensity_kg_per_m3;  ///< > 0, for hull wind loads
   Seabed seabed;
 };
@@ -148,8 +148,8 @@ struct HullHydrodynamics {
   HullHydrodynamicsModel model = HullHydrodynamicsModel::bem;
   std::filesystem::path radiation_file;  ///< WAMIT .1 (added mass, radiation damping); bem only
   FrequencyColumnKind frequency_column = FrequencyColumnKind::period;
-  double ulen_m = 1.0;        ///< WAMIT ULEN, > 0
-  double period_scale = 1.0;  ///< periods multiplied by this (frequencies divided), > 0
+  double ulen_m = 1.0;                                   ///< WAMIT ULEN, > 0
+  double period_scale = 1.0;                             ///< periods multiplied by this (frequencies divided), > 0
   std::optional<std::filesystem::path> excitation_file;  ///< WAMIT .3 (first-order excitation)
   std::optional<std::filesystem::path> rao_file;         ///< WAMIT .4 (motion RAOs)
   /// Diagonal viscous damping, surge..yaw: N s/m (translations), N m s/rad (rotations), >= 0.
@@ -300,14 +300,14 @@ struct RiserDesignFactors {
 /// riser's own `criteria` (riser_criteria). Absent optionals are not checked.
 struct RiserCriteria {
   RiserDesignFactors design_factor;
-  double min_effective_tension_N = 0.0;               ///< >= 0, everywhere along the riser
-  std::optional<double> max_top_tension_N;            ///< > 0
-  std::optional<double> max_top_angle_rad;            ///< from vertical, (0, pi/2)
+  double min_effective_tension_N = 0.0;     ///< >= 0, everywhere along the riser
+  std::optional<double> max_top_tension_N;  ///< > 0
+  std::optional<double> max_top_angle_rad;  ///< from vertical, (0, pi/2)
   /// Angle between the riser's top tangent and the hull-fixed flex-joint axis
   /// (the at-rest top tangent, turning with the hull), (0, pi/2).
   std::optional<double> max_flex_joint_rotation_rad;
-  std::optional<double> min_bending_radius_m;         ///< > 0; required for flexible risers
-  std::optional<double> max_touchdown_excursion_m;    ///< TDP horizontal travel from rest, > 0
+  std::optional<double> min_bending_radius_m;       ///< > 0; required for flexible risers
+  std::optional<double> max_touchdown_excursion_m;  ///< TDP horizontal travel from rest, > 0
   bool operator==(const RiserCriteria&) const = default;
 };
 
@@ -329,8 +329,8 @@ struct Riser {
   std::string name;
   RiserKind kind = RiserKind::scr;
   Eigen::Vector3d hang_off_b = Eigen::Vector3d::Zero();  ///< hull body frame, m
-  double azimuth_rad = 0.0;    ///< global direction the riser runs away from the hull
-  double top_angle_rad = 0.0;  ///< from vertical, [0, pi/2)
+  double azimuth_rad = 0.0;                              ///< global direction the riser runs away from the hull
+  double top_angle_rad = 0.0;                            ///< from vertical, [0, pi/2)
   std::vector<RiserSection> sections;
   /// Internal pressure at the hang-off above ambient (gauge), >= 0; below the
   /// hang-off the contents head is added.
@@ -344,12 +344,11 @@ enum class WindSpectrum { api, npd, none };
 
 struct Waves {
   WaveSpectrum spectrum = WaveSpectrum::jonswap;
-  double hs_m = 0.0;            ///< significant wave height, > 0
-  double tp_s = 0.0;            ///< peak period, > 0
-  std::optional<double> gamma;  ///< JONSWAP peak enhancement, >= 1 (absent: DNV-RP-C205 3.5.5.5)
-  double heading_rad = 0.0;     ///< direction of propagation
-  std::optional<double>
-      spreading_s;  ///< cos-2s directional spreading exponent, > 0 (absent: long-crested)
+  double hs_m = 0.0;                  ///< significant wave height, > 0
+  double tp_s = 0.0;                  ///< peak period, > 0
+  std::optional<double> gamma;        ///< JONSWAP peak enhancement, >= 1 (absent: DNV-RP-C205 3.5.5.5)
+  double heading_rad = 0.0;           ///< direction of propagation
+  std::optional<double> spreading_s;  ///< cos-2s directional spreading exponent, > 0 (absent: long-crested)
 };
 
 struct Wind {
@@ -378,8 +377,8 @@ struct Environment {
 
 struct LoadCase {
   std::string name;
-  std::string environment;                  ///< name of an `environments` entry
-  std::optional<std::string> damaged_line;  ///< name of a mooring line removed in this case
+  std::string environment;                               ///< name of an `environments` entry
+  std::optional<std::string> damaged_line;               ///< name of a mooring line removed in this case
   DesignCondition condition = DesignCondition::extreme;  ///< selects the riser design factor
 };
 
@@ -415,7 +414,7 @@ struct MooringCriteria {
 
 struct Criteria {
   MooringCriteria mooring;
-  RiserCriteriaOverrides risers;  ///< project-wide, as given; riser_criteria() merges the layers
+  RiserCriteriaOverrides risers;               ///< project-wide, as given; riser_criteria() merges the layers
   std::optional<double> max_offset_pct_depth;  ///< %, of water depth, > 0
 };
 

@@ -25,10 +25,10 @@ void read_project(MapReader& r, Project& p, const std::filesystem::path& base_fo
   if (const auto version_node = r.child("version", kRequired, "format version, 1")) {
     const auto version = to_integer(r.context(), *version_node, "version");
     if (version && *version != kProjectFormatVersion) {
-      r.context().add(version_node->Mark(), "version",
-                      fmt::format("unsupported format version {}; this spiral reads version {}",
-                                  *version, kProjectFormatVersion),
-                      "unsupported_version");
+      r.context().add(
+          version_node->Mark(), "version",
+          fmt::format("unsupported format version {}; this spiral reads version {}", *version, kProjectFormatVersion),
+          "unsupported_version");
     }
     assign(p.version, version);
   }
@@ -39,18 +39,14 @@ void read_project(MapReader& r, Project& p, const std::filesystem::path& base_fo
     p.site = read_site(s);
     if (s.has("depth")) seabed_z = -p.site.depth_m;
   });
-  r.list_of_maps("line_types", kRequired,
-                 [&](MapReader& t) { p.line_types.push_back(read_line_type(t)); });
+  r.list_of_maps("line_types", kRequired, [&](MapReader& t) { p.line_types.push_back(read_line_type(t)); });
   // Without a depth an anchor's default z is unknown; 0 keeps the reader going
   // (the missing depth is already reported).
-  r.map("mooring", kRequired,
-        [&](MapReader& m) { p.mooring = read_mooring(m, seabed_z.value_or(0.0)); });
+  r.map("mooring", kRequired, [&](MapReader& m) { p.mooring = read_mooring(m, seabed_z.value_or(0.0)); });
   r.map("hull", kRequired, [&](MapReader& h) { p.hull = read_hull(h, base_folder); });
   r.list_of_maps("risers", kOptional, [&](MapReader& x) { p.risers.push_back(read_riser(x)); });
-  r.list_of_maps("environments", kRequired,
-                 [&](MapReader& e) { p.environments.push_back(read_environment(e)); });
-  r.list_of_maps("load_cases", kRequired,
-                 [&](MapReader& c) { p.load_cases.push_back(read_load_case(c)); });
+  r.list_of_maps("environments", kRequired, [&](MapReader& e) { p.environments.push_back(read_environment(e)); });
+  r.list_of_maps("load_cases", kRequired, [&](MapReader& c) { p.load_cases.push_back(read_load_case(c)); });
   r.map("criteria", kRequired, [&](MapReader& c) { p.criteria = read_criteria(c); });
   if (r.has("stages")) {
     r.list_of_maps("stages", kOptional, [&](MapReader& s) { p.stages.push_back(read_stage(s)); });
@@ -78,8 +74,7 @@ Project parse_project(std::string_view yaml_text, std::string source_name) {
   }
   if (!root.IsMap()) {
     ctx.add(root.Mark(), "",
-            fmt::format("a project file is a map of sections (version, name, site, ...), got {}",
-                        describe(root)),
+            fmt::format("a project file is a map of sections (version, name, site, ...), got {}", describe(root)),
             "wrong_type");
     throw_issues(std::move(ctx.issues));
   }
@@ -99,8 +94,7 @@ Project load_project(const std::filesystem::path& file) {
   if (!in) {
     InputIssue issue;
     issue.file = file.string();
-    issue.message =
-        std::filesystem::exists(file) ? "cannot read the project file" : "project file not found";
+    issue.message = std::filesystem::exists(file) ? "cannot read the project file" : "project file not found";
     issue.condition = "missing_file";
     throw InputError({issue});
   }

@@ -8,15 +8,14 @@
 namespace spiral::design::loader_detail {
 namespace {
 
-const EnumTable<WaveSpectrum> kWaveSpectra = {
-    {"jonswap", WaveSpectrum::jonswap}, {"pierson_moskowitz", WaveSpectrum::pierson_moskowitz}};
+const EnumTable<WaveSpectrum> kWaveSpectra = {{"jonswap", WaveSpectrum::jonswap},
+                                              {"pierson_moskowitz", WaveSpectrum::pierson_moskowitz}};
 const EnumTable<WindSpectrum> kWindSpectra = {
     {"api", WindSpectrum::api}, {"npd", WindSpectrum::npd}, {"none", WindSpectrum::none}};
 const EnumTable<DesignCondition> kDesignConditions = {{"normal", DesignCondition::normal},
                                                       {"extreme", DesignCondition::extreme},
                                                       {"survival", DesignCondition::survival}};
-const EnumTable<StageSozModel> kStageSozModels = {{"catenary", StageSozModel::catenary},
-                                                  {"fe", StageSozModel::fe}};
+const EnumTable<StageSozModel> kStageSozModels = {{"catenary", StageSozModel::catenary}, {"fe", StageSozModel::fe}};
 const EnumTable<MooringCode> kMooringCodes = {{"api_rp_2sk", MooringCode::api_rp_2sk},
                                               {"dnv_os_e301", MooringCode::dnv_os_e301}};
 
@@ -81,11 +80,10 @@ Criteria read_criteria(MapReader& r) {
       criteria.mooring.api_rp_2sk = f;
     } else if (code == MooringCode::dnv_os_e301) {
       const auto cc_node = m.child("consequence_class", kRequired, "1 or 2");
-      const auto cc = cc_node ? to_integer(m.context(), *cc_node, m.path_of("consequence_class"))
-                              : std::nullopt;
+      const auto cc = cc_node ? to_integer(m.context(), *cc_node, m.path_of("consequence_class")) : std::nullopt;
       if (cc && *cc != 1 && *cc != 2) {
-        m.context().add(cc_node->Mark(), m.path_of("consequence_class"),
-                        fmt::format("must be 1 or 2, got {}", *cc), "bad_enum");
+        m.context().add(cc_node->Mark(), m.path_of("consequence_class"), fmt::format("must be 1 or 2, got {}", *cc),
+                        "bad_enum");
       }
       DnvOsE301Factors f = dnv_os_e301_defaults(cc.value_or(1));
       m.map("partial_factors", kOptional, [&](MapReader& p) {
@@ -97,9 +95,7 @@ Criteria read_criteria(MapReader& r) {
       criteria.mooring.dnv_os_e301 = f;
     }
   });
-  r.map("risers", kOptional, [&](MapReader& x) {
-    criteria.risers = read_riser_criteria(x);
-  });
+  r.map("risers", kOptional, [&](MapReader& x) { criteria.risers = read_riser_criteria(x); });
   criteria.max_offset_pct_depth = r.number("max_offset_pct_depth", "%", kOptional);
   return criteria;
 }

@@ -29,8 +29,7 @@ void read_load_coefficients(MapReader& r, HullLoadCoefficients& c) {
 /// Either `{file, ulen}` (WAMIT .12d) or a table `{headings_deg, frequencies,
 /// surge, sway, yaw}`; the presence of `file` chooses.
 MeanDrift read_mean_drift(MapReader& r, const std::filesystem::path& base_folder) {
-  static constexpr std::string_view kTableKeys[] = {"headings_deg", "frequencies", "surge", "sway",
-                                                    "yaw"};
+  static constexpr std::string_view kTableKeys[] = {"headings_deg", "frequencies", "surge", "sway", "yaw"};
   if (r.has("file")) {
     MeanDriftFile f;
     if (const auto file = r.text("file", kRequired)) f.file = resolve(*file, base_folder);
@@ -50,8 +49,7 @@ MeanDrift read_mean_drift(MapReader& r, const std::filesystem::path& base_folder
   r.child("file", kOptional);  // known key, for suggestions
   for (const char* key : {"ulen", "period_scale"}) {
     if (const auto node = r.child(key, kOptional)) {
-      r.context().add(node->Mark(), r.path_of(key),
-                      "applies to a WAMIT file (file: path.12d) only, got a table",
+      r.context().add(node->Mark(), r.path_of(key), "applies to a WAMIT file (file: path.12d) only, got a table",
                       "key_not_applicable");
     }
   }
@@ -66,12 +64,11 @@ MeanDrift read_mean_drift(MapReader& r, const std::filesystem::path& base_folder
 
 HullHydrodynamics read_hull_hydrodynamics(MapReader& r, const std::filesystem::path& base_folder) {
   static const EnumTable<FrequencyColumnKind> kColumns = {
-      {"period", FrequencyColumnKind::period},
-      {"angular_frequency", FrequencyColumnKind::angular_frequency}};
-  static const EnumTable<HullHydrodynamicsModel> kModels = {
-      {"bem", HullHydrodynamicsModel::bem}, {"morison", HullHydrodynamicsModel::morison}};
-  static const EnumTable<RadiationModel> kRadiationModels = {
-      {"low_frequency", RadiationModel::low_frequency}, {"memory", RadiationModel::memory}};
+      {"period", FrequencyColumnKind::period}, {"angular_frequency", FrequencyColumnKind::angular_frequency}};
+  static const EnumTable<HullHydrodynamicsModel> kModels = {{"bem", HullHydrodynamicsModel::bem},
+                                                            {"morison", HullHydrodynamicsModel::morison}};
+  static const EnumTable<RadiationModel> kRadiationModels = {{"low_frequency", RadiationModel::low_frequency},
+                                                             {"memory", RadiationModel::memory}};
   // Keys of one model only: given with the other, key_not_applicable.
   static constexpr std::string_view kBemKeys[] = {
       "radiation_file", "frequency_column",     "ulen",      "period_scale",    "excitation_file",
@@ -80,25 +77,23 @@ HullHydrodynamics read_hull_hydrodynamics(MapReader& r, const std::filesystem::p
   HullHydrodynamics h;
   assign(h.model, r.enumeration("model", kModels, kOptional));
   const bool morison = h.model == HullHydrodynamicsModel::morison;
-  for (const auto key : morison ? std::span<const std::string_view>(kBemKeys)
-                                : std::span<const std::string_view>(kMorisonKeys)) {
+  for (const auto key :
+       morison ? std::span<const std::string_view>(kBemKeys) : std::span<const std::string_view>(kMorisonKeys)) {
     if (const auto node = r.child(key, kOptional)) {
-      r.context().add(node->Mark(), r.path_of(key),
-                      fmt::format("applies to model: {} only, got model: {}",
-                                  morison ? "bem" : "morison", to_string(h.model)),
-                      "key_not_applicable");
+      r.context().add(
+          node->Mark(), r.path_of(key),
+          fmt::format("applies to model: {} only, got model: {}", morison ? "bem" : "morison", to_string(h.model)),
+          "key_not_applicable");
     }
   }
   if (morison) {
     assign(h.strip_length_m, r.number("strip_length", "m", kOptional));
   } else {
-    if (const auto file = r.text("radiation_file", kRequired))
-      h.radiation_file = resolve(*file, base_folder);
+    if (const auto file = r.text("radiation_file", kRequired)) h.radiation_file = resolve(*file, base_folder);
     assign(h.frequency_column, r.enumeration("frequency_column", kColumns, kOptional));
     assign(h.ulen_m, r.number("ulen", "m", kOptional));
     assign(h.period_scale, r.number("period_scale", "-", kOptional));
-    if (const auto file = r.text("excitation_file", kOptional))
-      h.excitation_file = resolve(*file, base_folder);
+    if (const auto file = r.text("excitation_file", kOptional)) h.excitation_file = resolve(*file, base_folder);
     if (const auto file = r.text("rao_file", kOptional)) h.rao_file = resolve(*file, base_folder);
     h.added_mass_frequency_rad_per_s = r.number("added_mass_frequency", "rad/s", kOptional);
     assign(h.radiation, r.enumeration("radiation", kRadiationModels, kOptional));
@@ -106,8 +101,7 @@ HullHydrodynamics read_hull_hydrodynamics(MapReader& r, const std::filesystem::p
     assign(h.memory_time_step_s, r.number("memory_time_step", "s", kOptional));
   }
   assign(h.linear_damping, r.vector<6>("linear_damping", "N s/m, N m s/rad", kOptional));
-  assign(h.quadratic_damping,
-         r.vector<6>("quadratic_damping", "N s^2/m^2, N m s^2/rad^2", kOptional));
+  assign(h.quadratic_damping, r.vector<6>("quadratic_damping", "N s^2/m^2, N m s^2/rad^2", kOptional));
   return h;
 }
 
@@ -186,8 +180,7 @@ Hull read_hull(MapReader& r, const std::filesystem::path& base_folder) {
     read_load_coefficients(w, c);
     hull.current_coefficients = c;
   });
-  r.map("mean_drift", kOptional,
-        [&](MapReader& d) { hull.mean_drift = read_mean_drift(d, base_folder); });
+  r.map("mean_drift", kOptional, [&](MapReader& d) { hull.mean_drift = read_mean_drift(d, base_folder); });
   r.map("hydrodynamics", kOptional,
         [&](MapReader& d) { hull.hydrodynamics = read_hull_hydrodynamics(d, base_folder); });
   r.map("geometry", kOptional, [&](MapReader& g) { hull.geometry = read_hull_geometry(g, base_folder); });

@@ -12,22 +12,18 @@
 namespace spiral::design::loader_detail {
 namespace {
 
-const EnumTable<LineKind> kLineKinds = {{"chain", LineKind::chain},
-                                        {"wire", LineKind::wire},
-                                        {"polyester", LineKind::polyester},
-                                        {"user", LineKind::user}};
+const EnumTable<LineKind> kLineKinds = {
+    {"chain", LineKind::chain}, {"wire", LineKind::wire}, {"polyester", LineKind::polyester}, {"user", LineKind::user}};
 const EnumTable<ChainGrade> kChainGrades = {{"R3", ChainGrade::R3},
                                             {"R3S", ChainGrade::R3S},
                                             {"R4", ChainGrade::R4},
                                             {"R4S", ChainGrade::R4S},
                                             {"R5", ChainGrade::R5}};
-const EnumTable<ChainConstruction> kChainConstructions = {
-    {"studless", ChainConstruction::studless}, {"studlink", ChainConstruction::studlink}};
-const EnumTable<WireConstruction> kWireConstructions = {
-    {"six_strand", WireConstruction::six_strand},
-    {"spiral_strand", WireConstruction::spiral_strand}};
-const EnumTable<AttachmentKind> kAttachmentKinds = {{"clump", AttachmentKind::clump},
-                                                    {"buoy", AttachmentKind::buoy}};
+const EnumTable<ChainConstruction> kChainConstructions = {{"studless", ChainConstruction::studless},
+                                                          {"studlink", ChainConstruction::studlink}};
+const EnumTable<WireConstruction> kWireConstructions = {{"six_strand", WireConstruction::six_strand},
+                                                        {"spiral_strand", WireConstruction::spiral_strand}};
+const EnumTable<AttachmentKind> kAttachmentKinds = {{"clump", AttachmentKind::clump}, {"buoy", AttachmentKind::buoy}};
 const EnumTable<LineModel> kLineModels = {{"catenary", LineModel::catenary}, {"fe", LineModel::fe}};
 
 MooringLine read_mooring_line(MapReader& r, std::optional<double> seabed_z) {
@@ -54,8 +50,7 @@ MooringLine read_mooring_line(MapReader& r, std::optional<double> seabed_z) {
   return line;
 }
 
-void read_name(Context& ctx, const YAML::Node& node, const std::string& path,
-               std::vector<std::string>& out) {
+void read_name(Context& ctx, const YAML::Node& node, const std::string& path, std::vector<std::string>& out) {
   if (auto name = to_string_value(ctx, node, path)) out.push_back(*name);
 }
 
@@ -126,14 +121,12 @@ void read_fe_mesh(MapReader& r, FeMesh& mesh) {
 
 Mooring read_mooring(MapReader& r, std::optional<double> seabed_z) {
   Mooring mooring;
-  r.list_of_maps("lines", kRequired,
-                 [&](MapReader& l) { mooring.lines.push_back(read_mooring_line(l, seabed_z)); });
+  r.list_of_maps("lines", kRequired, [&](MapReader& l) { mooring.lines.push_back(read_mooring_line(l, seabed_z)); });
   r.list_of_maps("groups", kOptional, [&](MapReader& g) {
     LineGroup group;
     assign(group.name, g.text("name", kRequired));
-    g.list("lines", kRequired, [&](const YAML::Node& item, const std::string& path) {
-      read_name(g.context(), item, path, group.lines);
-    });
+    g.list("lines", kRequired,
+           [&](const YAML::Node& item, const std::string& path) { read_name(g.context(), item, path, group.lines); });
     mooring.groups.push_back(group);
   });
   return mooring;

@@ -6,9 +6,8 @@
 namespace spiral::design::loader_detail {
 namespace {
 
-const EnumTable<RiserKind> kRiserKinds = {{"scr", RiserKind::scr},
-                                          {"lazy_wave", RiserKind::lazy_wave},
-                                          {"flexible", RiserKind::flexible}};
+const EnumTable<RiserKind> kRiserKinds = {
+    {"scr", RiserKind::scr}, {"lazy_wave", RiserKind::lazy_wave}, {"flexible", RiserKind::flexible}};
 
 RiserSection read_riser_section(MapReader& r) {
   RiserSection s;
@@ -59,8 +58,7 @@ Riser read_riser(MapReader& r) {
   assign(riser.hang_off_b, r.position("hang_off", kRequired));
   assign(riser.azimuth_rad, r.angle("azimuth", kRequired));
   assign(riser.top_angle_rad, r.angle("top_angle", kRequired));
-  r.list_of_maps("sections", kRequired,
-                 [&](MapReader& s) { riser.sections.push_back(read_riser_section(s)); });
+  r.list_of_maps("sections", kRequired, [&](MapReader& s) { riser.sections.push_back(read_riser_section(s)); });
   assign(riser.internal_pressure_Pa, r.number("internal_pressure", "Pa", kOptional));
   read_fe_mesh(r, riser.fe);
   r.map("criteria", kOptional, [&](MapReader& c) { riser.criteria = read_riser_criteria(c); });

@@ -10,8 +10,7 @@
 
 namespace spiral::design {
 
-InputIssue make_issue(const Project& project, const std::string& path, std::string condition,
-                      std::string message) {
+InputIssue make_issue(const Project& project, const std::string& path, std::string condition, std::string message) {
   InputIssue issue;
   issue.file = project.source_file;
   // A value that was defaulted has no node: use its closest written parent.

@@ -41,12 +41,10 @@ inline constexpr double kSeabedTolerance_m = 1e-6;
 
 /// An issue at `path` of `project`, placed at the nearest recorded node of the
 /// path (a defaulted value has no node of its own: its parent's is used).
-InputIssue make_issue(const Project& project, const std::string& path, std::string condition,
-                      std::string message);
+InputIssue make_issue(const Project& project, const std::string& path, std::string condition, std::string message);
 
 /// Every issue of `project`, in file order; empty when the project is valid.
-std::vector<InputIssue> check_project(const Project& project,
-                                      const LineCheckTable& line_types = {});
+std::vector<InputIssue> check_project(const Project& project, const LineCheckTable& line_types = {});
 
 /// Throws InputError listing every issue of `project`.
 void validate_project(const Project& project, const LineCheckTable& line_types = {});

@@ -18,34 +18,29 @@ void check_environments(const Project& p, Reporter& r) {
       at_least(r, at + ".waves.gamma", e.waves->gamma, 1.0, "", "gamma_at_least_one");
       if (e.waves->gamma && e.waves->spectrum != WaveSpectrum::jonswap) {
         r.fail(at + ".waves.gamma", "key_not_applicable",
-               fmt::format("applies to the jonswap spectrum only, got spectrum {}",
-                           to_string(e.waves->spectrum)));
+               fmt::format("applies to the jonswap spectrum only, got spectrum {}", to_string(e.waves->spectrum)));
       }
       positive(r, at + ".waves.spreading_s", e.waves->spreading_s, "", "spreading_positive");
     }
     if (e.wind) {
       at_least(r, at + ".wind.speed", e.wind->speed_m_per_s, 0.0, "m/s", "wind_speed_non_negative");
-      positive(r, at + ".wind.reference_height", e.wind->reference_height_m, "m",
-               "reference_height_positive");
+      positive(r, at + ".wind.reference_height", e.wind->reference_height_m, "m", "reference_height_positive");
     }
     if (e.current) {
       const auto& profile = e.current->profile;
       if (profile.empty()) {
-        r.fail(at + ".current.profile", "current_profile_valid",
-               "needs at least one [z m, speed m/s] point");
+        r.fail(at + ".current.profile", "current_profile_valid", "needs at least one [z m, speed m/s] point");
       }
       for (std::size_t k = 0; k < profile.size(); ++k) {
         const std::string pat = fmt::format("{}.current.profile[{}]", at, k);
         const double z = profile[k].z_m;
         if (z > 0.0 || z < -p.site.depth_m - kSeabedTolerance_m) {
           r.fail(pat + "[0]", "current_profile_valid",
-                 fmt::format("z must be in [{}, 0] m (seabed to surface), got {} m",
-                             -p.site.depth_m, z));
+                 fmt::format("z must be in [{}, 0] m (seabed to surface), got {} m", -p.site.depth_m, z));
         }
         if (k > 0 && !(z < profile[k - 1].z_m)) {
           r.fail(pat + "[0]", "current_profile_valid",
-                 fmt::format("z must decrease from the surface down, got {} m after {} m", z,
-                             profile[k - 1].z_m));
+                 fmt::format("z must decrease from the surface down, got {} m after {} m", z, profile[k - 1].z_m));
         }
         at_least(r, pat + "[1]", profile[k].speed_m_per_s, 0.0, "m/s", "current_profile_valid");
       }
@@ -60,13 +55,11 @@ void check_load_cases(const Project& p, Reporter& r) {
     const std::string at = fmt::format("load_cases[{}]", i);
     if (!defined(p.environments, c.environment)) {
       r.fail(at + ".environment", "environment_defined",
-             fmt::format("undefined environment \"{}\"{}", c.environment,
-                         defined_list(p.environments)));
+             fmt::format("undefined environment \"{}\"{}", c.environment, defined_list(p.environments)));
     }
     if (c.damaged_line && !defined(p.mooring.lines, *c.damaged_line)) {
       r.fail(at + ".damaged_line", "line_defined",
-             fmt::format("undefined mooring line \"{}\"{}", *c.damaged_line,
-                         defined_list(p.mooring.lines)));
+             fmt::format("undefined mooring line \"{}\"{}", *c.damaged_line, defined_list(p.mooring.lines)));
     }
   }
 }
@@ -89,8 +82,7 @@ void check_criteria(const Project& p, Reporter& r) {
     at_least(r, at + ".als_dynamic", m.dnv_os_e301->als_dynamic, 1.0, "", c);
   }
   check_riser_criteria(r, "criteria.risers", p.criteria.risers);
-  positive(r, "criteria.max_offset_pct_depth", p.criteria.max_offset_pct_depth, "%",
-           "offset_limit_positive");
+  positive(r, "criteria.max_offset_pct_depth", p.criteria.max_offset_pct_depth, "%", "offset_limit_positive");
 }
 
 void check_stages(const Project& p, Reporter& r) {
@@ -109,8 +101,7 @@ void check_stages(const Project& p, Reporter& r) {
         // The preliminary and intermediate storms are 3 h by design (their
         // MPM extremes rank the cases); a duration there would be ignored.
         r.fail(path, "stage_duration_advanced_only",
-               fmt::format("only the advanced stage takes a duration, got it on stage '{}'",
-                           p.stages[i].name));
+               fmt::format("only the advanced stage takes a duration, got it on stage '{}'", p.stages[i].name));
       } else if (!(*duration > 0.0)) {
         r.fail(path, "stage_duration_positive", fmt::format("must be > 0, got {} s", *duration));
       }

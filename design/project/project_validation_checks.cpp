@@ -6,36 +6,31 @@
 namespace spiral::design::validation_detail {
 namespace {
 
-std::string unit_suffix(std::string_view unit) {
-  return unit.empty() ? std::string() : fmt::format(" {}", unit);
-}
+std::string unit_suffix(std::string_view unit) { return unit.empty() ? std::string() : fmt::format(" {}", unit); }
 
 }  // namespace
 
-void positive(Reporter& r, const std::string& path, double value, std::string_view unit,
-              const char* condition) {
+void positive(Reporter& r, const std::string& path, double value, std::string_view unit, const char* condition) {
   if (!(value > 0.0)) {
-    r.fail(path, condition,
-           fmt::format("must be > 0{}, got {}{}", unit_suffix(unit), value, unit_suffix(unit)));
+    r.fail(path, condition, fmt::format("must be > 0{}, got {}{}", unit_suffix(unit), value, unit_suffix(unit)));
   }
 }
 
-void positive(Reporter& r, const std::string& path, const std::optional<double>& value,
-              std::string_view unit, const char* condition) {
+void positive(Reporter& r, const std::string& path, const std::optional<double>& value, std::string_view unit,
+              const char* condition) {
   if (value) positive(r, path, *value, unit, condition);
 }
 
-void at_least(Reporter& r, const std::string& path, double value, double minimum,
-              std::string_view unit, const char* condition) {
+void at_least(Reporter& r, const std::string& path, double value, double minimum, std::string_view unit,
+              const char* condition) {
   if (!(value >= minimum)) {
     r.fail(path, condition,
-           fmt::format("must be >= {}{}, got {}{}", minimum, unit_suffix(unit), value,
-                       unit_suffix(unit)));
+           fmt::format("must be >= {}{}, got {}{}", minimum, unit_suffix(unit), value, unit_suffix(unit)));
   }
 }
 
-void at_least(Reporter& r, const std::string& path, const std::optional<double>& value,
-              double minimum, std::string_view unit, const char* condition) {
+void at_least(Reporter& r, const std::string& path, const std::optional<double>& value, double minimum,
+              std::string_view unit, const char* condition) {
   if (value) at_least(r, path, *value, minimum, unit, condition);
 }
 
@@ -47,8 +42,8 @@ void check_fe_mesh(Reporter& r, const std::string& at, const FeMesh& mesh) {
     positive(r, at + ".touchdown_refinement.element_length", t->element_length_m, "m", c);
     if (t->element_length_m > mesh.element_length_m) {
       r.fail(at + ".touchdown_refinement.element_length", "touchdown_refinement_finer",
-             fmt::format("must be <= element_length {} m (a refinement), got {} m",
-                         mesh.element_length_m, t->element_length_m));
+             fmt::format("must be <= element_length {} m (a refinement), got {} m", mesh.element_length_m,
+                         t->element_length_m));
     }
   }
 }

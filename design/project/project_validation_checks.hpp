@@ -48,25 +48,23 @@ class Reporter {
 // Each reports `condition` at `path` when the value breaks the rule; an
 // absent optional value is not checked.
 
-void positive(Reporter& r, const std::string& path, double value, std::string_view unit,
+void positive(Reporter& r, const std::string& path, double value, std::string_view unit, const char* condition);
+void positive(Reporter& r, const std::string& path, const std::optional<double>& value, std::string_view unit,
               const char* condition);
-void positive(Reporter& r, const std::string& path, const std::optional<double>& value,
+void at_least(Reporter& r, const std::string& path, double value, double minimum, std::string_view unit,
+              const char* condition);
+void at_least(Reporter& r, const std::string& path, const std::optional<double>& value, double minimum,
               std::string_view unit, const char* condition);
-void at_least(Reporter& r, const std::string& path, double value, double minimum,
-              std::string_view unit, const char* condition);
-void at_least(Reporter& r, const std::string& path, const std::optional<double>& value,
-              double minimum, std::string_view unit, const char* condition);
 
 /// Reports the second and later uses of a name in a list.
 template <typename T>
-void unique_names(Reporter& r, const std::vector<T>& items, const std::string& list_path,
-                  const char* what, const char* condition) {
+void unique_names(Reporter& r, const std::vector<T>& items, const std::string& list_path, const char* what,
+                  const char* condition) {
   for (std::size_t i = 0; i < items.size(); ++i) {
     for (std::size_t j = 0; j < i; ++j) {
       if (items[i].name == items[j].name) {
         r.fail(fmt::format("{}[{}].name", list_path, i), condition,
-               fmt::format("duplicate {} name \"{}\", first used by {}[{}]", what, items[i].name,
-                           list_path, j));
+               fmt::format("duplicate {} name \"{}\", first used by {}[{}]", what, items[i].name, list_path, j));
         break;
       }
     }
@@ -83,8 +81,7 @@ template <typename T>
 std::string defined_list(const std::vector<T>& items) {
   std::vector<std::string> names;
   for (const auto& item : items) names.push_back(item.name);
-  return names.empty() ? std::string(" (none defined)")
-                       : fmt::format(" (defined: {})", fmt::join(names, ", "));
+  return names.empty() ? std::string(" (none defined)") : fmt::format(" (defined: {})", fmt::join(names, ", "));
 }
 
 // -------------------------------------------------------------- sections ----

@@ -12,8 +12,7 @@ namespace {
 
 /// Headings of a table: at least `minimum` of them, each in [0, 360) deg,
 /// strictly increasing (periodic interpolation needs an ordered circle).
-void check_headings(Reporter& r, const std::string& at, const std::vector<double>& headings_rad,
-                    std::size_t minimum) {
+void check_headings(Reporter& r, const std::string& at, const std::vector<double>& headings_rad, std::size_t minimum) {
   const char* c = "headings_valid";
   if (headings_rad.size() < minimum) {
     r.fail(at, c, fmt::format("needs at least {} headings, got {}", minimum, headings_rad.size()));
@@ -32,8 +31,7 @@ void check_headings(Reporter& r, const std::string& at, const std::vector<double
 }
 
 /// The list at `at` must have `expected` values, one per entry of `axis`.
-void check_length(Reporter& r, const std::string& at, std::size_t size, std::size_t expected,
-                  const char* axis) {
+void check_length(Reporter& r, const std::string& at, std::size_t size, std::size_t expected, const char* axis) {
   if (size != expected) {
     r.fail(at, "table_lengths_match",
            fmt::format("must have one value per entry of {} ({}), got {}", axis, expected, size));
@@ -58,17 +56,14 @@ void check_mean_drift_table(Reporter& r, const std::string& at, const MeanDriftT
       r.fail(kat, "frequencies_valid", fmt::format("must be > 0 rad/s, got {} rad/s", f[k]));
     } else if (k > 0 && !(f[k] > f[k - 1])) {
       r.fail(kat, "frequencies_valid",
-             fmt::format("frequencies must increase strictly, got {} rad/s after {} rad/s", f[k],
-                         f[k - 1]));
+             fmt::format("frequencies must increase strictly, got {} rad/s after {} rad/s", f[k], f[k - 1]));
     }
   }
-  for (const auto& [key, rows] :
-       {std::pair{".surge", &t.surge_N_per_m2}, std::pair{".sway", &t.sway_N_per_m2},
-        std::pair{".yaw", &t.yaw_N_m_per_m2}}) {
+  for (const auto& [key, rows] : {std::pair{".surge", &t.surge_N_per_m2}, std::pair{".sway", &t.sway_N_per_m2},
+                                  std::pair{".yaw", &t.yaw_N_m_per_m2}}) {
     check_length(r, at + key, rows->size(), t.headings_rad.size(), "headings_deg (rows)");
     for (std::size_t i = 0; i < rows->size(); ++i) {
-      check_length(r, fmt::format("{}{}[{}]", at, key, i), (*rows)[i].size(), f.size(),
-                   "frequencies");
+      check_length(r, fmt::format("{}{}[{}]", at, key, i), (*rows)[i].size(), f.size(), "frequencies");
     }
   }
 }
@@ -102,8 +97,7 @@ void check_hull_geometry(Reporter& r, const HullGeometry& g) {
     check_member_coefficients(r, at, p.coefficients);
     if (!((p.to_b - p.from_b).norm() > 0.0)) {
       r.fail(at + ".to", "pontoon_length_positive",
-             fmt::format("must differ from `from`, got both at [{}, {}, {}] m", p.to_b.x(),
-                         p.to_b.y(), p.to_b.z()));
+             fmt::format("must differ from `from`, got both at [{}, {}, {}] m", p.to_b.x(), p.to_b.y(), p.to_b.z()));
     }
   }
 }
@@ -124,17 +118,15 @@ void check_hull_hydrodynamics(Reporter& r, const Hull& hull) {
   if (h.rao_file) check_file(r, at + ".rao_file", *h.rao_file);
   positive(r, at + ".ulen", h.ulen_m, "m", "hull_value_positive");
   positive(r, at + ".period_scale", h.period_scale, "", "hull_value_positive");
-  positive(r, at + ".added_mass_frequency", h.added_mass_frequency_rad_per_s, "rad/s",
-           "hull_value_positive");
+  positive(r, at + ".added_mass_frequency", h.added_mass_frequency_rad_per_s, "rad/s", "hull_value_positive");
   positive(r, at + ".memory_time_step", h.memory_time_step_s, "s", "hull_value_positive");
   if (!(h.memory_duration_s > h.memory_time_step_s)) {
     r.fail(at + ".memory_duration", "memory_duration_above_step",
-           fmt::format("must be above memory_time_step {} s, got {} s", h.memory_time_step_s,
-                       h.memory_duration_s));
+           fmt::format("must be above memory_time_step {} s, got {} s", h.memory_time_step_s, h.memory_duration_s));
   }
   for (int k = 0; k < 6; ++k) {
-    at_least(r, fmt::format("{}.linear_damping[{}]", at, k), h.linear_damping[k], 0.0,
-             k < 3 ? "N s/m" : "N m s/rad", "hull_damping_non_negative");
+    at_least(r, fmt::format("{}.linear_damping[{}]", at, k), h.linear_damping[k], 0.0, k < 3 ? "N s/m" : "N m s/rad",
+             "hull_damping_non_negative");
     at_least(r, fmt::format("{}.quadratic_damping[{}]", at, k), h.quadratic_damping[k], 0.0,
              k < 3 ? "N s^2/m^2" : "N m s^2/rad^2", "hull_damping_non_negative");
   }
@@ -153,12 +145,11 @@ void check_hull(const Project& p, Reporter& r) {
   }
   if (h.inertia_kg_m2) {
     for (int k = 0; k < 3; ++k) {
-      positive(r, fmt::format("hull.inertia[{}]", k), (*h.inertia_kg_m2)(k, k), "kg m^2",
-               "hull_value_positive");
+      positive(r, fmt::format("hull.inertia[{}]", k), (*h.inertia_kg_m2)(k, k), "kg m^2", "hull_value_positive");
     }
   }
-  const bool all_values = h.displaced_volume_m3 && h.center_of_buoyancy_b && h.waterplane_area_m2 &&
-                          h.waterplane_inertia_m4;
+  const bool all_values =
+      h.displaced_volume_m3 && h.center_of_buoyancy_b && h.waterplane_area_m2 && h.waterplane_inertia_m4;
   if (!all_values && !h.hydrostatics_file) {
     r.fail("hull", "hull_hydrostatics_complete",
            "give displaced_volume, center_of_buoyancy, waterplane_area and waterplane_inertia, or "
@@ -168,15 +159,15 @@ void check_hull(const Project& p, Reporter& r) {
   positive(r, "hull.waterplane_area", h.waterplane_area_m2, "m^2", "hull_value_positive");
   if (h.waterplane_inertia_m4) {
     for (int k = 0; k < 2; ++k) {
-      positive(r, fmt::format("hull.waterplane_inertia[{}]", k), (*h.waterplane_inertia_m4)[k],
-               "m^4", "hull_value_positive");
+      positive(r, fmt::format("hull.waterplane_inertia[{}]", k), (*h.waterplane_inertia_m4)[k], "m^4",
+               "hull_value_positive");
     }
   }
   if (h.hydrostatics_file) check_file(r, "hull.hydrostatics_file", *h.hydrostatics_file);
   if (h.wind_coefficients) {
     check_load_coefficients(r, "hull.wind_coefficients", *h.wind_coefficients);
-    positive(r, "hull.wind_coefficients.reference_height", h.wind_coefficients->reference_height_m,
-             "m", "hull_value_positive");
+    positive(r, "hull.wind_coefficients.reference_height", h.wind_coefficients->reference_height_m, "m",
+             "hull_value_positive");
   }
   if (h.current_coefficients) {
     check_load_coefficients(r, "hull.current_coefficients", *h.current_coefficients);

@@ -10,8 +10,7 @@ namespace spiral::design::validation_detail {
 namespace {
 
 /// The EA/MBL/weight of a type: resolved table first, explicit input second.
-LineCheckProperties check_properties(const Project& p, const LineCheckTable& table,
-                                     const std::string& type) {
+LineCheckProperties check_properties(const Project& p, const LineCheckTable& table, const std::string& type) {
   if (const auto it = table.find(type); it != table.end()) return it->second;
   LineCheckProperties props;
   for (const auto& t : p.line_types) {
@@ -25,8 +24,7 @@ LineCheckProperties check_properties(const Project& p, const LineCheckTable& tab
 
 /// Length against the at-rest anchor-fairlead geometry (lines too short to
 /// reach without breaking, or so long that they lie slack).
-void check_line_length(const Project& p, const LineCheckTable& table, std::size_t index,
-                       Reporter& r) {
+void check_line_length(const Project& p, const LineCheckTable& table, std::size_t index, Reporter& r) {
   const MooringLine& line = p.mooring.lines[index];
   const std::string at = fmt::format("mooring.lines[{}].segments", index);
   double total_m = 0.0;
@@ -85,14 +83,12 @@ void check_line_length(const Project& p, const LineCheckTable& table, std::size_
   // Slack: hanging straight down from the fairlead and lying on the seabed,
   // the line still reaches past the anchor, so the horizontal tension is zero.
   // Only meaningful for a sinking line without buoys.
-  const bool has_buoy =
-      std::any_of(line.attachments.begin(), line.attachments.end(),
-                  [](const Attachment& a) { return a.kind == AttachmentKind::buoy; });
-  const bool buoyant_segment =
-      std::any_of(line.segments.begin(), line.segments.end(), [&](const LineSegment& s) {
-        const auto w = check_properties(p, table, s.type).submerged_weight_N_per_m;
-        return w && *w <= 0.0;
-      });
+  const bool has_buoy = std::any_of(line.attachments.begin(), line.attachments.end(),
+                                    [](const Attachment& a) { return a.kind == AttachmentKind::buoy; });
+  const bool buoyant_segment = std::any_of(line.segments.begin(), line.segments.end(), [&](const LineSegment& s) {
+    const auto w = check_properties(p, table, s.type).submerged_weight_N_per_m;
+    return w && *w <= 0.0;
+  });
   if (has_buoy || buoyant_segment || height_m <= 0.0) return;
   if (total_m - height_m > span_m) {
     r.fail(at, "line_slack",
@@ -107,14 +103,11 @@ void check_line_length(const Project& p, const LineCheckTable& table, std::size_
 
 void check_site(const Project& p, Reporter& r) {
   positive(r, "site.depth", p.site.depth_m, "m", "depth_positive");
-  positive(r, "site.water_density", p.site.water_density_kg_per_m3, "kg/m^3",
-           "water_density_positive");
+  positive(r, "site.water_density", p.site.water_density_kg_per_m3, "kg/m^3", "water_density_positive");
   positive(r, "site.gravity", p.site.gravity_m_per_s2, "m/s^2", "gravity_positive");
   positive(r, "site.air_density", p.site.air_density_kg_per_m3, "kg/m^3", "air_density_positive");
-  at_least(r, "site.seabed.friction_axial", p.site.seabed.friction_axial, 0.0, "",
-           "friction_non_negative");
-  at_least(r, "site.seabed.friction_lateral", p.site.seabed.friction_lateral, 0.0, "",
-           "friction_non_negative");
+  at_least(r, "site.seabed.friction_axial", p.site.seabed.friction_axial, 0.0, "", "friction_non_negative");
+  at_least(r, "site.seabed.friction_lateral", p.site.seabed.friction_lateral, 0.0, "", "friction_non_negative");
   positive(r, "site.seabed.normal_stiffness", p.site.seabed.normal_stiffness_Pa_per_m, "Pa/m",
            "seabed_stiffness_positive");
 }
@@ -137,8 +130,7 @@ void check_line_types(const Project& p, Reporter& r) {
     }
     for (const auto& [key, value] :
          {std::pair{".drag_normal", t.drag_normal}, std::pair{".drag_axial", t.drag_axial},
-          std::pair{".added_mass_normal", t.added_mass_normal},
-          std::pair{".added_mass_axial", t.added_mass_axial}}) {
+          std::pair{".added_mass_normal", t.added_mass_normal}, std::pair{".added_mass_axial", t.added_mass_axial}}) {
       at_least(r, at + key, value, 0.0, "", "coefficient_non_negative");
     }
     if (t.grade && t.kind != LineKind::chain) {
@@ -150,8 +142,7 @@ void check_line_types(const Project& p, Reporter& r) {
                "applies to polyester line types only (give axial_stiffness for other kinds)");
       }
       if (t.dynamic_stiffness_mbl) {
-        r.fail(at + ".dynamic_stiffness_mbl", "key_not_applicable",
-               "applies to polyester line types only");
+        r.fail(at + ".dynamic_stiffness_mbl", "key_not_applicable", "applies to polyester line types only");
       }
     }
     if (t.kind == LineKind::user) {
@@ -184,8 +175,7 @@ void check_mooring(const Project& p, const LineCheckTable& table, Reporter& r) {
       positive(r, sat + ".length", line.segments[s].length_m, "m", "segment_length_positive");
       if (!defined(p.line_types, line.segments[s].type)) {
         r.fail(sat + ".type", "line_type_defined",
-               fmt::format("undefined line type \"{}\"{}", line.segments[s].type,
-                           defined_list(p.line_types)));
+               fmt::format("undefined line type \"{}\"{}", line.segments[s].type, defined_list(p.line_types)));
       }
     }
     for (std::size_t a = 0; a < line.attachments.size(); ++a) {
@@ -195,8 +185,7 @@ void check_mooring(const Project& p, const LineCheckTable& table, Reporter& r) {
       if (att.after_segment < 0 || att.after_segment >= joints) {
         r.fail(aat + ".after_segment", "attachment_joint_exists",
                joints > 0
-                   ? fmt::format("must be a joint between segments, 0 to {}, got {}", joints - 1,
-                                 att.after_segment)
+                   ? fmt::format("must be a joint between segments, 0 to {}, got {}", joints - 1, att.after_segment)
                    : fmt::format("the line has no joint (one segment), got {}", att.after_segment));
       }
       at_least(r, aat + ".mass", att.mass_kg, 0.0, "kg", "attachment_value_non_negative");
@@ -206,12 +195,11 @@ void check_mooring(const Project& p, const LineCheckTable& table, Reporter& r) {
       const double z = line.anchor_g.z();
       if (z < seabed_z - kSeabedTolerance_m) {
         r.fail(at + ".anchor", "anchor_below_seabed",
-               fmt::format("anchor is {:.6g} m below the seabed: z = {} m, seabed at z = {} m",
-                           seabed_z - z, z, seabed_z));
+               fmt::format("anchor is {:.6g} m below the seabed: z = {} m, seabed at z = {} m", seabed_z - z, z,
+                           seabed_z));
       } else if (z > 0.0) {
-        r.fail(
-            at + ".anchor", "anchor_above_water",
-            fmt::format("anchor is above the water: z = {} m, must be in [{}, 0] m", z, seabed_z));
+        r.fail(at + ".anchor", "anchor_above_water",
+               fmt::format("anchor is above the water: z = {} m, must be in [{}, 0] m", z, seabed_z));
       }
     }
     const double fairlead_z_g = p.hull.reference_point_g.z() + line.fairlead_b.z();
@@ -230,8 +218,7 @@ void check_mooring(const Project& p, const LineCheckTable& table, Reporter& r) {
     for (std::size_t k = 0; k < names.size(); ++k) {
       if (!defined(p.mooring.lines, names[k])) {
         r.fail(fmt::format("mooring.groups[{}].lines[{}]", g, k), "line_defined",
-               fmt::format("undefined mooring line \"{}\"{}", names[k],
-                           defined_list(p.mooring.lines)));
+               fmt::format("undefined mooring line \"{}\"{}", names[k], defined_list(p.mooring.lines)));
       }
     }
   }

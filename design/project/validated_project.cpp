@@ -19,14 +19,13 @@ ValidatedProject load_validated_project(const std::filesystem::path& file) {
   for (std::size_t i = 0; i < project.line_types.size(); ++i) {
     const LineTypeInput& input = project.line_types[i];
     try {
-      LineTypeProperties properties = resolve_line_type(input, project.site.water_density_kg_per_m3,
-                                                        project.site.gravity_m_per_s2);
+      LineTypeProperties properties =
+          resolve_line_type(input, project.site.water_density_kg_per_m3, project.site.gravity_m_per_s2);
       check_table[input.name] = {properties.axial_stiffness_N, properties.breaking_load_N,
                                  properties.submerged_weight_N_per_m};
       result.line_types.push_back(std::move(properties));
     } catch (const std::invalid_argument& error) {
-      issues.push_back(make_issue(project, fmt::format("line_types[{}]", i),
-                                  "line_type_resolvable", error.what()));
+      issues.push_back(make_issue(project, fmt::format("line_types[{}]", i), "line_type_resolvable", error.what()));
     }
   }
   for (InputIssue& issue : check_project(project, check_table)) issues.push_back(std::move(issue));

@@ -8,8 +8,7 @@
 
 namespace spiral::design::loader_detail {
 
-void Context::add(const YAML::Mark& mark, std::string path, std::string message,
-                  std::string condition) {
+void Context::add(const YAML::Mark& mark, std::string path, std::string message, std::string condition) {
   InputIssue issue;
   issue.file = file;
   if (!mark.is_null()) {
@@ -41,9 +40,7 @@ std::string describe(const YAML::Node& node) {
   }
 }
 
-std::string with_unit(std::string_view unit) {
-  return unit.empty() ? std::string() : fmt::format(" in {}", unit);
-}
+std::string with_unit(std::string_view unit) { return unit.empty() ? std::string() : fmt::format(" in {}", unit); }
 
 namespace {
 
@@ -83,14 +80,11 @@ std::string join_path(const std::string& parent, std::string_view key) {
   return parent.empty() ? std::string(key) : fmt::format("{}.{}", parent, key);
 }
 
-std::string index_path(const std::string& parent, std::size_t index) {
-  return fmt::format("{}[{}]", parent, index);
-}
+std::string index_path(const std::string& parent, std::size_t index) { return fmt::format("{}[{}]", parent, index); }
 
 // ---------------------------------------------------------------- scalars ----
 
-std::optional<double> to_number(Context& ctx, const YAML::Node& node, const std::string& path,
-                                std::string_view unit) {
+std::optional<double> to_number(Context& ctx, const YAML::Node& node, const std::string& path, std::string_view unit) {
   // A quoted scalar ("12") is a string in YAML; numbers must be written plainly.
   if (node.IsScalar() && node.Tag() != "!") {
     std::string_view text = node.Scalar();
@@ -101,8 +95,7 @@ std::optional<double> to_number(Context& ctx, const YAML::Node& node, const std:
       return value;
     }
   }
-  ctx.add(node.Mark(), path,
-          fmt::format("expected a finite number{}, got {}", with_unit(unit), describe(node)),
+  ctx.add(node.Mark(), path, fmt::format("expected a finite number{}, got {}", with_unit(unit), describe(node)),
           "wrong_type");
   return std::nullopt;
 }
@@ -114,24 +107,20 @@ std::optional<int> to_integer(Context& ctx, const YAML::Node& node, const std::s
     const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
     if (error == std::errc() && end == text.data() + text.size()) return value;
   }
-  ctx.add(node.Mark(), path, fmt::format("expected an integer, got {}", describe(node)),
-          "wrong_type");
+  ctx.add(node.Mark(), path, fmt::format("expected an integer, got {}", describe(node)), "wrong_type");
   return std::nullopt;
 }
 
-std::optional<std::string> to_string_value(Context& ctx, const YAML::Node& node,
-                                           const std::string& path) {
+std::optional<std::string> to_string_value(Context& ctx, const YAML::Node& node, const std::string& path) {
   if (node.IsScalar() && !node.Scalar().empty()) return node.Scalar();
-  ctx.add(node.Mark(), path, fmt::format("expected a text value, got {}", describe(node)),
-          "wrong_type");
+  ctx.add(node.Mark(), path, fmt::format("expected a text value, got {}", describe(node)), "wrong_type");
   return std::nullopt;
 }
 
-std::optional<std::vector<double>> to_number_list(Context& ctx, const YAML::Node& node,
-                                                  const std::string& path, std::string_view unit) {
+std::optional<std::vector<double>> to_number_list(Context& ctx, const YAML::Node& node, const std::string& path,
+                                                  std::string_view unit) {
   if (!node.IsSequence()) {
-    ctx.add(node.Mark(), path,
-            fmt::format("expected a list of numbers{}, got {}", with_unit(unit), describe(node)),
+    ctx.add(node.Mark(), path, fmt::format("expected a list of numbers{}, got {}", with_unit(unit), describe(node)),
             "wrong_type");
     return std::nullopt;
   }
@@ -148,12 +137,10 @@ std::optional<std::vector<double>> to_number_list(Context& ctx, const YAML::Node
 }
 
 std::optional<std::vector<std::vector<double>>> to_number_rows(Context& ctx, const YAML::Node& node,
-                                                               const std::string& path,
-                                                               std::string_view unit) {
+                                                               const std::string& path, std::string_view unit) {
   if (!node.IsSequence()) {
     ctx.add(node.Mark(), path,
-            fmt::format("expected a list of rows (lists of numbers{}), got {}", with_unit(unit),
-                        describe(node)),
+            fmt::format("expected a list of rows (lists of numbers{}), got {}", with_unit(unit), describe(node)),
             "wrong_type");
     return std::nullopt;
   }
@@ -179,11 +166,9 @@ MapReader::MapReader(Context& ctx, const YAML::Node& node, std::string path)
       ctx_.add(item.first.Mark(), path_, "keys must be plain names", "wrong_type");
       continue;
     }
-    const bool duplicate = std::any_of(entries_.begin(), entries_.end(),
-                                       [&](const Entry& e) { return e.key == key; });
+    const bool duplicate = std::any_of(entries_.begin(), entries_.end(), [&](const Entry& e) { return e.key == key; });
     if (duplicate) {
-      ctx_.add(item.first.Mark(), join_path(path_, key), "key given more than once",
-               "duplicate_key");
+      ctx_.add(item.first.Mark(), join_path(path_, key), "key given more than once", "duplicate_key");
       continue;
     }
     entries_.push_back(Entry{key, item.first.Mark(), item.second, false});
@@ -195,18 +180,15 @@ MapReader::~MapReader() {
   for (const auto& entry : entries_) {
     if (entry.used) continue;
     ctx_.add(entry.key_mark, join_path(path_, entry.key),
-             fmt::format("unknown key \"{}\"{}", entry.key, suggestion(entry.key, known)),
-             "unknown_key");
+             fmt::format("unknown key \"{}\"{}", entry.key, suggestion(entry.key, known)), "unknown_key");
   }
 }
 
 bool MapReader::has(std::string_view key) const {
-  return std::any_of(entries_.begin(), entries_.end(),
-                     [&](const Entry& e) { return e.key == key; });
+  return std::any_of(entries_.begin(), entries_.end(), [&](const Entry& e) { return e.key == key; });
 }
 
-std::optional<YAML::Node> MapReader::child(std::string_view key, Presence presence,
-                                           std::string_view what) {
+std::optional<YAML::Node> MapReader::child(std::string_view key, Presence presence, std::string_view what) {
   known_.emplace_back(key);
   for (auto& entry : entries_) {
     if (entry.key != key) continue;
@@ -216,15 +198,13 @@ std::optional<YAML::Node> MapReader::child(std::string_view key, Presence presen
   }
   if (presence == kRequired) {
     ctx_.add(node_.Mark(), path_of(key),
-             what.empty() ? std::string("required key is missing")
-                          : fmt::format("required key is missing ({})", what),
+             what.empty() ? std::string("required key is missing") : fmt::format("required key is missing ({})", what),
              "missing_key");
   }
   return std::nullopt;
 }
 
-std::optional<double> MapReader::number(std::string_view key, std::string_view unit,
-                                        Presence presence) {
+std::optional<double> MapReader::number(std::string_view key, std::string_view unit, Presence presence) {
   const auto node = child(key, presence, unit);
   return node ? to_number(ctx_, *node, path_of(key), unit) : std::nullopt;
 }
@@ -244,8 +224,7 @@ std::optional<std::string> MapReader::text(std::string_view key, Presence presen
   return node ? to_string_value(ctx_, *node, path_of(key)) : std::nullopt;
 }
 
-std::optional<std::vector<double>> MapReader::numbers(std::string_view key, std::string_view unit,
-                                                      Presence presence) {
+std::optional<std::vector<double>> MapReader::numbers(std::string_view key, std::string_view unit, Presence presence) {
   const auto node = child(key, presence, unit);
   return node ? to_number_list(ctx_, *node, path_of(key), unit) : std::nullopt;
 }
@@ -258,8 +237,7 @@ std::optional<std::vector<double>> MapReader::angles(std::string_view key, Prese
   return values;
 }
 
-std::optional<std::vector<std::vector<double>>> MapReader::number_rows(std::string_view key,
-                                                                       std::string_view unit,
+std::optional<std::vector<std::vector<double>>> MapReader::number_rows(std::string_view key, std::string_view unit,
                                                                        Presence presence) {
   const auto node = child(key, presence, unit);
   return node ? to_number_rows(ctx_, *node, path_of(key), unit) : std::nullopt;
@@ -273,8 +251,7 @@ std::optional<Eigen::Vector3d> MapReader::position(std::string_view key, Presenc
   if (node->IsSequence()) return to_vector<3>(ctx_, *node, path, "m");
   if (!node->IsMap()) {
     ctx_.add(node->Mark(), path,
-             fmt::format("expected a position [x, y, z] or {{radius, azimuth_deg, z}} in m, got {}",
-                         describe(*node)),
+             fmt::format("expected a position [x, y, z] or {{radius, azimuth_deg, z}} in m, got {}", describe(*node)),
              "wrong_type");
     return std::nullopt;
   }

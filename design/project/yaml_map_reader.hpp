@@ -61,34 +61,29 @@ std::string index_path(const std::string& parent, std::size_t index);
 // returns nothing.
 
 /// A finite number written plainly (a quoted "12" is text in YAML).
-std::optional<double> to_number(Context& ctx, const YAML::Node& node, const std::string& path,
-                                std::string_view unit);
+std::optional<double> to_number(Context& ctx, const YAML::Node& node, const std::string& path, std::string_view unit);
 std::optional<int> to_integer(Context& ctx, const YAML::Node& node, const std::string& path);
 /// A non-empty scalar.
-std::optional<std::string> to_string_value(Context& ctx, const YAML::Node& node,
-                                           const std::string& path);
+std::optional<std::string> to_string_value(Context& ctx, const YAML::Node& node, const std::string& path);
 
 template <typename E>
 using EnumTable = std::vector<std::pair<std::string_view, E>>;
 
 /// One of the names of `table` (bad_enum with a suggestion otherwise).
 template <typename E>
-std::optional<E> to_enum(Context& ctx, const YAML::Node& node, const std::string& path,
-                         const EnumTable<E>& table) {
+std::optional<E> to_enum(Context& ctx, const YAML::Node& node, const std::string& path, const EnumTable<E>& table) {
   std::vector<std::string_view> names;
   for (const auto& [name, value] : table) names.push_back(name);
   const std::string allowed = fmt::format("{}", fmt::join(names, " | "));
   if (!node.IsScalar()) {
-    ctx.add(node.Mark(), path, fmt::format("expected one of {}, got {}", allowed, describe(node)),
-            "wrong_type");
+    ctx.add(node.Mark(), path, fmt::format("expected one of {}, got {}", allowed, describe(node)), "wrong_type");
     return std::nullopt;
   }
   for (const auto& [name, value] : table) {
     if (node.Scalar() == name) return value;
   }
   ctx.add(node.Mark(), path,
-          fmt::format("unknown value \"{}\"; allowed: {}{}", node.Scalar(), allowed,
-                      suggestion(node.Scalar(), names)),
+          fmt::format("unknown value \"{}\"; allowed: {}{}", node.Scalar(), allowed, suggestion(node.Scalar(), names)),
           "bad_enum");
   return std::nullopt;
 }
@@ -98,15 +93,13 @@ std::string with_unit(std::string_view unit);
 
 /// A fixed-size list of numbers, e.g. [x, y, z].
 template <int N>
-std::optional<Eigen::Matrix<double, N, 1>> to_vector(Context& ctx, const YAML::Node& node,
-                                                     const std::string& path,
+std::optional<Eigen::Matrix<double, N, 1>> to_vector(Context& ctx, const YAML::Node& node, const std::string& path,
                                                      std::string_view unit) {
   if (!node.IsSequence() || node.size() != static_cast<std::size_t>(N)) {
-    ctx.add(
-        node.Mark(), path,
-        fmt::format("expected a list of {} numbers{}, got {}{}", N, with_unit(unit), describe(node),
-                    node.IsSequence() ? fmt::format(" of {} items", node.size()) : ""),
-        "wrong_type");
+    ctx.add(node.Mark(), path,
+            fmt::format("expected a list of {} numbers{}, got {}{}", N, with_unit(unit), describe(node),
+                        node.IsSequence() ? fmt::format(" of {} items", node.size()) : ""),
+            "wrong_type");
     return std::nullopt;
   }
   Eigen::Matrix<double, N, 1> out;
@@ -120,14 +113,13 @@ std::optional<Eigen::Matrix<double, N, 1>> to_vector(Context& ctx, const YAML::N
 }
 
 /// A list of numbers of any length, e.g. [0, 30, 60]; item positions are recorded.
-std::optional<std::vector<double>> to_number_list(Context& ctx, const YAML::Node& node,
-                                                  const std::string& path, std::string_view unit);
+std::optional<std::vector<double>> to_number_list(Context& ctx, const YAML::Node& node, const std::string& path,
+                                                  std::string_view unit);
 
 /// A list of rows of numbers, [[...], [...]]; rows may differ in length here
 /// (the validation pass checks them against the table's axes).
 std::optional<std::vector<std::vector<double>>> to_number_rows(Context& ctx, const YAML::Node& node,
-                                                               const std::string& path,
-                                                               std::string_view unit);
+                                                               const std::string& path, std::string_view unit);
 
 // ------------------------------------------------------------------ maps ----
 
@@ -150,20 +142,17 @@ class MapReader {
   bool has(std::string_view key) const;
 
   /// The value of `key`; reports a missing required key (at the map's position).
-  std::optional<YAML::Node> child(std::string_view key, Presence presence,
-                                  std::string_view what = {});
+  std::optional<YAML::Node> child(std::string_view key, Presence presence, std::string_view what = {});
 
   std::optional<double> number(std::string_view key, std::string_view unit, Presence presence);
   /// Reads `<key>_deg` in degrees and returns radians.
   std::optional<double> angle(std::string_view key, Presence presence);
   std::optional<int> integer(std::string_view key, Presence presence);
   std::optional<std::string> text(std::string_view key, Presence presence);
-  std::optional<std::vector<double>> numbers(std::string_view key, std::string_view unit,
-                                             Presence presence);
+  std::optional<std::vector<double>> numbers(std::string_view key, std::string_view unit, Presence presence);
   /// Reads the list `<key>_deg` in degrees and returns radians.
   std::optional<std::vector<double>> angles(std::string_view key, Presence presence);
-  std::optional<std::vector<std::vector<double>>> number_rows(std::string_view key,
-                                                              std::string_view unit,
+  std::optional<std::vector<std::vector<double>>> number_rows(std::string_view key, std::string_view unit,
                                                               Presence presence);
   template <typename E>
   std::optional<E> enumeration(std::string_view key, const EnumTable<E>& table, Presence presence) {
@@ -171,8 +160,7 @@ class MapReader {
     return node ? to_enum(ctx_, *node, path_of(key), table) : std::nullopt;
   }
   template <int N>
-  std::optional<Eigen::Matrix<double, N, 1>> vector(std::string_view key, std::string_view unit,
-                                                    Presence presence) {
+  std::optional<Eigen::Matrix<double, N, 1>> vector(std::string_view key, std::string_view unit, Presence presence) {
     const auto node = child(key, presence, unit);
     return node ? to_vector<N>(ctx_, *node, path_of(key), unit) : std::nullopt;
   }
@@ -188,8 +176,7 @@ class MapReader {
     const auto node = child(key, presence);
     if (!node) return;
     if (!node->IsMap()) {
-      ctx_.add(node->Mark(), path_of(key), fmt::format("expected a map, got {}", describe(*node)),
-               "wrong_type");
+      ctx_.add(node->Mark(), path_of(key), fmt::format("expected a map, got {}", describe(*node)), "wrong_type");
       return;
     }
     MapReader reader(ctx_, *node, path_of(key));
@@ -201,8 +188,7 @@ class MapReader {
   void list_of_maps(std::string_view key, Presence presence, F&& read) {
     list(key, presence, [&](const YAML::Node& item, const std::string& item_path) {
       if (!item.IsMap()) {
-        ctx_.add(item.Mark(), item_path, fmt::format("expected a map, got {}", describe(item)),
-                 "wrong_type");
+        ctx_.add(item.Mark(), item_path, fmt::format("expected a map, got {}", describe(item)), "wrong_type");
         return;
       }
       MapReader reader(ctx_, item, item_path);
@@ -217,8 +203,7 @@ class MapReader {
     if (!node) return;
     const std::string list_path = path_of(key);
     if (!node->IsSequence()) {
-      ctx_.add(node->Mark(), list_path, fmt::format("expected a list, got {}", describe(*node)),
-               "wrong_type");
+      ctx_.add(node->Mark(), list_path, fmt::format("expected a list, got {}", describe(*node)), "wrong_type");
       return;
     }
     for (std::size_t i = 0; i < node->size(); ++i) {

@@ -15,15 +15,11 @@ constexpr const char* kDofNames[6] = {"surge", "sway", "heave", "roll", "pitch",
 constexpr double kRadToDeg = 180.0 / std::numbers::pi;
 
 /// Output unit of a DOF: m for translations, deg for rotations (SI inside).
-double dof_scale(int dof) {
-  return dof < 3 ? 1.0 : kRadToDeg;
-}
-const char* dof_unit(int dof) {
-  return dof < 3 ? "m" : "deg";
-}
+double dof_scale(int dof) { return dof < 3 ? 1.0 : kRadToDeg; }
+const char* dof_unit(int dof) { return dof < 3 ? "m" : "deg"; }
 
-nlohmann::json channel_json(const std::string& name, const std::string& unit,
-                            const std::vector<double>& x, double dt_s) {
+nlohmann::json channel_json(const std::string& name, const std::string& unit, const std::vector<double>& x,
+                            double dt_s) {
   nlohmann::json j;
   j["name"] = name;
   j["unit"] = unit;
@@ -50,12 +46,10 @@ nlohmann::json channel_json(const std::string& name, const std::string& unit,
     }
     j["spectrum"] = {{"frequency_rad_per_s", w}, {"density_per_rad_per_s", d}, {"welch_segments", sp.segments}};
     j["zero_upcrossing_period_s"] = s.zero_upcrossing_period_s;
-    j["mpm_max_3h"] = {{"gumbel", s.maximum.mpm_gumbel},
-                       {"weibull", s.maximum.mpm_weibull},
-                       {"rayleigh", s.maximum.mpm_rayleigh}};
-    j["mpm_min_3h"] = {{"gumbel", s.minimum.mpm_gumbel},
-                       {"weibull", s.minimum.mpm_weibull},
-                       {"rayleigh", s.minimum.mpm_rayleigh}};
+    j["mpm_max_3h"] = {
+        {"gumbel", s.maximum.mpm_gumbel}, {"weibull", s.maximum.mpm_weibull}, {"rayleigh", s.maximum.mpm_rayleigh}};
+    j["mpm_min_3h"] = {
+        {"gumbel", s.minimum.mpm_gumbel}, {"weibull", s.minimum.mpm_weibull}, {"rayleigh", s.minimum.mpm_rayleigh}};
   } catch (const std::exception& e) {
     j["extremes_unavailable"] = e.what();
   }
@@ -64,8 +58,7 @@ nlohmann::json channel_json(const std::string& name, const std::string& unit,
 
 std::vector<double> row_of(const Eigen::Matrix<double, 6, Eigen::Dynamic>& m, int dof) {
   std::vector<double> out(static_cast<std::size_t>(m.cols()));
-  for (Eigen::Index k = 0; k < m.cols(); ++k)
-    out[static_cast<std::size_t>(k)] = m(dof, k) * dof_scale(dof);
+  for (Eigen::Index k = 0; k < m.cols(); ++k) out[static_cast<std::size_t>(k)] = m(dof, k) * dof_scale(dof);
   return out;
 }
 
@@ -98,10 +91,8 @@ std::string dynamic_time_series_csv(const DynamicAnalysisResult& r) {
     for (const auto* m : {&r.total, &r.low_frequency, &r.wave_frequency}) {
       for (int d = 0; d < 6; ++d) out << fmt::format(",{:.6g}", (*m)(d, k) * dof_scale(d));
     }
-    for (const auto& t : r.tensions)
-      out << fmt::format(",{:.7g}", t.tension_N[static_cast<std::size_t>(k)]);
-    for (const auto& t : r.dynamic_tensions)
-      out << fmt::format(",{:.7g}", t.tension_N[static_cast<std::size_t>(k)]);
+    for (const auto& t : r.tensions) out << fmt::format(",{:.7g}", t.tension_N[static_cast<std::size_t>(k)]);
+    for (const auto& t : r.dynamic_tensions) out << fmt::format(",{:.7g}", t.tension_N[static_cast<std::size_t>(k)]);
     for (const auto& t : r.tensions) {
       const Eigen::Vector3d& f = t.fairlead_g_m[static_cast<std::size_t>(k)];
       out << fmt::format(",{:.4f},{:.4f},{:.4f}", f.x(), f.y(), f.z());
@@ -111,8 +102,7 @@ std::string dynamic_time_series_csv(const DynamicAnalysisResult& r) {
   return out.str();
 }
 
-nlohmann::json dynamic_analysis_to_json(const DynamicAnalysisResult& r,
-                                        const std::string& project_name) {
+nlohmann::json dynamic_analysis_to_json(const DynamicAnalysisResult& r, const std::string& project_name) {
   nlohmann::json j;
   j["format"] = "spiral.dynamic_analysis";
   j["format_version"] = 1;
@@ -137,15 +127,14 @@ nlohmann::json dynamic_analysis_to_json(const DynamicAnalysisResult& r,
   nlohmann::json channels = nlohmann::json::array();
   if (r.times_s.size() >= 2) {
     for (int d = 0; d < 6; ++d) {
-      channels.push_back(channel_json(fmt::format("{}_{}", kDofNames[d], dof_unit(d)), dof_unit(d),
-                                      row_of(r.total, d), dt));
+      channels.push_back(
+          channel_json(fmt::format("{}_{}", kDofNames[d], dof_unit(d)), dof_unit(d), row_of(r.total, d), dt));
     }
     for (int d = 0; d < 6; ++d) {
-      channels.push_back(channel_json(fmt::format("{}_lf_{}", kDofNames[d], dof_unit(d)),
-                                      dof_unit(d), row_of(r.low_frequency, d), dt));
+      channels.push_back(channel_json(fmt::format("{}_lf_{}", kDofNames[d], dof_unit(d)), dof_unit(d),
+                                      row_of(r.low_frequency, d), dt));
     }
-    for (const auto& t : r.tensions)
-      channels.push_back(channel_json("tension_" + t.line + "_N", "N", t.tension_N, dt));
+    for (const auto& t : r.tensions) channels.push_back(channel_json("tension_" + t.line + "_N", "N", t.tension_N, dt));
     for (const auto& t : r.dynamic_tensions)
       channels.push_back(channel_json("dynamic_tension_" + t.line + "_N", "N", t.tension_N, dt));
   }

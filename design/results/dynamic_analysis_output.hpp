@@ -21,7 +21,6 @@ std::string dynamic_time_series_csv(const DynamicAnalysisResult& result);
 /// Statistics of every channel (total motions, LF motions, tensions) and the
 /// run's metadata. Channels too short for an extreme-value fit carry
 /// "extremes_unavailable" with the reason instead of the MPMs.
-nlohmann::json dynamic_analysis_to_json(const DynamicAnalysisResult& result,
-                                        const std::string& project_name);
+nlohmann::json dynamic_analysis_to_json(const DynamicAnalysisResult& result, const std::string& project_name);
 
 }  // namespace spiral::design

@@ -28,8 +28,7 @@ nlohmann::json comparison_to_json(const LevelComparison& c) {
     if (coupled != nullptr && l.wall_s > 0.0) {
       lj["speedup_vs_coupled"] = coupled->wall_s / l.wall_s;
       if (l.level != AnalysisLevel::coupled)
-        lj["speedup_with_line_dynamics_vs_coupled"] =
-            coupled->wall_s / (l.wall_s + l.line_dynamics_wall_s);
+        lj["speedup_with_line_dynamics_vs_coupled"] = coupled->wall_s / (l.wall_s + l.line_dynamics_wall_s);
     }
     if (const ChannelSummary* o = find_channel(l, "offset_m")) {
       lj["max_offset_m"] = o->maximum;
@@ -37,8 +36,8 @@ nlohmann::json comparison_to_json(const LevelComparison& c) {
     }
     nlohmann::json channels;
     for (const ChannelSummary& ch : l.channels) {
-      nlohmann::json cj = {{"unit", ch.unit},       {"mean", ch.mean}, {"std", ch.std_dev},
-                           {"max", ch.maximum},     {"mpm", ch.mpm},   {"mpm_fitted", ch.mpm_fitted}};
+      nlohmann::json cj = {{"unit", ch.unit},   {"mean", ch.mean}, {"std", ch.std_dev},
+                           {"max", ch.maximum}, {"mpm", ch.mpm},   {"mpm_fitted", ch.mpm_fitted}};
       const ChannelSummary* ref = coupled != nullptr ? find_channel(*coupled, ch.name) : nullptr;
       if (ref == nullptr && coupled != nullptr && ch.name.rfind("qs_", 0) == 0)
         ref = find_channel(*coupled, ch.name.substr(3));  // quasi-static against coupled tension
@@ -104,8 +103,7 @@ std::string comparison_table(const LevelComparison& c) {
   for (const LevelSummary& l : c.levels) {
     cost += fmt::format(" | {:>24}", l.level == AnalysisLevel::coupled
                                          ? fmt::format("{:.3g}", l.wall_s)
-                                         : fmt::format("{:.3g} (+{:.3g} FE)", l.wall_s,
-                                                       l.line_dynamics_wall_s));
+                                         : fmt::format("{:.3g} (+{:.3g} FE)", l.wall_s, l.line_dynamics_wall_s));
     speed += fmt::format(" | {:>24}", coupled != nullptr && l.wall_s > 0.0
                                           ? fmt::format("{:.1f}x", coupled->wall_s / l.wall_s)
                                           : std::string("-"));

@@ -11,13 +11,9 @@ namespace {
 
 constexpr double kRadToDeg = 180.0 / std::numbers::pi;
 
-nlohmann::json number(double v) {
-  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
-}
+nlohmann::json number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
-double pct(double offset_m, double depth_m) {
-  return 100.0 * offset_m / depth_m;
-}
+double pct(double offset_m, double depth_m) { return 100.0 * offset_m / depth_m; }
 
 /// One letter per criterion for the compact table (legend printed with it).
 char criterion_letter(const std::string& c) {
@@ -33,9 +29,7 @@ char criterion_letter(const std::string& c) {
   return '?';
 }
 
-double time_per_solve_s(const SozResult& r) {
-  return r.solves > 0 ? r.zone_wall_s * r.threads / r.solves : 0.0;
-}
+double time_per_solve_s(const SozResult& r) { return r.solves > 0 ? r.zone_wall_s * r.threads / r.solves : 0.0; }
 
 }  // namespace
 
@@ -54,8 +48,7 @@ nlohmann::json soz_to_json(const SozResult& r) {
       utilization.push_back(number(d.governing_utilization));
       limited.push_back(d.limited_by_search);
       for (const SozBand& b : d.reopened_bands) {
-        bands.push_back(
-            {{"direction_deg", d.direction_deg}, {"from_m", b.from_m}, {"to_m", b.to_m}});
+        bands.push_back({{"direction_deg", d.direction_deg}, {"from_m", b.from_m}, {"to_m", b.to_m}});
       }
       if (!d.solver_message.empty())
         messages.push_back({{"direction_deg", d.direction_deg}, {"message", d.solver_message}});
@@ -81,10 +74,10 @@ nlohmann::json soz_to_json(const SozResult& r) {
                       {"near_governing", z.near_governing},
                       {"far_governing", z.far_governing},
                       {"solves", z.solves},
-                      {"zone_rotated_from", z.zone_rotated_from.empty() ? nlohmann::json(nullptr)
-                                                                        : nlohmann::json(z.zone_rotated_from)},
-                      {"zone_mirrored_from", z.zone_mirrored_from.empty() ? nlohmann::json(nullptr)
-                                                                          : nlohmann::json(z.zone_mirrored_from)},
+                      {"zone_rotated_from",
+                       z.zone_rotated_from.empty() ? nlohmann::json(nullptr) : nlohmann::json(z.zone_rotated_from)},
+                      {"zone_mirrored_from",
+                       z.zone_mirrored_from.empty() ? nlohmann::json(nullptr) : nlohmann::json(z.zone_mirrored_from)},
                       {"zone_mirror_symmetric", z.zone_mirror_symmetric}});
   }
   nlohmann::json platform_pct = nlohmann::json::array();
@@ -109,8 +102,7 @@ nlohmann::json soz_to_json(const SozResult& r) {
     }
     checks.push_back({{"case", c.case_name},
                       {"condition", c.condition},
-                      {"damaged_line",
-                       c.damaged_line ? nlohmann::json(*c.damaged_line) : nlohmann::json(nullptr)},
+                      {"damaged_line", c.damaged_line ? nlohmann::json(*c.damaged_line) : nlohmann::json(nullptr)},
                       {"kind", c.kind},
                       {"zone", c.zone},
                       {"offset_m", number(c.offset_m)},
@@ -194,23 +186,20 @@ std::string soz_to_csv(const SozResult& r) {
       "limited_by_search,reopened_bands\n";
   for (const RiserSoz& z : r.risers) {
     for (const SozDirection& d : z.directions) {
-      out += fmt::format("{},{},{:.3f},{:.4f},{},{:.4f},{},{}\n", d.direction_deg, z.name,
-                         d.allowable_offset_m, pct(d.allowable_offset_m, r.depth_m),
-                         d.governing_criterion, d.governing_utilization,
+      out += fmt::format("{},{},{:.3f},{:.4f},{},{:.4f},{},{}\n", d.direction_deg, z.name, d.allowable_offset_m,
+                         pct(d.allowable_offset_m, r.depth_m), d.governing_criterion, d.governing_utilization,
                          d.limited_by_search ? 1 : 0, d.reopened_bands.size());
     }
   }
   for (std::size_t k = 0; k < r.directions_deg.size(); ++k) {
     const double a = r.platform.allowable_offset_m[k];
-    out +=
-        fmt::format("{},platform,{:.3f},{:.4f},{},,,\n", r.directions_deg[k], a, pct(a, r.depth_m),
-                    r.platform.governing_riser[k] + ":" + r.platform.governing_criterion[k]);
+    out += fmt::format("{},platform,{:.3f},{:.4f},{},,,\n", r.directions_deg[k], a, pct(a, r.depth_m),
+                       r.platform.governing_riser[k] + ":" + r.platform.governing_criterion[k]);
   }
   for (const SozZone& zone : r.zones) {
     for (std::size_t k = 0; k < r.directions_deg.size(); ++k) {
       const double a = zone.platform.allowable_offset_m[k];
-      out += fmt::format("{},platform@{},{:.3f},{:.4f},{},,,\n", r.directions_deg[k], zone.name, a,
-                         pct(a, r.depth_m),
+      out += fmt::format("{},platform@{},{:.3f},{:.4f},{},,,\n", r.directions_deg[k], zone.name, a, pct(a, r.depth_m),
                          zone.platform.governing_riser[k] + ":" + zone.platform.governing_criterion[k]);
     }
   }
@@ -219,10 +208,10 @@ std::string soz_to_csv(const SozResult& r) {
 
 std::string soz_table(const SozResult& r) {
   const SozOptions& o = r.options;
-  std::string out = fmt::format(
-      "Riser safe operational zones — {} — {} ({}; design condition {}; model {})\n", r.project,
-      r.conditions.name, r.conditions.current ? "with its current on the risers" : "no current",
-      to_string(r.conditions.condition), to_string(o.model));
+  std::string out =
+      fmt::format("Riser safe operational zones — {} — {} ({}; design condition {}; model {})\n", r.project,
+                  r.conditions.name, r.conditions.current ? "with its current on the risers" : "no current",
+                  to_string(r.conditions.condition), to_string(o.model));
   out += fmt::format(
       "Offsets of the hull reference point, m (% of depth {:.0f} m); directions every {}° CCW from "
       "+x; "
@@ -233,14 +222,13 @@ std::string soz_table(const SozResult& r) {
     out += fmt::format(
         "Mean hull position of the case: heave {:.3f} m, roll {:.3f}°, pitch {:.3f}°, yaw "
         "{:.3f}°\n",
-        r.conditions.heave_m, r.conditions.rotation_rad.x() * kRadToDeg,
-        r.conditions.rotation_rad.y() * kRadToDeg, r.conditions.rotation_rad.z() * kRadToDeg);
+        r.conditions.heave_m, r.conditions.rotation_rad.x() * kRadToDeg, r.conditions.rotation_rad.y() * kRadToDeg,
+        r.conditions.rotation_rad.z() * kRadToDeg);
   }
   out += "\nPer riser (near: hull moves towards the riser's azimuth; far: away; cross: ±90°):\n";
-  out +=
-      fmt::format("{:<6} {:<9} {:>6} {:>24} {:>15} {:<22} {:>15} {:<22} {:>8} {:>8} {:>5} {:>6}\n",
-                  "riser", "kind", "az°", "at zero offset", "near m (%d)", "near governs",
-                  "far m (%d)", "far governs", "cross+ m", "cross- m", "star", "solves");
+  out += fmt::format("{:<6} {:<9} {:>6} {:>24} {:>15} {:<22} {:>15} {:<22} {:>8} {:>8} {:>5} {:>6}\n", "riser", "kind",
+                     "az°", "at zero offset", "near m (%d)", "near governs", "far m (%d)", "far governs", "cross+ m",
+                     "cross- m", "star", "solves");
   for (const RiserSoz& z : r.risers) {
     out += fmt::format(
         "{:<6} {:<9} {:>6.1f} {:>24} {:>7.1f} ({:>4.1f}) {:<22} {:>7.1f} ({:>4.1f}) {:<22} "
@@ -249,8 +237,8 @@ std::string soz_table(const SozResult& r) {
         z.name, z.kind, z.azimuth_deg,
         fmt::format("{:.3f} {}{}", z.zero_offset_utilization, z.zero_offset_governing_criterion,
                     z.fails_at_zero_offset ? " FAIL" : ""),
-        z.near_m, pct(z.near_m, r.depth_m), z.near_governing, z.far_m, pct(z.far_m, r.depth_m),
-        z.far_governing, z.cross_left_m, z.cross_right_m, z.star_shaped ? "yes" : "NO", z.solves);
+        z.near_m, pct(z.near_m, r.depth_m), z.near_governing, z.far_m, pct(z.far_m, r.depth_m), z.far_governing,
+        z.cross_left_m, z.cross_right_m, z.star_shaped ? "yes" : "NO", z.solves);
   }
 
   out +=
@@ -266,14 +254,12 @@ std::string soz_table(const SozResult& r) {
     out += fmt::format("{:>5g}", r.directions_deg[k]);
     for (const RiserSoz& z : r.risers) {
       const SozDirection& d = z.directions[k];
-      out += fmt::format(" {:>6.1f}{}{}", d.allowable_offset_m,
-                         criterion_letter(d.governing_criterion),
+      out += fmt::format(" {:>6.1f}{}{}", d.allowable_offset_m, criterion_letter(d.governing_criterion),
                          d.reopened_bands.empty() ? ' ' : '*');
     }
     const double a = r.platform.allowable_offset_m[k];
-    out += fmt::format(" | {:>7.1f}{} {:>6.2f} {:<6}\n", a,
-                       criterion_letter(r.platform.governing_criterion[k]), pct(a, r.depth_m),
-                       r.platform.governing_riser[k]);
+    out += fmt::format(" | {:>7.1f}{} {:>6.2f} {:<6}\n", a, criterion_letter(r.platform.governing_criterion[k]),
+                       pct(a, r.depth_m), r.platform.governing_riser[k]);
   }
 
   if (!r.zones.empty()) {
@@ -299,14 +285,12 @@ std::string soz_table(const SozResult& r) {
 
   if (!r.offset_checks.empty()) {
     out += "\nOffset check against the platform SOZ (ratio = offset / allowable, ≤ 1 passes):\n";
-    out += fmt::format("{:<32} {:<8} {:<7} {:>9} {:>7} {:>11} {:>9} {:>7} {:<5} {:<6} {}\n", "case",
-                       "cond.", "kind", "offset m", "dir°", "allowable m", "margin m", "ratio", "",
-                       "riser", "zone");
+    out += fmt::format("{:<32} {:<8} {:<7} {:>9} {:>7} {:>11} {:>9} {:>7} {:<5} {:<6} {}\n", "case", "cond.", "kind",
+                       "offset m", "dir°", "allowable m", "margin m", "ratio", "", "riser", "zone");
     for (const OffsetCheck& c : r.offset_checks) {
-      out += fmt::format(
-          "{:<32} {:<8} {:<7} {:>9.2f} {:>7.1f} {:>11.2f} {:>9.2f} {:>7.3f} {:<5} {:<6} {}\n",
-          c.case_name, c.condition, c.kind, c.offset_m, c.direction_deg, c.allowable_m, c.margin_m,
-          c.ratio, c.passes ? "PASS" : "FAIL", c.governing_riser, c.zone);
+      out += fmt::format("{:<32} {:<8} {:<7} {:>9.2f} {:>7.1f} {:>11.2f} {:>9.2f} {:>7.3f} {:<5} {:<6} {}\n",
+                         c.case_name, c.condition, c.kind, c.offset_m, c.direction_deg, c.allowable_m, c.margin_m,
+                         c.ratio, c.passes ? "PASS" : "FAIL", c.governing_riser, c.zone);
     }
   }
   for (const std::string& note : r.notes) out += "Note: " + note + "\n";
@@ -321,12 +305,10 @@ std::string soz_table(const SozResult& r) {
       }
     }
   }
-  out += fmt::format(
-      "\n{} riser static solves in {:.2f} s on {} threads ({:.2f} ms per solve per thread)",
-      r.solves, r.zone_wall_s, r.threads, 1e3 * time_per_solve_s(r));
+  out += fmt::format("\n{} riser static solves in {:.2f} s on {} threads ({:.2f} ms per solve per thread)", r.solves,
+                     r.zone_wall_s, r.threads, 1e3 * time_per_solve_s(r));
   if (r.check_wall_s > 0.0) {
-    out += fmt::format("; load-case equilibria{} {:.2f} s",
-                       r.options.extreme ? " and S-C storms" : "", r.check_wall_s);
+    out += fmt::format("; load-case equilibria{} {:.2f} s", r.options.extreme ? " and S-C storms" : "", r.check_wall_s);
   }
   out += "\n";
   return out;

@@ -11,9 +11,7 @@ namespace {
 
 constexpr const char* kDofNames[6] = {"surge", "sway", "heave", "roll", "pitch", "yaw"};
 
-nlohmann::json six(const engine::Vector6d& v) {
-  return nlohmann::json::array({v(0), v(1), v(2), v(3), v(4), v(5)});
-}
+nlohmann::json six(const engine::Vector6d& v) { return nlohmann::json::array({v(0), v(1), v(2), v(3), v(4), v(5)}); }
 
 nlohmann::json optional_number(const std::optional<double>& value) {
   return value ? nlohmann::json(*value) : nlohmann::json(nullptr);
@@ -27,10 +25,9 @@ nlohmann::json six_by_six(const engine::Matrix6d& m) {
 
 /// The riser's results along its length as parallel arrays, foot first.
 nlohmann::json riser_profile_json(const std::vector<RiserProfilePoint>& profile) {
-  nlohmann::json arc = nlohmann::json::array(), position = nlohmann::json::array(),
-                 section = nlohmann::json::array(), on_seabed = nlohmann::json::array(),
-                 effective = nlohmann::json::array(), wall = nlohmann::json::array(),
-                 moment = nlohmann::json::array(), curvature = nlohmann::json::array(),
+  nlohmann::json arc = nlohmann::json::array(), position = nlohmann::json::array(), section = nlohmann::json::array(),
+                 on_seabed = nlohmann::json::array(), effective = nlohmann::json::array(),
+                 wall = nlohmann::json::array(), moment = nlohmann::json::array(), curvature = nlohmann::json::array(),
                  von_mises = nlohmann::json::array(), utilization = nlohmann::json::array();
   for (const RiserProfilePoint& q : profile) {
     arc.push_back(q.arc_length_m);
@@ -57,8 +54,8 @@ nlohmann::json riser_profile_json(const std::vector<RiserProfilePoint>& profile)
 }
 
 std::string case_heading(const StaticCaseResult& r, const std::string& project_name) {
-  return fmt::format("{} — case '{}' (environment {}, {}{})\n", project_name, r.case_name, r.environment,
-                     r.condition, r.damaged_line ? fmt::format(": line {} removed", *r.damaged_line) : "");
+  return fmt::format("{} — case '{}' (environment {}, {}{})\n", project_name, r.case_name, r.environment, r.condition,
+                     r.damaged_line ? fmt::format(": line {} removed", *r.damaged_line) : "");
 }
 
 }  // namespace
@@ -79,8 +76,12 @@ nlohmann::json static_case_to_json(const StaticCaseResult& r, const std::string&
     const std::size_t contribution = r.lines.size() + k;
     nlohmann::json checks = nlohmann::json::array();
     for (const RiserCriterionCheck& c : row.checks) {
-      checks.push_back({{"criterion", c.criterion}, {"value", c.value}, {"limit", c.limit}, {"unit", c.unit},
-                        {"utilization", c.utilization}, {"passes", c.passes}});
+      checks.push_back({{"criterion", c.criterion},
+                        {"value", c.value},
+                        {"limit", c.limit},
+                        {"unit", c.unit},
+                        {"utilization", c.utilization},
+                        {"passes", c.passes}});
     }
     risers.push_back({{"name", row.name},
                       {"kind", row.kind},
@@ -103,7 +104,8 @@ nlohmann::json static_case_to_json(const StaticCaseResult& r, const std::string&
                       {"profile", riser_profile_json(row.profile)}});
   }
   nlohmann::json modes = nlohmann::json::array();
-  for (const NaturalMode& m : r.natural_modes) modes.push_back({{"period_s", m.period_s}, {"dominant_dof", m.dominant_dof}});
+  for (const NaturalMode& m : r.natural_modes)
+    modes.push_back({{"period_s", m.period_s}, {"dominant_dof", m.dominant_dof}});
   const OffsetSummary& o = r.offset_summary;
   nlohmann::json doc = {
       {"format", "spiral.static_case"},
@@ -165,19 +167,17 @@ std::string equilibrium_table(const StaticCaseResult& r, const std::string& proj
     out += fmt::format("{:<8} {:>10} {:>8} {:>9} {:>11} {:>9} {:>8} {:>7}  {}\n", "riser", "T_top kN", "angle°",
                        "TDP m", "Te_min kN", "R_min m", "vM util", "util", "governing");
     for (const RiserStaticsRow& row : r.risers) {
-      const std::string von_mises = row.max_von_mises_utilization
-                                        ? fmt::format("{:.3f}", *row.max_von_mises_utilization)
-                                        : "–";
-      out += fmt::format(
-          "{:<8} {:>10.1f} {:>8.2f} {:>9.1f} {:>11.1f} {:>9.1f} {:>8} {:>7.3f}  {}{}\n", row.name,
-          row.top_tension_N / 1e3, row.top_angle_deg, row.touchdown_distance_m,
-          row.min_effective_tension_N / 1e3, row.min_bending_radius_m, von_mises, row.utilization,
-          row.governing_criterion, row.passes ? "" : "  FAIL");
+      const std::string von_mises =
+          row.max_von_mises_utilization ? fmt::format("{:.3f}", *row.max_von_mises_utilization) : "–";
+      out += fmt::format("{:<8} {:>10.1f} {:>8.2f} {:>9.1f} {:>11.1f} {:>9.1f} {:>8} {:>7.3f}  {}{}\n", row.name,
+                         row.top_tension_N / 1e3, row.top_angle_deg, row.touchdown_distance_m,
+                         row.min_effective_tension_N / 1e3, row.min_bending_radius_m, von_mises, row.utilization,
+                         row.governing_criterion, row.passes ? "" : "  FAIL");
     }
   }
   const engine::Vector6d& e = r.environment_force;
-  out += fmt::format("Mean environmental load on the hull: Fx {:.1f} kN, Fy {:.1f} kN, Mz {:.1f} kN·m\n",
-                     e(0) / 1e3, e(1) / 1e3, e(5) / 1e3);
+  out += fmt::format("Mean environmental load on the hull: Fx {:.1f} kN, Fy {:.1f} kN, Mz {:.1f} kN·m\n", e(0) / 1e3,
+                     e(1) / 1e3, e(5) / 1e3);
   for (const std::string& note : r.notes) out += "Note: " + note + "\n";
   return out;
 }

@@ -10,9 +10,7 @@ namespace {
 
 constexpr double kRadToDeg = 180.0 / std::numbers::pi;
 
-nlohmann::json six(const engine::Vector6d& v) {
-  return nlohmann::json::array({v(0), v(1), v(2), v(3), v(4), v(5)});
-}
+nlohmann::json six(const engine::Vector6d& v) { return nlohmann::json::array({v(0), v(1), v(2), v(3), v(4), v(5)}); }
 
 }  // namespace
 
@@ -39,12 +37,8 @@ nlohmann::json statics_to_json(const StaticsResult& result, const std::string& p
     });
   }
   return {
-      {"format", "spiral.statics"},
-      {"format_version", 1},
-      {"project", project_name},
-      {"offset_6dof", six(result.offset)},
-      {"lines", lines},
-      {"hull_force_6dof", six(result.hull_force)},
+      {"format", "spiral.statics"},        {"format_version", 1}, {"project", project_name},
+      {"offset_6dof", six(result.offset)}, {"lines", lines},      {"hull_force_6dof", six(result.hull_force)},
       {"wall_time_s", result.wall_time_s},
   };
 }
@@ -57,15 +51,13 @@ std::string statics_table(const StaticsResult& result, const std::string& projec
       "Hull offset: surge {:.3f} m, sway {:.3f} m, heave {:.3f} m, roll {:.3f}°, pitch {:.3f}°, "
       "yaw {:.3f}°\n\n",
       o(0), o(1), o(2), o(3) * kRadToDeg, o(4) * kRadToDeg, o(5) * kRadToDeg);
-  out += fmt::format("{:<10} {:>11} {:>11} {:>11} {:>7} {:>11} {:>8} {:>9} {:>7} {:<9}\n", "line",
-                     "T_fair kN", "H_fair kN", "V_fair kN", "ang °", "T_anch kN", "uplift°",
-                     "laid m", "util", "regime");
+  out += fmt::format("{:<10} {:>11} {:>11} {:>11} {:>7} {:>11} {:>8} {:>9} {:>7} {:<9}\n", "line", "T_fair kN",
+                     "H_fair kN", "V_fair kN", "ang °", "T_anch kN", "uplift°", "laid m", "util", "regime");
   for (const LineStaticsRow& row : result.lines) {
-    out += fmt::format(
-        "{:<10} {:>11.1f} {:>11.1f} {:>11.1f} {:>7.2f} {:>11.1f} {:>8.2f} {:>9.1f} {:>7.3f} {:<9}\n",
-        row.name, row.fairlead_tension_N / 1e3, row.fairlead_horizontal_N / 1e3,
-        row.fairlead_vertical_N / 1e3, row.fairlead_angle_deg, row.anchor_tension_N / 1e3,
-        row.anchor_uplift_angle_deg, row.laid_length_m, row.utilization, row.regime);
+    out += fmt::format("{:<10} {:>11.1f} {:>11.1f} {:>11.1f} {:>7.2f} {:>11.1f} {:>8.2f} {:>9.1f} {:>7.3f} {:<9}\n",
+                       row.name, row.fairlead_tension_N / 1e3, row.fairlead_horizontal_N / 1e3,
+                       row.fairlead_vertical_N / 1e3, row.fairlead_angle_deg, row.anchor_tension_N / 1e3,
+                       row.anchor_uplift_angle_deg, row.laid_length_m, row.utilization, row.regime);
   }
   const engine::Vector6d& f = result.hull_force;
   out += fmt::format(

@@ -72,9 +72,7 @@ double normalize_deg(double deg) {
 
 }  // namespace
 
-const char* to_string(SozModel model) {
-  return model == SozModel::fe ? "fe" : "catenary";
-}
+const char* to_string(SozModel model) { return model == SozModel::fe ? "fe" : "catenary"; }
 
 // ---------------------------------------------------------------------------
 // Riser statics at an offset.
@@ -85,8 +83,8 @@ RiserOffsetEvaluator::RiserOffsetEvaluator(const Project& project, const RiserDe
       design_(design),
       conditions_(conditions),
       model_(model),
-      environment_(fe_environment(project, conditions.current,
-                                  design.sections.front().properties.hydrodynamic_diameter_m)) {
+      environment_(
+          fe_environment(project, conditions.current, design.sections.front().properties.hydrodynamic_diameter_m)) {
   zero_ = model_ == SozModel::fe ? solve_fe(hang_off_g({0.0, 0.0}), nullptr, Precision::final)
                                  : solve_catenary(hang_off_g({0.0, 0.0}));
   if (!zero_.error.empty()) throw engine::SolverError(zero_.error);
@@ -119,8 +117,7 @@ RiserOffsetEvaluator::Evaluation RiserOffsetEvaluator::evaluate(const Eigen::Vec
   return e;
 }
 
-void RiserOffsetEvaluator::add_touchdown_check(
-    Evaluation& e, const std::optional<Eigen::Vector3d>& touchdown_g) const {
+void RiserOffsetEvaluator::add_touchdown_check(Evaluation& e, const std::optional<Eigen::Vector3d>& touchdown_g) const {
   const auto& limit = design_.criteria.max_touchdown_excursion_m;
   if (!limit || !e.error.empty()) return;
   // A riser that lifts off the seabed entirely has moved its TDP to the foot
@@ -144,8 +141,9 @@ RiserOffsetEvaluator::Evaluation RiserOffsetEvaluator::failed(std::string messag
   return e;
 }
 
-RiserOffsetEvaluator::Evaluation RiserOffsetEvaluator::solve_fe(
-    const Eigen::Vector3d& top, const engine::FeStaticsResult* warm, Precision precision) const {
+RiserOffsetEvaluator::Evaluation RiserOffsetEvaluator::solve_fe(const Eigen::Vector3d& top,
+                                                                const engine::FeStaticsResult* warm,
+                                                                Precision precision) const {
   engine::FeStaticsOptions options;
   if (precision == Precision::march) {
     options.relative_force_tolerance = kMarchForceTolerance;
@@ -159,15 +157,15 @@ RiserOffsetEvaluator::Evaluation RiserOffsetEvaluator::solve_fe(
   if (warm) engine::warm_start_from(options, *warm);
   Evaluation e;
   try {
-    auto solution = std::make_shared<engine::FeStaticsResult>(engine::solve_fe_line_statics(
-        design_.fe_model, environment_, {design_.foot_g, top}, options));
+    auto solution = std::make_shared<engine::FeStaticsResult>(
+        engine::solve_fe_line_statics(design_.fe_model, environment_, {design_.foot_g, top}, options));
     e.row = riser_statics_row(project_, design_, *solution, conditions_.condition,
                               engine::rotation_matrix(conditions_.rotation_rad));
     if (solution->touchdown) e.touchdown_g = solution->touchdown->position_m;
     e.solution = std::move(solution);
   } catch (const engine::SolverError& error) {
-    e = failed(fmt::format("riser '{}' at hang-off ({:.2f}, {:.2f}, {:.2f}) m: {}", design_.name, top.x(),
-                           top.y(), top.z(), error.what()));
+    e = failed(fmt::format("riser '{}' at hang-off ({:.2f}, {:.2f}, {:.2f}) m: {}", design_.name, top.x(), top.y(),
+                           top.z(), error.what()));
   }
   return e;
 }
@@ -179,8 +177,7 @@ RiserOffsetEvaluator::Evaluation RiserOffsetEvaluator::solve_fe(
 // boundary-layer peak w/H of Pesce et al. (1998) — the FE solution is within
 // ≈ 1 % of it for these SCRs (fe_line_statics.hpp); the bending moment is
 // EI κ. The result is packed as an FE result so the same criteria apply.
-RiserOffsetEvaluator::Evaluation RiserOffsetEvaluator::solve_catenary(
-    const Eigen::Vector3d& top) const {
+RiserOffsetEvaluator::Evaluation RiserOffsetEvaluator::solve_catenary(const Eigen::Vector3d& top) const {
   Evaluation e;
   engine::CatenaryLine line;
   for (const RiserSectionDesign& s : design_.sections) {
@@ -188,8 +185,7 @@ RiserOffsetEvaluator::Evaluation RiserOffsetEvaluator::solve_catenary(
   }
   const Eigen::Vector2d span_xy = top.head<2>() - design_.foot_g.head<2>();
   const double span_m = span_xy.norm();
-  const Eigen::Vector2d along =
-      span_m > 0.0 ? Eigen::Vector2d(span_xy / span_m) : Eigen::Vector2d(1.0, 0.0);
+  const Eigen::Vector2d along = span_m > 0.0 ? Eigen::Vector2d(span_xy / span_m) : Eigen::Vector2d(1.0, 0.0);
   engine::CatenaryOptions options;
   options.profile_points_per_segment = 400;
   try {
@@ -200,8 +196,7 @@ RiserOffsetEvaluator::Evaluation RiserOffsetEvaluator::solve_catenary(
     for (const engine::CatenaryProfilePoint& p : c.profile) {
       const RiserSectionDesign& s = design_.sections[static_cast<std::size_t>(p.segment)];
       const double w = s.properties.effective_weight_N_per_m;
-      const double kappa =
-          p.on_seabed || !(p.tension_N > 0.0) ? 0.0 : std::abs(w) * H / (p.tension_N * p.tension_N);
+      const double kappa = p.on_seabed || !(p.tension_N > 0.0) ? 0.0 : std::abs(w) * H / (p.tension_N * p.tension_N);
       r.node_arc_length_m.push_back(p.arc_length_m);
       Eigen::Vector3d position = design_.foot_g;
       position.head<2>() += p.x_m * along;
@@ -222,8 +217,8 @@ RiserOffsetEvaluator::Evaluation RiserOffsetEvaluator::solve_catenary(
                               engine::rotation_matrix(conditions_.rotation_rad));
     if (r.touchdown) e.touchdown_g = r.touchdown->position_m;
   } catch (const engine::SolverError& error) {
-    e = failed(fmt::format("riser '{}' (catenary screening) at hang-off ({:.2f}, {:.2f}, {:.2f}) m: {}",
-                           design_.name, top.x(), top.y(), top.z(), error.what()));
+    e = failed(fmt::format("riser '{}' (catenary screening) at hang-off ({:.2f}, {:.2f}, {:.2f}) m: {}", design_.name,
+                           top.x(), top.y(), top.z(), error.what()));
   }
   return e;
 }
@@ -250,9 +245,8 @@ class DirectionSearch {
   /// place in the task. Their samples are warm starts too — at offset d two
   /// neighbouring hang-offs are only d·step apart, closer than the march
   /// step — and cover the march where they are closer than one march step.
-  DirectionSearch(const RiserOffsetEvaluator& evaluator, double direction_rad,
-                  const SozOptions& options, double depth_m,
-                  const std::vector<std::unique_ptr<DirectionSearch>>& chunk, int index)
+  DirectionSearch(const RiserOffsetEvaluator& evaluator, double direction_rad, const SozOptions& options,
+                  double depth_m, const std::vector<std::unique_ptr<DirectionSearch>>& chunk, int index)
       : evaluator_(evaluator),
         chunk_(chunk),
         index_(index),
@@ -396,7 +390,7 @@ class DirectionSearch {
   /// failing samples.
   std::pair<Sample, Sample> refine(Sample pass, Sample fail) {
     double g_pass = pass.g(), g_fail = fail.g();  // Illinois-scaled copies
-    int retained = 0;  // +n: pass end moved n times in a row, −n: fail end
+    int retained = 0;                             // +n: pass end moved n times in a row, −n: fail end
     for (int i = 0; i < kMaxRefineIterations && std::abs(fail.d_m - pass.d_m) > tolerance_m_; ++i) {
       const double lo = std::min(pass.d_m, fail.d_m), hi = std::max(pass.d_m, fail.d_m);
       double x = 0.5 * (lo + hi);
@@ -437,8 +431,8 @@ class DirectionSearch {
 
 // ---------------------------------------------------------------------------
 
-double polygon_allowable(const std::vector<double>& directions_deg,
-                         const std::vector<double>& allowable_m, double direction_deg) {
+double polygon_allowable(const std::vector<double>& directions_deg, const std::vector<double>& allowable_m,
+                         double direction_deg) {
   const std::size_t n = directions_deg.size();
   const double step = 360.0 / static_cast<double>(n);
   const double x = normalize_deg(direction_deg - directions_deg.front()) / step;
@@ -466,16 +460,14 @@ void validate_soz_options(const Project& project, const SozOptions& o) {
                              "soz_search_range");
   }
   for (const std::string& name : o.exclude_risers) {
-    if (std::none_of(project.risers.begin(), project.risers.end(),
-                     [&](const Riser& r) { return r.name == name; })) {
+    if (std::none_of(project.risers.begin(), project.risers.end(), [&](const Riser& r) { return r.name == name; })) {
       throw command_line_error(project, "--exclude", fmt::format("no riser named \"{}\"", name));
     }
   }
   if (o.load_case) find_load_case(project, *o.load_case);
   if (o.extreme) {
     if (!(o.extreme->duration_s > 0.0)) {
-      throw command_line_error(project, "--duration",
-                               fmt::format("must be > 0 s, got {} s", o.extreme->duration_s),
+      throw command_line_error(project, "--duration", fmt::format("must be > 0 s, got {} s", o.extreme->duration_s),
                                "soz_duration_positive");
     }
     if (!o.offset_check && !o.load_case) {
@@ -486,8 +478,8 @@ void validate_soz_options(const Project& project, const SozOptions& o) {
   }
 }
 
-SozResult compute_soz(const Project& project, const std::vector<RiserDesign>& risers,
-                      const SozConditions& conditions, const SozOptions& options) {
+SozResult compute_soz(const Project& project, const std::vector<RiserDesign>& risers, const SozConditions& conditions,
+                      const SozOptions& options) {
   validate_soz_options(project, options);
   engine::Stopwatch start;
   SozResult result;
@@ -571,8 +563,7 @@ SozResult compute_soz(const Project& project, const std::vector<RiserDesign>& ri
         continue;
       }
       auto search = std::make_unique<DirectionSearch>(*evaluators[task.riser], direction_deg * kDegToRad, options,
-                                                      project.site.depth_m, chunk,
-                                                      static_cast<int>(chunk.size()));
+                                                      project.site.depth_m, chunk, static_cast<int>(chunk.size()));
       out = search->run(direction_deg);
       chunk.push_back(std::move(search));
     }
@@ -614,13 +605,16 @@ SozResult compute_soz(const Project& project, const std::vector<RiserDesign>& ri
   }
   std::string rotated, mirrored, halves;
   for (const RiserSoz& z : result.risers) {
-    if (!z.zone_rotated_from.empty()) rotated += fmt::format("{}{} = {}", rotated.empty() ? "" : ", ", z.name, z.zone_rotated_from);
-    if (!z.zone_mirrored_from.empty()) mirrored += fmt::format("{}{} = {}", mirrored.empty() ? "" : ", ", z.name, z.zone_mirrored_from);
+    if (!z.zone_rotated_from.empty())
+      rotated += fmt::format("{}{} = {}", rotated.empty() ? "" : ", ", z.name, z.zone_rotated_from);
+    if (!z.zone_mirrored_from.empty())
+      mirrored += fmt::format("{}{} = {}", mirrored.empty() ? "" : ", ", z.name, z.zone_mirrored_from);
     if (z.zone_mirror_symmetric) halves += fmt::format("{}{}", halves.empty() ? "" : ", ", z.name);
   }
   const char* exact = "same design and criteria, no current, no hull rotations: exact by symmetry";
   if (!rotated.empty()) {
-    result.notes.push_back(fmt::format("zones turned about the vertical from an identical riser ({}): {}", exact, rotated));
+    result.notes.push_back(
+        fmt::format("zones turned about the vertical from an identical riser ({}): {}", exact, rotated));
   }
   if (!mirrored.empty()) {
     result.notes.push_back(
@@ -629,8 +623,7 @@ SozResult compute_soz(const Project& project, const std::vector<RiserDesign>& ri
   }
   if (!halves.empty()) {
     result.notes.push_back(fmt::format(
-        "zones symmetric about the riser's own plane, one half solved and the other mirrored ({}): {}", exact,
-        halves));
+        "zones symmetric about the riser's own plane, one half solved and the other mirrored ({}): {}", exact, halves));
   }
 
   // Per-riser summaries and the platform intersection.
@@ -651,8 +644,7 @@ SozResult compute_soz(const Project& project, const std::vector<RiserDesign>& ri
     z.cross_right_m = polygon_allowable(result.directions_deg, allowable, z.azimuth_deg - 90.0);
     const auto nearest = [&](double deg) -> const std::string& {
       const double x = normalize_deg(deg) / options.step_deg;
-      return z.directions[static_cast<std::size_t>(std::lround(x)) % z.directions.size()]
-          .governing_criterion;
+      return z.directions[static_cast<std::size_t>(std::lround(x)) % z.directions.size()].governing_criterion;
     };
     z.near_governing = nearest(z.azimuth_deg);
     z.far_governing = nearest(z.azimuth_deg + 180.0);

@@ -197,8 +197,8 @@ struct OffsetExtreme {
   double ratio_mpm_gumbel = 0.0, ratio_mpm_weibull = 0.0, ratio_mpm_rayleigh = 0.0;
   double record_max_ratio = 0.0;  ///< largest r(t) of the record
   double record_max_ratio_time_s = 0.0;
-  double mean_offset_m = 0.0;     ///< mean |d(t)| of the record
-  double offset_mpm_m = 0.0;      ///< 3-h MPM (Weibull) of |d(t)| itself, for reference
+  double mean_offset_m = 0.0;  ///< mean |d(t)| of the record
+  double offset_mpm_m = 0.0;   ///< 3-h MPM (Weibull) of |d(t)| itself, for reference
 };
 
 /// One load case's offset (static mean, or extreme) against the platform SOZ.
@@ -210,7 +210,7 @@ struct OffsetCheck {
   /// of r(t) (OffsetExtreme), direction the one of the record's largest r(t),
   /// offset_m = ratio × allowable_m there.
   std::string kind = "static";
-  double offset_m = 0.0;        ///< horizontal offset of the reference point
+  double offset_m = 0.0;  ///< horizontal offset of the reference point
   double direction_deg = 0.0;
   double allowable_m = 0.0;  ///< platform SOZ in that direction (interpolated)
   double margin_m = 0.0;     ///< allowable − offset
@@ -246,7 +246,7 @@ struct SozResult {
   std::vector<OffsetCheck> offset_checks;
   std::vector<SozZone> zones;  ///< the zones per current (run_soz), besides this one
   std::vector<std::string> notes;
-  int solves = 0;  ///< riser static solves of the zone computation (all zones)
+  int solves = 0;            ///< riser static solves of the zone computation (all zones)
   double zone_wall_s = 0.0;  ///< all zones
   double check_wall_s = 0.0;
   int threads = 1;
@@ -259,8 +259,8 @@ void validate_soz_options(const Project& project, const SozOptions& options);
 
 /// The zones of `risers` under `conditions` (no offset check, no load case
 /// lookup): the core computation, usable on designs built in code.
-SozResult compute_soz(const Project& project, const std::vector<RiserDesign>& risers,
-                      const SozConditions& conditions, const SozOptions& options);
+SozResult compute_soz(const Project& project, const std::vector<RiserDesign>& risers, const SozConditions& conditions,
+                      const SozOptions& options);
 
 /// Zones of the project's risers, platform intersection and offset check.
 /// Without options.load_case (and with zone_per_current) also one zone per
@@ -271,8 +271,7 @@ SozResult run_soz(const ValidatedProject& project, const SozOptions& options);
 /// One static case's horizontal offset against the platform zone of `zone`
 /// (`zone_name` says which zone it is: "still-water" or "case"). Used by
 /// run_soz and by stages that already hold their static cases.
-OffsetCheck check_offset(const SozResult& zone, const StaticCaseResult& static_case,
-                         const std::string& zone_name);
+OffsetCheck check_offset(const SozResult& zone, const StaticCaseResult& static_case, const std::string& zone_name);
 
 /// spiral's one extreme-offset rule (soz_check.cpp says why), used by `spiral
 /// soz --extreme` and every stage: on a motion record (global surge and sway
@@ -282,8 +281,8 @@ OffsetCheck check_offset(const SozResult& zone, const StaticCaseResult& static_c
 /// record's largest r(t). A record too short for the fit keeps its largest
 /// sample and says why in `fit_note` (empty when fitted).
 OffsetCheck extreme_offset_check(const SozResult& zone, const StaticCaseResult& static_case,
-                                 const Eigen::Matrix<double, 6, Eigen::Dynamic>& motion,
-                                 const Eigen::VectorXd& times_s, const std::string& zone_name, std::string& fit_note);
+                                 const Eigen::Matrix<double, 6, Eigen::Dynamic>& motion, const Eigen::VectorXd& times_s,
+                                 const std::string& zone_name, std::string& fit_note);
 
 /// The 3-h MPM of the horizontal offset |d(t)| by the same rule (Weibull fit
 /// to the peaks), for the offset limit, which has no direction.
@@ -296,8 +295,8 @@ OffsetMpm horizontal_offset_mpm(const std::vector<double>& offset_m, double dt_s
 
 /// Allowable offset of a polar polygon (grid `directions_deg`, uniform step)
 /// in `direction_deg`, by linear interpolation in angle.
-double polygon_allowable(const std::vector<double>& directions_deg,
-                         const std::vector<double>& allowable_m, double direction_deg);
+double polygon_allowable(const std::vector<double>& directions_deg, const std::vector<double>& allowable_m,
+                         double direction_deg);
 
 /// One riser's criteria as a function of the hull's horizontal offset, for
 /// one thread (it holds no mutable state; solutions are passed back in for
@@ -318,8 +317,8 @@ class RiserOffsetEvaluator {
   };
   /// Solves the riser at zero offset (the reference of the TDP excursion).
   /// Throws engine::SolverError when it cannot.
-  RiserOffsetEvaluator(const Project& project, const RiserDesign& design,
-                       const SozConditions& conditions, SozModel model);
+  RiserOffsetEvaluator(const Project& project, const RiserDesign& design, const SozConditions& conditions,
+                       SozModel model);
   /// Newton tolerance of a solve. final: the engine's default (1e-10 of the
   /// force scale). march: 1e-6 — the criteria move by ~1e-6 of themselves,
   /// far below what the pass/fail of a march sample or a 0.1 m tolerance

@@ -106,14 +106,13 @@ OffsetCheck check_of(const StaticCaseResult& c, const std::string& zone) {
 void finish(OffsetCheck& check) {
   check.margin_m = check.allowable_m - check.offset_m;
   if (check.kind == "static") {
-    check.ratio = check.allowable_m > 0.0 ? check.offset_m / check.allowable_m
-                                          : std::numeric_limits<double>::infinity();
+    check.ratio =
+        check.allowable_m > 0.0 ? check.offset_m / check.allowable_m : std::numeric_limits<double>::infinity();
   }
   check.passes = check.ratio <= 1.0;
 }
 
-OffsetCheck static_check(const StaticCaseResult& c, const PlatformPolygon& zone,
-                         const std::string& zone_name) {
+OffsetCheck static_check(const StaticCaseResult& c, const PlatformPolygon& zone, const std::string& zone_name) {
   OffsetCheck check = check_of(c, zone_name);
   check.offset_m = c.offset_summary.horizontal_m;
   check.direction_deg = c.offset_summary.direction_deg;
@@ -133,8 +132,8 @@ double direction_deg_of(double x, double y) {
 /// too short for the extreme-value fit keeps its largest sample, with
 /// `fit_note` saying why (the caller decides whether that is acceptable).
 OffsetCheck extreme_offset_of(const StaticCaseResult& c, const Eigen::Matrix<double, 6, Eigen::Dynamic>& motion,
-                              const Eigen::VectorXd& times_s, const PlatformPolygon& zone,
-                              const std::string& zone_name, std::string& fit_note) {
+                              const Eigen::VectorXd& times_s, const PlatformPolygon& zone, const std::string& zone_name,
+                              std::string& fit_note) {
   OffsetCheck check = check_of(c, zone_name);
   check.kind = "extreme";
   OffsetExtreme e;
@@ -198,9 +197,8 @@ OffsetCheck extreme_offset_of(const StaticCaseResult& c, const Eigen::Matrix<dou
 
 /// `spiral soz --extreme`: the rule on the case's enhanced S-C run; a record
 /// too short for the fit is an error of the requested duration.
-OffsetCheck extreme_check(const Project& project, const StaticCaseResult& c,
-                          const DynamicAnalysisResult& run, const PlatformPolygon& zone,
-                          const std::string& zone_name, const SozExtremeOptions& options) {
+OffsetCheck extreme_check(const Project& project, const StaticCaseResult& c, const DynamicAnalysisResult& run,
+                          const PlatformPolygon& zone, const std::string& zone_name, const SozExtremeOptions& options) {
   if (run.total.cols() < 2) {
     throw command_line_error(project, "--duration",
                              fmt::format("load case '{}': the record has {} samples; a longer "
@@ -211,12 +209,11 @@ OffsetCheck extreme_check(const Project& project, const StaticCaseResult& c,
   std::string fit_note;
   OffsetCheck check = extreme_offset_of(c, run.total, run.times_s, zone, zone_name, fit_note);
   if (!fit_note.empty()) {
-    throw command_line_error(
-        project, "--duration",
-        fmt::format("load case '{}': no extreme-value fit on a {:g} s record ({}); "
-                    "simulate longer (3 h = 10800 s is the design sea state)",
-                    c.case_name, options.duration_s, fit_note),
-        "soz_extreme_record");
+    throw command_line_error(project, "--duration",
+                             fmt::format("load case '{}': no extreme-value fit on a {:g} s record ({}); "
+                                         "simulate longer (3 h = 10800 s is the design sea state)",
+                                         c.case_name, options.duration_s, fit_note),
+                             "soz_extreme_record");
   }
   check.extreme->duration_s = options.duration_s;
   check.extreme->seed = options.seed;
@@ -284,14 +281,13 @@ std::vector<std::string> checked_case_names(const Project& project, const SozOpt
 
 }  // namespace
 
-OffsetCheck check_offset(const SozResult& zone, const StaticCaseResult& static_case,
-                         const std::string& zone_name) {
+OffsetCheck check_offset(const SozResult& zone, const StaticCaseResult& static_case, const std::string& zone_name) {
   return static_check(static_case, PlatformPolygon(zone.directions_deg, zone.risers), zone_name);
 }
 
 OffsetCheck extreme_offset_check(const SozResult& zone, const StaticCaseResult& static_case,
-                                 const Eigen::Matrix<double, 6, Eigen::Dynamic>& motion,
-                                 const Eigen::VectorXd& times_s, const std::string& zone_name, std::string& fit_note) {
+                                 const Eigen::Matrix<double, 6, Eigen::Dynamic>& motion, const Eigen::VectorXd& times_s,
+                                 const std::string& zone_name, std::string& fit_note) {
   return extreme_offset_of(static_case, motion, times_s, PlatformPolygon(zone.directions_deg, zone.risers), zone_name,
                            fit_note);
 }
@@ -328,8 +324,7 @@ SozResult run_soz(const ValidatedProject& validated, const SozOptions& options) 
   std::vector<DynamicAnalysisResult> runs(options.extreme ? case_names.size() : 0);
   if (options.extreme) {
     const int count = static_cast<int>(runs.size());
-    const int threads = options.threads > 0 ? std::min(options.threads, count)
-                                            : engine::worker_count(count);
+    const int threads = options.threads > 0 ? std::min(options.threads, count) : engine::worker_count(count);
     engine::parallel_for(count, threads, [&](int i) {
       DynamicAnalysisRequest request;
       request.load_case = case_names[static_cast<std::size_t>(i)];
@@ -413,12 +408,12 @@ SozResult run_soz(const ValidatedProject& validated, const SozOptions& options) 
   for (std::size_t i = 0; i < cases.size(); ++i) {
     const int k = zone_of_case[i];
     const PlatformPolygon& zone = polygons[static_cast<std::size_t>(k + 1)];
-    const std::string zone_name =
-        k >= 0 ? result.zones[static_cast<std::size_t>(k)].name : options.load_case ? "case" : "still-water";
+    const std::string zone_name = k >= 0              ? result.zones[static_cast<std::size_t>(k)].name
+                                  : options.load_case ? "case"
+                                                      : "still-water";
     result.offset_checks.push_back(static_check(cases[i], zone, zone_name));
     if (options.extreme) {
-      result.offset_checks.push_back(
-          extreme_check(project, cases[i], runs[i], zone, zone_name, *options.extreme));
+      result.offset_checks.push_back(extreme_check(project, cases[i], runs[i], zone, zone_name, *options.extreme));
     }
   }
   if (!options.load_case && !cases.empty()) {
@@ -435,11 +430,11 @@ SozResult run_soz(const ValidatedProject& validated, const SozOptions& options) 
         "analysis");
   }
   if (options.extreme) {
-    result.notes.push_back(fmt::format(
-        "extreme offsets: enhanced S-C analysis of each case ({:g} s, seed {}); ratio = 3-h MPM "
-        "(Weibull) of |offset(t)| / allowable(direction(t)); the zone is the quasi-static one at "
-        "the mean hull heave/rotations",
-        options.extreme->duration_s, options.extreme->seed));
+    result.notes.push_back(
+        fmt::format("extreme offsets: enhanced S-C analysis of each case ({:g} s, seed {}); ratio = 3-h MPM "
+                    "(Weibull) of |offset(t)| / allowable(direction(t)); the zone is the quasi-static one at "
+                    "the mean hull heave/rotations",
+                    options.extreme->duration_s, options.extreme->seed));
   }
   return result;
 }

@@ -30,8 +30,8 @@ constexpr double kStepDivisionTolerance = 1e-9;
 constexpr double kPlacementTolerance = 1e-6;
 
 const Riser* project_riser(const Project& project, const std::string& name) {
-  const auto it = std::find_if(project.risers.begin(), project.risers.end(),
-                               [&](const Riser& r) { return r.name == name; });
+  const auto it =
+      std::find_if(project.risers.begin(), project.risers.end(), [&](const Riser& r) { return r.name == name; });
   return it == project.risers.end() ? nullptr : &*it;
 }
 
@@ -103,8 +103,7 @@ bool soz_in_solved_half(int k, int self_mirror_index, int n_directions) {
 }
 
 std::vector<SozZoneMap> soz_zone_maps(const Project& project, const std::vector<RiserDesign>& risers,
-                                      const SozConditions& conditions, const SozOptions& options,
-                                      int n_directions) {
+                                      const SozConditions& conditions, const SozOptions& options, int n_directions) {
   std::vector<SozZoneMap> maps(risers.size());
   const double step_deg = options.step_deg;
   // The catenary screening model carries no current: it stays symmetric.

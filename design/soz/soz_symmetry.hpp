@@ -29,8 +29,7 @@ struct SozZoneMap {
 /// `options.exploit_symmetry` is off, a current acts on an FE riser, or the
 /// hull is rotated.
 std::vector<SozZoneMap> soz_zone_maps(const Project& project, const std::vector<RiserDesign>& risers,
-                                      const SozConditions& conditions, const SozOptions& options,
-                                      int n_directions);
+                                      const SozConditions& conditions, const SozOptions& options, int n_directions);
 
 /// Whether direction k of a self-mirror riser is in the solved half:
 /// its angle from the mirror plane, anticlockwise, is within [0°, 180°].

@@ -42,7 +42,8 @@ void final_checks(const ValidatedProject& vp, const LevelSummary& coupled, Criti
   if (v.coupled) {
     const auto o = std::find_if(v.coupled->channels.begin(), v.coupled->channels.end(),
                                 [](const StormChannel& c) { return c.name == "offset"; });
-    if (o != v.coupled->channels.end()) v.mpm_offset_m = horizontal_offset_mpm(o->values, v.coupled->output_step_s).offset_m;
+    if (o != v.coupled->channels.end())
+      v.mpm_offset_m = horizontal_offset_mpm(o->values, v.coupled->output_step_s).offset_m;
   } else if (const ChannelSummary* o = find_channel(coupled, "offset_m")) {
     v.mpm_offset_m = o->mpm;
   }
@@ -199,9 +200,8 @@ AdvancedStageResults run_advanced_stage(const ValidatedProject& vp, const Advanc
     base.load_case = out.intermediate.statics.cases[ranked.case_index].case_name;
     base.statics = &out.intermediate.statics.cases[ranked.case_index];
     const auto limit = options.coupled_max_steps_by_case.find(base.load_case);
-    const long max_steps = limit != options.coupled_max_steps_by_case.end()
-                               ? limit->second
-                               : options.coupled_max_steps_between_outputs;
+    const long max_steps =
+        limit != options.coupled_max_steps_by_case.end() ? limit->second : options.coupled_max_steps_between_outputs;
     out.cases.push_back(verify_case(vp, out.intermediate, ranked, base, max_steps));
   }
   out.verification_wall_s = runs_start.seconds();

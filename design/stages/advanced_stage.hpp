@@ -128,7 +128,6 @@ double advanced_stage_duration(const Project& project);
 
 /// Throws as run_intermediate_stage; solver failures of the verification
 /// runs are recorded per case (CriticalCaseVerification::error), not thrown.
-AdvancedStageResults run_advanced_stage(const ValidatedProject& project,
-                                        const AdvancedStageOptions& options = {});
+AdvancedStageResults run_advanced_stage(const ValidatedProject& project, const AdvancedStageOptions& options = {});
 
 }  // namespace spiral::design

@@ -23,8 +23,8 @@ IntermediateStageResults run_intermediate_stage(const ValidatedProject& vp) {
   engine::parallel_for(static_cast<int>(n), out.threads, [&](int i) {
     RankedCase& c = out.ranked[static_cast<std::size_t>(i)];
     c.case_index = static_cast<std::size_t>(i) + 1;
-    c.storm = run_stage_dynamics(vp, out.statics.cases[c.case_index], AnalysisLevel::semi_coupled_enhanced,
-                                 zone, "every case of the matrix");
+    c.storm = run_stage_dynamics(vp, out.statics.cases[c.case_index], AnalysisLevel::semi_coupled_enhanced, zone,
+                                 "every case of the matrix");
   });
   out.storms_wall_s = storms_start.seconds();
 

@@ -46,7 +46,7 @@ struct RankedCase {
 };
 
 struct IntermediateStageResults {
-  StaticStageResults statics;     ///< static cases, code check and SOZ (no storm)
+  StaticStageResults statics;      ///< static cases, code check and SOZ (no storm)
   std::vector<RankedCase> ranked;  ///< most severe first
   bool pass = true;                ///< every case passes every measure
   int threads = 1;

@@ -36,8 +36,7 @@ double fairlead_segment_mbl(const ValidatedProject& vp, const std::string& line_
   return 0.0;
 }
 
-StormChannel summarize_storm_channel(std::string name, std::string unit, std::vector<double> values,
-                                 double dt_s) {
+StormChannel summarize_storm_channel(std::string name, std::string unit, std::vector<double> values, double dt_s) {
   StormChannel c;
   c.name = std::move(name);
   c.unit = std::move(unit);
@@ -71,9 +70,8 @@ StormChannel summarize_storm_channel(std::string name, std::string unit, std::ve
   return c;
 }
 
-StageDynamics run_stage_dynamics(const ValidatedProject& vp, const StaticCaseResult& statics,
-                                 AnalysisLevel level, const SozResult* zone,
-                                 std::string selection) {
+StageDynamics run_stage_dynamics(const ValidatedProject& vp, const StaticCaseResult& statics, AnalysisLevel level,
+                                 const SozResult* zone, std::string selection) {
   engine::Stopwatch start;
   DynamicAnalysisRequest request;
   request.load_case = statics.case_name;
@@ -89,9 +87,8 @@ StageDynamics run_stage_dynamics(const ValidatedProject& vp, const StaticCaseRes
 }
 
 StageDynamics summarize_stage_dynamics(const ValidatedProject& vp, const StaticCaseResult& statics,
-                                       const DynamicAnalysisRequest& request,
-                                       const DynamicAnalysisResult& r, const SozResult* zone,
-                                       std::string selection, const std::string& tension_line) {
+                                       const DynamicAnalysisRequest& request, const DynamicAnalysisResult& r,
+                                       const SozResult* zone, std::string selection, const std::string& tension_line) {
   const AnalysisLevel level = r.level;
   StageDynamics out;
   out.case_name = r.case_name;
@@ -105,15 +102,15 @@ StageDynamics summarize_stage_dynamics(const ValidatedProject& vp, const StaticC
   out.times_s.assign(r.times_s.data(), r.times_s.data() + r.times_s.size());
   out.notes = r.notes;
   out.timing = r.timing;
-  out.solver_steps = r.coupled_solver ? static_cast<int>(r.coupled_solver->steps)
-                                      : static_cast<int>(r.solver.steps);
+  out.solver_steps = r.coupled_solver ? static_cast<int>(r.coupled_solver->steps) : static_cast<int>(r.solver.steps);
   const double dt = request.output_step_s;
 
   out.channels.push_back(summarize_storm_channel("surge", "m", row(r.total, 0, 1.0), dt));
   out.channels.push_back(summarize_storm_channel("sway", "m", row(r.total, 1, 1.0), dt));
   out.channels.push_back(summarize_storm_channel("yaw", "deg", row(r.total, 5, kRadToDeg), dt));
   std::vector<double> offset(static_cast<std::size_t>(r.total.cols()));
-  for (Eigen::Index k = 0; k < r.total.cols(); ++k) offset[static_cast<std::size_t>(k)] = r.total.col(k).head<2>().norm();
+  for (Eigen::Index k = 0; k < r.total.cols(); ++k)
+    offset[static_cast<std::size_t>(k)] = r.total.col(k).head<2>().norm();
   out.channels.push_back(summarize_storm_channel("offset", "m", std::move(offset), dt));
 
   // The tension records the stage checks: the coupled run's own FE line
@@ -146,9 +143,8 @@ StageDynamics summarize_stage_dynamics(const ValidatedProject& vp, const StaticC
     out.channels.push_back(summarize_storm_channel("tension " + *loaded->line, "N", *loaded->tension_N, dt));
     const StormChannel& t = out.channels.back();
     out.fairlead_mbl_N = fairlead_segment_mbl(vp, *loaded->line);
-    const DynamicTensionCheck check =
-        dynamic_tension_check(vp.project.criteria.mooring, statics.condition == "damaged", t.mean,
-                              t.mpm_max.value_or(t.maximum), out.fairlead_mbl_N);
+    const DynamicTensionCheck check = dynamic_tension_check(vp.project.criteria.mooring, statics.condition == "damaged",
+                                                            t.mean, t.mpm_max.value_or(t.maximum), out.fairlead_mbl_N);
     out.dynamic_safety_factor = check.factor;
     out.tension_utilization = check.utilization;
     out.tension_pass = check.utilization <= 1.0;

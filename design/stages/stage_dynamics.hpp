@@ -29,8 +29,8 @@ namespace spiral::design {
 
 /// One channel of a stage's dynamic analysis and its statistics.
 struct StormChannel {
-  std::string name;          ///< surge, sway, yaw, offset, or "tension <line>"
-  std::string unit;          ///< m, deg or N (the values below are in it)
+  std::string name;            ///< surge, sway, yaw, offset, or "tension <line>"
+  std::string unit;            ///< m, deg or N (the values below are in it)
   std::vector<double> values;  ///< per output time
   double mean = 0.0, std_dev = 0.0, minimum = 0.0, maximum = 0.0;
   /// MPM of the 3-h maximum and minimum (Gumbel); absent with `extremes_note`.
@@ -60,20 +60,19 @@ struct StageDynamics {
   /// instantaneous fairlead, the S-C levels) or "coupled" (the dynamic FE line
   /// of the coupled run).
   std::string tension_source = "quasi-static";
-  double fairlead_mbl_N = 0.0;   ///< MBL of that line's fairlead segment
+  double fairlead_mbl_N = 0.0;         ///< MBL of that line's fairlead segment
   double dynamic_safety_factor = 0.0;  ///< API SF_dyn, or γ_dyn for DNV
   double tension_utilization = 0.0;    ///< see the file comment; pass when <= 1
   bool tension_pass = true;
   std::optional<OffsetCheck> extreme_offset;  ///< kind "extreme", with a zone
   std::vector<std::string> notes;
   AnalysisTimings timing;  ///< of the analysis (equilibrium 0 when the stage's static case was reused)
-  double wall_s = 0.0;  ///< the whole analysis and its statistics
+  double wall_s = 0.0;     ///< the whole analysis and its statistics
   int solver_steps = 0;
 };
 
 /// Channel statistics of a uniformly sampled record (dt_s > 0).
-StormChannel summarize_storm_channel(std::string name, std::string unit, std::vector<double> values,
-                                 double dt_s);
+StormChannel summarize_storm_channel(std::string name, std::string unit, std::vector<double> values, double dt_s);
 
 /// MBL of the fairlead (top) segment of a mooring line; 0 for an unknown line.
 double fairlead_segment_mbl(const ValidatedProject& project, const std::string& line_name);
@@ -85,15 +84,14 @@ double fairlead_segment_mbl(const ValidatedProject& project, const std::string& 
 /// FE tensions (risers left out), the other levels' the quasi-static ones.
 /// `wall_s` is left to the caller (it timed the analysis).
 StageDynamics summarize_stage_dynamics(const ValidatedProject& project, const StaticCaseResult& statics,
-                                       const DynamicAnalysisRequest& request,
-                                       const DynamicAnalysisResult& result, const SozResult* zone,
-                                       std::string selection, const std::string& tension_line = "");
+                                       const DynamicAnalysisRequest& request, const DynamicAnalysisResult& result,
+                                       const SozResult* zone, std::string selection,
+                                       const std::string& tension_line = "");
 
 /// Runs the analysis of `statics.case_name` at `level` (3 h, 0.5 s, seed 1),
 /// reusing `statics` as its static equilibrium. `zone`: the platform SOZ for
 /// the extreme-offset check (none: no check). Throws as run_dynamic_analysis.
-StageDynamics run_stage_dynamics(const ValidatedProject& project, const StaticCaseResult& statics,
-                                 AnalysisLevel level, const SozResult* zone,
-                                 std::string selection);
+StageDynamics run_stage_dynamics(const ValidatedProject& project, const StaticCaseResult& statics, AnalysisLevel level,
+                                 const SozResult* zone, std::string selection);
 
 }  // namespace spiral::design

@@ -22,8 +22,7 @@ CaseCheck check_case(const Project& project, const StaticCaseResult& result) {
   CaseCheck check;
   check.case_name = result.case_name;
   check.condition = result.condition;
-  check.safety_factor =
-      mooring_safety_factor(project.criteria.mooring, result.condition == "damaged");
+  check.safety_factor = mooring_safety_factor(project.criteria.mooring, result.condition == "damaged");
   double worst = -1.0;
   for (std::size_t i = 0; i < result.lines.size(); ++i) {
     const LineStaticsRow& row = result.lines[i];
@@ -61,8 +60,8 @@ RestoringCurve restoring_curve(LineArrayModel& model, double direction_deg, doub
     engine::Vector6d offset = engine::Vector6d::Zero();
     offset.head<2>() = s * d;
     try {
-      const engine::LineArrayResponse response = engine::evaluate_line_array(
-          model.lines, engine::pose_from_offset(model.reference_point_g, offset));
+      const engine::LineArrayResponse response =
+          engine::evaluate_line_array(model.lines, engine::pose_from_offset(model.reference_point_g, offset));
       curve.offset_m.push_back(s);
       curve.force_N.push_back(-response.force.head<2>().dot(d));
     } catch (const engine::SolverError& error) {
@@ -107,25 +106,28 @@ GoverningCheck governing_check(const StaticStageResults& r) {
       consider(g, any, {c.case_name, "mooring code", l.line, "T·SF/MBL", l.utilization, l.pass});
     }
     if (c.offset_limit_m) {
-      consider(g, any, {c.case_name, "offset limit", "", "offset/limit", c.offset_m / *c.offset_limit_m,
-                        c.offset_pass});
+      consider(g, any,
+               {c.case_name, "offset limit", "", "offset/limit", c.offset_m / *c.offset_limit_m, c.offset_pass});
     }
     for (const RiserStaticsRow& riser : r.cases[i].risers) {
-      consider(g, any, {c.case_name, "riser criteria", riser.name, riser.governing_criterion,
-                        riser.utilization, riser.passes});
+      consider(g, any,
+               {c.case_name, "riser criteria", riser.name, riser.governing_criterion, riser.utilization, riser.passes});
     }
     if (c.soz) {
-      consider(g, any, {c.case_name, "riser SOZ", c.soz->governing_riser, "static offset/allowable",
-                        c.soz->ratio, c.soz->passes});
+      consider(
+          g, any,
+          {c.case_name, "riser SOZ", c.soz->governing_riser, "static offset/allowable", c.soz->ratio, c.soz->passes});
     }
   }
   if (r.dynamics && !r.dynamics->most_loaded_line.empty()) {
     const StageDynamics& d = *r.dynamics;
-    consider(g, any, {d.case_name, "dynamic tension", d.most_loaded_line, "MPM tension·SF/MBL",
-                      d.tension_utilization, d.tension_pass});
+    consider(g, any,
+             {d.case_name, "dynamic tension", d.most_loaded_line, "MPM tension·SF/MBL", d.tension_utilization,
+              d.tension_pass});
     if (d.extreme_offset) {
-      consider(g, any, {d.case_name, "extreme offset (SOZ)", d.extreme_offset->governing_riser,
-                        "MPM offset/allowable", d.extreme_offset->ratio, d.extreme_offset->passes});
+      consider(g, any,
+               {d.case_name, "extreme offset (SOZ)", d.extreme_offset->governing_riser, "MPM offset/allowable",
+                d.extreme_offset->ratio, d.extreme_offset->passes});
     }
   }
   return g;
@@ -139,8 +141,7 @@ StageSoz preliminary_soz_settings(const Project& project) {
   return StageSoz{};
 }
 
-StaticStageResults run_static_stage(const ValidatedProject& validated,
-                                    const StaticStageOptions& options) {
+StaticStageResults run_static_stage(const ValidatedProject& validated, const StaticStageOptions& options) {
   engine::Stopwatch start;
   const Project& project = validated.project;
   StaticStageResults out;
@@ -165,8 +166,7 @@ StaticStageResults run_static_stage(const ValidatedProject& validated,
   StaticCaseRequest still_water;
   still_water.finite_difference_check = true;
   out.cases.push_back(run_static_case(validated, still_water));
-  RestSolutionCache
-      rest_solutions;  // cases sharing an environment (intact, damaged) solve its lines once
+  RestSolutionCache rest_solutions;  // cases sharing an environment (intact, damaged) solve its lines once
   for (const LoadCase& load_case : project.load_cases) {
     StaticCaseRequest request;
     request.load_case = load_case.name;
@@ -184,8 +184,7 @@ StaticStageResults run_static_stage(const ValidatedProject& validated,
       check.pass = check.pass && check.soz_pass;
     }
     out.pass = out.pass && check.pass;
-    if (check.governing_line >= 0 &&
-        check.lines[static_cast<std::size_t>(check.governing_line)].utilization > worst) {
+    if (check.governing_line >= 0 && check.lines[static_cast<std::size_t>(check.governing_line)].utilization > worst) {
       worst = check.lines[static_cast<std::size_t>(check.governing_line)].utilization;
       out.worst_case = static_cast<int>(i);
     }

@@ -95,13 +95,13 @@ struct StaticStageOptions {
 
 struct StaticStageResults {
   std::string stage = "preliminary";
-  std::string code;                     ///< mooring code name (to_string(MooringCode))
-  StaticsResult pretension;             ///< zero offset
-  std::vector<StaticCaseResult> cases;  ///< still water first, then the load cases in project order
-  std::vector<CaseCheck> checks;        ///< same order as `cases`
+  std::string code;                       ///< mooring code name (to_string(MooringCode))
+  StaticsResult pretension;               ///< zero offset
+  std::vector<StaticCaseResult> cases;    ///< still water first, then the load cases in project order
+  std::vector<CaseCheck> checks;          ///< same order as `cases`
   std::vector<RestoringCurve> restoring;  ///< 0° and 90°
   std::vector<LineStrength> strengths;    ///< project line order
-  int worst_case = 0;  ///< index into `cases` of the largest code utilization
+  int worst_case = 0;                     ///< index into `cases` of the largest code utilization
   /// Still-water zones and the load cases' static offsets (offset_checks) against them.
   std::optional<SozResult> soz;
   std::optional<StageDynamics> dynamics;  ///< the S-C storm of the governing load case
@@ -109,7 +109,7 @@ struct StaticStageResults {
   /// The hull's panel mesh (hull.geometry.panel_mesh), full surface, body frame; empty without one.
   std::vector<engine::Panel> hull_panels_b;
   GoverningCheck governing;
-  bool pass = true;    ///< every case passes, and the dynamic checks
+  bool pass = true;  ///< every case passes, and the dynamic checks
   double wall_time_s = 0.0;
 };
 
@@ -120,8 +120,7 @@ inline constexpr int kRestoringSteps = 20;
 /// Runs the static stage. Throws InputError / engine::SolverError as
 /// run_static_case does (the message names the case and line), and
 /// engine::FileFormatError for a malformed panel mesh (before any analysis).
-StaticStageResults run_static_stage(const ValidatedProject& project,
-                                    const StaticStageOptions& options = {});
+StaticStageResults run_static_stage(const ValidatedProject& project, const StaticStageOptions& options = {});
 
 /// The SOZ settings of the project's preliminary stage (defaults when it lists none).
 StageSoz preliminary_soz_settings(const Project& project);

@@ -34,8 +34,7 @@ Eigen::Vector3d attachment_point(const Eigen::Vector3d& reference_g, const Eigen
 // 1e-6 rad gives P to ≈ 1e-12 relative (the truncation error is O(h²)).
 constexpr double kAngleStep_rad = 1e-6;
 
-Attachment attachment(const Eigen::Vector3d& reference_g, const Eigen::Vector3d& r_b,
-                      const Vector6d& offset) {
+Attachment attachment(const Eigen::Vector3d& reference_g, const Eigen::Vector3d& r_b, const Vector6d& offset) {
   Attachment a;
   a.position_m = attachment_point(reference_g, r_b, offset);
   a.jacobian.leftCols<3>().setIdentity();
@@ -43,25 +42,22 @@ Attachment attachment(const Eigen::Vector3d& reference_g, const Eigen::Vector3d&
     Vector6d plus = offset, minus = offset;
     plus[k] += kAngleStep_rad;
     minus[k] -= kAngleStep_rad;
-    a.jacobian.col(k) = (attachment_point(reference_g, r_b, plus) -
-                         attachment_point(reference_g, r_b, minus)) /
-                        (2.0 * kAngleStep_rad);
+    a.jacobian.col(k) =
+        (attachment_point(reference_g, r_b, plus) - attachment_point(reference_g, r_b, minus)) / (2.0 * kAngleStep_rad);
   }
   return a;
 }
 
 /// Ṗ q̃̇ = q̃̇ᵀ (∂²p/∂q̃²) q̃̇: the centripetal part of the end's acceleration,
 /// by a second difference of p along the rotation rates.
-Eigen::Vector3d centripetal_acceleration(const Eigen::Vector3d& reference_g,
-                                         const Eigen::Vector3d& r_b, const Vector6d& offset,
-                                         const Vector6d& velocity) {
+Eigen::Vector3d centripetal_acceleration(const Eigen::Vector3d& reference_g, const Eigen::Vector3d& r_b,
+                                         const Vector6d& offset, const Vector6d& velocity) {
   Vector6d rates = Vector6d::Zero();
   rates.tail<3>() = velocity.tail<3>();
   const double speed = rates.norm();
   if (speed == 0.0) return Eigen::Vector3d::Zero();
   const double h = 1e-4 / speed;  // a 1e-4 rad step along the rotation
-  return (attachment_point(reference_g, r_b, offset + h * rates) -
-          2.0 * attachment_point(reference_g, r_b, offset) +
+  return (attachment_point(reference_g, r_b, offset + h * rates) - 2.0 * attachment_point(reference_g, r_b, offset) +
           attachment_point(reference_g, r_b, offset - h * rates)) /
          (h * h);
 }
@@ -71,8 +67,8 @@ struct LineBlock {
   fe_detail::DynamicLine line;
   Eigen::Index offset = 0;  // of its states in y
   Eigen::Index size = 0;
-  Attachment at;                                // at the last residual or setup
-  Eigen::Matrix<double, 3, 6> setup_jacobian;  // P of the setup
+  Attachment at;                                      // at the last residual or setup
+  Eigen::Matrix<double, 3, 6> setup_jacobian;         // P of the setup
   Eigen::Vector3d force_N = Eigen::Vector3d::Zero();  // f_i of the last residual
   Eigen::Vector3d beta = Eigen::Vector3d::Zero(), phi = Eigen::Vector3d::Zero();
   double factored_cj = 0.0;  // c_j of its last factorisation
@@ -89,9 +85,8 @@ constexpr double kLineRefactorCjChange = 0.25;
 
 class CoupledSystem final : public ImplicitSystem {
  public:
-  CoupledSystem(const HullDynamicsModel& hull, const HullLoads& loads,
-                const Eigen::Vector3d& reference_g, const std::vector<CoupledLine>& lines,
-                const CoupledOptions& options)
+  CoupledSystem(const HullDynamicsModel& hull, const HullLoads& loads, const Eigen::Vector3d& reference_g,
+                const std::vector<CoupledLine>& lines, const CoupledOptions& options)
       : eq_(make_hull_equations(hull, loads)),
         reference_g_(reference_g),
         options_(options),
@@ -122,8 +117,7 @@ class CoupledSystem final : public ImplicitSystem {
     k.velocity_m_per_s = b.at.jacobian * hull.velocity;
     k.acceleration_m_per_s2 =
         b.at.jacobian * hull.acceleration +
-        centripetal_acceleration(reference_g_, b.input->attachment_b_m, hull.position,
-                                 hull.velocity);
+        centripetal_acceleration(reference_g_, b.input->attachment_b_m, hull.position, hull.velocity);
   }
 
   // Each line reads its states from y, y' and writes its residual into r in
@@ -205,16 +199,14 @@ class CoupledSystem final : public ImplicitSystem {
   void order_lines_by_size() {
     schedule_.resize(blocks_.size());
     for (std::size_t i = 0; i < blocks_.size(); ++i) schedule_[i] = i;
-    std::stable_sort(schedule_.begin(), schedule_.end(), [&](std::size_t a, std::size_t b) {
-      return blocks_[a].size > blocks_[b].size;
-    });
+    std::stable_sort(schedule_.begin(), schedule_.end(),
+                     [&](std::size_t a, std::size_t b) { return blocks_[a].size > blocks_[b].size; });
   }
 
   template <class F>
   void for_each_line(const F& f) {
     pool_.run(static_cast<int>(blocks_.size()), [&](int i) {
-      const std::size_t k = schedule_.empty() ? static_cast<std::size_t>(i)
-                                              : schedule_[static_cast<std::size_t>(i)];
+      const std::size_t k = schedule_.empty() ? static_cast<std::size_t>(i) : schedule_[static_cast<std::size_t>(i)];
       f(blocks_[k]);
     });
   }
@@ -268,10 +260,9 @@ class CoupledSystem final : public ImplicitSystem {
         Vector6d plus = hull.position, minus = hull.position;
         plus[k] += 1e-5;
         minus[k] -= 1e-5;
-        const Eigen::Matrix<double, 3, 6> dP =
-            (attachment(reference_g_, b.input->attachment_b_m, plus).jacobian -
-             attachment(reference_g_, b.input->attachment_b_m, minus).jacobian) /
-            2e-5;
+        const Eigen::Matrix<double, 3, 6> dP = (attachment(reference_g_, b.input->attachment_b_m, plus).jacobian -
+                                                attachment(reference_g_, b.input->attachment_b_m, minus).jacobian) /
+                                               2e-5;
         A.col(k) -= dP.transpose() * b.force_N;
       }
     }
@@ -287,16 +278,13 @@ class CoupledSystem final : public ImplicitSystem {
   Matrix6d hull_K_ = Matrix6d::Zero(), hull_B_ = Matrix6d::Zero(), hull_D_ = Matrix6d::Zero();
   Eigen::PartialPivLU<Matrix6d> hull_lu_;
   std::vector<std::size_t> schedule_;  // for_each_line's order (empty: as given)
-  WorkerPool pool_;  // last: its threads stop before the blocks go
+  WorkerPool pool_;                    // last: its threads stop before the blocks go
 };
 
-void validate(const HullDynamicsModel& hull, const HullLoads& loads,
-              const std::vector<CoupledLine>& lines, const CoupledOptions& o) {
-  auto fail = [](const std::string& what) {
-    throw std::invalid_argument("coupled dynamics: " + what);
-  };
-  if (hull.radiation_memory)
-    fail("the hull's radiation memory is not modelled in the coupled system; use A(w_LF)");
+void validate(const HullDynamicsModel& hull, const HullLoads& loads, const std::vector<CoupledLine>& lines,
+              const CoupledOptions& o) {
+  auto fail = [](const std::string& what) { throw std::invalid_argument("coupled dynamics: " + what); };
+  if (hull.radiation_memory) fail("the hull's radiation memory is not modelled in the coupled system; use A(w_LF)");
   if (!std::holds_alternative<LinearizedLines>(loads.lines))
     fail("loads.lines: the FE lines replace a nonlinear line model (give LinearizedLines)");
   if (lines.empty()) fail("lines: at least one line is needed");
@@ -316,10 +304,8 @@ void validate(const HullDynamicsModel& hull, const HullLoads& loads,
 }  // namespace
 
 CoupledTimeSeries simulate_coupled(const HullDynamicsModel& hull, const HullLoads& loads,
-                                   const Eigen::Vector3d& reference_point_at_rest_g,
-                                   const Vector6d& initial_offset,
-                                   const std::vector<CoupledLine>& lines,
-                                   const CoupledOptions& options) {
+                                   const Eigen::Vector3d& reference_point_at_rest_g, const Vector6d& initial_offset,
+                                   const std::vector<CoupledLine>& lines, const CoupledOptions& options) {
   Stopwatch start;
   validate(hull, loads, lines, options);
   CoupledSystem system(hull, loads, reference_point_at_rest_g, lines, options);
@@ -342,18 +328,16 @@ CoupledTimeSeries simulate_coupled(const HullDynamicsModel& hull, const HullLoad
     o.position_tolerance_m = options.position_tolerance_m;
     o.slope_tolerance = options.slope_tolerance;
     o.velocity_tolerance_m_per_s = options.velocity_tolerance_m_per_s;
-    const Attachment at = attachment(reference_point_at_rest_g, in.attachment_b_m,
-                                     at_start.position);
+    const Attachment at = attachment(reference_point_at_rest_g, in.attachment_b_m, at_start.position);
     const double gap = (in.initial.node_position_m.back() - at.position_m).norm();
     if (gap > 1e-6 * std::max(1.0, in.initial.node_position_m.back().norm())) {
-      throw SolverError(fmt::format(
-          "line {}: its static solution ends {:.6g} m from its attachment on the hull at the "
-          "start; solve it there",
-          in.name, gap));
+      throw SolverError(
+          fmt::format("line {}: its static solution ends {:.6g} m from its attachment on the hull at the "
+                      "start; solve it there",
+                      in.name, gap));
     }
     try {
-      starts[static_cast<std::size_t>(&b - blocks.data())] =
-          b.line.initialize(in.model, in.environment, in.initial, o);
+      starts[static_cast<std::size_t>(&b - blocks.data())] = b.line.initialize(in.model, in.environment, in.initial, o);
     } catch (const SolverError& e) {
       throw SolverError(fmt::format("line {}: {}", in.name, e.what()));
     }
@@ -429,9 +413,8 @@ CoupledTimeSeries simulate_coupled(const HullDynamicsModel& hull, const HullLoad
         const double e_line = err.segment(b.offset, b.size).maxCoeff();
         if (e_line > worst) worst = e_line, where = "line " + b.input->name;
       }
-      throw IntegrationError(
-          fmt::format("coupled hull + lines: {}; largest local error in {}", e.what(), where),
-          e.time_reached_s(), e.last_step_s(), e.cvode_flag(), e.diagnostics());
+      throw IntegrationError(fmt::format("coupled hull + lines: {}; largest local error in {}", e.what(), where),
+                             e.time_reached_s(), e.last_step_s(), e.cvode_flag(), e.diagnostics());
     }
     record(k, t, ida.state(), ida.state_derivative());
     const Eigen::VectorXd err = ida.weighted_local_errors();
@@ -444,8 +427,7 @@ CoupledTimeSeries simulate_coupled(const HullDynamicsModel& hull, const HullLoad
     ++out.step_limiting_outputs[worst_part];
   }
   out.statistics = ida.statistics();
-  out.wall_clock_s =
-      start.seconds();
+  out.wall_clock_s = start.seconds();
   return out;
 }
 

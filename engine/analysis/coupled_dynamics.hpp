@@ -109,14 +109,14 @@ struct CoupledOptions {
   int max_order = 2;
   std::optional<double> max_step_s;
   long max_steps_between_outputs = 500000;
-  int threads = 1;  ///< >= 1
+  int threads = 1;                               ///< >= 1
   PrescribedHullMotionFn wave_frequency_motion;  ///< empty: none
 };
 
 struct CoupledTimeSeries {
-  Eigen::VectorXd times_s;                               ///< start time, then output_times_s
-  Eigen::Matrix<double, 6, Eigen::Dynamic> position;     ///< low-frequency hull offset q, m, rad
-  Eigen::Matrix<double, 6, Eigen::Dynamic> velocity;     ///< q̇
+  Eigen::VectorXd times_s;                                              ///< start time, then output_times_s
+  Eigen::Matrix<double, 6, Eigen::Dynamic> position;                    ///< low-frequency hull offset q, m, rad
+  Eigen::Matrix<double, 6, Eigen::Dynamic> velocity;                    ///< q̇
   std::vector<Eigen::Matrix<double, 3, Eigen::Dynamic>> end_B_force_N;  ///< per line, global
   IdaStatistics statistics;
   /// Per line (then the hull, last): at how many outputs its weighted local
@@ -134,9 +134,7 @@ struct CoupledTimeSeries {
 /// that cannot start (named), IntegrationError (time reached, cause) when
 /// the integration fails.
 CoupledTimeSeries simulate_coupled(const HullDynamicsModel& hull, const HullLoads& loads,
-                                   const Eigen::Vector3d& reference_point_at_rest_g,
-                                   const Vector6d& initial_offset,
-                                   const std::vector<CoupledLine>& lines,
-                                   const CoupledOptions& options);
+                                   const Eigen::Vector3d& reference_point_at_rest_g, const Vector6d& initial_offset,
+                                   const std::vector<CoupledLine>& lines, const CoupledOptions& options);
 
 }  // namespace spiral::engine

@@ -4,9 +4,10 @@
 
 namespace spiral::engine {
 
-std::vector<Eigen::Matrix3d> fairlead_velocity_covariance(
-    std::span<const Eigen::Vector3d> fairleads_b, const Eigen::Vector3d& reference_point,
-    const Eigen::Matrix<double, 6, Eigen::Dynamic>& motion, double dt_s) {
+std::vector<Eigen::Matrix3d> fairlead_velocity_covariance(std::span<const Eigen::Vector3d> fairleads_b,
+                                                          const Eigen::Vector3d& reference_point,
+                                                          const Eigen::Matrix<double, 6, Eigen::Dynamic>& motion,
+                                                          double dt_s) {
   std::vector<Eigen::Matrix3d> out(fairleads_b.size(), Eigen::Matrix3d::Zero());
   const Eigen::Index n = motion.cols();
   if (n < 3) return out;

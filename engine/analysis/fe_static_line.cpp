@@ -29,8 +29,8 @@ std::vector<int> node_sections(const FeLineModel& model, const FeStaticsResult& 
   return sections;
 }
 
-FeStaticLine::FeStaticLine(std::string name, Eigen::Vector3d end_A_g, Eigen::Vector3d attachment_b,
-                           FeLineModel model, FeEnvironment environment, FeStaticsOptions options)
+FeStaticLine::FeStaticLine(std::string name, Eigen::Vector3d end_A_g, Eigen::Vector3d attachment_b, FeLineModel model,
+                           FeEnvironment environment, FeStaticsOptions options)
     : name_(std::move(name)),
       end_A_g_(std::move(end_A_g)),
       attachment_b_(std::move(attachment_b)),
@@ -39,8 +39,7 @@ FeStaticLine::FeStaticLine(std::string name, Eigen::Vector3d end_A_g, Eigen::Vec
       options_(std::move(options)) {}
 
 const FeStaticsResult& FeStaticLine::solve_at(const Eigen::Vector3d& attachment_g, bool stiffness) {
-  if (last_ && attachment_g == last_attachment_g_ && (last_has_stiffness_ || !stiffness))
-    return *last_;
+  if (last_ && attachment_g == last_attachment_g_ && (last_has_stiffness_ || !stiffness)) return *last_;
   // A failed trial (e.g. a hull line-search step too far) leaves the warm
   // start at the last converged solution, not at a cold start.
   FeStaticsOptions options = options_;
@@ -60,9 +59,8 @@ const FeStaticsResult& FeStaticLine::solve_at(const Eigen::Vector3d& attachment_
 
 void FeStaticLine::adopt(const Eigen::Vector3d& attachment_g, FeStaticsResult solution) {
   if (solution.node_arc_length_m.size() != fe_line_mesh(model_).size()) {
-    throw std::invalid_argument(
-        fmt::format("line '{}': adopted solution has {} nodes, the model {}", name_,
-                    solution.node_arc_length_m.size(), fe_line_mesh(model_).size()));
+    throw std::invalid_argument(fmt::format("line '{}': adopted solution has {} nodes, the model {}", name_,
+                                            solution.node_arc_length_m.size(), fe_line_mesh(model_).size()));
   }
   last_ = std::move(solution);
   last_attachment_g_ = attachment_g;
@@ -100,7 +98,8 @@ LineState FeStaticLine::state(const Eigen::Vector3d& attachment_g, int /*points_
   const std::vector<int> sections = node_sections(model_, r);
   for (std::size_t i = 0; i < r.node_position_m.size(); ++i) {
     const bool on_seabed = r.node_position_m[i].z() <= environment_.seabed_z_m + kOnSeabedTolerance_m;
-    state.profile.push_back({r.node_position_m[i], r.node_arc_length_m[i], r.node_tension_N[i], sections[i], on_seabed});
+    state.profile.push_back(
+        {r.node_position_m[i], r.node_arc_length_m[i], r.node_tension_N[i], sections[i], on_seabed});
   }
   return state;
 }

@@ -15,11 +15,9 @@ constexpr double kForcingMargin_s = 120.0;
 
 }  // namespace
 
-ForcingTable::ForcingTable(const SlowDriftSeries* drift, const WindRealization* gust,
-             double duration_s)
+ForcingTable::ForcingTable(const SlowDriftSeries* drift, const WindRealization* gust, double duration_s)
     : drift_(drift), gust_(gust) {
-  const auto n =
-      static_cast<Eigen::Index>(std::ceil((duration_s + kForcingMargin_s) / kStep_s)) + 4;
+  const auto n = static_cast<Eigen::Index>(std::ceil((duration_s + kForcingMargin_s) / kStep_s)) + 4;
   values_.setZero(7, n);
   if (drift) tabulate_drift(*drift);
   if (gust) tabulate_gust(*gust);
@@ -43,18 +41,17 @@ void ForcingTable::tabulate_drift(const SlowDriftSeries& d) {
     if (j % kPhasorResync == 0) {
       const double t = static_cast<double>(j - 1) * kStep_s;
       for (Eigen::Index i = 0; i < k; ++i) {
-        const double theta = d.omega_rad_per_s[static_cast<std::size_t>(i)] * t +
-                             d.phase_rad[static_cast<std::size_t>(i)];
+        const double theta =
+            d.omega_rad_per_s[static_cast<std::size_t>(i)] * t + d.phase_rad[static_cast<std::size_t>(i)];
         c(i) = std::cos(theta);
         sn(i) = std::sin(theta);
       }
     }
     const Vector6d z_re = d.weight * c.matrix(), z_im = d.weight * sn.matrix();
-    const Vector6d zs_re = d.signed_weight * c.matrix(),
-                           zs_im = d.signed_weight * sn.matrix();
+    const Vector6d zs_re = d.signed_weight * c.matrix(), zs_im = d.signed_weight * sn.matrix();
     const Vector6d b = zs_re.cwiseProduct(z_re) + zs_im.cwiseProduct(z_im);
-    values_.col(j).head<6>() << cy * b(0) - sy * b(1), sy * b(0) + cy * b(1), b(2),
-        cy * b(3) - sy * b(4), sy * b(3) + cy * b(4), b(5);
+    values_.col(j).head<6>() << cy * b(0) - sy * b(1), sy * b(0) + cy * b(1), b(2), cy * b(3) - sy * b(4),
+        sy * b(3) + cy * b(4), b(5);
     const Eigen::ArrayXd next_c = c * rc - sn * rs;
     sn = sn * rc + c * rs;
     c = next_c;
@@ -72,8 +69,8 @@ void ForcingTable::tabulate_gust(const WindRealization& w) {
     if (j % kPhasorResync == 0) {
       const double t = static_cast<double>(j - 1) * kStep_s;
       for (Eigen::Index i = 0; i < k; ++i) {
-        const double theta = w.omega_rad_per_s[static_cast<std::size_t>(i)] * t +
-                             w.phase_rad[static_cast<std::size_t>(i)];
+        const double theta =
+            w.omega_rad_per_s[static_cast<std::size_t>(i)] * t + w.phase_rad[static_cast<std::size_t>(i)];
         c(i) = std::cos(theta);
         sn(i) = std::sin(theta);
       }

@@ -35,11 +35,8 @@ class ForcingTable {
     const auto j = static_cast<Eigen::Index>(std::floor(s));
     if (j < 1 || j + 2 >= values_.cols()) return exact(t);
     const double u = s - static_cast<double>(j);
-    const auto p0 = values_.col(j - 1), p1 = values_.col(j), p2 = values_.col(j + 1),
-               p3 = values_.col(j + 2);
-    return p1 + 0.5 * u *
-                    ((p2 - p0) +
-                     u * ((2.0 * p0 - 5.0 * p1 + 4.0 * p2 - p3) + u * (3.0 * (p1 - p2) + p3 - p0)));
+    const auto p0 = values_.col(j - 1), p1 = values_.col(j), p2 = values_.col(j + 1), p3 = values_.col(j + 2);
+    return p1 + 0.5 * u * ((p2 - p0) + u * ((2.0 * p0 - 5.0 * p1 + 4.0 * p2 - p3) + u * (3.0 * (p1 - p2) + p3 - p0)));
   }
 
  private:

@@ -19,8 +19,8 @@ void require_finite(const auto& m, const char* what) {
 
 }  // namespace
 
-Vector6d radiation_memory_force(const RetardationKernel& kernel, const VelocityHistory& history,
-                                double t_s, const Vector6d& velocity) {
+Vector6d radiation_memory_force(const RetardationKernel& kernel, const VelocityHistory& history, double t_s,
+                                const Vector6d& velocity) {
   const double dt = kernel.time_step_s;
   const Eigen::Index n_kernel = kernel.size();
   Vector6d mu = Vector6d::Zero();
@@ -86,11 +86,10 @@ HullEquations make_hull_equations(const HullDynamicsModel& model, const HullLoad
   return eq;
 }
 
-Vector6d hull_generalized_force(const HullEquations& eq, double t_s, const Vector6d& q,
-                                const Vector6d& q_dot, const VelocityHistory* history) {
+Vector6d hull_generalized_force(const HullEquations& eq, double t_s, const Vector6d& q, const Vector6d& q_dot,
+                                const VelocityHistory* history) {
   const HullDynamicsModel& model = eq.model;
-  Vector6d f = model.hydrostatic_force_at_rest - model.hydrostatic_stiffness * q -
-               eq.total_linear_damping * q_dot -
+  Vector6d f = model.hydrostatic_force_at_rest - model.hydrostatic_stiffness * q - eq.total_linear_damping * q_dot -
                model.quadratic_damping.cwiseProduct(q_dot.cwiseAbs().cwiseProduct(q_dot));
   if (const auto* lin = std::get_if<LinearizedLines>(&eq.loads.lines)) {
     f += lin->force_at_equilibrium - lin->stiffness * (q - lin->equilibrium_offset);
@@ -126,9 +125,8 @@ CvodeOptions default_hull_integrator_options() {
   return o;
 }
 
-HullTimeSeries simulate_hull(const HullDynamicsModel& model, const HullLoads& loads,
-                             const Vector6d& initial_position, const Vector6d& initial_velocity,
-                             const HullSimulationOptions& options) {
+HullTimeSeries simulate_hull(const HullDynamicsModel& model, const HullLoads& loads, const Vector6d& initial_position,
+                             const Vector6d& initial_velocity, const HullSimulationOptions& options) {
   Stopwatch wall_start;
   require_finite(initial_position, "initial_position");
   require_finite(initial_velocity, "initial_velocity");
@@ -137,10 +135,10 @@ HullTimeSeries simulate_hull(const HullDynamicsModel& model, const HullLoads& lo
   const double t0 = options.start_time_s;
   for (std::size_t k = 0; k < times.size(); ++k) {
     if (!(times[k] >= t0) || (k > 0 && !(times[k] > times[k - 1]))) {
-      throw std::invalid_argument(fmt::format(
-          "simulate_hull: output times must be strictly increasing and >= the start time {} s; "
-          "output_times_s[{}] = {} s",
-          t0, k, times[k]));
+      throw std::invalid_argument(
+          fmt::format("simulate_hull: output times must be strictly increasing and >= the start time {} s; "
+                      "output_times_s[{}] = {} s",
+                      t0, k, times[k]));
     }
   }
   Eigen::VectorXd y0(12);
@@ -199,8 +197,7 @@ HullTimeSeries simulate_hull(const HullDynamicsModel& model, const HullLoads& lo
     out.velocity.col(k) = y.tail<6>();
   }
   out.statistics = integrator.statistics();
-  out.wall_clock_s =
-      wall_start.seconds();
+  out.wall_clock_s = wall_start.seconds();
   return out;
 }
 
@@ -211,10 +208,10 @@ HullTimeSeries free_decay(const HullDynamicsModel& model, const LineForceModel& 
     throw std::invalid_argument(fmt::format("free_decay: dof must be 0..5, got {}", dof));
   }
   if (!(duration_s > 0.0) || !(output_step_s > 0.0) || !std::isfinite(initial_displacement)) {
-    throw std::invalid_argument(fmt::format(
-        "free_decay: need duration_s > 0, output_step_s > 0 and a finite displacement; got {} s, "
-        "{} s, {}",
-        duration_s, output_step_s, initial_displacement));
+    throw std::invalid_argument(
+        fmt::format("free_decay: need duration_s > 0, output_step_s > 0 and a finite displacement; got {} s, "
+                    "{} s, {}",
+                    duration_s, output_step_s, initial_displacement));
   }
   Vector6d q0 = Vector6d::Zero();
   if (const auto* lin = std::get_if<LinearizedLines>(&lines)) q0 = lin->equilibrium_offset;

@@ -53,11 +53,11 @@ namespace spiral::engine {
 
 /// The hull: mass, hydrodynamics and hydrostatics about the reference point.
 struct HullDynamicsModel {
-  Matrix6d mass = Matrix6d::Zero();               ///< rigid-body M (rigid_body_mass_matrix)
-  Matrix6d added_mass = Matrix6d::Zero();         ///< A(0) low-frequency, or A(inf) with memory
-  Matrix6d linear_damping = Matrix6d::Zero();     ///< B_lin, N/(m/s), N·m/(rad/s) …
-  Vector6d quadratic_damping = Vector6d::Zero();  ///< b_quad per DOF, N/(m/s)², N·m/(rad/s)², >= 0
-  Matrix6d hydrostatic_stiffness = Matrix6d::Zero();  ///< C_hydro incl. gravity terms, N/m, N·m/rad
+  Matrix6d mass = Matrix6d::Zero();                       ///< rigid-body M (rigid_body_mass_matrix)
+  Matrix6d added_mass = Matrix6d::Zero();                 ///< A(0) low-frequency, or A(inf) with memory
+  Matrix6d linear_damping = Matrix6d::Zero();             ///< B_lin, N/(m/s), N·m/(rad/s) …
+  Vector6d quadratic_damping = Vector6d::Zero();          ///< b_quad per DOF, N/(m/s)², N·m/(rad/s)², >= 0
+  Matrix6d hydrostatic_stiffness = Matrix6d::Zero();      ///< C_hydro incl. gravity terms, N/m, N·m/rad
   Vector6d hydrostatic_force_at_rest = Vector6d::Zero();  ///< F_hs0, N, N·m
   std::optional<RetardationKernel> radiation_memory;      ///< Cummins memory; A must be A(inf)
 };
@@ -107,8 +107,8 @@ struct VelocityHistory {
 /// the trapezoidal rule on the history grid, with q'(t) = the current
 /// velocity and K between table points linearly interpolated. Cost per call:
 /// about n_kernel × 36 multiply-adds (a 60 s kernel at 0.1 s: ~2e4).
-Vector6d radiation_memory_force(const RetardationKernel& kernel, const VelocityHistory& history,
-                                double t_s, const Vector6d& velocity);
+Vector6d radiation_memory_force(const RetardationKernel& kernel, const VelocityHistory& history, double t_s,
+                                const Vector6d& velocity);
 
 /// Time-independent data derived once from a model and its line model.
 struct HullEquations {
@@ -124,8 +124,8 @@ HullEquations make_hull_equations(const HullDynamicsModel& model, const HullLoad
 
 /// The force on the hull at (t, q, q') other than inertia (everything on the
 /// right-hand side minus the left-hand damping/stiffness terms), N, N·m.
-Vector6d hull_generalized_force(const HullEquations& eq, double t_s, const Vector6d& q,
-                                const Vector6d& q_dot, const VelocityHistory* history);
+Vector6d hull_generalized_force(const HullEquations& eq, double t_s, const Vector6d& q, const Vector6d& q_dot,
+                                const VelocityHistory* history);
 
 /// y' = f(model, loads, history, t, y) with y = [q; q']. Writes ydot only.
 void hull_state_derivative(const HullEquations& eq, const VelocityHistory* history, double t_s,
@@ -165,17 +165,15 @@ struct HullTimeSeries {
 /// memory force is only piecewise smooth in t, so use rtol ~1e-7: the 1e-10
 /// default costs several times as much for no gain (timings in
 /// docs/decisions/hull-dynamics-tolerances.md).
-HullTimeSeries simulate_hull(const HullDynamicsModel& model, const HullLoads& loads,
-                             const Vector6d& initial_position, const Vector6d& initial_velocity,
-                             const HullSimulationOptions& options);
+HullTimeSeries simulate_hull(const HullDynamicsModel& model, const HullLoads& loads, const Vector6d& initial_position,
+                             const Vector6d& initial_velocity, const HullSimulationOptions& options);
 
 /// Free decay in one DOF (0..5): starts at rest at the equilibrium (q0 of
 /// LinearizedLines; q = 0 for a nonlinear line force) displaced by
 /// `initial_displacement` (m or rad) in `dof`, no external force, outputs
 /// every output_step_s over duration_s.
 HullTimeSeries free_decay(const HullDynamicsModel& model, const LineForceModel& lines, int dof,
-                          double initial_displacement, double duration_s,
-                          double output_step_s = 0.05,
+                          double initial_displacement, double duration_s, double output_step_s = 0.05,
                           const CvodeOptions& integrator = default_hull_integrator_options());
 
 }  // namespace spiral::engine

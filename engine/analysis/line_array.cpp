@@ -34,12 +34,11 @@ HullPose perturbed(const HullPose& pose, int dof, double step) {
 /// order of the results is the order of the lines either way, so the sums
 /// below are deterministic.
 /// force_only: only LineEndResponse::force_g is filled (StaticLine::solve_force).
-std::vector<LineEndResponse> solve_all(std::span<const std::unique_ptr<StaticLine>> lines,
-                                       const HullPose& pose, bool force_only = false) {
+std::vector<LineEndResponse> solve_all(std::span<const std::unique_ptr<StaticLine>> lines, const HullPose& pose,
+                                       bool force_only = false) {
   std::vector<LineEndResponse> ends(lines.size());
   const auto solve_one = [&](std::size_t i) {
-    const Eigen::Vector3d attachment_g =
-        pose.reference_point_g + pose.rotation * lines[i]->attachment_b();
+    const Eigen::Vector3d attachment_g = pose.reference_point_g + pose.rotation * lines[i]->attachment_b();
     if (force_only) {
       ends[i].force_g = lines[i]->solve_force(attachment_g);
     } else {
@@ -102,8 +101,7 @@ Matrix6d attachment_stiffness_6x6(const Eigen::Matrix3d& K_f, const Eigen::Vecto
   return k;
 }
 
-LineArrayResponse evaluate_line_array(std::span<const std::unique_ptr<StaticLine>> lines,
-                                      const HullPose& pose) {
+LineArrayResponse evaluate_line_array(std::span<const std::unique_ptr<StaticLine>> lines, const HullPose& pose) {
   LineArrayResponse response;
   response.lines.reserve(lines.size());
   std::vector<LineEndResponse> ends = solve_all(lines, pose);
@@ -122,8 +120,8 @@ LineArrayResponse evaluate_line_array(std::span<const std::unique_ptr<StaticLine
   return response;
 }
 
-Matrix6d finite_difference_stiffness(std::span<const std::unique_ptr<StaticLine>> lines,
-                                     const HullPose& pose, const FiniteDifferenceSteps& steps) {
+Matrix6d finite_difference_stiffness(std::span<const std::unique_ptr<StaticLine>> lines, const HullPose& pose,
+                                     const FiniteDifferenceSteps& steps) {
   Matrix6d k;
   for (int dof = 0; dof < 6; ++dof) {
     const double h = dof < 3 ? steps.translation_m : steps.rotation_rad;

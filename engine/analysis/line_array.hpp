@@ -33,9 +33,9 @@ HullPose pose_from_offset(const Eigen::Vector3d& reference_point_at_rest_g, cons
 /// One line's part of the array response.
 struct LineContribution {
   Eigen::Vector3d attachment_g = Eigen::Vector3d::Zero();
-  LineEndResponse end;                          ///< force and 3×3 stiffness at the attachment
-  Vector6d force = Vector6d::Zero();            ///< its 6-DOF force on the hull
-  Matrix6d stiffness = Matrix6d::Zero();        ///< its 6×6 tangent stiffness
+  LineEndResponse end;                    ///< force and 3×3 stiffness at the attachment
+  Vector6d force = Vector6d::Zero();      ///< its 6-DOF force on the hull
+  Matrix6d stiffness = Matrix6d::Zero();  ///< its 6×6 tangent stiffness
 };
 
 struct LineArrayResponse {
@@ -55,8 +55,7 @@ Matrix6d attachment_stiffness_6x6(const Eigen::Matrix3d& K_f, const Eigen::Vecto
                                   const Eigen::Vector3d& arm_g);
 
 /// Solves every line at `pose` and sums force and analytic stiffness.
-LineArrayResponse evaluate_line_array(std::span<const std::unique_ptr<StaticLine>> lines,
-                                      const HullPose& pose);
+LineArrayResponse evaluate_line_array(std::span<const std::unique_ptr<StaticLine>> lines, const HullPose& pose);
 
 /// Perturbation sizes of the finite-difference stiffness. Large against the
 /// line solvers' closure tolerance (1e-9 m) so that round-off stays below
@@ -69,7 +68,7 @@ struct FiniteDifferenceSteps {
 
 /// Central finite differences of the line-array force (12 array solves),
 /// the cross-check of the analytic tangent.
-Matrix6d finite_difference_stiffness(std::span<const std::unique_ptr<StaticLine>> lines,
-                                     const HullPose& pose, const FiniteDifferenceSteps& steps = {});
+Matrix6d finite_difference_stiffness(std::span<const std::unique_ptr<StaticLine>> lines, const HullPose& pose,
+                                     const FiniteDifferenceSteps& steps = {});
 
 }  // namespace spiral::engine

@@ -46,14 +46,12 @@ double merit(const Vector6d& residual, double force_ref, double moment_ref) {
 }  // namespace
 
 Eigen::Vector3d roll_pitch_yaw(const Eigen::Matrix3d& r) {
-  return {std::atan2(r(2, 1), r(2, 2)), -std::asin(std::clamp(r(2, 0), -1.0, 1.0)),
-          std::atan2(r(1, 0), r(0, 0))};
+  return {std::atan2(r(2, 1), r(2, 2)), -std::asin(std::clamp(r(2, 0), -1.0, 1.0)), std::atan2(r(1, 0), r(0, 0))};
 }
 
 EquilibriumResult solve_static_equilibrium(const HullStaticModel& hull,
                                            std::span<const std::unique_ptr<StaticLine>> lines,
-                                           const ExternalLoad& external_load,
-                                           const Vector6d& initial_offset,
+                                           const ExternalLoad& external_load, const Vector6d& initial_offset,
                                            const EquilibriumOptions& options) {
   const HullPose start = pose_from_offset(hull.reference_point_at_rest_g, initial_offset);
   Evaluation current = evaluate(hull, lines, external_load, start.reference_point_g, start.rotation);
@@ -75,12 +73,11 @@ EquilibriumResult solve_static_equilibrium(const HullStaticModel& hull,
       scaled.head<3>() /= force_ref_N;
       scaled.tail<3>() /= moment_ref_Nm;
       scaled.cwiseAbs().maxCoeff(&worst);
-      throw SolverError(
-          fmt::format("static equilibrium did not converge in {} iterations: largest residual in "
-                      "{} ({:.4g} {}); the hull may have no equilibrium under this load (lines "
-                      "too slack or too few to hold it) — check the environment and pretensions",
-                      iteration, kDofNames[worst], current.residual(worst), worst < 3 ? "N" : "N·m"),
-          {iteration, current_merit, "relative"});
+      throw SolverError(fmt::format("static equilibrium did not converge in {} iterations: largest residual in "
+                                    "{} ({:.4g} {}); the hull may have no equilibrium under this load (lines "
+                                    "too slack or too few to hold it) — check the environment and pretensions",
+                                    iteration, kDofNames[worst], current.residual(worst), worst < 3 ? "N" : "N·m"),
+                        {iteration, current_merit, "relative"});
     }
     ++iteration;
 

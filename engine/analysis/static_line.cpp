@@ -13,9 +13,8 @@ namespace {
 constexpr double kVerticalSpan_m = 1e-9;
 }  // namespace
 
-Eigen::Matrix3d catenary_fairlead_stiffness(const Eigen::Matrix2d& tangent,
-                                            double horizontal_force_N, double horizontal_span_m,
-                                            const Eigen::Vector3d& e) {
+Eigen::Matrix3d catenary_fairlead_stiffness(const Eigen::Matrix2d& tangent, double horizontal_force_N,
+                                            double horizontal_span_m, const Eigen::Vector3d& e) {
   // Force on the fairlead: f = −H e − V ẑ, with H(XF, ZF), V(XF, ZF),
   // XF = e·Δx_h, ZF = Δz and δe = (I − e eᵀ) δx_h / XF. K = −df/dx:
   //   K_hh = dH/dXF e eᵀ + H/XF (I_h − e eᵀ),  K_hz = dH/dZF e,
@@ -24,8 +23,7 @@ Eigen::Matrix3d catenary_fairlead_stiffness(const Eigen::Matrix2d& tangent,
   Eigen::Matrix3d k = Eigen::Matrix3d::Zero();
   Eigen::Matrix3d lateral = Eigen::Matrix3d::Zero();
   lateral.topLeftCorner<2, 2>() = Eigen::Matrix2d::Identity() - eh.head<2>() * eh.head<2>().transpose();
-  const double string_stiffness =
-      horizontal_span_m > kVerticalSpan_m ? horizontal_force_N / horizontal_span_m : 0.0;
+  const double string_stiffness = horizontal_span_m > kVerticalSpan_m ? horizontal_force_N / horizontal_span_m : 0.0;
   k += tangent(0, 0) * eh * eh.transpose() + string_stiffness * lateral;
   k.block<2, 1>(0, 2) = tangent(0, 1) * eh.head<2>();
   k.block<1, 2>(2, 0) = tangent(1, 0) * eh.head<2>().transpose();
@@ -33,10 +31,8 @@ Eigen::Matrix3d catenary_fairlead_stiffness(const Eigen::Matrix2d& tangent,
   return k;
 }
 
-CatenaryStaticLine::CatenaryStaticLine(std::string name, Eigen::Vector3d anchor_g,
-                                       Eigen::Vector3d attachment_b,
-                                       double anchor_height_above_seabed_m, CatenaryLine line,
-                                       CatenaryOptions options)
+CatenaryStaticLine::CatenaryStaticLine(std::string name, Eigen::Vector3d anchor_g, Eigen::Vector3d attachment_b,
+                                       double anchor_height_above_seabed_m, CatenaryLine line, CatenaryOptions options)
     : name_(std::move(name)),
       anchor_g_(std::move(anchor_g)),
       attachment_b_(std::move(attachment_b)),
@@ -49,16 +45,14 @@ CatenaryStaticLine::Plane CatenaryStaticLine::plane_of(const Eigen::Vector3d& at
   const double span = std::hypot(chord.x(), chord.y());
   // A vertical line has no plane of its own: keep the one of its rest layout.
   const Eigen::Vector3d direction =
-      span > kVerticalSpan_m ? Eigen::Vector3d(chord.x() / span, chord.y() / span, 0.0)
-                             : Eigen::Vector3d::UnitX();
+      span > kVerticalSpan_m ? Eigen::Vector3d(chord.x() / span, chord.y() / span, 0.0) : Eigen::Vector3d::UnitX();
   return {span, direction};
 }
 
 LineEndResponse CatenaryStaticLine::solve_in_plane(const Plane& plane, double vertical_span_m,
                                                    const CatenaryOptions& options) {
   try {
-    last_ = solve_catenary(line_, {plane.span_m, vertical_span_m, anchor_height_above_seabed_m_},
-                           options, warm_start_);
+    last_ = solve_catenary(line_, {plane.span_m, vertical_span_m, anchor_height_above_seabed_m_}, options, warm_start_);
   } catch (const SolverError& error) {
     throw SolverError(fmt::format("line '{}': {}", name_, error.what()), error.diagnostics());
   }
@@ -89,14 +83,20 @@ LineState CatenaryStaticLine::state(const Eigen::Vector3d& attachment_g, int poi
   state.laid_length_m = last_.laid_length_m;
   state.touchdown_distance_m = last_.touchdown_x_m;
   switch (last_.regime) {
-    case CatenaryRegime::suspended: state.regime = "suspended"; break;
-    case CatenaryRegime::touchdown: state.regime = "touchdown"; break;
-    case CatenaryRegime::slack_vertical: state.regime = "slack"; break;
+    case CatenaryRegime::suspended:
+      state.regime = "suspended";
+      break;
+    case CatenaryRegime::touchdown:
+      state.regime = "touchdown";
+      break;
+    case CatenaryRegime::slack_vertical:
+      state.regime = "slack";
+      break;
   }
   state.profile.reserve(last_.profile.size());
   for (const CatenaryProfilePoint& p : last_.profile) {
-    state.profile.push_back({anchor_g_ + p.x_m * e + p.z_m * Eigen::Vector3d::UnitZ(), p.arc_length_m,
-                             p.tension_N, p.segment, p.on_seabed});
+    state.profile.push_back({anchor_g_ + p.x_m * e + p.z_m * Eigen::Vector3d::UnitZ(), p.arc_length_m, p.tension_N,
+                             p.segment, p.on_seabed});
   }
   return state;
 }

@@ -29,19 +29,19 @@ struct LineEndResponse {
 /// A point of a line's static profile.
 struct LineProfilePoint {
   Eigen::Vector3d position_g = Eigen::Vector3d::Zero();  ///< m
-  double arc_length_m = 0.0;  ///< unstretched, from the bottom end (anchor)
-  double tension_N = 0.0;     ///< effective tension
-  int segment = 0;            ///< index of the segment/section, bottom to top
+  double arc_length_m = 0.0;                             ///< unstretched, from the bottom end (anchor)
+  double tension_N = 0.0;                                ///< effective tension
+  int segment = 0;                                       ///< index of the segment/section, bottom to top
   bool on_seabed = false;
 };
 
 /// The full static state of a line, for results tables and reports.
 struct LineState {
-  LineEndResponse top;                                   ///< at the hull
+  LineEndResponse top;                                       ///< at the hull
   Eigen::Vector3d bottom_force_g = Eigen::Vector3d::Zero();  ///< force of the line on its anchor, N
-  double laid_length_m = 0.0;        ///< unstretched length resting on the seabed
-  double touchdown_distance_m = 0.0; ///< horizontal, anchor to touchdown point (0: none)
-  std::string regime;                ///< suspended | touchdown | slack
+  double laid_length_m = 0.0;                                ///< unstretched length resting on the seabed
+  double touchdown_distance_m = 0.0;                         ///< horizontal, anchor to touchdown point (0: none)
+  std::string regime;                                        ///< suspended | touchdown | slack
   std::vector<LineProfilePoint> profile;
 };
 
@@ -56,9 +56,7 @@ class StaticLine {
   virtual LineEndResponse solve(const Eigen::Vector3d& attachment_g) = 0;
   /// The force of the line on the hull alone (N, global), for finite
   /// differences: a line may skip its stiffness. Default: solve().force_g.
-  virtual Eigen::Vector3d solve_force(const Eigen::Vector3d& attachment_g) {
-    return solve(attachment_g).force_g;
-  }
+  virtual Eigen::Vector3d solve_force(const Eigen::Vector3d& attachment_g) { return solve(attachment_g).force_g; }
   /// Solves the line at `attachment_g` and returns its whole state, with
   /// `points_per_segment` + 1 profile points on each segment (ends included).
   virtual LineState state(const Eigen::Vector3d& attachment_g, int points_per_segment) = 0;
@@ -74,8 +72,7 @@ class StaticLine {
 class CatenaryStaticLine final : public StaticLine {
  public:
   CatenaryStaticLine(std::string name, Eigen::Vector3d anchor_g, Eigen::Vector3d attachment_b,
-                     double anchor_height_above_seabed_m, CatenaryLine line,
-                     CatenaryOptions options = {});
+                     double anchor_height_above_seabed_m, CatenaryLine line, CatenaryOptions options = {});
   const std::string& name() const override { return name_; }
   const Eigen::Vector3d& attachment_b() const override { return attachment_b_; }
   LineEndResponse solve(const Eigen::Vector3d& attachment_g) override;
@@ -104,8 +101,7 @@ class CatenaryStaticLine final : public StaticLine {
 /// in-plane tangent d(H, V)/d(XF, ZF): the in-plane terms along the line's
 /// horizontal direction e, plus the lateral "string" stiffness H / XF across it
 /// (the horizontal force turns with the line when the fairlead moves sideways).
-Eigen::Matrix3d catenary_fairlead_stiffness(const Eigen::Matrix2d& tangent_HV_by_XZ,
-                                            double horizontal_force_N, double horizontal_span_m,
-                                            const Eigen::Vector3d& horizontal_direction_g);
+Eigen::Matrix3d catenary_fairlead_stiffness(const Eigen::Matrix2d& tangent_HV_by_XZ, double horizontal_force_N,
+                                            double horizontal_span_m, const Eigen::Vector3d& horizontal_direction_g);
 
 }  // namespace spiral::engine

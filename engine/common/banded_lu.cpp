@@ -7,7 +7,11 @@
 namespace spiral::engine {
 
 BandMatrix::BandMatrix(int n, int kl, int ku)
-    : n_(n), kl_(kl), ku_(ku), kv_(kl + ku), ld_(2 * kl + ku + 1),
+    : n_(n),
+      kl_(kl),
+      ku_(ku),
+      kv_(kl + ku),
+      ld_(2 * kl + ku + 1),
       ab_(static_cast<std::size_t>(ld_) * static_cast<std::size_t>(n), 0.0) {}
 
 void BandMatrix::reset(int n, int kl, int ku) {

@@ -26,8 +26,7 @@ class FileFormatError : public std::runtime_error {
   const std::string& message() const { return message_; }
 
  private:
-  static std::string compose(const std::string& file, std::size_t line,
-                             const std::string& message) {
+  static std::string compose(const std::string& file, std::size_t line, const std::string& message) {
     return line == 0 ? file + ": " + message : file + ":" + std::to_string(line) + ": " + message;
   }
 

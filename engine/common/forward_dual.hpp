@@ -18,8 +18,8 @@ namespace spiral::engine {
 
 template <int N>
 struct Dual {
-  double v = 0.0;                ///< value
-  std::array<double, N> d{};     ///< derivatives with respect to the N seeds
+  double v = 0.0;             ///< value
+  std::array<double, N> d{};  ///< derivatives with respect to the N seeds
 
   Dual() = default;
   Dual(double value) : v(value) {}  // NOLINT(google-explicit-constructor): constants mix freely

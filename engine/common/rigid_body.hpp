@@ -13,7 +13,6 @@
 
 namespace spiral::engine {
 
-
 /// Rotation body -> global for (roll, pitch, yaw) in rad.
 inline Eigen::Matrix3d rotation_matrix(const Eigen::Vector3d& roll_pitch_yaw_rad) {
   return (Eigen::AngleAxisd(roll_pitch_yaw_rad.z(), Eigen::Vector3d::UnitZ()) *
@@ -24,8 +23,7 @@ inline Eigen::Matrix3d rotation_matrix(const Eigen::Vector3d& roll_pitch_yaw_rad
 
 /// Global position of a body-frame point for a hull whose reference point sits
 /// at `reference_point_g` at rest and is displaced by `offset` (6 DOF, m and rad).
-inline Eigen::Vector3d body_point_to_global(const Eigen::Vector3d& reference_point_g,
-                                            const Vector6d& offset,
+inline Eigen::Vector3d body_point_to_global(const Eigen::Vector3d& reference_point_g, const Vector6d& offset,
                                             const Eigen::Vector3d& point_b) {
   return reference_point_g + offset.head<3>() + rotation_matrix(offset.tail<3>()) * point_b;
 }

@@ -10,9 +10,9 @@
 namespace spiral::engine {
 
 struct SolverDiagnostics {
-  int iterations = 0;            ///< iterations performed before giving up
-  double residual = 0.0;         ///< last residual norm, in the solver's stated unit
-  std::string residual_unit;     ///< unit of `residual` (e.g. "m")
+  int iterations = 0;         ///< iterations performed before giving up
+  double residual = 0.0;      ///< last residual norm, in the solver's stated unit
+  std::string residual_unit;  ///< unit of `residual` (e.g. "m")
 };
 
 class SolverError : public std::runtime_error {

@@ -13,28 +13,24 @@ void validate_current_profile(const CurrentProfile& p) {
     throw std::invalid_argument("current profile: the (z, speed) table is empty");
   }
   if (p.z_m.size() != p.speed_m_per_s.size()) {
-    throw std::invalid_argument(
-        fmt::format("current profile: z_m has {} values but speed_m_per_s has {}", p.z_m.size(),
-                    p.speed_m_per_s.size()));
+    throw std::invalid_argument(fmt::format("current profile: z_m has {} values but speed_m_per_s has {}", p.z_m.size(),
+                                            p.speed_m_per_s.size()));
   }
   if (!std::isfinite(p.heading_rad)) {
-    throw std::invalid_argument(
-        fmt::format("current profile: heading must be finite (rad), got {}", p.heading_rad));
+    throw std::invalid_argument(fmt::format("current profile: heading must be finite (rad), got {}", p.heading_rad));
   }
   for (std::size_t i = 0; i < p.z_m.size(); ++i) {
     if (!std::isfinite(p.z_m[i])) {
-      throw std::invalid_argument(
-          fmt::format("current profile: z_m[{}] must be finite (m), got {}", i, p.z_m[i]));
+      throw std::invalid_argument(fmt::format("current profile: z_m[{}] must be finite (m), got {}", i, p.z_m[i]));
     }
     if (i > 0 && !(p.z_m[i] > p.z_m[i - 1])) {
-      throw std::invalid_argument(fmt::format(
-          "current profile: z_m must be strictly increasing, got z_m[{}] = {} m after {} m", i,
-          p.z_m[i], p.z_m[i - 1]));
+      throw std::invalid_argument(
+          fmt::format("current profile: z_m must be strictly increasing, got z_m[{}] = {} m after {} m", i, p.z_m[i],
+                      p.z_m[i - 1]));
     }
     if (!(p.speed_m_per_s[i] >= 0.0) || !std::isfinite(p.speed_m_per_s[i])) {
       throw std::invalid_argument(
-          fmt::format("current profile: speed_m_per_s[{}] must be >= 0 m/s, got {} m/s", i,
-                      p.speed_m_per_s[i]));
+          fmt::format("current profile: speed_m_per_s[{}] must be >= 0 m/s, got {} m/s", i, p.speed_m_per_s[i]));
     }
   }
 }
@@ -42,8 +38,7 @@ void validate_current_profile(const CurrentProfile& p) {
 Eigen::Vector3d current_velocity_g(const CurrentProfile& p, double z_m) {
   validate_current_profile(p);
   if (!std::isfinite(z_m)) {
-    throw std::invalid_argument(
-        fmt::format("current profile: query z must be finite (m), got {}", z_m));
+    throw std::invalid_argument(fmt::format("current profile: query z must be finite (m), got {}", z_m));
   }
   double speed = 0.0;
   const auto& z = p.z_m;
@@ -62,20 +57,18 @@ Eigen::Vector3d current_velocity_g(const CurrentProfile& p, double z_m) {
 
 CurrentProfile power_law_current_profile(const PowerLawCurrentInput& in) {
   if (!(in.surface_speed_m_per_s >= 0.0) || !std::isfinite(in.surface_speed_m_per_s)) {
-    throw std::invalid_argument(fmt::format(
-        "power-law current: surface speed must be >= 0 m/s, got {} m/s", in.surface_speed_m_per_s));
+    throw std::invalid_argument(
+        fmt::format("power-law current: surface speed must be >= 0 m/s, got {} m/s", in.surface_speed_m_per_s));
   }
   if (!(in.water_depth_m > 0.0) || !std::isfinite(in.water_depth_m)) {
     throw std::invalid_argument(
         fmt::format("power-law current: water depth must be > 0 m, got {} m", in.water_depth_m));
   }
   if (!(in.exponent > 0.0) || !std::isfinite(in.exponent)) {
-    throw std::invalid_argument(
-        fmt::format("power-law current: exponent must be > 0, got {}", in.exponent));
+    throw std::invalid_argument(fmt::format("power-law current: exponent must be > 0, got {}", in.exponent));
   }
   if (in.points < 2) {
-    throw std::invalid_argument(
-        fmt::format("power-law current: points must be >= 2, got {}", in.points));
+    throw std::invalid_argument(fmt::format("power-law current: points must be >= 2, got {}", in.points));
   }
   CurrentProfile p;
   p.heading_rad = in.heading_rad;

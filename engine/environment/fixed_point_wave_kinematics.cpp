@@ -8,8 +8,7 @@
 namespace spiral::engine {
 
 FixedPointWaveKinematics::FixedPointWaveKinematics(std::shared_ptr<const WaveRealization> sea,
-                                                   const std::vector<Eigen::Vector3d>& points,
-                                                   double cutoff)
+                                                   const std::vector<Eigen::Vector3d>& points, double cutoff)
     : sea_(std::move(sea)) {
   if (!sea_) throw std::invalid_argument("fixed-point wave kinematics: no sea");
   if (!(cutoff > 0.0 && cutoff < 1.0))
@@ -17,9 +16,8 @@ FixedPointWaveKinematics::FixedPointWaveKinematics(std::shared_ptr<const WaveRea
   const auto& c = sea_->components;
   order_.resize(c.size());
   std::iota(order_.begin(), order_.end(), std::size_t{0});
-  std::stable_sort(order_.begin(), order_.end(), [&](std::size_t a, std::size_t b) {
-    return c[a].wavenumber_rad_per_m < c[b].wavenumber_rad_per_m;
-  });
+  std::stable_sort(order_.begin(), order_.end(),
+                   [&](std::size_t a, std::size_t b) { return c[a].wavenumber_rad_per_m < c[b].wavenumber_rad_per_m; });
   cos_wt_.resize(c.size());
   sin_wt_.resize(c.size());
   for (std::size_t j : order_) {
@@ -36,8 +34,7 @@ FixedPointWaveKinematics::FixedPointWaveKinematics(std::shared_ptr<const WaveRea
     if (x.z() >= 0.0) continue;  // above the still-water level: no kinematics (see the header)
     // e^{k z} >= cutoff  <=>  k <= ln(cutoff) / z: a prefix of the sorted components.
     const double k_max = log_cutoff / x.z();
-    while (out.count < order_.size() && c[order_[out.count]].wavenumber_rad_per_m <= k_max)
-      ++out.count;
+    while (out.count < order_.size() && c[order_[out.count]].wavenumber_rad_per_m <= k_max) ++out.count;
     out.horizontal_c.resize(out.count);
     out.horizontal_s.resize(out.count);
     out.vertical_c.resize(out.count);

@@ -36,8 +36,8 @@ namespace spiral::engine {
 class FixedPointWaveKinematics {
  public:
   /// `points`: global positions (z up from the still-water level).
-  FixedPointWaveKinematics(std::shared_ptr<const WaveRealization> sea,
-                           const std::vector<Eigen::Vector3d>& points, double cutoff = 1e-3);
+  FixedPointWaveKinematics(std::shared_ptr<const WaveRealization> sea, const std::vector<Eigen::Vector3d>& points,
+                           double cutoff = 1e-3);
 
   std::size_t size() const { return points_.size(); }
   /// True where no component reaches the point (deep, or above the water).
@@ -53,7 +53,7 @@ class FixedPointWaveKinematics {
 
  private:
   struct Point {
-    std::size_t count = 0;                   // components kept: the first `count` by wavenumber
+    std::size_t count = 0;                           // components kept: the first `count` by wavenumber
     std::vector<double> horizontal_c, horizontal_s;  // a ω f_h cos ψ, a ω f_h sin ψ
     std::vector<double> vertical_c, vertical_s;      // a ω f_v cos ψ, a ω f_v sin ψ
     std::vector<double> elevation_c, elevation_s;    // a cos ψ, a sin ψ
@@ -65,10 +65,10 @@ class FixedPointWaveKinematics {
                 Eigen::Vector3d& acceleration) const;
 
   std::shared_ptr<const WaveRealization> sea_;
-  std::vector<std::size_t> order_;  // components by increasing wavenumber
+  std::vector<std::size_t> order_;                                      // components by increasing wavenumber
   std::vector<double> omega_, wavenumber_, cos_heading_, sin_heading_;  // in that order
   std::vector<Point> points_;
-  std::size_t max_count_ = 0;  // the most components any point keeps
+  std::size_t max_count_ = 0;                    // the most components any point keeps
   mutable std::vector<double> cos_wt_, sin_wt_;  // per component (sorted), of the last t
 };
 

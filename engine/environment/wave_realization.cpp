@@ -31,24 +31,20 @@ constexpr double kDeepProfileExponent = 20.0;
 
 void require_positive(double value, const char* name, const char* unit) {
   if (!(value > 0.0) || !std::isfinite(value)) {
-    throw std::invalid_argument(
-        fmt::format("wave realization: {} must be > 0 {}, got {} {}", name, unit, value, unit));
+    throw std::invalid_argument(fmt::format("wave realization: {} must be > 0 {}, got {} {}", name, unit, value, unit));
   }
 }
 
 // Uniform double in [0, 1) from 53 random bits: portable, unlike
 // std::uniform_real_distribution.
-double uniform01(std::mt19937_64& rng) {
-  return static_cast<double>(rng() >> 11) * 0x1.0p-53;
-}
+double uniform01(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
 
 }  // namespace
 
 // Depth attenuation written with exponentials of non-positive arguments only,
 // e.g. cosh k(z+h) / sinh kh = e^{kz} (1 + e^{-2k(z+h)}) / (1 - e^{-2kh}),
 // so that deep components (kh of hundreds) do not overflow.
-WaveProfiles wave_profiles(const WaveComponent& c, double z_stretched,
-                           const std::optional<double>& h) {
+WaveProfiles wave_profiles(const WaveComponent& c, double z_stretched, const std::optional<double>& h) {
   const double k = c.wavenumber_rad_per_m;
   const double e = std::exp(k * z_stretched);
   if (!h) return {e, e, e};
@@ -57,7 +53,6 @@ WaveProfiles wave_profiles(const WaveComponent& c, double z_stretched,
   return {e * (1.0 + g) * c.inv_one_minus_e2kh, e * (1.0 - g) * c.inv_one_minus_e2kh,
           e * (1.0 + g) * c.inv_one_plus_e2kh};
 }
-
 
 DispersionSolution solve_dispersion(const DispersionInput& in) {
   require_positive(in.omega_rad_per_s, "wave frequency", "rad/s");
@@ -95,10 +90,8 @@ DispersionSolution solve_dispersion(const DispersionInput& in) {
                     {kDispersionMaxIterations, residual, "-"});
 }
 
-void complete_wave_component(WaveComponent& c, std::optional<double> water_depth_m,
-                             double gravity_m_per_s2) {
-  c.wavenumber_rad_per_m =
-      solve_dispersion({c.omega_rad_per_s, water_depth_m, gravity_m_per_s2}).wavenumber_rad_per_m;
+void complete_wave_component(WaveComponent& c, std::optional<double> water_depth_m, double gravity_m_per_s2) {
+  c.wavenumber_rad_per_m = solve_dispersion({c.omega_rad_per_s, water_depth_m, gravity_m_per_s2}).wavenumber_rad_per_m;
   c.cos_heading = std::cos(c.heading_rad);
   c.sin_heading = std::sin(c.heading_rad);
   c.kx_rad_per_m = c.wavenumber_rad_per_m * c.cos_heading;
@@ -121,37 +114,35 @@ WaveRealization make_wave_realization(const WaveRealizationInput& in) {
   if (in.water_depth_m) require_positive(*in.water_depth_m, "water depth", "m");
   if (in.components_per_direction < 1) {
     throw std::invalid_argument(
-        fmt::format("wave realization: components_per_direction must be >= 1, got {}",
-                    in.components_per_direction));
+        fmt::format("wave realization: components_per_direction must be >= 1, got {}", in.components_per_direction));
   }
   if (in.direction_count < 1) {
     throw std::invalid_argument(
         fmt::format("wave realization: direction_count must be >= 1, got {}", in.direction_count));
   }
   if (!in.spreading && in.direction_count != 1) {
-    throw std::invalid_argument(fmt::format(
-        "wave realization: direction_count must be 1 for a long-crested sea (no spreading), got {}",
-        in.direction_count));
+    throw std::invalid_argument(
+        fmt::format("wave realization: direction_count must be 1 for a long-crested sea (no spreading), got {}",
+                    in.direction_count));
   }
   const double wp = in.spectrum.peak_rad_per_s();
   const double w_lo = in.omega_min_rad_per_s.value_or(kDefaultBandStartOverPeak * wp);
   const double w_hi = in.omega_max_rad_per_s.value_or(kDefaultBandEndOverPeak * wp);
   require_positive(w_lo, "omega_min", "rad/s");
   if (!(w_hi > w_lo) || !std::isfinite(w_hi)) {
-    throw std::invalid_argument(fmt::format(
-        "wave realization: omega_max must be > omega_min = {} rad/s, got {} rad/s", w_lo, w_hi));
+    throw std::invalid_argument(
+        fmt::format("wave realization: omega_max must be > omega_min = {} rad/s, got {} rad/s", w_lo, w_hi));
   }
   const int n = in.components_per_direction;
   const double mean_dw = (w_hi - w_lo) / n;
   const double grid_period = 2.0 * kPi / mean_dw;
-  if (in.frequency_selection == FrequencySelection::equal_spacing_grid &&
-      grid_period < in.duration_s) {
-    throw std::invalid_argument(fmt::format(
-        "wave realization: a uniform frequency grid of {} components over [{:.4g}, {:.4g}] rad/s "
-        "repeats after 2 pi / dw = {:.1f} s < duration {} s; use >= {} components or a random "
-        "frequency selection",
-        n, w_lo, w_hi, grid_period, in.duration_s,
-        static_cast<long long>(std::ceil(in.duration_s * (w_hi - w_lo) / (2.0 * kPi)))));
+  if (in.frequency_selection == FrequencySelection::equal_spacing_grid && grid_period < in.duration_s) {
+    throw std::invalid_argument(
+        fmt::format("wave realization: a uniform frequency grid of {} components over [{:.4g}, {:.4g}] rad/s "
+                    "repeats after 2 pi / dw = {:.1f} s < duration {} s; use >= {} components or a random "
+                    "frequency selection",
+                    n, w_lo, w_hi, grid_period, in.duration_s,
+                    static_cast<long long>(std::ceil(in.duration_s * (w_hi - w_lo) / (2.0 * kPi)))));
   }
 
   // Cumulative variance F(w) on a fine trapezoid table over the band.
@@ -171,8 +162,7 @@ WaveRealization make_wave_realization(const WaveRealizationInput& in) {
   const double band_m0 = cumulative.back();
   if (!(band_m0 > 0.0)) {
     throw std::invalid_argument(
-        fmt::format("wave realization: the spectrum carries no variance in [{:.4g}, {:.4g}] rad/s",
-                    w_lo, w_hi));
+        fmt::format("wave realization: the spectrum carries no variance in [{:.4g}, {:.4g}] rad/s", w_lo, w_hi));
   }
   // F at any w (piecewise linear in the table) and its inverse.
   const auto cumulative_at = [&](double w_any) {
@@ -197,9 +187,8 @@ WaveRealization make_wave_realization(const WaveRealizationInput& in) {
   edges[0] = w_lo;
   edges[n] = w_hi;
   for (int k = 1; k < n; ++k) {
-    edges[k] = in.frequency_selection == FrequencySelection::equal_energy_random
-                   ? frequency_at(band_m0 * k / n)
-                   : w_lo + mean_dw * k;
+    edges[k] = in.frequency_selection == FrequencySelection::equal_energy_random ? frequency_at(band_m0 * k / n)
+                                                                                 : w_lo + mean_dw * k;
   }
   // Grid: frequencies at whole multiples j dw (as in an FFT synthesis), so
   // that the record is exactly periodic with 2 pi / dw; bins [w_k -+ dw/2]
@@ -256,8 +245,7 @@ WaveRealization make_wave_realization(const WaveRealizationInput& in) {
 
 WaveRealization make_regular_wave(const RegularWaveInput& in) {
   if (!(in.amplitude_m >= 0.0) || !std::isfinite(in.amplitude_m)) {
-    throw std::invalid_argument(
-        fmt::format("regular wave: amplitude must be >= 0 m, got {} m", in.amplitude_m));
+    throw std::invalid_argument(fmt::format("regular wave: amplitude must be >= 0 m, got {} m", in.amplitude_m));
   }
   if (in.water_depth_m) require_positive(*in.water_depth_m, "water depth", "m");
   WaveComponent c;
@@ -278,8 +266,8 @@ WaveRealization make_regular_wave(const RegularWaveInput& in) {
 double surface_elevation_m(const WaveRealization& sea, double x_m, double y_m, double t_s) {
   double eta = 0.0;
   for (const auto& c : sea.components) {
-    eta += c.amplitude_m * std::cos(c.omega_rad_per_s * t_s - c.kx_rad_per_m * x_m -
-                                    c.ky_rad_per_m * y_m + c.phase_rad);
+    eta +=
+        c.amplitude_m * std::cos(c.omega_rad_per_s * t_s - c.kx_rad_per_m * x_m - c.ky_rad_per_m * y_m + c.phase_rad);
   }
   return eta;
 }
@@ -307,9 +295,8 @@ WaveKinematics wave_kinematics(const WaveRealization& sea, const Eigen::Vector3d
   // Wheeler stretching, DNV-RP-C205 §3.2.3: z' = (z - eta) h / (h + eta).
   if (h) {
     if (!(*h + eta > 0.0)) {
-      throw std::invalid_argument(fmt::format(
-          "wave kinematics: trough eta = {} m reaches the seabed (depth {} m) at t = {} s", eta, *h,
-          t_s));
+      throw std::invalid_argument(
+          fmt::format("wave kinematics: trough eta = {} m reaches the seabed (depth {} m) at t = {} s", eta, *h, t_s));
     }
     out.stretched_z_m = (p.z() - eta) * *h / (*h + eta);
   } else {
@@ -318,8 +305,7 @@ WaveKinematics wave_kinematics(const WaveRealization& sea, const Eigen::Vector3d
   const double rho_g = sea.water.density_kg_per_m3 * sea.water.gravity_m_per_s2;
   double u_h_x = 0.0, u_h_y = 0.0, u_z = 0.0, a_x = 0.0, a_y = 0.0, a_z = 0.0, pressure = 0.0;
   for (const auto& c : sea.components) {
-    const double theta =
-        c.omega_rad_per_s * t_s - c.kx_rad_per_m * p.x() - c.ky_rad_per_m * p.y() + c.phase_rad;
+    const double theta = c.omega_rad_per_s * t_s - c.kx_rad_per_m * p.x() - c.ky_rad_per_m * p.y() + c.phase_rad;
     const double cos_t = std::cos(theta);
     const double sin_t = std::sin(theta);
     const WaveProfiles f = wave_profiles(c, out.stretched_z_m, h);

@@ -92,8 +92,8 @@ enum class FrequencySelection {
 };
 
 struct WaveRealizationInput {
-  WaveSpectrum spectrum;          ///< make_jonswap_spectrum / make_pierson_moskowitz_spectrum
-  double mean_heading_rad = 0.0;  ///< direction of propagation, global, CCW from +x
+  WaveSpectrum spectrum;                          ///< make_jonswap_spectrum / make_pierson_moskowitz_spectrum
+  double mean_heading_rad = 0.0;                  ///< direction of propagation, global, CCW from +x
   std::optional<DirectionalSpreading> spreading;  ///< empty: long-crested
   int direction_count = 1;                        ///< >= 1; must be 1 when long-crested
   int components_per_direction = 200;             ///< >= 1
@@ -132,7 +132,7 @@ struct WaveRealization {
   double band_variance_m2 = 0.0;            ///< sum a_k^2 / 2 (variance the realization carries)
   double spectrum_variance_m2 = 0.0;        ///< m0 of the whole spectrum (spectral_moments)
   double mean_delta_omega_rad_per_s = 0.0;  ///< (w_max - w_min) / N
-  double grid_repeat_period_s = 0.0;  ///< 2 pi / mean dw: period of a uniform grid of that spacing
+  double grid_repeat_period_s = 0.0;        ///< 2 pi / mean dw: period of a uniform grid of that spacing
   double duration_s = 0.0;
 };
 
@@ -162,8 +162,7 @@ WaveRealization make_regular_wave(const RegularWaveInput& input);
 
 /// Fills the derived members of `component` from depth and the first five
 /// members (wavenumber solved here). Throws like solve_dispersion.
-void complete_wave_component(WaveComponent& component, std::optional<double> water_depth_m,
-                             double gravity_m_per_s2);
+void complete_wave_component(WaveComponent& component, std::optional<double> water_depth_m, double gravity_m_per_s2);
 
 // ---------------------------------------------------------------- evaluation
 
@@ -180,13 +179,12 @@ struct WaveKinematics {
   double stretched_z_m = 0.0;  ///< Wheeler z' used for the profiles (0 when dry)
   Eigen::Vector3d velocity_m_per_s = Eigen::Vector3d::Zero();       ///< global frame
   Eigen::Vector3d acceleration_m_per_s2 = Eigen::Vector3d::Zero();  ///< local du/dt, global
-  double dynamic_pressure_Pa = 0.0;  ///< excludes the hydrostatic -rho g z
+  double dynamic_pressure_Pa = 0.0;                                 ///< excludes the hydrostatic -rho g z
 };
 
 /// Kinematics at a global point (z up from the mean water level) with Wheeler
 /// stretching. Throws std::invalid_argument for z below the seabed (z < -h) or
 /// a trough reaching the seabed (h + eta <= 0). Allocation-free.
-WaveKinematics wave_kinematics(const WaveRealization& sea, const Eigen::Vector3d& point_g_m,
-                               double t_s);
+WaveKinematics wave_kinematics(const WaveRealization& sea, const Eigen::Vector3d& point_g_m, double t_s);
 
 }  // namespace spiral::engine

@@ -14,8 +14,7 @@ constexpr double kPi = std::numbers::pi;
 
 void require_positive(double value, const char* name, const char* unit) {
   if (!(value > 0.0) || !std::isfinite(value)) {
-    throw std::invalid_argument(
-        fmt::format("wave spectrum: {} must be > 0 {}, got {} {}", name, unit, value, unit));
+    throw std::invalid_argument(fmt::format("wave spectrum: {} must be > 0 {}, got {} {}", name, unit, value, unit));
   }
 }
 
@@ -27,9 +26,8 @@ void validate(const WaveSpectrum& s) {
         fmt::format("wave spectrum: JONSWAP gamma must be >= 1 (dimensionless), got {}", s.gamma));
   }
   if (!(s.sigma_below > 0.0) || !(s.sigma_above > 0.0)) {
-    throw std::invalid_argument(
-        fmt::format("wave spectrum: JONSWAP sigma must be > 0 (dimensionless), got {} and {}",
-                    s.sigma_below, s.sigma_above));
+    throw std::invalid_argument(fmt::format("wave spectrum: JONSWAP sigma must be > 0 (dimensionless), got {} and {}",
+                                            s.sigma_below, s.sigma_above));
   }
 }
 
@@ -47,19 +45,14 @@ double wrap_deviation(double theta) {
 double gamma_half_ratio(double x) {
   if (x < 100.0) return std::tgamma(x + 0.5) / std::tgamma(x);
   const double r = 1.0 / x;
-  return std::sqrt(x) * (1.0 - r / 8.0 + r * r / 128.0 + 5.0 * r * r * r / 1024.0 -
-                         21.0 * r * r * r * r / 32768.0);
+  return std::sqrt(x) * (1.0 - r / 8.0 + r * r / 128.0 + 5.0 * r * r * r / 1024.0 - 21.0 * r * r * r * r / 32768.0);
 }
 
-double spreading_half_width(SpreadingForm form) {
-  return form == SpreadingForm::cos_2s ? kPi : 0.5 * kPi;
-}
+double spreading_half_width(SpreadingForm form) { return form == SpreadingForm::cos_2s ? kPi : 0.5 * kPi; }
 
 }  // namespace
 
-double WaveSpectrum::peak_rad_per_s() const {
-  return 2.0 * kPi / Tp_s;
-}
+double WaveSpectrum::peak_rad_per_s() const { return 2.0 * kPi / Tp_s; }
 
 double default_jonswap_gamma(double Hs_m, double Tp_s) {
   require_positive(Hs_m, "Hs", "m");
@@ -93,8 +86,8 @@ double spectral_density_m2s_per_rad(const WaveSpectrum& s, double omega) {
   // exp(-1.25 x^4) < 1e-300 for x > 21; return 0 before w^-5 can overflow.
   if (x > 20.0) return 0.0;
   // DNV-RP-C205 eq. 3.5.5.1 (PM) and §3.5.5.2 (JONSWAP).
-  const double pm = 5.0 / 16.0 * s.Hs_m * s.Hs_m * std::pow(wp, 4) * std::pow(omega, -5) *
-                    std::exp(-1.25 * std::pow(x, 4));
+  const double pm =
+      5.0 / 16.0 * s.Hs_m * s.Hs_m * std::pow(wp, 4) * std::pow(omega, -5) * std::exp(-1.25 * std::pow(x, 4));
   if (s.gamma == 1.0) return pm;
   const double sigma = omega <= wp ? s.sigma_below : s.sigma_above;
   const double a_gamma = 1.0 - 0.287 * std::log(s.gamma);
@@ -102,20 +95,18 @@ double spectral_density_m2s_per_rad(const WaveSpectrum& s, double omega) {
   return a_gamma * pm * std::pow(s.gamma, shape);
 }
 
-SpectrumQuadrature spectrum_quadrature(const WaveSpectrum& spectrum,
-                                       const SpectrumQuadratureOptions& options) {
+SpectrumQuadrature spectrum_quadrature(const WaveSpectrum& spectrum, const SpectrumQuadratureOptions& options) {
   validate(spectrum);
   if (!(options.upper_limit_over_peak > 1.0)) {
     throw std::invalid_argument(
-        fmt::format("spectrum quadrature: upper_limit_over_peak must be > 1, got {}",
-                    options.upper_limit_over_peak));
+        fmt::format("spectrum quadrature: upper_limit_over_peak must be > 1, got {}", options.upper_limit_over_peak));
   }
   if (options.intervals < 2 || options.intervals % 2 != 0) {
-    throw std::invalid_argument(fmt::format(
-        "spectrum quadrature: intervals must be even and >= 2, got {}", options.intervals));
+    throw std::invalid_argument(
+        fmt::format("spectrum quadrature: intervals must be even and >= 2, got {}", options.intervals));
   }
-  const double W = std::max(options.upper_limit_over_peak * spectrum.peak_rad_per_s(),
-                            options.min_upper_limit_rad_per_s);
+  const double W =
+      std::max(options.upper_limit_over_peak * spectrum.peak_rad_per_s(), options.min_upper_limit_rad_per_s);
   const int n = options.intervals;
   const double h = W / n;
   SpectrumQuadrature q;
@@ -135,8 +126,7 @@ SpectrumQuadrature spectrum_quadrature(const WaveSpectrum& spectrum,
   return q;
 }
 
-SpectralMoments spectral_moments(const WaveSpectrum& spectrum,
-                                 const SpectrumQuadratureOptions& options) {
+SpectralMoments spectral_moments(const WaveSpectrum& spectrum, const SpectrumQuadratureOptions& options) {
   const SpectrumQuadrature q = spectrum_quadrature(spectrum, options);
   const double W = q.tail_start_rad_per_s;
   const double SW = q.tail_density_m2s_per_rad;
@@ -144,8 +134,7 @@ SpectralMoments spectral_moments(const WaveSpectrum& spectrum,
   // Body by quadrature; tail int_W^inf w^n C w^-5 dw = S(W) W^(n+1) / (4 - n).
   m.m0_m2 = q.weight_m2.sum() + SW * W / 4.0;
   m.m1_m2_per_s = q.weight_m2.dot(q.omega_rad_per_s) + SW * W * W / 3.0;
-  m.m2_m2_per_s2 =
-      q.weight_m2.dot(q.omega_rad_per_s.cwiseProduct(q.omega_rad_per_s)) + SW * W * W * W / 2.0;
+  m.m2_m2_per_s2 = q.weight_m2.dot(q.omega_rad_per_s.cwiseProduct(q.omega_rad_per_s)) + SW * W * W * W / 2.0;
   m.Hm0_m = 4.0 * std::sqrt(m.m0_m2);
   m.Tz_s = 2.0 * kPi * std::sqrt(m.m0_m2 / m.m2_m2_per_s2);
   m.Tm01_s = 2.0 * kPi * m.m0_m2 / m.m1_m2_per_s;
@@ -156,8 +145,7 @@ SpectralMoments spectral_moments(const WaveSpectrum& spectrum,
 double spreading_density_per_rad(const DirectionalSpreading& spreading, double deviation_rad) {
   const double e = spreading.exponent;
   if (!(e >= 0.0) || !std::isfinite(e)) {
-    throw std::invalid_argument(
-        fmt::format("directional spreading: exponent must be >= 0 (dimensionless), got {}", e));
+    throw std::invalid_argument(fmt::format("directional spreading: exponent must be >= 0 (dimensionless), got {}", e));
   }
   const double t = wrap_deviation(deviation_rad);
   if (std::abs(t) > spreading_half_width(spreading.form)) return 0.0;
@@ -171,11 +159,10 @@ double spreading_density_per_rad(const DirectionalSpreading& spreading, double d
   return norm * std::pow(std::max(std::cos(t), 0.0), e);
 }
 
-std::vector<SpreadingDirection> discretise_spreading(const DirectionalSpreading& spreading,
-                                                     double mean_heading_rad, int count) {
+std::vector<SpreadingDirection> discretise_spreading(const DirectionalSpreading& spreading, double mean_heading_rad,
+                                                     int count) {
   if (count < 1) {
-    throw std::invalid_argument(
-        fmt::format("directional spreading: number of directions must be >= 1, got {}", count));
+    throw std::invalid_argument(fmt::format("directional spreading: number of directions must be >= 1, got {}", count));
   }
   spreading_density_per_rad(spreading, 0.0);  // validates the exponent
   const double half = spreading_half_width(spreading.form);

@@ -82,22 +82,20 @@ struct SpectrumQuadratureOptions {
   int intervals = 4000;                    ///< Simpson intervals on [0, W], even, >= 2
 };
 
-SpectrumQuadrature spectrum_quadrature(const WaveSpectrum& spectrum,
-                                       const SpectrumQuadratureOptions& options = {});
+SpectrumQuadrature spectrum_quadrature(const WaveSpectrum& spectrum, const SpectrumQuadratureOptions& options = {});
 
 /// Spectral moments m_n = int_0^inf w^n S dw (n = 0, 1, 2) and derived periods.
 struct SpectralMoments {
   double m0_m2 = 0.0;
   double m1_m2_per_s = 0.0;
   double m2_m2_per_s2 = 0.0;
-  double Hm0_m = 0.0;   ///< 4 sqrt(m0)
-  double Tz_s = 0.0;    ///< mean zero-up-crossing period 2 pi sqrt(m0/m2) (DNV-RP-C205 §3.5.5.4)
-  double Tm01_s = 0.0;  ///< mean period 2 pi m0/m1
+  double Hm0_m = 0.0;                ///< 4 sqrt(m0)
+  double Tz_s = 0.0;                 ///< mean zero-up-crossing period 2 pi sqrt(m0/m2) (DNV-RP-C205 §3.5.5.4)
+  double Tm01_s = 0.0;               ///< mean period 2 pi m0/m1
   double tail_fraction_of_m0 = 0.0;  ///< share of m0 in the analytic tail beyond W
 };
 
-SpectralMoments spectral_moments(const WaveSpectrum& spectrum,
-                                 const SpectrumQuadratureOptions& options = {});
+SpectralMoments spectral_moments(const WaveSpectrum& spectrum, const SpectrumQuadratureOptions& options = {});
 
 enum class SpreadingForm {
   cos_2s,     ///< D ~ cos^(2s)(theta/2), support |theta| <= pi; exponent = s
@@ -122,7 +120,7 @@ struct SpreadingDirection {
 /// a direction on the mean). weight = int of D over the bin (16-panel Simpson
 /// per bin), so the weights sum to 1 to quadrature accuracy (not renormalised).
 /// Throws std::invalid_argument for N < 1.
-std::vector<SpreadingDirection> discretise_spreading(const DirectionalSpreading& spreading,
-                                                     double mean_heading_rad, int count);
+std::vector<SpreadingDirection> discretise_spreading(const DirectionalSpreading& spreading, double mean_heading_rad,
+                                                     int count);
 
 }  // namespace spiral::engine

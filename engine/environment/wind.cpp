@@ -10,15 +10,13 @@ namespace {
 
 void require_positive(double value, const char* what, const char* unit) {
   if (!(value > 0.0) || !std::isfinite(value)) {
-    throw std::invalid_argument(
-        fmt::format("wind: {} must be > 0 {}, got {} {}", what, unit, value, unit));
+    throw std::invalid_argument(fmt::format("wind: {} must be > 0 {}, got {} {}", what, unit, value, unit));
   }
 }
 
 void require_non_negative(double value, const char* what, const char* unit) {
   if (!(value >= 0.0) || !std::isfinite(value)) {
-    throw std::invalid_argument(
-        fmt::format("wind: {} must be >= 0 {}, got {} {}", what, unit, value, unit));
+    throw std::invalid_argument(fmt::format("wind: {} must be >= 0 {}, got {} {}", what, unit, value, unit));
   }
 }
 
@@ -53,8 +51,8 @@ double mean_wind_speed_m_per_s(const WindProfileInput& in) {
   // ISO 19901-1 / NPD: U(z) = U0 [1 + C ln(z/10)], times the gust factor
   // [1 - 0.41 I_u(z) ln(t/t0)] for averaging time t < t0 = 1 h.
   const double profile = U0 * (1.0 + C * std::log(in.height_m / kReferenceHeight_m));
-  const double gust = 1.0 - 0.41 * npd_turbulence_intensity(U0, in.height_m) *
-                                std::log(in.averaging_time_s / kReferencePeriod_s);
+  const double gust =
+      1.0 - 0.41 * npd_turbulence_intensity(U0, in.height_m) * std::log(in.averaging_time_s / kReferencePeriod_s);
   return profile * gust;
 }
 
@@ -66,8 +64,7 @@ double npd_wind_spectrum(const NpdSpectrumInput& in, double f_Hz) {
   const double zr = in.height_m / kReferenceHeight_m;
   // NPD (Froya): S = 320 u^2 zr^0.45 / (1 + ft^n)^(5/(3n)), ft = 172 f zr^(2/3) u^-0.75.
   const double ft = 172.0 * f_Hz * std::pow(zr, 2.0 / 3.0) * std::pow(u, -0.75);
-  return 320.0 * u * u * std::pow(zr, 0.45) /
-         std::pow(1.0 + std::pow(ft, kNpdExponent), 5.0 / (3.0 * kNpdExponent));
+  return 320.0 * u * u * std::pow(zr, 0.45) / std::pow(1.0 + std::pow(ft, kNpdExponent), 5.0 / (3.0 * kNpdExponent));
 }
 
 double npd_wind_variance_m2_per_s2(const NpdSpectrumInput& in) {
@@ -96,8 +93,7 @@ double api_wind_spectrum(const ApiSpectrumInput& in, double f_Hz) {
   require_positive(in.height_m, "height above mean water level", "m");
   require_non_negative(in.sigma_m_per_s, "gust standard deviation", "m/s");
   if (!(in.a >= 0.01 && in.a <= 0.1)) {
-    throw std::invalid_argument(
-        fmt::format("wind: API spectrum parameter a must be in [0.01, 0.1], got {}", in.a));
+    throw std::invalid_argument(fmt::format("wind: API spectrum parameter a must be in [0.01, 0.1], got {}", in.a));
   }
   if (!(f_Hz > 0.0)) return 0.0;
   // API RP 2A: S = sigma^2 / fp / (1 + 1.5 f/fp)^(5/3), fp = a U(z)/z.

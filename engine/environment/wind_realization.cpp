@@ -12,13 +12,11 @@ namespace spiral::engine {
 WindRealization make_wind_realization(const WindRealizationInput& input) {
   if (!input.spectrum) throw std::invalid_argument("wind realization: no spectrum given");
   if (!(input.frequency_min_Hz > 0.0) || !(input.frequency_max_Hz > input.frequency_min_Hz)) {
-    throw std::invalid_argument(
-        fmt::format("wind realization: band must satisfy 0 < f_min < f_max, got [{}, {}] Hz",
-                    input.frequency_min_Hz, input.frequency_max_Hz));
+    throw std::invalid_argument(fmt::format("wind realization: band must satisfy 0 < f_min < f_max, got [{}, {}] Hz",
+                                            input.frequency_min_Hz, input.frequency_max_Hz));
   }
   if (input.components < 1) {
-    throw std::invalid_argument(
-        fmt::format("wind realization: components must be >= 1, got {}", input.components));
+    throw std::invalid_argument(fmt::format("wind realization: components must be >= 1, got {}", input.components));
   }
   std::mt19937_64 rng(input.seed);
   const auto uniform = [&rng] { return static_cast<double>(rng() >> 11) * 0x1.0p-53; };

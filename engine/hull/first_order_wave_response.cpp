@@ -5,8 +5,7 @@
 
 namespace spiral::engine {
 
-FirstOrderWaveSeries prepare_first_order_series(const WaveRealization& sea,
-                                                const WaveTransferTable& table,
+FirstOrderWaveSeries prepare_first_order_series(const WaveRealization& sea, const WaveTransferTable& table,
                                                 const HullWavePlacement& placement) {
   FirstOrderWaveSeries series;
   series.quantity = table.quantity;
@@ -26,8 +25,7 @@ FirstOrderWaveSeries prepare_first_order_series(const WaveRealization& sea,
     // Body-frame transfer function at the body-relative heading (WAMIT convention).
     const Vector6cd x_b = transfer_at(table, k.omega_rad_per_s, k.heading_rad - placement.yaw_rad);
     // Complex wave amplitude at the hull reference point.
-    const double phase =
-        k.phase_rad - k.kx_rad_per_m * placement.x_m - k.ky_rad_per_m * placement.y_m;
+    const double phase = k.phase_rad - k.kx_rad_per_m * placement.x_m - k.ky_rad_per_m * placement.y_m;
     const std::complex<double> amplitude = std::polar(k.amplitude_m, phase);
     Vector6cd coeff;
     // Rotate force/translation and moment/rotation 3-vectors body -> global (Rz(psi)).
@@ -57,11 +55,10 @@ Vector6d evaluate_first_order(const FirstOrderWaveSeries& series, double t_s) {
   return out;
 }
 
-Eigen::Matrix<double, 6, Eigen::Dynamic> evaluate_first_order_many(
-    const FirstOrderWaveSeries& series, const Eigen::VectorXd& times_s) {
+Eigen::Matrix<double, 6, Eigen::Dynamic> evaluate_first_order_many(const FirstOrderWaveSeries& series,
+                                                                   const Eigen::VectorXd& times_s) {
   Eigen::Matrix<double, 6, Eigen::Dynamic> out(6, times_s.size());
-  for (Eigen::Index i = 0; i < times_s.size(); ++i)
-    out.col(i) = evaluate_first_order(series, times_s(i));
+  for (Eigen::Index i = 0; i < times_s.size(); ++i) out.col(i) = evaluate_first_order(series, times_s(i));
   return out;
 }
 

@@ -39,20 +39,18 @@ struct HullWavePlacement {
 struct FirstOrderWaveSeries {
   TransferQuantity quantity = TransferQuantity::excitation;
   std::vector<double> omega_rad_per_s;
-  std::vector<Vector6cd> coefficient;  ///< C_k, global frame: value(t) = sum Re{C_k e^{i w_k t}}
-  double variance_share_outside_table =
-      0.0;  ///< of sum a_k^2/2, components with w outside the table
+  std::vector<Vector6cd> coefficient;         ///< C_k, global frame: value(t) = sum Re{C_k e^{i w_k t}}
+  double variance_share_outside_table = 0.0;  ///< of sum a_k^2/2, components with w outside the table
 };
 
-FirstOrderWaveSeries prepare_first_order_series(const WaveRealization& sea,
-                                                const WaveTransferTable& table,
+FirstOrderWaveSeries prepare_first_order_series(const WaveRealization& sea, const WaveTransferTable& table,
                                                 const HullWavePlacement& placement);
 
 /// Load (N, N m) or motion (m, rad) 6-vector at time t, global frame. Allocation-free.
 Vector6d evaluate_first_order(const FirstOrderWaveSeries& series, double t_s);
 
 /// 6 x n matrix, one column per time.
-Eigen::Matrix<double, 6, Eigen::Dynamic> evaluate_first_order_many(
-    const FirstOrderWaveSeries& series, const Eigen::VectorXd& times_s);
+Eigen::Matrix<double, 6, Eigen::Dynamic> evaluate_first_order_many(const FirstOrderWaveSeries& series,
+                                                                   const Eigen::VectorXd& times_s);
 
 }  // namespace spiral::engine

@@ -9,26 +9,21 @@
 namespace spiral::engine {
 namespace {
 
-void require(bool condition, const char* field, const char* expectation, double value,
-             const char* unit) {
+void require(bool condition, const char* field, const char* expectation, double value, const char* unit) {
   if (!condition || !std::isfinite(value)) {
-    throw std::invalid_argument(
-        fmt::format("{}: must be {}, got {} {}", field, expectation, value, unit));
+    throw std::invalid_argument(fmt::format("{}: must be {}, got {} {}", field, expectation, value, unit));
   }
 }
 
 void require_finite(const Eigen::Vector3d& v, const char* field) {
   if (!v.allFinite()) {
-    throw std::invalid_argument(
-        fmt::format("{}: must be finite, got ({}, {}, {}) m", field, v.x(), v.y(), v.z()));
+    throw std::invalid_argument(fmt::format("{}: must be finite, got ({}, {}, {}) m", field, v.x(), v.y(), v.z()));
   }
 }
 
 void validate(const Seawater& water) {
-  require(water.density_kg_per_m3 > 0.0, "water.density_kg_per_m3", "> 0", water.density_kg_per_m3,
-          "kg/m^3");
-  require(water.gravity_m_per_s2 > 0.0, "water.gravity_m_per_s2", "> 0", water.gravity_m_per_s2,
-          "m/s^2");
+  require(water.density_kg_per_m3 > 0.0, "water.density_kg_per_m3", "> 0", water.density_kg_per_m3, "kg/m^3");
+  require(water.gravity_m_per_s2 > 0.0, "water.gravity_m_per_s2", "> 0", water.gravity_m_per_s2, "m/s^2");
 }
 
 // Indices of the 6-DOF vector (0-based: surge 0 ... yaw 5).
@@ -40,17 +35,16 @@ Matrix6d buoyancy_restoring(const HydrostaticBody& body, const Seawater& water) 
   validate(water);
   const auto& wp = body.waterplane;
   require(wp.area_m2 >= 0.0, "hydrostatics.waterplane.area_m2", ">= 0", wp.area_m2, "m^2");
-  require(wp.second_moment_xx_m4 >= 0.0, "hydrostatics.waterplane.second_moment_xx_m4", ">= 0",
-          wp.second_moment_xx_m4, "m^4");
-  require(wp.second_moment_yy_m4 >= 0.0, "hydrostatics.waterplane.second_moment_yy_m4", ">= 0",
-          wp.second_moment_yy_m4, "m^4");
-  require(std::isfinite(wp.product_moment_xy_m4), "hydrostatics.waterplane.product_moment_xy_m4",
-          "finite", wp.product_moment_xy_m4, "m^4");
+  require(wp.second_moment_xx_m4 >= 0.0, "hydrostatics.waterplane.second_moment_xx_m4", ">= 0", wp.second_moment_xx_m4,
+          "m^4");
+  require(wp.second_moment_yy_m4 >= 0.0, "hydrostatics.waterplane.second_moment_yy_m4", ">= 0", wp.second_moment_yy_m4,
+          "m^4");
+  require(std::isfinite(wp.product_moment_xy_m4), "hydrostatics.waterplane.product_moment_xy_m4", "finite",
+          wp.product_moment_xy_m4, "m^4");
   if (!wp.centroid_m.allFinite()) {
     throw std::invalid_argument("hydrostatics.waterplane.centroid_m: must be finite");
   }
-  require(body.displaced_volume_m3 >= 0.0, "hydrostatics.displaced_volume_m3", ">= 0",
-          body.displaced_volume_m3, "m^3");
+  require(body.displaced_volume_m3 >= 0.0, "hydrostatics.displaced_volume_m3", ">= 0", body.displaced_volume_m3, "m^3");
   require_finite(body.centre_of_buoyancy_m, "hydrostatics.centre_of_buoyancy_m");
 
   const double rg = water.density_kg_per_m3 * water.gravity_m_per_s2;
@@ -90,14 +84,13 @@ Matrix6d gravity_restoring(const BodyMass& mass, double gravity_m_per_s2) {
 }
 
 HydrostaticRestoring hydrostatic_restoring(const Matrix6d& buoyancy_6x6, double displaced_volume_m3,
-                                           const Eigen::Vector3d& centre_of_buoyancy_m,
-                                           const BodyMass& mass, const Seawater& water) {
+                                           const Eigen::Vector3d& centre_of_buoyancy_m, const BodyMass& mass,
+                                           const Seawater& water) {
   validate(water);
   if (!buoyancy_6x6.allFinite()) {
     throw std::invalid_argument("hydrostatics.buoyancy_6x6: must be finite");
   }
-  require(displaced_volume_m3 >= 0.0, "hydrostatics.displaced_volume_m3", ">= 0",
-          displaced_volume_m3, "m^3");
+  require(displaced_volume_m3 >= 0.0, "hydrostatics.displaced_volume_m3", ">= 0", displaced_volume_m3, "m^3");
   require_finite(centre_of_buoyancy_m, "hydrostatics.centre_of_buoyancy_m");
 
   HydrostaticRestoring r;
@@ -122,14 +115,12 @@ HydrostaticRestoring hydrostatic_restoring(const Matrix6d& buoyancy_6x6, double 
   return r;
 }
 
-HydrostaticRestoring hydrostatic_restoring(const HydrostaticBody& body, const BodyMass& mass,
-                                           const Seawater& water) {
-  return hydrostatic_restoring(buoyancy_restoring(body, water), body.displaced_volume_m3,
-                               body.centre_of_buoyancy_m, mass, water);
+HydrostaticRestoring hydrostatic_restoring(const HydrostaticBody& body, const BodyMass& mass, const Seawater& water) {
+  return hydrostatic_restoring(buoyancy_restoring(body, water), body.displaced_volume_m3, body.centre_of_buoyancy_m,
+                               mass, water);
 }
 
-Vector6d linear_hydrostatic_load(const HydrostaticRestoring& restoring,
-                                 const Vector6d& displacement) {
+Vector6d linear_hydrostatic_load(const HydrostaticRestoring& restoring, const Vector6d& displacement) {
   if (!displacement.allFinite()) {
     throw std::invalid_argument("linear_hydrostatic_load: displacement must be finite");
   }

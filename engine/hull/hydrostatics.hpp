@@ -50,7 +50,6 @@
 
 namespace spiral::engine {
 
-
 /// Waterplane of the body at rest, integrals about the reference point's axes.
 struct WaterplaneProperties {
   double area_m2 = 0.0;  ///< A_wp = ∫ dA, >= 0
@@ -65,16 +64,14 @@ struct WaterplaneProperties {
 /// Hydrostatic data of the body at rest.
 struct HydrostaticBody {
   WaterplaneProperties waterplane;
-  double displaced_volume_m3 = 0.0;  ///< V, >= 0
-  Eigen::Vector3d centre_of_buoyancy_m =
-      Eigen::Vector3d::Zero();  ///< (x_b, y_b, z_b) from the ref point
+  double displaced_volume_m3 = 0.0;                                ///< V, >= 0
+  Eigen::Vector3d centre_of_buoyancy_m = Eigen::Vector3d::Zero();  ///< (x_b, y_b, z_b) from the ref point
 };
 
 /// Mass and centre of gravity of the floating system (hull + ballast + topsides).
 struct BodyMass {
-  double mass_kg = 0.0;  ///< m, >= 0
-  Eigen::Vector3d centre_of_gravity_m =
-      Eigen::Vector3d::Zero();  ///< (x_g, y_g, z_g) from the ref point
+  double mass_kg = 0.0;                                           ///< m, >= 0
+  Eigen::Vector3d centre_of_gravity_m = Eigen::Vector3d::Zero();  ///< (x_g, y_g, z_g) from the ref point
 };
 
 struct HydrostaticRestoring {
@@ -110,8 +107,8 @@ HydrostaticRestoring hydrostatic_restoring(const HydrostaticBody& body, const Bo
 /// see wamit_hst.hpp) plus the body's displaced volume and centre of buoyancy
 /// for the rest force.
 HydrostaticRestoring hydrostatic_restoring(const Matrix6d& buoyancy_6x6, double displaced_volume_m3,
-                                           const Eigen::Vector3d& centre_of_buoyancy_m,
-                                           const BodyMass& mass, const Seawater& water = {});
+                                           const Eigen::Vector3d& centre_of_buoyancy_m, const BodyMass& mass,
+                                           const Seawater& water = {});
 
 /// Linearised hydrostatic + gravity load at a displaced position:
 ///   F(xi) = rest_force - total_6x6 xi
@@ -119,7 +116,6 @@ HydrostaticRestoring hydrostatic_restoring(const Matrix6d& buoyancy_6x6, double 
 /// rotations and heave within the wall-sided part of the hull; for larger
 /// motions use a panel/member model (not in scope). Throws std::invalid_argument
 /// for a non-finite displacement.
-Vector6d linear_hydrostatic_load(const HydrostaticRestoring& restoring,
-                                 const Vector6d& displacement);
+Vector6d linear_hydrostatic_load(const HydrostaticRestoring& restoring, const Vector6d& displacement);
 
 }  // namespace spiral::engine

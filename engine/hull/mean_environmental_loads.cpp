@@ -58,8 +58,7 @@ Bracket heading_bracket(const std::vector<double>& h, double beta, const char* t
   throw TableRangeError(fmt::format(
       "{}: relative heading {:.6g} deg lies outside the tabulated headings {:.6g}..{:.6g} deg "
       "and the table does not cover the circle (no extrapolation in heading)",
-      table_name, b * 180.0 / std::numbers::pi, first * 180.0 / std::numbers::pi,
-      last * 180.0 / std::numbers::pi));
+      table_name, b * 180.0 / std::numbers::pi, first * 180.0 / std::numbers::pi, last * 180.0 / std::numbers::pi));
 }
 
 // Frequency bracket with the end values held outside the table.
@@ -73,9 +72,7 @@ Bracket frequency_bracket(const std::vector<double>& w, double omega) {
   return {j0, j1, (omega - w[j0]) / (w[j1] - w[j0])};
 }
 
-double lerp(const std::vector<double>& v, const Bracket& b) {
-  return (1.0 - b.t) * v[b.j0] + b.t * v[b.j1];
-}
+double lerp(const std::vector<double>& v, const Bracket& b) { return (1.0 - b.t) * v[b.j0] + b.t * v[b.j1]; }
 
 void require_finite(double value, const char* what, const char* unit) {
   if (!std::isfinite(value)) {
@@ -89,30 +86,27 @@ void validate_coefficient_table(const CoefficientTable& t) {
   const std::size_t n = t.headings_rad.size();
   if (n == 0) throw std::invalid_argument("coefficient table: no headings");
   if (t.Cx_m2.size() != n || t.Cy_m2.size() != n || t.Cmz_m3.size() != n) {
-    throw std::invalid_argument(
-        fmt::format("coefficient table: {} headings but {} Cx_m2, {} Cy_m2, {} Cmz_m3 values", n,
-                    t.Cx_m2.size(), t.Cy_m2.size(), t.Cmz_m3.size()));
+    throw std::invalid_argument(fmt::format("coefficient table: {} headings but {} Cx_m2, {} Cy_m2, {} Cmz_m3 values",
+                                            n, t.Cx_m2.size(), t.Cy_m2.size(), t.Cmz_m3.size()));
   }
   for (std::size_t j = 0; j < n; ++j) {
     const double h = t.headings_rad[j];
     if (!(h >= 0.0 && h < kTwoPi)) {
-      throw std::invalid_argument(fmt::format(
-          "coefficient table: headings_rad[{}] must be in [0, 2 pi) rad, got {} rad", j, h));
+      throw std::invalid_argument(
+          fmt::format("coefficient table: headings_rad[{}] must be in [0, 2 pi) rad, got {} rad", j, h));
     }
     if (j > 0 && !(h > t.headings_rad[j - 1])) {
-      throw std::invalid_argument(fmt::format(
-          "coefficient table: headings_rad must be strictly increasing, got {} rad after {} rad", h,
-          t.headings_rad[j - 1]));
+      throw std::invalid_argument(
+          fmt::format("coefficient table: headings_rad must be strictly increasing, got {} rad after {} rad", h,
+                      t.headings_rad[j - 1]));
     }
     if (!std::isfinite(t.Cx_m2[j]) || !std::isfinite(t.Cy_m2[j]) || !std::isfinite(t.Cmz_m3[j])) {
-      throw std::invalid_argument(
-          fmt::format("coefficient table: non-finite coefficient at heading {} rad", h));
+      throw std::invalid_argument(fmt::format("coefficient table: non-finite coefficient at heading {} rad", h));
     }
   }
 }
 
-CoefficientLoadResult coefficient_load(const CoefficientTable& table,
-                                       const CoefficientLoadInput& in) {
+CoefficientLoadResult coefficient_load(const CoefficientTable& table, const CoefficientLoadInput& in) {
   validate_coefficient_table(table);
   if (!(in.fluid_density_kg_per_m3 > 0.0) || !std::isfinite(in.fluid_density_kg_per_m3)) {
     throw std::invalid_argument(
@@ -126,12 +120,10 @@ CoefficientLoadResult coefficient_load(const CoefficientTable& table,
 
   CoefficientLoadResult r;
   r.speed_m_per_s = std::hypot(in.flow_velocity_g.x(), in.flow_velocity_g.y());
-  const double direction =
-      r.speed_m_per_s > 0.0 ? std::atan2(in.flow_velocity_g.y(), in.flow_velocity_g.x()) : 0.0;
+  const double direction = r.speed_m_per_s > 0.0 ? std::atan2(in.flow_velocity_g.y(), in.flow_velocity_g.x()) : 0.0;
   r.relative_heading_rad = wrap_0_2pi(direction - in.hull_yaw_rad);
   if (r.speed_m_per_s == 0.0) return r;  // no flow, no load (and no heading to look up)
-  const Bracket b =
-      heading_bracket(table.headings_rad, r.relative_heading_rad, "coefficient table");
+  const Bracket b = heading_bracket(table.headings_rad, r.relative_heading_rad, "coefficient table");
   r.coefficients << lerp(table.Cx_m2, b), lerp(table.Cy_m2, b), lerp(table.Cmz_m3, b);
   // OCIMF form: F = 1/2 rho (C A)(beta) V|V|, V = |V| >= 0 (direction carried by beta).
   const double q = 0.5 * in.fluid_density_kg_per_m3 * r.speed_m_per_s * r.speed_m_per_s;
@@ -143,24 +135,20 @@ CoefficientLoadResult coefficient_load(const CoefficientTable& table,
 }
 
 CoefficientLoadResult current_load(const CoefficientTable& table, const CurrentProfile& current,
-                                   double water_density_kg_per_m3, double hull_yaw_rad,
-                                   double reference_z_m) {
+                                   double water_density_kg_per_m3, double hull_yaw_rad, double reference_z_m) {
   if (!(reference_z_m <= 0.0)) {
-    throw std::invalid_argument(fmt::format(
-        "current load: reference depth z must be <= 0 m (at or below the mean water level), got "
-        "{} m",
-        reference_z_m));
+    throw std::invalid_argument(
+        fmt::format("current load: reference depth z must be <= 0 m (at or below the mean water level), got "
+                    "{} m",
+                    reference_z_m));
   }
-  return coefficient_load(
-      table, {water_density_kg_per_m3, current_velocity_g(current, reference_z_m), hull_yaw_rad});
+  return coefficient_load(table, {water_density_kg_per_m3, current_velocity_g(current, reference_z_m), hull_yaw_rad});
 }
 
-CoefficientLoadResult wind_load(const CoefficientTable& table, double wind_speed_m_per_s,
-                                double wind_heading_rad, double hull_yaw_rad,
-                                double air_density_kg_per_m3) {
+CoefficientLoadResult wind_load(const CoefficientTable& table, double wind_speed_m_per_s, double wind_heading_rad,
+                                double hull_yaw_rad, double air_density_kg_per_m3) {
   if (!(wind_speed_m_per_s >= 0.0) || !std::isfinite(wind_speed_m_per_s)) {
-    throw std::invalid_argument(
-        fmt::format("wind load: wind speed must be >= 0 m/s, got {} m/s", wind_speed_m_per_s));
+    throw std::invalid_argument(fmt::format("wind load: wind speed must be >= 0 m/s, got {} m/s", wind_speed_m_per_s));
   }
   require_finite(wind_heading_rad, "wind load: wind heading", "rad");
   const Eigen::Vector3d v(wind_speed_m_per_s * std::cos(wind_heading_rad),
@@ -181,19 +169,19 @@ void validate_mean_drift_table(const MeanDriftTable& t) {
   for (std::size_t k = 0; k < nw; ++k) {
     const double w = t.omega_rad_per_s[k];
     if (!(w > 0.0) || !std::isfinite(w) || (k > 0 && !(w > t.omega_rad_per_s[k - 1]))) {
-      throw std::invalid_argument(fmt::format(
-          "mean drift table: frequencies must be > 0 rad/s and strictly increasing, got "
-          "omega[{}] = {} rad/s",
-          k, w));
+      throw std::invalid_argument(
+          fmt::format("mean drift table: frequencies must be > 0 rad/s and strictly increasing, got "
+                      "omega[{}] = {} rad/s",
+                      k, w));
     }
   }
   for (std::size_t j = 0; j < nb; ++j) {
     const double h = t.headings_rad[j];
     if (!std::isfinite(h) || (j > 0 && !(h > t.headings_rad[j - 1]))) {
-      throw std::invalid_argument(fmt::format(
-          "mean drift table: headings must be finite and strictly increasing, got heading[{}] = "
-          "{} rad",
-          j, h));
+      throw std::invalid_argument(
+          fmt::format("mean drift table: headings must be finite and strictly increasing, got heading[{}] = "
+                      "{} rad",
+                      j, h));
     }
   }
   if (t.headings_rad.back() - t.headings_rad.front() > kTwoPi + kHeadingTolerance_rad) {
@@ -205,14 +193,13 @@ void validate_mean_drift_table(const MeanDriftTable& t) {
     any = true;
     const auto& c = t.coefficient[i];
     if (static_cast<std::size_t>(c.rows()) != nw || static_cast<std::size_t>(c.cols()) != nb) {
-      throw std::invalid_argument(fmt::format(
-          "mean drift table: DOF {} coefficients are {}x{}, expected {}x{} (frequencies x "
-          "headings)",
-          i + 1, c.rows(), c.cols(), nw, nb));
+      throw std::invalid_argument(
+          fmt::format("mean drift table: DOF {} coefficients are {}x{}, expected {}x{} (frequencies x "
+                      "headings)",
+                      i + 1, c.rows(), c.cols(), nw, nb));
     }
     if (!c.allFinite()) {
-      throw std::invalid_argument(
-          fmt::format("mean drift table: DOF {} has non-finite coefficients", i + 1));
+      throw std::invalid_argument(fmt::format("mean drift table: DOF {} has non-finite coefficients", i + 1));
     }
   }
   if (!any) throw std::invalid_argument("mean drift table: no DOF has coefficients");
@@ -236,14 +223,12 @@ Vector6d interpolate_drift(const MeanDriftTable& t, const Bracket& fw, const Bra
 
 }  // namespace
 
-Vector6d mean_drift_coefficients(const MeanDriftTable& table, double omega,
-                                 double relative_heading_rad) {
+Vector6d mean_drift_coefficients(const MeanDriftTable& table, double omega, double relative_heading_rad) {
   validate_mean_drift_table(table);
   require_finite(omega, "mean drift: frequency", "rad/s");
   require_finite(relative_heading_rad, "mean drift: relative heading", "rad");
-  return interpolate_drift(
-      table, frequency_bracket(table.omega_rad_per_s, omega),
-      heading_bracket(table.headings_rad, relative_heading_rad, "mean drift table"));
+  return interpolate_drift(table, frequency_bracket(table.omega_rad_per_s, omega),
+                           heading_bracket(table.headings_rad, relative_heading_rad, "mean drift table"));
 }
 
 MeanDriftResult mean_wave_drift_load(const MeanDriftTable& table, const MeanDriftInput& in) {
@@ -253,8 +238,7 @@ MeanDriftResult mean_wave_drift_load(const MeanDriftTable& table, const MeanDrif
 
   MeanDriftResult r;
   if (in.spreading) {
-    r.directions =
-        discretise_spreading(*in.spreading, in.wave_heading_rad, in.spreading_directions);
+    r.directions = discretise_spreading(*in.spreading, in.wave_heading_rad, in.spreading_directions);
   } else {
     r.directions = {{in.wave_heading_rad, 1.0}};
   }
@@ -262,8 +246,7 @@ MeanDriftResult mean_wave_drift_load(const MeanDriftTable& table, const MeanDrif
   // Raise the quadrature limit to the table's last frequency so that the
   // analytic tail lies where D is held constant (exact for the w^-5 tail).
   SpectrumQuadratureOptions options = in.quadrature;
-  options.min_upper_limit_rad_per_s =
-      std::max(options.min_upper_limit_rad_per_s, table.omega_rad_per_s.back());
+  options.min_upper_limit_rad_per_s = std::max(options.min_upper_limit_rad_per_s, table.omega_rad_per_s.back());
   const SpectrumQuadrature q = spectrum_quadrature(in.spectrum, options);
   const Eigen::Index nodes = q.omega_rad_per_s.size();
 
@@ -280,15 +263,13 @@ MeanDriftResult mean_wave_drift_load(const MeanDriftTable& table, const MeanDrif
   // Frequency brackets do not depend on the direction: compute them once.
   std::vector<Bracket> fw(static_cast<std::size_t>(nodes) + 1);
   for (Eigen::Index i = 0; i < nodes; ++i) {
-    fw[static_cast<std::size_t>(i)] =
-        frequency_bracket(table.omega_rad_per_s, q.omega_rad_per_s(i));
+    fw[static_cast<std::size_t>(i)] = frequency_bracket(table.omega_rad_per_s, q.omega_rad_per_s(i));
   }
   fw.back() = frequency_bracket(table.omega_rad_per_s, q.tail_start_rad_per_s);
 
   for (const SpreadingDirection& dir : r.directions) {
     if (dir.weight == 0.0) continue;
-    const Bracket fb =
-        heading_bracket(table.headings_rad, dir.heading_rad - in.hull_yaw_rad, "mean drift table");
+    const Bracket fb = heading_bracket(table.headings_rad, dir.heading_rad - in.hull_yaw_rad, "mean drift table");
     // Faltinsen (1990) ch. 5 / Newman (1974): F = 2 int S(w) D(w, beta) dw.
     Vector6d integral = Vector6d::Zero();
     for (Eigen::Index i = 0; i < nodes; ++i) {

@@ -97,19 +97,16 @@ struct CoefficientLoadResult {
   Eigen::Vector3d coefficients = Eigen::Vector3d::Zero();
 };
 
-CoefficientLoadResult coefficient_load(const CoefficientTable& table,
-                                       const CoefficientLoadInput& input);
+CoefficientLoadResult coefficient_load(const CoefficientTable& table, const CoefficientLoadInput& input);
 
 /// Current load: the current velocity at reference_depth_z_m (global z, <= 0; default surface).
 CoefficientLoadResult current_load(const CoefficientTable& table, const CurrentProfile& current,
-                                   double water_density_kg_per_m3, double hull_yaw_rad,
-                                   double reference_z_m = 0.0);
+                                   double water_density_kg_per_m3, double hull_yaw_rad, double reference_z_m = 0.0);
 
 /// Wind load from the mean wind speed at the table's reference height (m/s)
 /// travelling towards wind_heading_rad.
-CoefficientLoadResult wind_load(const CoefficientTable& table, double wind_speed_m_per_s,
-                                double wind_heading_rad, double hull_yaw_rad,
-                                double air_density_kg_per_m3 = 1.225);
+CoefficientLoadResult wind_load(const CoefficientTable& table, double wind_speed_m_per_s, double wind_heading_rad,
+                                double hull_yaw_rad, double air_density_kg_per_m3 = 1.225);
 
 /// Mean drift coefficients D_i(w, beta), hull frame, SI.
 struct MeanDriftTable {
@@ -124,8 +121,7 @@ struct MeanDriftTable {
 void validate_mean_drift_table(const MeanDriftTable& table);
 
 /// D(w, beta) for all six DOFs (absent ones 0), interpolated as described above.
-Vector6d mean_drift_coefficients(const MeanDriftTable& table, double omega_rad_per_s,
-                                 double relative_heading_rad);
+Vector6d mean_drift_coefficients(const MeanDriftTable& table, double omega_rad_per_s, double relative_heading_rad);
 
 struct MeanDriftInput {
   WaveSpectrum spectrum;

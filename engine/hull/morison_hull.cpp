@@ -15,8 +15,8 @@ constexpr double kPi = std::numbers::pi;
 
 void check_non_negative(double value, int member, const char* what) {
   if (!(value >= 0.0) || !std::isfinite(value)) {
-    throw std::invalid_argument(fmt::format(
-        "Morison hull: member {}: {} must be finite and >= 0, got {}", member, what, value));
+    throw std::invalid_argument(
+        fmt::format("Morison hull: member {}: {} must be finite and >= 0, got {}", member, what, value));
   }
 }
 
@@ -42,8 +42,7 @@ Profiles profiles(double k, double z, std::optional<double> depth) {
   const double h = *depth;
   const double reflected = std::exp(-k * (z + 2.0 * h));
   const double e2kh = std::exp(-2.0 * k * h);
-  return {(ekz + reflected) / (1.0 - e2kh), (ekz - reflected) / (1.0 - e2kh),
-          (ekz + reflected) / (1.0 + e2kh)};
+  return {(ekz + reflected) / (1.0 - e2kh), (ekz - reflected) / (1.0 - e2kh), (ekz + reflected) / (1.0 + e2kh)};
 }
 
 }  // namespace
@@ -62,12 +61,11 @@ MorisonHull make_morison_hull(const MorisonHullInput& input) {
     const Eigen::Vector3d d = member.end_b_b - member.end_a_b;
     const double length = d.norm();
     if (!(length > 0.0) || !d.allFinite()) {
-      throw std::invalid_argument(
-          fmt::format("Morison hull: member {}: its ends must be distinct finite points", id));
+      throw std::invalid_argument(fmt::format("Morison hull: member {}: its ends must be distinct finite points", id));
     }
     if (!(member.diameter_m > 0.0) || !std::isfinite(member.diameter_m)) {
-      throw std::invalid_argument(fmt::format(
-          "Morison hull: member {}: diameter must be > 0 m, got {} m", id, member.diameter_m));
+      throw std::invalid_argument(
+          fmt::format("Morison hull: member {}: diameter must be > 0 m, got {} m", id, member.diameter_m));
     }
     check_non_negative(member.drag_coefficient, id, "drag coefficient");
     check_non_negative(member.added_mass_coefficient, id, "added-mass coefficient");
@@ -99,8 +97,8 @@ MorisonHull make_morison_hull(const MorisonHullInput& input) {
       }
     }
     if (member.end_faces) {
-      for (const auto& [center, normal] : {std::pair{member.end_a_b, Eigen::Vector3d(t)},
-                                           std::pair{member.end_b_b, Eigen::Vector3d(-t)}}) {
+      for (const auto& [center, normal] :
+           {std::pair{member.end_a_b, Eigen::Vector3d(t)}, std::pair{member.end_b_b, Eigen::Vector3d(-t)}}) {
         MorisonEndFace f;
         f.center_b = center;
         f.inward_normal_b = normal;
@@ -120,8 +118,7 @@ Matrix6d morison_added_mass(const MorisonHull& hull, double rho) {
   Matrix6d A = Matrix6d::Zero();
   for (const MorisonStrip& s : hull.strips) {
     if (!s.submerged_at_rest) continue;
-    const double m =
-        rho * s.added_mass_coefficient * 0.25 * kPi * s.diameter_m * s.diameter_m * s.length_m;
+    const double m = rho * s.added_mass_coefficient * 0.25 * kPi * s.diameter_m * s.diameter_m * s.length_m;
     const Eigen::Matrix3d normal = Eigen::Matrix3d::Identity() - s.axis_b * s.axis_b.transpose();
     const auto J = point_jacobian(s.center_b);
     A += m * J.transpose() * normal * J;
@@ -135,11 +132,10 @@ Matrix6d morison_added_mass(const MorisonHull& hull, double rho) {
   return A;
 }
 
-Vector6cd morison_excitation(const MorisonHull& hull, const Seawater& water,
-                             std::optional<double> depth, double omega, double heading) {
+Vector6cd morison_excitation(const MorisonHull& hull, const Seawater& water, std::optional<double> depth, double omega,
+                             double heading) {
   if (!(omega > 0.0)) {
-    throw std::invalid_argument(
-        fmt::format("Morison excitation: frequency must be > 0 rad/s, got {}", omega));
+    throw std::invalid_argument(fmt::format("Morison excitation: frequency must be > 0 rad/s, got {}", omega));
   }
   const double k = solve_dispersion({omega, depth, water.gravity_m_per_s2}).wavenumber_rad_per_m;
   const double rho = water.density_kg_per_m3;
@@ -169,16 +165,14 @@ Vector6cd morison_excitation(const MorisonHull& hull, const Seawater& water,
     // Real r x complex F by parts (Eigen's complex cross() conjugates).
     const Eigen::Vector3d re = r.cross(Eigen::Vector3d(F.real()));
     const Eigen::Vector3d im = r.cross(Eigen::Vector3d(F.imag()));
-    X.tail<3>() += re.cast<std::complex<double>>() +
-                   std::complex<double>(0.0, 1.0) * im.cast<std::complex<double>>();
+    X.tail<3>() += re.cast<std::complex<double>>() + std::complex<double>(0.0, 1.0) * im.cast<std::complex<double>>();
   };
   for (const MorisonStrip& s : hull.strips) {
     if (!s.submerged_at_rest) continue;
     const Flow f = flow_at(s.center_b);
     const Vector3cd t = s.axis_b.cast<std::complex<double>>();
     const Vector3cd a_n = f.acceleration - t * t.dot(f.acceleration);  // t real: dot = t^T a
-    const double mass = rho * (1.0 + s.added_mass_coefficient) * 0.25 * kPi * s.diameter_m *
-                        s.diameter_m * s.length_m;
+    const double mass = rho * (1.0 + s.added_mass_coefficient) * 0.25 * kPi * s.diameter_m * s.diameter_m * s.length_m;
     add(s.center_b, mass * a_n);
   }
   for (const MorisonEndFace& face : hull.faces) {
@@ -186,16 +180,14 @@ Vector6cd morison_excitation(const MorisonHull& hull, const Seawater& water,
     const Flow f = flow_at(face.center_b);
     const Vector3cd n = face.inward_normal_b.cast<std::complex<double>>();
     const double area = kPi * face.radius_m * face.radius_m;
-    const double end_mass =
-        rho * face.added_mass_coefficient * (2.0 / 3.0) * kPi * std::pow(face.radius_m, 3);
+    const double end_mass = rho * face.added_mass_coefficient * (2.0 / 3.0) * kPi * std::pow(face.radius_m, 3);
     add(face.center_b, f.pressure * area * n + end_mass * n * n.dot(f.acceleration));
   }
   return X;
 }
 
-MorisonLoad morison_load(const MorisonHull& hull, const MorisonFlow& flow,
-                         const Eigen::Vector3d& reference_g, const Eigen::Matrix3d& rotation,
-                         double t_s, const Vector6d& velocity) {
+MorisonLoad morison_load(const MorisonHull& hull, const MorisonFlow& flow, const Eigen::Vector3d& reference_g,
+                         const Eigen::Matrix3d& rotation, double t_s, const Vector6d& velocity) {
   const double rho = flow.water_density_kg_per_m3;
   const Eigen::Vector3d v = velocity.head<3>();
   const Eigen::Vector3d w = velocity.tail<3>();
@@ -219,8 +211,7 @@ MorisonLoad morison_load(const MorisonHull& hull, const MorisonFlow& flow,
       return f;
     }
     f.wet = true;
-    if (flow.current != nullptr)
-      f.velocity += current_velocity_g(*flow.current, std::min(0.0, p_g.z()));
+    if (flow.current != nullptr) f.velocity += current_velocity_g(*flow.current, std::min(0.0, p_g.z()));
     return f;
   };
   auto add = [&out](const Eigen::Vector3d& arm, const Eigen::Vector3d& F) {
@@ -234,17 +225,15 @@ MorisonLoad morison_load(const MorisonHull& hull, const MorisonFlow& flow,
     // Vertical extent of the strip (axis and section): the wetted fraction
     // grows continuously as the surface rises through it, so the force has no
     // jumps when a strip wets or dries (a jump would stall the integrator).
-    const double half_height = 0.5 * s.length_m * std::abs(t.z()) +
-                               0.5 * s.diameter_m * std::sqrt(std::max(0.0, 1.0 - t.z() * t.z()));
+    const double half_height =
+        0.5 * s.length_m * std::abs(t.z()) + 0.5 * s.diameter_m * std::sqrt(std::max(0.0, 1.0 - t.z() * t.z()));
     const double z_low = centre.z() - half_height;
     if (z_low > flow.highest_crest_m) continue;
-    const double eta =
-        flow.sea != nullptr ? surface_elevation_m(*flow.sea, centre.x(), centre.y(), t_s) : 0.0;
+    const double eta = flow.sea != nullptr ? surface_elevation_m(*flow.sea, centre.x(), centre.y(), t_s) : 0.0;
     const double wet = std::clamp((eta - z_low) / (2.0 * half_height), 0.0, 1.0);
     if (wet == 0.0) continue;
     // Kinematics at the centre of the wetted part.
-    const Eigen::Vector3d point(centre.x(), centre.y(),
-                                std::min(centre.z(), z_low + wet * half_height));
+    const Eigen::Vector3d point(centre.x(), centre.y(), std::min(centre.z(), z_low + wet * half_height));
     const Fluid f = fluid_at(point);
     if (!f.wet) continue;
     ++out.wet_strips;
@@ -263,8 +252,7 @@ MorisonLoad morison_load(const MorisonHull& hull, const MorisonFlow& flow,
     const Eigen::Vector3d relative = f.velocity - (v + w.cross(arm));
     const double u_t = n.dot(relative);
     const double area = kPi * face.radius_m * face.radius_m;
-    const double end_mass =
-        rho * face.added_mass_coefficient * (2.0 / 3.0) * kPi * std::pow(face.radius_m, 3);
+    const double end_mass = rho * face.added_mass_coefficient * (2.0 / 3.0) * kPi * std::pow(face.radius_m, 3);
     add(arm, (f.pressure * area + end_mass * n.dot(f.acceleration) +
               0.5 * rho * face.drag_coefficient * area * std::abs(u_t) * u_t) *
                  n);

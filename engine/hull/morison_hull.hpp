@@ -71,7 +71,7 @@ struct MorisonMember {
 struct MorisonHullInput {
   std::vector<MorisonMember> members;
   Eigen::Vector3d reference_point_at_rest_g = Eigen::Vector3d::Zero();  ///< m
-  double strip_length_m = 1.0;  ///< target strip length along each member, > 0
+  double strip_length_m = 1.0;                                          ///< target strip length along each member, > 0
 };
 
 /// A strip: a short cylinder of length ds at its centre (body frame).
@@ -119,9 +119,8 @@ Matrix6d morison_added_mass(const MorisonHull& hull, double water_density_kg_per
 /// reference point), hull at rest, parts below z = 0: inertia
 /// rho (1 + Ca) A ds a_n per strip, pressure and end added-mass inertia per
 /// face. heading_rad: direction of propagation in the body frame.
-Vector6cd morison_excitation(const MorisonHull& hull, const Seawater& water,
-                             std::optional<double> water_depth_m, double omega_rad_per_s,
-                             double heading_rad);
+Vector6cd morison_excitation(const MorisonHull& hull, const Seawater& water, std::optional<double> water_depth_m,
+                             double omega_rad_per_s, double heading_rad);
 
 /// What the time-domain load needs besides the hull.
 struct MorisonFlow {
@@ -144,8 +143,7 @@ struct MorisonLoad {
 /// acceleration (added mass excluded: it is in the mass matrix), pressure on
 /// the faces, drag on the relative velocity current + waves − hull.
 MorisonLoad morison_load(const MorisonHull& hull, const MorisonFlow& flow,
-                         const Eigen::Vector3d& pose_reference_point_g,
-                         const Eigen::Matrix3d& pose_rotation, double t_s,
-                         const Vector6d& velocity);
+                         const Eigen::Vector3d& pose_reference_point_g, const Eigen::Matrix3d& pose_rotation,
+                         double t_s, const Vector6d& velocity);
 
 }  // namespace spiral::engine

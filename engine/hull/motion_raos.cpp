@@ -6,11 +6,8 @@
 
 namespace spiral::engine {
 
-MotionRaoTable motion_raos_from_excitation(const ExcitationTable& x,
-                                                   const HydroCoefficients& r,
-                                                   const Matrix6d& mass,
-                                                   const Matrix6d& linear_damping,
-                                                   const Matrix6d& stiffness) {
+MotionRaoTable motion_raos_from_excitation(const ExcitationTable& x, const HydroCoefficients& r, const Matrix6d& mass,
+                                           const Matrix6d& linear_damping, const Matrix6d& stiffness) {
   MotionRaoTable out;
   out.quantity = TransferQuantity::motion_rao;
   out.omega_rad_per_s = x.omega_rad_per_s;

@@ -15,10 +15,8 @@ namespace spiral::engine {
 /// excitation X (.3) and A(w), B(w) (.1) on the excitation table's grid:
 ///   xi(w, beta) = [−w² (mass + A(w)) + i w (B(w) + linear_damping) + stiffness]^-1 X(w, beta)
 /// (A, B interpolated in w, held outside the .1 table).
-MotionRaoTable motion_raos_from_excitation(const ExcitationTable& excitation,
-                                                   const HydroCoefficients& radiation,
-                                                   const Matrix6d& mass,
-                                                   const Matrix6d& linear_damping,
-                                                   const Matrix6d& stiffness);
+MotionRaoTable motion_raos_from_excitation(const ExcitationTable& excitation, const HydroCoefficients& radiation,
+                                           const Matrix6d& mass, const Matrix6d& linear_damping,
+                                           const Matrix6d& stiffness);
 
 }  // namespace spiral::engine

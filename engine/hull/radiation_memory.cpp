@@ -50,27 +50,23 @@ Matrix6d kernel_cosine_transform(const RetardationKernel& kernel, double omega_r
 
 Matrix6d kernel_sine_transform(const RetardationKernel& kernel, double omega_rad_per_s) {
   if (!(omega_rad_per_s > 0.0)) {
-    throw std::invalid_argument(
-        fmt::format("kernel_sine_transform: need w > 0 rad/s, got {}", omega_rad_per_s));
+    throw std::invalid_argument(fmt::format("kernel_sine_transform: need w > 0 rad/s, got {}", omega_rad_per_s));
   }
   return kernel_transform(kernel, omega_rad_per_s, false);
 }
 
-RadiationMemory make_radiation_memory(const HydroCoefficients& r,
-                                      const RadiationMemoryInput& input) {
-  if (!(input.time_step_s > 0.0) || !(input.duration_s > input.time_step_s) ||
-      !(input.tail_ratio_limit > 0.0)) {
-    throw std::invalid_argument(fmt::format(
-        "radiation memory: need time step > 0 s, duration > time step and a tail ratio > 0; got "
-        "{} s, {} s, {}",
-        input.time_step_s, input.duration_s, input.tail_ratio_limit));
+RadiationMemory make_radiation_memory(const HydroCoefficients& r, const RadiationMemoryInput& input) {
+  if (!(input.time_step_s > 0.0) || !(input.duration_s > input.time_step_s) || !(input.tail_ratio_limit > 0.0)) {
+    throw std::invalid_argument(
+        fmt::format("radiation memory: need time step > 0 s, duration > time step and a tail ratio > 0; got "
+                    "{} s, {} s, {}",
+                    input.time_step_s, input.duration_s, input.tail_ratio_limit));
   }
   const std::vector<double>& w = r.omega_rad_per_s;
-  if (w.size() < kMinimumFrequencies || r.damping.size() != w.size() ||
-      r.added_mass.size() != w.size()) {
-    throw RadiationDataError(fmt::format(
-        "{}: a radiation memory needs A(w) and B(w) at >= {} frequencies, the file has {}", r.file,
-        kMinimumFrequencies, w.size()));
+  if (w.size() < kMinimumFrequencies || r.damping.size() != w.size() || r.added_mass.size() != w.size()) {
+    throw RadiationDataError(
+        fmt::format("{}: a radiation memory needs A(w) and B(w) at >= {} frequencies, the file has {}", r.file,
+                    kMinimumFrequencies, w.size()));
   }
 
   RadiationMemory out;
@@ -90,9 +86,8 @@ RadiationMemory make_radiation_memory(const HydroCoefficients& r,
           "(limit {:.1f} %): the table {}, so the retardation kernel K(t) = "
           "(2/pi) int B cos(wt) dw cannot be built; give a .1 file reaching {} frequencies, or "
           "use radiation: low_frequency",
-          r.file, kDofNames[d], high ? "highest" : "lowest", high ? w.back() : w.front(),
-          100.0 * ratio, 100.0 * input.tail_ratio_limit,
-          high ? "stops before B(w) has decayed" : "starts after B(w) has risen",
+          r.file, kDofNames[d], high ? "highest" : "lowest", high ? w.back() : w.front(), 100.0 * ratio,
+          100.0 * input.tail_ratio_limit, high ? "stops before B(w) has decayed" : "starts after B(w) has risen",
           high ? "higher" : "lower"));
     }
   }
@@ -100,11 +95,11 @@ RadiationMemory make_radiation_memory(const HydroCoefficients& r,
   double max_dw = w.front();  // the interval [0, w_0] is part of the grid
   for (std::size_t i = 1; i < w.size(); ++i) max_dw = std::max(max_dw, w[i] - w[i - 1]);
   if (input.duration_s > std::numbers::pi / max_dw) {
-    throw RadiationDataError(fmt::format(
-        "{}: the frequency spacing (largest step {:.4g} rad/s, including 0 to the first "
-        "frequency) resolves a retardation kernel of at most pi/dw = {:.3g} s, shorter than the "
-        "kernel duration {:.3g} s: give a finer .1 table or a shorter memory_duration",
-        r.file, max_dw, std::numbers::pi / max_dw, input.duration_s));
+    throw RadiationDataError(
+        fmt::format("{}: the frequency spacing (largest step {:.4g} rad/s, including 0 to the first "
+                    "frequency) resolves a retardation kernel of at most pi/dw = {:.3g} s, shorter than the "
+                    "kernel duration {:.3g} s: give a finer .1 table or a shorter memory_duration",
+                    r.file, max_dw, std::numbers::pi / max_dw, input.duration_s));
   }
 
   // K(t) with B(0) = 0 prepended (a floating body radiates nothing at w = 0).
@@ -138,10 +133,10 @@ RadiationMemory make_radiation_memory(const HydroCoefficients& r,
     out.added_mass_infinite_from_file = true;
   } else {
     if (band.size() < 2) {
-      throw RadiationDataError(fmt::format(
-          "{}: no infinite-frequency (PER = 0) row, and fewer than 2 frequencies above 2 pi / "
-          "t_max = {:.3g} rad/s to estimate A(inf) from Ogilvie's relation",
-          r.file, out.ogilvie_omega_min_rad_per_s));
+      throw RadiationDataError(
+          fmt::format("{}: no infinite-frequency (PER = 0) row, and fewer than 2 frequencies above 2 pi / "
+                      "t_max = {:.3g} rad/s to estimate A(inf) from Ogilvie's relation",
+                      r.file, out.ogilvie_omega_min_rad_per_s));
     }
     Matrix6d sum = Matrix6d::Zero();
     for (const Matrix6d& e : estimates) sum += e;
@@ -151,8 +146,8 @@ RadiationMemory make_radiation_memory(const HydroCoefficients& r,
     const double scale = std::abs(out.added_mass_infinite(d, d));
     if (scale == 0.0) continue;
     for (const Matrix6d& e : estimates) {
-      out.ogilvie_max_deviation(d) = std::max(
-          out.ogilvie_max_deviation(d), std::abs(e(d, d) - out.added_mass_infinite(d, d)) / scale);
+      out.ogilvie_max_deviation(d) =
+          std::max(out.ogilvie_max_deviation(d), std::abs(e(d, d) - out.added_mass_infinite(d, d)) / scale);
     }
   }
   return out;

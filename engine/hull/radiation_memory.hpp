@@ -50,8 +50,7 @@ class RadiationDataError : public std::invalid_argument {
 };
 
 struct RadiationMemoryInput {
-  double duration_s =
-      60.0;  ///< t_max of the kernel, > time_step_s (OpenFAST HydroDyn RdtnTMax 60 s)
+  double duration_s = 60.0;  ///< t_max of the kernel, > time_step_s (OpenFAST HydroDyn RdtnTMax 60 s)
   double time_step_s = 0.1;  ///< kernel and velocity-history step, > 0
   /// Largest B_ii(w_end) / max_w B_ii accepted at either end of the table;
   /// 5 %: the step at w_max then puts at most ~B(w_max)/(pi t) of ringing into
@@ -77,8 +76,7 @@ struct RadiationMemory {
 /// Builds A(inf) and K(t) from `radiation` (see the header comment). Throws
 /// RadiationDataError when the data do not allow it, std::invalid_argument for
 /// input out of range.
-RadiationMemory make_radiation_memory(const HydroCoefficients& radiation,
-                                      const RadiationMemoryInput& input);
+RadiationMemory make_radiation_memory(const HydroCoefficients& radiation, const RadiationMemoryInput& input);
 
 /// int_0^t_max K(t) cos(w t) dt of the kernel as tabulated (K linear between
 /// samples, integrated exactly per interval): should give B(w) back.

@@ -8,13 +8,13 @@
 
 namespace spiral::engine {
 
-RetardationKernel make_retardation_kernel(std::span<const double> w, std::span<const Matrix6d> B,
-                                          double time_step_s, double duration_s) {
+RetardationKernel make_retardation_kernel(std::span<const double> w, std::span<const Matrix6d> B, double time_step_s,
+                                          double duration_s) {
   if (w.size() < 2 || w.size() != B.size()) {
-    throw std::invalid_argument(fmt::format(
-        "retardation kernel: need >= 2 frequencies and one 6x6 damping per frequency, got {} "
-        "frequencies and {} matrices",
-        w.size(), B.size()));
+    throw std::invalid_argument(
+        fmt::format("retardation kernel: need >= 2 frequencies and one 6x6 damping per frequency, got {} "
+                    "frequencies and {} matrices",
+                    w.size(), B.size()));
   }
   for (std::size_t i = 0; i < w.size(); ++i) {
     if (!(w[i] >= 0.0) || (i > 0 && !(w[i] > w[i - 1]))) {
@@ -24,12 +24,13 @@ RetardationKernel make_retardation_kernel(std::span<const double> w, std::span<c
                       i, w[i]));
     }
     if (!B[i].allFinite())
-      throw std::invalid_argument(fmt::format("retardation kernel: radiation damping B(w) at frequency[{}] has non-finite entries", i));
+      throw std::invalid_argument(
+          fmt::format("retardation kernel: radiation damping B(w) at frequency[{}] has non-finite entries", i));
   }
   if (!(time_step_s > 0.0) || !(duration_s >= time_step_s)) {
-    throw std::invalid_argument(fmt::format(
-        "retardation kernel: need time_step_s > 0 and duration_s >= time_step_s, got {} s, {} s",
-        time_step_s, duration_s));
+    throw std::invalid_argument(
+        fmt::format("retardation kernel: need time_step_s > 0 and duration_s >= time_step_s, got {} s, {} s",
+                    time_step_s, duration_s));
   }
   const auto n = static_cast<Eigen::Index>(std::floor(duration_s / time_step_s + 1e-9)) + 1;
   RetardationKernel k;

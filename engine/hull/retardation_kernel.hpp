@@ -21,9 +21,7 @@ struct RetardationKernel {
 
   Eigen::Index size() const { return values.cols(); }
   double duration_s() const { return time_step_s * static_cast<double>(size() - 1); }
-  Matrix6d at_index(Eigen::Index j) const {
-    return Eigen::Map<const Matrix6d>(values.col(j).data());
-  }
+  Matrix6d at_index(Eigen::Index j) const { return Eigen::Map<const Matrix6d>(values.col(j).data()); }
 };
 
 /// Builds K(t) from the frequency-domain radiation damping B(w_i) (6×6 each,
@@ -32,8 +30,7 @@ struct RetardationKernel {
 /// table should reach the frequency where B has decayed). Cost: n_t × n_w × 36.
 /// Throws std::invalid_argument for fewer than 2 frequencies, unsorted or
 /// negative frequencies, non-positive time step or duration.
-RetardationKernel make_retardation_kernel(std::span<const double> frequencies_rad_s,
-                                          std::span<const Matrix6d> damping, double time_step_s,
-                                          double duration_s);
+RetardationKernel make_retardation_kernel(std::span<const double> frequencies_rad_s, std::span<const Matrix6d> damping,
+                                          double time_step_s, double duration_s);
 
 }  // namespace spiral::engine

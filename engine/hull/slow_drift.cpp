@@ -17,8 +17,7 @@ SlowDriftSeries prepare_slow_drift(const WaveRealization& sea, const MeanDriftTa
   for (Eigen::Index k = 0; k < n; ++k) {
     const WaveComponent& c = sea.components[static_cast<std::size_t>(k)];
     s.omega_rad_per_s.push_back(c.omega_rad_per_s);
-    s.phase_rad.push_back(c.phase_rad -
-                          (c.kx_rad_per_m * placement.x_m + c.ky_rad_per_m * placement.y_m));
+    s.phase_rad.push_back(c.phase_rad - (c.kx_rad_per_m * placement.x_m + c.ky_rad_per_m * placement.y_m));
     double beta = c.heading_rad - placement.yaw_rad;
     beta = std::fmod(beta, 2.0 * std::numbers::pi);
     if (beta < 0.0) beta += 2.0 * std::numbers::pi;
@@ -39,8 +38,8 @@ Vector6d slow_drift_force(const SlowDriftSeries& s, double t_s) {
   Vector6d zs_re = Vector6d::Zero();
   Vector6d zs_im = Vector6d::Zero();
   for (Eigen::Index k = 0; k < s.weight.cols(); ++k) {
-    const double theta = s.omega_rad_per_s[static_cast<std::size_t>(k)] * t_s +
-                         s.phase_rad[static_cast<std::size_t>(k)];
+    const double theta =
+        s.omega_rad_per_s[static_cast<std::size_t>(k)] * t_s + s.phase_rad[static_cast<std::size_t>(k)];
     const double c = std::cos(theta);
     const double sn = std::sin(theta);
     z_re += c * s.weight.col(k);

@@ -27,8 +27,8 @@ struct Block {
   std::array<std::array<std::size_t, 6>, 6> seen_on_line{};
 };
 
-Matrix6d interpolate(const std::vector<double>& omega, const std::vector<Matrix6d>& values,
-                     double w, const char* what) {
+Matrix6d interpolate(const std::vector<double>& omega, const std::vector<Matrix6d>& values, double w,
+                     const char* what) {
   if (!std::isfinite(w)) {
     throw std::invalid_argument(fmt::format("{}: frequency must be finite, got {} rad/s", what, w));
   }
@@ -47,15 +47,14 @@ Matrix6d interpolate(const std::vector<double>& omega, const std::vector<Matrix6
 
 int wamit_radiation_length_exponent(int i, int j) {
   if (i < 1 || i > 6 || j < 1 || j > 6) {
-    throw std::invalid_argument(fmt::format(
-        "wamit_radiation_length_exponent: indices must be in 1..6, got ({}, {})", i, j));
+    throw std::invalid_argument(
+        fmt::format("wamit_radiation_length_exponent: indices must be in 1..6, got ({}, {})", i, j));
   }
   // WAMIT User Manual v7 §4.1: k = 3 + one per rotational index.
   return 3 + (i >= 4 ? 1 : 0) + (j >= 4 ? 1 : 0);
 }
 
-HydroCoefficients parse_wamit_1(std::istream& text, const std::string& file_name,
-                                const WamitReadOptions& options) {
+HydroCoefficients parse_wamit_1(std::istream& text, const std::string& file_name, const WamitReadOptions& options) {
   detail::validate_wamit_options(options, "wamit .1 reader");
   const double rho = options.water.density_kg_per_m3;
   const bool period_column = options.frequency_column == FrequencyColumn::period_s;
@@ -88,33 +87,28 @@ HydroCoefficients parse_wamit_1(std::istream& text, const std::string& file_name
                                         column_name, tokens.size(), line));
     }
     if (!numeric_first) {
-      throw FileFormatError(
-          file_name, line_number,
-          fmt::format("{} must be a finite real number, got \"{}\"", column_name, tokens[0]));
+      throw FileFormatError(file_name, line_number,
+                            fmt::format("{} must be a finite real number, got \"{}\"", column_name, tokens[0]));
     }
     int i = 0;
     int j = 0;
     if (!detail::parse_int(tokens[1], i) || !detail::parse_int(tokens[2], j)) {
-      throw FileFormatError(
-          file_name, line_number,
-          fmt::format("DOF indices I J must be integers, got \"{}\" \"{}\"", tokens[1], tokens[2]));
+      throw FileFormatError(file_name, line_number,
+                            fmt::format("DOF indices I J must be integers, got \"{}\" \"{}\"", tokens[1], tokens[2]));
     }
     if (i < 1 || j < 1 || i > 6 || j > 6) {
-      throw FileFormatError(
-          file_name, line_number,
-          fmt::format("DOF indices must be in 1..6 (single body), got ({}, {})", i, j));
+      throw FileFormatError(file_name, line_number,
+                            fmt::format("DOF indices must be in 1..6 (single body), got ({}, {})", i, j));
     }
     double a_bar = 0.0;
     if (!detail::parse_real(tokens[3], a_bar)) {
-      throw FileFormatError(
-          file_name, line_number,
-          fmt::format("Abar({},{}) must be a finite real number, got \"{}\"", i, j, tokens[3]));
+      throw FileFormatError(file_name, line_number,
+                            fmt::format("Abar({},{}) must be a finite real number, got \"{}\"", i, j, tokens[3]));
     }
     double b_bar = 0.0;
     if (tokens.size() == 5 && !detail::parse_real(tokens[4], b_bar)) {
-      throw FileFormatError(
-          file_name, line_number,
-          fmt::format("Bbar({},{}) must be a finite real number, got \"{}\"", i, j, tokens[4]));
+      throw FileFormatError(file_name, line_number,
+                            fmt::format("Bbar({},{}) must be a finite real number, got \"{}\"", i, j, tokens[4]));
     }
 
     RowKind kind = RowKind::regular;
@@ -143,8 +137,7 @@ HydroCoefficients parse_wamit_1(std::istream& text, const std::string& file_name
     if (kind == RowKind::regular && tokens.size() != 5) {
       throw FileFormatError(
           file_name, line_number,
-          fmt::format("expected 5 fields `{} I J Abar Bbar` on a finite-frequency row, got 4",
-                      column_name));
+          fmt::format("expected 5 fields `{} I J Abar Bbar` on a finite-frequency row, got 4", column_name));
     }
 
     Block* block = nullptr;
@@ -167,9 +160,9 @@ HydroCoefficients parse_wamit_1(std::istream& text, const std::string& file_name
     }
     auto& seen = block->seen_on_line[i - 1][j - 1];
     if (seen != 0) {
-      throw FileFormatError(file_name, line_number,
-                            fmt::format("({},{}) at {} = {} given twice (first on line {})", i, j,
-                                        column_name, column1, seen));
+      throw FileFormatError(
+          file_name, line_number,
+          fmt::format("({},{}) at {} = {} given twice (first on line {})", i, j, column_name, column1, seen));
     }
     seen = line_number;
     // WAMIT User Manual v7 §4.1: A = rho L^k Abar, B = rho L^k w Bbar.
@@ -181,8 +174,7 @@ HydroCoefficients parse_wamit_1(std::istream& text, const std::string& file_name
   if (text.bad()) throw FileFormatError(file_name, line_number, "read error");
   if (rows == 0) throw FileFormatError(file_name, 0, "no coefficients found (empty .1 file)");
 
-  std::sort(regular.begin(), regular.end(),
-            [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::sort(regular.begin(), regular.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   HydroCoefficients out;
   out.file = file_name;
   out.omega_rad_per_s.reserve(regular.size());

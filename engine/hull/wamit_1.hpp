@@ -53,8 +53,7 @@ struct HydroCoefficients {
 int wamit_radiation_length_exponent(int i, int j);
 
 /// Parses .1 text; `file_name` appears in error messages only.
-HydroCoefficients parse_wamit_1(std::istream& text, const std::string& file_name,
-                                const WamitReadOptions& options);
+HydroCoefficients parse_wamit_1(std::istream& text, const std::string& file_name, const WamitReadOptions& options);
 
 /// Reads a .1 file.
 HydroCoefficients read_wamit_1(const std::filesystem::path& file, const WamitReadOptions& options);

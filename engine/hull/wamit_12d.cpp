@@ -19,7 +19,6 @@ namespace {
 constexpr double kPeriodRelTolerance = 1e-6;  // equal periods as printed with 5-6 digits
 constexpr double kHeadingTolerance_deg = 1e-6;
 
-
 struct DiagonalEntry {
   double period_s;
   double heading_deg;
@@ -48,15 +47,14 @@ std::size_t index_of(const std::vector<double>& sorted, double v, Tol tol) {
 
 }  // namespace
 
-MeanDriftTable parse_wamit_12d_mean_drift(std::istream& text, const std::string& file_name,
-                                          double rho, double g, double ulen, double period_scale) {
+MeanDriftTable parse_wamit_12d_mean_drift(std::istream& text, const std::string& file_name, double rho, double g,
+                                          double ulen, double period_scale) {
   if (!(period_scale > 0.0) || !std::isfinite(period_scale)) {
-    throw std::invalid_argument(
-        fmt::format("WAMIT .12d: period_scale must be > 0, got {}", period_scale));
+    throw std::invalid_argument(fmt::format("WAMIT .12d: period_scale must be > 0, got {}", period_scale));
   }
   if (!(rho > 0.0) || !(g > 0.0) || !(ulen > 0.0) || !std::isfinite(rho * g * ulen)) {
-    throw std::invalid_argument(fmt::format(
-        "WAMIT .12d: rho, g and ULEN must be > 0, got {} kg/m^3, {} m/s^2, {} m", rho, g, ulen));
+    throw std::invalid_argument(
+        fmt::format("WAMIT .12d: rho, g and ULEN must be > 0, got {} kg/m^3, {} m/s^2, {} m", rho, g, ulen));
   }
   std::vector<DiagonalEntry> diagonal;
   std::string line;
@@ -75,8 +73,7 @@ MeanDriftTable parse_wamit_12d_mean_drift(std::istream& text, const std::string&
     if (tokens.size() != 9) {
       throw FileFormatError(
           file_name, line_number,
-          fmt::format("expected 9 fields `PER1 PER2 BETA1 BETA2 I MOD PHS RE IM`, got {}",
-                      tokens.size()));
+          fmt::format("expected 9 fields `PER1 PER2 BETA1 BETA2 I MOD PHS RE IM`, got {}", tokens.size()));
     }
     std::array<double, 9> v{};
     int dof = 0;
@@ -93,21 +90,19 @@ MeanDriftTable parse_wamit_12d_mean_drift(std::istream& text, const std::string&
       if (!detail::parse_real(tokens[k], v[k])) {
         static constexpr std::array<const char*, 9> kNames = {"PER1", "PER2", "BETA1", "BETA2", "I",
                                                               "MOD",  "PHS",  "RE",    "IM"};
-        throw FileFormatError(file_name, line_number,
-                              fmt::format("field {} ({}) must be a finite real number, got \"{}\"",
-                                          k + 1, kNames[k], tokens[k]));
+        throw FileFormatError(
+            file_name, line_number,
+            fmt::format("field {} ({}) must be a finite real number, got \"{}\"", k + 1, kNames[k], tokens[k]));
       }
     }
     if (dof < 1 || dof > 6) {
       throw FileFormatError(
           file_name, line_number,
-          fmt::format("load component I = {} outside 1..6 (multi-body files are not supported)",
-                      dof));
+          fmt::format("load component I = {} outside 1..6 (multi-body files are not supported)", dof));
     }
     const double per1 = v[0];
     const double per2 = v[1];
-    const bool same_period =
-        std::abs(per1 - per2) <= kPeriodRelTolerance * std::max(std::abs(per1), std::abs(per2));
+    const bool same_period = std::abs(per1 - per2) <= kPeriodRelTolerance * std::max(std::abs(per1), std::abs(per2));
     const bool same_heading = std::abs(v[2] - v[3]) <= kHeadingTolerance_deg;
     if (!same_period || !same_heading) continue;  // off-diagonal: not a mean drift term
     if (!(per1 > 0.0)) {
@@ -120,8 +115,7 @@ MeanDriftTable parse_wamit_12d_mean_drift(std::istream& text, const std::string&
   }
   if (text.bad()) throw FileFormatError(file_name, line_number, "read error");
   if (diagonal.empty()) {
-    throw FileFormatError(file_name, 0,
-                          "no diagonal (PER1 = PER2, BETA1 = BETA2) entries: no mean drift data");
+    throw FileFormatError(file_name, 0, "no diagonal (PER1 = PER2, BETA1 = BETA2) entries: no mean drift data");
   }
 
   const auto period_tol = [](double p) { return kPeriodRelTolerance * std::abs(p); };
@@ -149,8 +143,7 @@ MeanDriftTable parse_wamit_12d_mean_drift(std::istream& text, const std::string&
     const std::size_t i = static_cast<std::size_t>(e.dof - 1);
     if (!table.present[i]) {
       table.present[i] = true;
-      table.coefficient[i] =
-          Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(np), static_cast<Eigen::Index>(nb));
+      table.coefficient[i] = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(np), static_cast<Eigen::Index>(nb));
       source_line[i].assign(np * nb, 0);
     }
     const std::size_t kp = index_of(periods, e.period_s, period_tol);
@@ -159,15 +152,13 @@ MeanDriftTable parse_wamit_12d_mean_drift(std::istream& text, const std::string&
     // WAMIT normalisation of second-order loads: rho g ULEN^k, k = 1 forces, 2 moments.
     const double value = rho * g * std::pow(ulen, e.dof <= 3 ? 1 : 2) * e.re;
     std::size_t& seen = source_line[i][row * nb + col];
-    auto& slot =
-        table.coefficient[i](static_cast<Eigen::Index>(row), static_cast<Eigen::Index>(col));
+    auto& slot = table.coefficient[i](static_cast<Eigen::Index>(row), static_cast<Eigen::Index>(col));
     if (seen != 0) {
       if (std::abs(slot - value) > 1e-9 * std::max(std::abs(slot), std::abs(value))) {
-        throw FileFormatError(
-            file_name, e.line,
-            fmt::format("diagonal entry I = {}, PER = {} s, BETA = {} deg repeats line {} with a "
-                        "different value",
-                        e.dof, e.period_s, e.heading_deg, seen));
+        throw FileFormatError(file_name, e.line,
+                              fmt::format("diagonal entry I = {}, PER = {} s, BETA = {} deg repeats line {} with a "
+                                          "different value",
+                                          e.dof, e.period_s, e.heading_deg, seen));
       }
       continue;
     }
@@ -179,11 +170,10 @@ MeanDriftTable parse_wamit_12d_mean_drift(std::istream& text, const std::string&
     for (std::size_t row = 0; row < np; ++row) {
       for (std::size_t col = 0; col < nb; ++col) {
         if (source_line[i][row * nb + col] == 0) {
-          throw FileFormatError(
-              file_name, 0,
-              fmt::format("incomplete mean drift diagonal: I = {} missing at PER = {} s, BETA = "
-                          "{} deg",
-                          i + 1, periods[np - 1 - row], headings[col]));
+          throw FileFormatError(file_name, 0,
+                                fmt::format("incomplete mean drift diagonal: I = {} missing at PER = {} s, BETA = "
+                                            "{} deg",
+                                            i + 1, periods[np - 1 - row], headings[col]));
         }
       }
     }
@@ -191,8 +181,8 @@ MeanDriftTable parse_wamit_12d_mean_drift(std::istream& text, const std::string&
   return table;
 }
 
-MeanDriftTable read_wamit_12d_mean_drift(const std::filesystem::path& path, double rho, double g,
-                                         double ulen, double period_scale) {
+MeanDriftTable read_wamit_12d_mean_drift(const std::filesystem::path& path, double rho, double g, double ulen,
+                                         double period_scale) {
   std::ifstream in(path);
   if (!in) throw FileFormatError(path.string(), 0, "cannot open WAMIT .12d file");
   return parse_wamit_12d_mean_drift(in, path.string(), rho, g, ulen, period_scale);

@@ -46,13 +46,11 @@ namespace spiral::engine {
 /// `period_scale` (> 0) multiplies the file's periods (frequencies divided by
 /// it): a Froude-scaled hull of scale lambda uses ULEN x lambda and
 /// period_scale = sqrt(lambda) (the coefficients themselves are unchanged).
-MeanDriftTable parse_wamit_12d_mean_drift(std::istream& text, const std::string& file_name,
-                                          double rho_kg_per_m3, double g_m_per_s2, double ulen_m,
-                                          double period_scale = 1.0);
+MeanDriftTable parse_wamit_12d_mean_drift(std::istream& text, const std::string& file_name, double rho_kg_per_m3,
+                                          double g_m_per_s2, double ulen_m, double period_scale = 1.0);
 
 /// Reads a .12d file.
-MeanDriftTable read_wamit_12d_mean_drift(const std::filesystem::path& path, double rho_kg_per_m3,
-                                         double g_m_per_s2, double ulen_m,
-                                         double period_scale = 1.0);
+MeanDriftTable read_wamit_12d_mean_drift(const std::filesystem::path& path, double rho_kg_per_m3, double g_m_per_s2,
+                                         double ulen_m, double period_scale = 1.0);
 
 }  // namespace spiral::engine

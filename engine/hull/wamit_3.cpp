@@ -32,10 +32,9 @@ struct Row {
   std::size_t line = 0;
 };
 
-WaveTransferTable parse_transfer(std::istream& text, const std::string& file_name,
-                                 const WamitReadOptions& options, TransferQuantity quantity) {
-  const char* reader =
-      quantity == TransferQuantity::excitation ? "wamit .3 reader" : "wamit .4 reader";
+WaveTransferTable parse_transfer(std::istream& text, const std::string& file_name, const WamitReadOptions& options,
+                                 TransferQuantity quantity) {
+  const char* reader = quantity == TransferQuantity::excitation ? "wamit .3 reader" : "wamit .4 reader";
   detail::validate_wamit_options(options, reader);
   const bool period_column = options.frequency_column == FrequencyColumn::period_s;
   const char* column_name = period_column ? "PER" : "OMEGA";
@@ -58,27 +57,22 @@ WaveTransferTable parse_transfer(std::istream& text, const std::string& file_nam
     if (tokens.size() != 7) {
       throw FileFormatError(
           file_name, line_number,
-          fmt::format("expected 7 fields `{} BETA I MOD PHA RE IM`, got {}: \"{}\"", column_name,
-                      tokens.size(), line));
+          fmt::format("expected 7 fields `{} BETA I MOD PHA RE IM`, got {}: \"{}\"", column_name, tokens.size(), line));
     }
-    static constexpr std::array<const char*, 7> kNames = {"",    "BETA", "I", "MOD",
-                                                          "PHA", "RE",   "IM"};
+    static constexpr std::array<const char*, 7> kNames = {"", "BETA", "I", "MOD", "PHA", "RE", "IM"};
     if (!numeric_first) {
-      throw FileFormatError(
-          file_name, line_number,
-          fmt::format("{} must be a finite real number, got \"{}\"", column_name, tokens[0]));
+      throw FileFormatError(file_name, line_number,
+                            fmt::format("{} must be a finite real number, got \"{}\"", column_name, tokens[0]));
     }
     std::array<double, 7> v{};
     v[0] = column1;
     int dof = 0;
     for (std::size_t f = 1; f < 7; ++f) {
-      const bool ok =
-          f == 2 ? detail::parse_int(tokens[f], dof) : detail::parse_real(tokens[f], v[f]);
+      const bool ok = f == 2 ? detail::parse_int(tokens[f], dof) : detail::parse_real(tokens[f], v[f]);
       if (!ok) {
-        throw FileFormatError(
-            file_name, line_number,
-            fmt::format("{} must be {}, got \"{}\"", kNames[f],
-                        f == 2 ? "an integer" : "a finite real number", tokens[f]));
+        throw FileFormatError(file_name, line_number,
+                              fmt::format("{} must be {}, got \"{}\"", kNames[f],
+                                          f == 2 ? "an integer" : "a finite real number", tokens[f]));
       }
     }
     if (dof < 1 || dof > 6) {
@@ -86,18 +80,16 @@ WaveTransferTable parse_transfer(std::istream& text, const std::string& file_nam
                             fmt::format("DOF index I must be in 1..6 (single body), got {}", dof));
     }
     if (!(column1 > 0.0)) {
-      throw FileFormatError(
-          file_name, line_number,
-          fmt::format("{} must be > 0 {}, got {} (zero/infinite-frequency codes carry no "
-                      "first-order wave load)",
-                      column_name, period_column ? "s" : "rad/s", column1));
+      throw FileFormatError(file_name, line_number,
+                            fmt::format("{} must be > 0 {}, got {} (zero/infinite-frequency codes carry no "
+                                        "first-order wave load)",
+                                        column_name, period_column ? "s" : "rad/s", column1));
     }
     const double omega = (period_column ? 2.0 * kPi / column1 : column1) / options.period_scale;
     rows.push_back({omega, v[1], dof, {v[5], v[6]}, line_number});
   }
   if (text.bad()) throw FileFormatError(file_name, line_number, "read error");
-  if (rows.empty())
-    throw FileFormatError(file_name, 0, "no transfer-function rows found (empty file)");
+  if (rows.empty()) throw FileFormatError(file_name, 0, "no transfer-function rows found (empty file)");
 
   std::vector<double> omegas;
   std::vector<double> headings;
@@ -152,14 +144,13 @@ WaveTransferTable parse_transfer(std::istream& text, const std::string& file_nam
     for (Eigen::Index ih = 0; ih < nh; ++ih) {
       for (Eigen::Index iw = 0; iw < nw; ++iw) {
         if (seen[d](ih, iw) == 0) {
-          throw FileFormatError(
-              file_name, 0,
-              fmt::format("incomplete table: I = {} missing at {} = {:.6g} {}, BETA = {} deg "
-                          "(every DOF present must be given at every frequency and heading)",
-                          d + 1, column_name,
-                          period_column ? 2.0 * kPi / (omegas[iw] * options.period_scale)
-                                        : omegas[iw] * options.period_scale,
-                          period_column ? "s" : "rad/s", headings[ih]));
+          throw FileFormatError(file_name, 0,
+                                fmt::format("incomplete table: I = {} missing at {} = {:.6g} {}, BETA = {} deg "
+                                            "(every DOF present must be given at every frequency and heading)",
+                                            d + 1, column_name,
+                                            period_column ? 2.0 * kPi / (omegas[iw] * options.period_scale)
+                                                          : omegas[iw] * options.period_scale,
+                                            period_column ? "s" : "rad/s", headings[ih]));
         }
       }
     }
@@ -172,17 +163,15 @@ WaveTransferTable read_transfer(const std::filesystem::path& file, const WamitRe
   std::ifstream in(file);
   if (!in) {
     throw FileFormatError(file.string(), 0,
-                          quantity == TransferQuantity::excitation
-                              ? "cannot open WAMIT excitation (.3) file"
-                              : "cannot open WAMIT RAO (.4) file");
+                          quantity == TransferQuantity::excitation ? "cannot open WAMIT excitation (.3) file"
+                                                                   : "cannot open WAMIT RAO (.4) file");
   }
   return parse_transfer(in, file.string(), options, quantity);
 }
 
 // Bracketing index j (values[j-1] <= x <= values[j]) and weight of values[j];
 // held at the ends.
-void bracket(const std::vector<double>& grid, double x, Eigen::Index& lo, Eigen::Index& hi,
-             double& s) {
+void bracket(const std::vector<double>& grid, double x, Eigen::Index& lo, Eigen::Index& hi, double& s) {
   if (grid.size() == 1 || x <= grid.front()) {
     lo = hi = 0;
     s = 0.0;
@@ -193,8 +182,7 @@ void bracket(const std::vector<double>& grid, double x, Eigen::Index& lo, Eigen:
     s = 0.0;
     return;
   }
-  const auto j =
-      static_cast<Eigen::Index>(std::upper_bound(grid.begin(), grid.end(), x) - grid.begin());
+  const auto j = static_cast<Eigen::Index>(std::upper_bound(grid.begin(), grid.end(), x) - grid.begin());
   lo = j - 1;
   hi = j;
   s = (x - grid[lo]) / (grid[hi] - grid[lo]);
@@ -202,8 +190,7 @@ void bracket(const std::vector<double>& grid, double x, Eigen::Index& lo, Eigen:
 
 }  // namespace
 
-ExcitationTable parse_wamit_3(std::istream& text, const std::string& file_name,
-                              const WamitReadOptions& options) {
+ExcitationTable parse_wamit_3(std::istream& text, const std::string& file_name, const WamitReadOptions& options) {
   return parse_transfer(text, file_name, options, TransferQuantity::excitation);
 }
 
@@ -211,8 +198,7 @@ ExcitationTable read_wamit_3(const std::filesystem::path& file, const WamitReadO
   return read_transfer(file, options, TransferQuantity::excitation);
 }
 
-MotionRaoTable parse_wamit_4(std::istream& text, const std::string& file_name,
-                             const WamitReadOptions& options) {
+MotionRaoTable parse_wamit_4(std::istream& text, const std::string& file_name, const WamitReadOptions& options) {
   return parse_transfer(text, file_name, options, TransferQuantity::motion_rao);
 }
 
@@ -222,9 +208,8 @@ MotionRaoTable read_wamit_4(const std::filesystem::path& file, const WamitReadOp
 
 Vector6cd transfer_at(const WaveTransferTable& table, double omega_rad_per_s, double heading_rad) {
   if (!std::isfinite(omega_rad_per_s) || !std::isfinite(heading_rad)) {
-    throw std::invalid_argument(
-        fmt::format("transfer_at: frequency and heading must be finite, got {} rad/s and {} rad",
-                    omega_rad_per_s, heading_rad));
+    throw std::invalid_argument(fmt::format(
+        "transfer_at: frequency and heading must be finite, got {} rad/s and {} rad", omega_rad_per_s, heading_rad));
   }
   if (table.omega_rad_per_s.empty() || table.headings_rad.empty()) {
     throw std::invalid_argument("transfer_at: the transfer table is empty");
@@ -238,15 +223,13 @@ Vector6cd transfer_at(const WaveTransferTable& table, double omega_rad_per_s, do
   if (h.size() == 1) {
     const double gap = std::min(std::abs(b - h_min), std::abs(b - h_min - 2.0 * kPi));
     if (gap > kHeadingEndHold_rad) {
-      throw TableRangeError(fmt::format(
-          "heading {:.6g} deg outside the database range [{:.6g}, {:.6g}] deg (table {})",
-          heading_rad / kDeg, h_min / kDeg, h_max / kDeg, table.file));
+      throw TableRangeError(fmt::format("heading {:.6g} deg outside the database range [{:.6g}, {:.6g}] deg (table {})",
+                                        heading_rad / kDeg, h_min / kDeg, h_max / kDeg, table.file));
     }
     b = h_min;
   } else if (b > h_max + kHeadingEndHold_rad && b < h_min + 2.0 * kPi - kHeadingEndHold_rad) {
-    throw TableRangeError(
-        fmt::format("heading {:.6g} deg outside the database range [{:.6g}, {:.6g}] deg (table {})",
-                    heading_rad / kDeg, h_min / kDeg, h_max / kDeg, table.file));
+    throw TableRangeError(fmt::format("heading {:.6g} deg outside the database range [{:.6g}, {:.6g}] deg (table {})",
+                                      heading_rad / kDeg, h_min / kDeg, h_max / kDeg, table.file));
   }
   if (b > h_max) b = (b - h_max <= kHeadingEndHold_rad) ? h_max : h_min;
   Eigen::Index w0, w1, b0, b1;

@@ -76,14 +76,12 @@ using ExcitationTable = WaveTransferTable;
 using MotionRaoTable = WaveTransferTable;
 
 /// Parses `.3` (or `.2`) text into excitation per unit amplitude.
-ExcitationTable parse_wamit_3(std::istream& text, const std::string& file_name,
-                              const WamitReadOptions& options);
+ExcitationTable parse_wamit_3(std::istream& text, const std::string& file_name, const WamitReadOptions& options);
 ExcitationTable read_wamit_3(const std::filesystem::path& file, const WamitReadOptions& options);
 
 /// Parses `.4` text into motion RAOs per unit amplitude (water density and
 /// gravity are not used).
-MotionRaoTable parse_wamit_4(std::istream& text, const std::string& file_name,
-                             const WamitReadOptions& options);
+MotionRaoTable parse_wamit_4(std::istream& text, const std::string& file_name, const WamitReadOptions& options);
 MotionRaoTable read_wamit_4(const std::filesystem::path& file, const WamitReadOptions& options);
 
 /// X(w, beta): complex linear interpolation in w and in beta (bilinear on the

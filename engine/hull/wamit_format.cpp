@@ -10,17 +10,14 @@ namespace spiral::engine::detail {
 void validate_wamit_options(const WamitReadOptions& options, const char* reader) {
   const auto bad = [](double v) { return !(v > 0.0) || !std::isfinite(v); };
   if (bad(options.ulen_m)) {
-    throw std::invalid_argument(
-        fmt::format("{}: ulen_m must be > 0 m, got {} m", reader, options.ulen_m));
+    throw std::invalid_argument(fmt::format("{}: ulen_m must be > 0 m, got {} m", reader, options.ulen_m));
   }
   if (bad(options.period_scale)) {
-    throw std::invalid_argument(
-        fmt::format("{}: period_scale must be > 0, got {}", reader, options.period_scale));
+    throw std::invalid_argument(fmt::format("{}: period_scale must be > 0, got {}", reader, options.period_scale));
   }
   if (bad(options.water.density_kg_per_m3) || bad(options.water.gravity_m_per_s2)) {
-    throw std::invalid_argument(
-        fmt::format("{}: water density and gravity must be > 0, got {} kg/m^3 and {} m/s^2", reader,
-                    options.water.density_kg_per_m3, options.water.gravity_m_per_s2));
+    throw std::invalid_argument(fmt::format("{}: water density and gravity must be > 0, got {} kg/m^3 and {} m/s^2",
+                                            reader, options.water.density_kg_per_m3, options.water.gravity_m_per_s2));
   }
 }
 
@@ -32,8 +29,7 @@ std::vector<std::string_view> split_whitespace(std::string_view line, bool comma
     const std::size_t start = line.find_first_not_of(separators, pos);
     if (start == std::string_view::npos) break;
     const std::size_t end = line.find_first_of(separators, start);
-    tokens.push_back(
-        line.substr(start, end == std::string_view::npos ? line.size() - start : end - start));
+    tokens.push_back(line.substr(start, end == std::string_view::npos ? line.size() - start : end - start));
     pos = end == std::string_view::npos ? line.size() : end;
   }
   return tokens;
@@ -72,8 +68,7 @@ std::vector<double> distinct_sorted(std::vector<double> values, double rel_tol, 
 }
 
 int index_in(const std::vector<double>& grid, double value, double rel_tol, double abs_tol) {
-  const auto it =
-      std::lower_bound(grid.begin(), grid.end(), value - (rel_tol * std::abs(value) + abs_tol));
+  const auto it = std::lower_bound(grid.begin(), grid.end(), value - (rel_tol * std::abs(value) + abs_tol));
   if (it != grid.end() && std::abs(*it - value) <= rel_tol * std::abs(value) + abs_tol) {
     return static_cast<int>(it - grid.begin());
   }

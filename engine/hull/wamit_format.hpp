@@ -43,7 +43,7 @@ struct WamitReadOptions {
   /// coefficients at equal w^2 L / g with ULEN x lambda and periods x sqrt(lambda)
   /// (shared/data/reference-platforms.md §2.4). > 0; 1 = the file as written.
   double period_scale = 1.0;
-  Seawater water;       ///< rho (and g for excitation) used to dimensionalise
+  Seawater water;  ///< rho (and g for excitation) used to dimensionalise
 };
 
 namespace detail {

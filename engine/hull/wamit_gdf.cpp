@@ -18,8 +18,7 @@ std::vector<double> header_numbers(const std::string& file, std::size_t line_no,
     if (out.size() == count) break;
     double v = 0.0;
     if (!detail::parse_real(token, v)) {
-      throw FileFormatError(file, line_no,
-                            std::string("expected ") + what + ", got '" + std::string(token) + "'");
+      throw FileFormatError(file, line_no, std::string("expected ") + what + ", got '" + std::string(token) + "'");
     }
     out.push_back(v);
   }
@@ -83,7 +82,8 @@ PanelMesh read_gdf(const std::filesystem::path& path) {
       numbers.push_back(v * mesh.ulen_m);
       if (numbers.size() == 12) {
         Panel p;
-        for (int k = 0; k < 4; ++k) p[static_cast<std::size_t>(k)] = {numbers[3 * k], numbers[3 * k + 1], numbers[3 * k + 2]};
+        for (int k = 0; k < 4; ++k)
+          p[static_cast<std::size_t>(k)] = {numbers[3 * k], numbers[3 * k + 1], numbers[3 * k + 2]};
         mesh.panels.push_back(p);
         numbers.clear();
       }

@@ -34,8 +34,8 @@ struct PanelMesh {
   std::string title;
   double ulen_m = 1.0;
   double gravity_m_per_s2 = 9.80665;
-  bool symmetric_x = false;  ///< ISX = 1: mirrored about x = 0
-  bool symmetric_y = false;  ///< ISY = 1: mirrored about y = 0
+  bool symmetric_x = false;   ///< ISX = 1: mirrored about x = 0
+  bool symmetric_y = false;   ///< ISY = 1: mirrored about y = 0
   std::vector<Panel> panels;  ///< as written, scaled to m (body frame)
 };
 

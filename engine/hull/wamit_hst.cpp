@@ -13,26 +13,20 @@
 #include <vector>
 
 namespace spiral::engine {
-namespace {
-
-
-}  // namespace
+namespace {}  // namespace
 
 int wamit_hst_length_exponent(int i, int j) {
   if (i < 1 || i > 6 || j < 1 || j > 6) {
-    throw std::invalid_argument(
-        fmt::format("wamit_hst_length_exponent: indices must be in 1..6, got ({}, {})", i, j));
+    throw std::invalid_argument(fmt::format("wamit_hst_length_exponent: indices must be in 1..6, got ({}, {})", i, j));
   }
   // WAMIT User Manual v7 §4.1/§4.3: k = 2 for (3,3), 3 for heave-rotation pairs,
   // 4 for rotation-rotation pairs: two plus one per rotational index.
   return 2 + (i >= 4 ? 1 : 0) + (j >= 4 ? 1 : 0);
 }
 
-WamitHstData parse_wamit_hst(std::istream& text, const std::string& file_name,
-                             const WamitHstScaling& scaling) {
+WamitHstData parse_wamit_hst(std::istream& text, const std::string& file_name, const WamitHstScaling& scaling) {
   if (!(scaling.ulen_m > 0.0) || !std::isfinite(scaling.ulen_m)) {
-    throw std::invalid_argument(
-        fmt::format("wamit_hst.ulen_m: must be > 0, got {} m", scaling.ulen_m));
+    throw std::invalid_argument(fmt::format("wamit_hst.ulen_m: must be > 0, got {} m", scaling.ulen_m));
   }
   if (!(scaling.water.density_kg_per_m3 > 0.0) || !(scaling.water.gravity_m_per_s2 > 0.0)) {
     throw std::invalid_argument(
@@ -49,44 +43,37 @@ WamitHstData parse_wamit_hst(std::istream& text, const std::string& file_name,
     const auto tokens = detail::split_whitespace(line);
     if (tokens.empty()) continue;
     if (tokens.size() != 3) {
-      throw FileFormatError(
-          file_name, line_number,
-          fmt::format("expected 3 fields `I J C(I,J)`, got {}: \"{}\"", tokens.size(), line));
+      throw FileFormatError(file_name, line_number,
+                            fmt::format("expected 3 fields `I J C(I,J)`, got {}: \"{}\"", tokens.size(), line));
     }
     int i = 0;
     int j = 0;
     double value = 0.0;
     if (!detail::parse_int(tokens[0], i) || !detail::parse_int(tokens[1], j)) {
-      throw FileFormatError(
-          file_name, line_number,
-          fmt::format("DOF indices must be integers, got \"{}\" \"{}\"", tokens[0], tokens[1]));
+      throw FileFormatError(file_name, line_number,
+                            fmt::format("DOF indices must be integers, got \"{}\" \"{}\"", tokens[0], tokens[1]));
     }
     if (i < 1 || j < 1) {
-      throw FileFormatError(file_name, line_number,
-                            fmt::format("DOF indices must be in 1..6, got ({}, {})", i, j));
+      throw FileFormatError(file_name, line_number, fmt::format("DOF indices must be in 1..6, got ({}, {})", i, j));
     }
     if (i > 6 || j > 6) {
-      throw FileFormatError(
-          file_name, line_number,
-          fmt::format("DOF index ({}, {}) above 6: multi-body or generalised-mode .hst files "
-                      "are not supported",
-                      i, j));
+      throw FileFormatError(file_name, line_number,
+                            fmt::format("DOF index ({}, {}) above 6: multi-body or generalised-mode .hst files "
+                                        "are not supported",
+                                        i, j));
     }
     if (!detail::parse_real(tokens[2], value)) {
-      throw FileFormatError(
-          file_name, line_number,
-          fmt::format("C({},{}) must be a finite real number, got \"{}\"", i, j, tokens[2]));
+      throw FileFormatError(file_name, line_number,
+                            fmt::format("C({},{}) must be a finite real number, got \"{}\"", i, j, tokens[2]));
     }
     auto& seen = seen_on_line[i - 1][j - 1];
     if (seen != 0) {
-      throw FileFormatError(file_name, line_number,
-                            fmt::format("C({},{}) given twice (first on line {})", i, j, seen));
+      throw FileFormatError(file_name, line_number, fmt::format("C({},{}) given twice (first on line {})", i, j, seen));
     }
     seen = line_number;
     data.nondimensional(i - 1, j - 1) = value;
-    data.restoring_6x6(i - 1, j - 1) =
-        scaling.water.density_kg_per_m3 * scaling.water.gravity_m_per_s2 *
-        std::pow(scaling.ulen_m, wamit_hst_length_exponent(i, j)) * value;
+    data.restoring_6x6(i - 1, j - 1) = scaling.water.density_kg_per_m3 * scaling.water.gravity_m_per_s2 *
+                                       std::pow(scaling.ulen_m, wamit_hst_length_exponent(i, j)) * value;
     ++data.entries_read;
   }
   if (text.bad()) {

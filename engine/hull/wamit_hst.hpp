@@ -44,10 +44,9 @@ struct WamitHstScaling {
 
 struct WamitHstData {
   Eigen::Matrix<double, 6, 6> nondimensional = Eigen::Matrix<double, 6, 6>::Zero();
-  Eigen::Matrix<double, 6, 6> restoring_6x6 =
-      Eigen::Matrix<double, 6, 6>::Zero();  ///< SI: N/m, N, N m/rad
-  int entries_read = 0;                     ///< number of `I J C` lines
-  std::string file;                         ///< name used in messages
+  Eigen::Matrix<double, 6, 6> restoring_6x6 = Eigen::Matrix<double, 6, 6>::Zero();  ///< SI: N/m, N, N m/rad
+  int entries_read = 0;                                                             ///< number of `I J C` lines
+  std::string file;                                                                 ///< name used in messages
 };
 
 /// Length exponent k of the (i, j) entry (1-based indices 1..6); throws
@@ -55,8 +54,7 @@ struct WamitHstData {
 int wamit_hst_length_exponent(int i, int j);
 
 /// Parses .hst text; `file_name` is used in error messages only.
-WamitHstData parse_wamit_hst(std::istream& text, const std::string& file_name,
-                             const WamitHstScaling& scaling);
+WamitHstData parse_wamit_hst(std::istream& text, const std::string& file_name, const WamitHstScaling& scaling);
 
 /// Reads a .hst file.
 WamitHstData read_wamit_hst(const std::filesystem::path& file, const WamitHstScaling& scaling);

@@ -33,7 +33,7 @@ struct ElementProperties {
 /// What the distributed loads depend on besides the element DOFs.
 struct LoadContext {
   const std::vector<CurrentProfilePoint>* current = nullptr;  ///< may be empty
-  double current_factor = 1.0;  ///< continuation factor on the current velocity
+  double current_factor = 1.0;                                ///< continuation factor on the current velocity
   double seabed_z_m = -1.0e30;
   double seabed_stiffness_N_per_m2 = 0.0;
   bool drag_jacobian = true;  ///< include the drag's derivatives in Dual evaluations
@@ -75,9 +75,7 @@ template <typename T>
 inline V3<T> current_at(const LoadContext& ctx, const T& z) {
   const auto& c = *ctx.current;
   const double f = ctx.current_factor;
-  auto constant = [f](const Eigen::Vector3d& u) {
-    return V3<T>{T(f * u.x()), T(f * u.y()), T(f * u.z())};
-  };
+  auto constant = [f](const Eigen::Vector3d& u) { return V3<T>{T(f * u.x()), T(f * u.y()), T(f * u.z())}; };
   if (c.empty()) return constant(Eigen::Vector3d::Zero());
   const double zv = value_of(z);
   if (zv <= c.front().z_m) return constant(c.front().velocity_m_per_s);
@@ -94,12 +92,11 @@ inline V3<T> current_at(const LoadContext& ctx, const T& z) {
 
 /// 5-point Gauss–Legendre rule on [0, 1] (exact to degree 9: the weight load,
 /// the bending terms of a straight element and the shape-function products).
-inline constexpr std::array<double, 5> kGaussXi = {
-    0.5 - 0.5 * 0.9061798459386640, 0.5 - 0.5 * 0.5384693101056831, 0.5,
-    0.5 + 0.5 * 0.5384693101056831, 0.5 + 0.5 * 0.9061798459386640};
-inline constexpr std::array<double, 5> kGaussW = {
-    0.5 * 0.2369268850561891, 0.5 * 0.4786286704993665, 0.5 * 0.5688888888888889,
-    0.5 * 0.4786286704993665, 0.5 * 0.2369268850561891};
+inline constexpr std::array<double, 5> kGaussXi = {0.5 - 0.5 * 0.9061798459386640, 0.5 - 0.5 * 0.5384693101056831, 0.5,
+                                                   0.5 + 0.5 * 0.5384693101056831, 0.5 + 0.5 * 0.9061798459386640};
+inline constexpr std::array<double, 5> kGaussW = {0.5 * 0.2369268850561891, 0.5 * 0.4786286704993665,
+                                                  0.5 * 0.5688888888888889, 0.5 * 0.4786286704993665,
+                                                  0.5 * 0.2369268850561891};
 
 struct ShapeAt {
   std::array<double, 4> S, dS, ddS;  ///< S_k, dS_k/ds, d²S_k/ds² (slope DOFs carry the L factor)
@@ -108,10 +105,8 @@ inline ShapeAt shape_at(double xi, double L) {
   const double x2 = xi * xi, x3 = x2 * xi;
   ShapeAt s;
   s.S = {1.0 - 3.0 * x2 + 2.0 * x3, L * (xi - 2.0 * x2 + x3), 3.0 * x2 - 2.0 * x3, L * (x3 - x2)};
-  s.dS = {(-6.0 * xi + 6.0 * x2) / L, 1.0 - 4.0 * xi + 3.0 * x2, (6.0 * xi - 6.0 * x2) / L,
-          3.0 * x2 - 2.0 * xi};
-  s.ddS = {(-6.0 + 12.0 * xi) / (L * L), (-4.0 + 6.0 * xi) / L, (6.0 - 12.0 * xi) / (L * L),
-           (6.0 * xi - 2.0) / L};
+  s.dS = {(-6.0 * xi + 6.0 * x2) / L, 1.0 - 4.0 * xi + 3.0 * x2, (6.0 * xi - 6.0 * x2) / L, 3.0 * x2 - 2.0 * xi};
+  s.ddS = {(-6.0 + 12.0 * xi) / (L * L), (-4.0 + 6.0 * xi) / L, (6.0 - 12.0 * xi) / (L * L), (6.0 * xi - 2.0) / L};
   return s;
 }
 
@@ -129,8 +124,7 @@ using ElementTangent = std::array<double, 144>;
 /// penetration of a cubic changes sign at most 3 times), found on 16 samples
 /// refined by bisection. node_z: the z components of [r_a, r'_a, r_b, r'_b].
 /// Returns the number of pieces.
-inline int seabed_contact_pieces(const ElementProperties& e, double seabed_z_m,
-                                 const std::array<double, 4>& node_z,
+inline int seabed_contact_pieces(const ElementProperties& e, double seabed_z_m, const std::array<double, 4>& node_z,
                                  std::array<std::array<double, 2>, 4>& pieces) {
   const double L = e.length_m;
   // Bounds of the cubic: S1 + S3 = 1 with S1, S3 in [0, 1], and |S2|, |S4| <=
@@ -180,23 +174,21 @@ inline int seabed_contact_pieces(const ElementProperties& e, double seabed_z_m,
 }
 
 /// 4-point Gauss–Legendre rule on [0, 1] for the contact pieces.
-inline constexpr std::array<double, 4> kContactGaussXi = {0.0694318442029737, 0.3300094782075719,
-                                                          0.6699905217924281, 0.9305681557970263};
-inline constexpr std::array<double, 4> kContactGaussW = {0.1739274225687269, 0.3260725774312731,
-                                                         0.3260725774312731, 0.1739274225687269};
+inline constexpr std::array<double, 4> kContactGaussXi = {0.0694318442029737, 0.3300094782075719, 0.6699905217924281,
+                                                          0.9305681557970263};
+inline constexpr std::array<double, 4> kContactGaussW = {0.1739274225687269, 0.3260725774312731, 0.3260725774312731,
+                                                         0.1739274225687269};
 
 template <typename T>
-void add_seabed_contact(const ElementProperties& e, const LoadContext& ctx, const V3<T>* node,
-                        V3<T>* force, ElementTangent* K = nullptr) {
+void add_seabed_contact(const ElementProperties& e, const LoadContext& ctx, const V3<T>* node, V3<T>* force,
+                        ElementTangent* K = nullptr) {
   const double L = e.length_m;
   const double zs = ctx.seabed_z_m;
   std::array<std::array<double, 2>, 4> pieces;
   const int n_pieces = seabed_contact_pieces(
-      e, zs, {value_of(node[0].z), value_of(node[1].z), value_of(node[2].z), value_of(node[3].z)},
-      pieces);
+      e, zs, {value_of(node[0].z), value_of(node[1].z), value_of(node[2].z), value_of(node[3].z)}, pieces);
   for (int c = 0; c < n_pieces; ++c) {
-    const double a = pieces[static_cast<std::size_t>(c)][0],
-                 b = pieces[static_cast<std::size_t>(c)][1];
+    const double a = pieces[static_cast<std::size_t>(c)][0], b = pieces[static_cast<std::size_t>(c)][1];
     for (int gp = 0; gp < 4; ++gp) {
       const double xi = a + (b - a) * kContactGaussXi[gp];
       const ShapeAt sh = shape_at(xi, L);
@@ -221,8 +213,7 @@ void add_seabed_contact(const ElementProperties& e, const LoadContext& ctx, cons
 /// fe_line_statics.hpp). With ctx.drag_jacobian false, a Dual evaluation
 /// returns the drag as a dead load (values only, zero derivatives).
 template <typename T>
-V3<T> drag_load(const ElementProperties& e, const LoadContext& ctx, const V3<T>& r, const V3<T>& a,
-                const T& na) {
+V3<T> drag_load(const ElementProperties& e, const LoadContext& ctx, const V3<T>& r, const V3<T>& a, const T& na) {
   if (!ctx.drag_jacobian && !std::is_same_v<T, double>) {
     const V3<double> rv{value_of(r.x), value_of(r.y), value_of(r.z)};
     const V3<double> av{value_of(a.x), value_of(a.y), value_of(a.z)};
@@ -234,15 +225,14 @@ V3<T> drag_load(const ElementProperties& e, const LoadContext& ctx, const V3<T>&
   const T ut = dot(u, t);
   const V3<T> un = u - ut * t;
   const T abs_ut = value_of(ut) < 0.0 ? T(-ut) : ut;
-  return (e.normal_drag_N_s2_per_m3 * norm_c1(un) * na) * un +
-         (e.tangential_drag_N_s2_per_m3 * abs_ut * ut * na) * t;
+  return (e.normal_drag_N_s2_per_m3 * norm_c1(un) * na) * un + (e.tangential_drag_N_s2_per_m3 * abs_ut * ut * na) * t;
 }
 
 /// Gradient of the strain-energy density per unstretched length at a point
 /// with r' = a, r'' = b (aa = a·a, na = |a|): fa = ∂W/∂r', fb = ∂W/∂r''.
 template <typename T>
-inline void strain_energy_gradient(const ElementProperties& e, const V3<T>& a, const V3<T>& b,
-                                   const T& aa, const T& na, V3<T>& fa, V3<T>& fb) {
+inline void strain_energy_gradient(const ElementProperties& e, const V3<T>& a, const V3<T>& b, const T& aa, const T& na,
+                                   V3<T>& fa, V3<T>& fb) {
   // Axial: N δ|r'| with N = EA (|r'| − 1) (engineering strain, Irvine 1981).
   const T axial = e.EA_N * (na - 1.0) / na;  // N / |r'|
   fa = axial * a;
@@ -307,9 +297,8 @@ using M3 = std::array<std::array<double, 3>, 3>;
 /// The strain-energy gradient (fa = ∂W/∂r', fb = ∂W/∂r'') and Hessian
 /// (Haa = ∂fa/∂a, Hab = ∂fa/∂b, Hbb = ∂fb/∂b; ∂fb/∂a = Habᵀ) at a point with
 /// r' = a, r'' = b (A = a·a, na = |a|); formulas at element_forces_and_tangent.
-inline void strain_energy_hessian(const ElementProperties& e, const V3<double>& a,
-                                  const V3<double>& b, double A, double na, V3<double>& fa,
-                                  V3<double>& fb, M3& Haa, M3& Hab, M3& Hbb) {
+inline void strain_energy_hessian(const ElementProperties& e, const V3<double>& a, const V3<double>& b, double A,
+                                  double na, V3<double>& fa, V3<double>& fb, M3& Haa, M3& Hab, M3& Hbb) {
   const double av[3] = {a.x, a.y, a.z}, bv[3] = {b.x, b.y, b.z};
   const double axial = e.EA_N * (na - 1.0) / na;
   fa = axial * a;
@@ -336,8 +325,8 @@ inline void strain_energy_hessian(const ElementProperties& e, const V3<double>& 
     }
     for (int i = 0; i < 3; ++i) {
       for (int j = 0; j < 3; ++j) {
-        Haa[i][j] += -iA3 * bv[i] * bv[j] - 6.0 * iA4 * u[i] * av[j] - 6.0 * iA4 * av[i] * u[j] +
-                     24.0 * G * iA5 * av[i] * av[j];
+        Haa[i][j] +=
+            -iA3 * bv[i] * bv[j] - 6.0 * iA4 * u[i] * av[j] - 6.0 * iA4 * av[i] * u[j] + 24.0 * G * iA5 * av[i] * av[j];
         Hab[i][j] = iA3 * (2.0 * av[i] * bv[j] - bv[i] * av[j]) - 6.0 * iA4 * av[i] * v[j];
         Hbb[i][j] = -iA3 * av[i] * av[j];
       }
@@ -365,8 +354,8 @@ inline void strain_energy_hessian(const ElementProperties& e, const V3<double>& 
 ///                − 3A⁻⁴(G I + a (2B a − 2C b)ᵀ) + 24 G A⁻⁵ a aᵀ],
 ///   ∂f_a/∂b = EI[A⁻³(2 a bᵀ − b aᵀ − C I) − 6A⁻⁴ a (A b − C a)ᵀ],
 ///   ∂f_b/∂b = EI A⁻³ (A I − a aᵀ),  ∂f_b/∂a = (∂f_a/∂b)ᵀ.
-inline void element_forces_and_tangent(const ElementProperties& e, const LoadContext& ctx,
-                                       const double* q, double* g, ElementTangent& K) {
+inline void element_forces_and_tangent(const ElementProperties& e, const LoadContext& ctx, const double* q, double* g,
+                                       ElementTangent& K) {
   const double L = e.length_m;
   V3<double> node[4];
   for (int k = 0; k < 4; ++k) node[k] = {q[3 * k], q[3 * k + 1], q[3 * k + 2]};

@@ -52,9 +52,9 @@ struct DynamicElementProperties {
 
 /// Seabed parameters of the dynamics beyond the penalty stiffness.
 struct SeabedDynamics {
-  double damping_N_s_per_m2 = 0.0;  ///< per m of line per m/s of vertical velocity, in contact
-  double axial_friction = 0.0;      ///< μ along the line
-  double lateral_friction = 0.0;    ///< μ across the line
+  double damping_N_s_per_m2 = 0.0;          ///< per m of line per m/s of vertical velocity, in contact
+  double axial_friction = 0.0;              ///< μ along the line
+  double lateral_friction = 0.0;            ///< μ across the line
   double friction_velocity_m_per_s = 0.01;  ///< v_c of the linear regularisation, > 0
 };
 
@@ -84,8 +84,8 @@ inline GaussShapes gauss_shapes(double L) {
 }
 
 namespace detail {
-inline void add_outer(ElementMatrix& m, const std::array<double, 4>& su,
-                      const std::array<double, 4>& sv, const double (*p)[3], double scale) {
+inline void add_outer(ElementMatrix& m, const std::array<double, 4>& su, const std::array<double, 4>& sv,
+                      const double (*p)[3], double scale) {
   for (int k = 0; k < 4; ++k) {
     for (int j = 0; j < 4; ++j) {
       const double c = scale * su[static_cast<std::size_t>(k)] * sv[static_cast<std::size_t>(j)];
@@ -108,9 +108,9 @@ struct PointLoad {
   // one and the coefficients on the stretched length.
   double un[3] = {0, 0, 0}, nun = 0.0, ut = 0.0, cn = 0.0, ct = 0.0;
 };
-inline PointLoad point_load(const ElementProperties& e, const DynamicElementProperties& d,
-                            std::size_t gp, const double* a, double na, const double* ad,
-                            const double* rd, const double* rdd, const ElementFluid* fluid) {
+inline PointLoad point_load(const ElementProperties& e, const DynamicElementProperties& d, std::size_t gp,
+                            const double* a, double na, const double* ad, const double* rd, const double* rdd,
+                            const ElementFluid* fluid) {
   PointLoad pl;
   double* t = pl.t;
   const double inv_na = 1.0 / na;
@@ -119,14 +119,12 @@ inline PointLoad point_load(const ElementProperties& e, const DynamicElementProp
   // = (m + m_an) x + (m_at − m_an)(t·x) t (p: distributed load per unstretched length).
   const double mn = d.added_mass_normal_kg_per_m, mt = d.added_mass_tangential_kg_per_m;
   const double t_rdd = t[0] * rdd[0] + t[1] * rdd[1] + t[2] * rdd[2];
-  for (int x = 0; x < 3; ++x)
-    pl.p[x] = -((d.mass_kg_per_m + mn) * rdd[x] + (mt - mn) * t_rdd * t[x]);
+  for (int x = 0; x < 3; ++x) pl.p[x] = -((d.mass_kg_per_m + mn) * rdd[x] + (mt - mn) * t_rdd * t[x]);
   if (fluid != nullptr) {
     const auto& af = fluid->acceleration[gp];
     if (af[0] != 0.0 || af[1] != 0.0 || af[2] != 0.0) {
       const double t_af = t[0] * af[0] + t[1] * af[1] + t[2] * af[2];
-      for (int x = 0; x < 3; ++x)
-        pl.p[x] += (d.displaced_mass_kg_per_m + mn) * af[x] + (mt - mn) * t_af * t[x];
+      for (int x = 0; x < 3; ++x) pl.p[x] += (d.displaced_mass_kg_per_m + mn) * af[x] + (mt - mn) * t_af * t[x];
     }
   }
   // Drag on the relative velocity.
@@ -140,8 +138,7 @@ inline PointLoad point_load(const ElementProperties& e, const DynamicElementProp
     pl.nun = std::sqrt(pl.un[0] * pl.un[0] + pl.un[1] * pl.un[1] + pl.un[2] * pl.un[2]);
     pl.cn = e.normal_drag_N_s2_per_m3 * na;
     pl.ct = e.tangential_drag_N_s2_per_m3 * na;
-    for (int x = 0; x < 3; ++x)
-      pl.p[x] += pl.cn * pl.nun * pl.un[x] + pl.ct * std::abs(pl.ut) * pl.ut * t[x];
+    for (int x = 0; x < 3; ++x) pl.p[x] += pl.cn * pl.nun * pl.un[x] + pl.ct * std::abs(pl.ut) * pl.ut * t[x];
   }
   // Axial damping and force offset act on r' like the tension: −dS_k (N a/|a|).
   const double strain_rate = (a[0] * ad[0] + a[1] * ad[1] + a[2] * ad[2]) * inv_na;
@@ -152,8 +149,8 @@ inline PointLoad point_load(const ElementProperties& e, const DynamicElementProp
 /// Seabed damping and regularised friction at a contact point with contact
 /// force normal_N_per_m, r' = a, ṙ = rd: adds the load to p and, if Cb is
 /// given, writes ∂p/∂ṙ.
-inline void add_seabed_point_load(const SeabedDynamics& bed, double normal_N_per_m, const double* a,
-                                  const double* rd, double* p, double (*Cb)[3]) {
+inline void add_seabed_point_load(const SeabedDynamics& bed, double normal_N_per_m, const double* a, const double* rd,
+                                  double* p, double (*Cb)[3]) {
   p[2] -= bed.damping_N_s_per_m2 * rd[2];
   if (Cb != nullptr) {
     for (int x = 0; x < 3; ++x) {
@@ -187,8 +184,7 @@ inline bool has_bed_dynamics(const LoadContext& ctx, const SeabedDynamics& bed) 
 }
 
 /// r, r' and ṙ at a point of the element.
-inline void point_kinematics(const ShapeAt& sh, const double* q, const double* v, double* r,
-                             double* a, double* rd) {
+inline void point_kinematics(const ShapeAt& sh, const double* q, const double* v, double* r, double* a, double* rd) {
   for (int x = 0; x < 3; ++x) r[x] = a[x] = rd[x] = 0.0;
   for (int k = 0; k < 4; ++k) {
     for (int x = 0; x < 3; ++x) {
@@ -199,8 +195,8 @@ inline void point_kinematics(const ShapeAt& sh, const double* q, const double* v
   }
 }
 /// r', ṙ, ṙ' and r̈ at a point of the element.
-inline void motion_at(const ShapeAt& sh, const double* q, const double* v, const double* acc,
-                      double* a, double* rd, double* ad, double* rdd) {
+inline void motion_at(const ShapeAt& sh, const double* q, const double* v, const double* acc, double* a, double* rd,
+                      double* ad, double* rdd) {
   for (int x = 0; x < 3; ++x) a[x] = rd[x] = ad[x] = rdd[x] = 0.0;
   for (int k = 0; k < 4; ++k) {
     for (int x = 0; x < 3; ++x) {
@@ -218,16 +214,15 @@ inline void motion_at(const ShapeAt& sh, const double* q, const double* v, const
 /// penetrates the seabed: shape functions, quadrature weight (m), penetration
 /// (m), r' and ṙ there. Returns the fraction of the element in contact.
 template <typename F>
-double for_each_contact_point(const ElementProperties& e, const LoadContext& ctx, const double* q,
-                              const double* v, F&& f) {
+double for_each_contact_point(const ElementProperties& e, const LoadContext& ctx, const double* q, const double* v,
+                              F&& f) {
   if (ctx.seabed_stiffness_N_per_m2 <= 0.0) return 0.0;
   const double L = e.length_m;
   std::array<std::array<double, 2>, 4> pieces;
   const int n_pieces = seabed_contact_pieces(e, ctx.seabed_z_m, {q[2], q[5], q[8], q[11]}, pieces);
   double contact = 0.0;
   for (int c = 0; c < n_pieces; ++c) {
-    const double pa = pieces[static_cast<std::size_t>(c)][0],
-                 pb = pieces[static_cast<std::size_t>(c)][1];
+    const double pa = pieces[static_cast<std::size_t>(c)][0], pb = pieces[static_cast<std::size_t>(c)][1];
     contact += pb - pa;
     for (int gp = 0; gp < 4; ++gp) {
       const double xi = pa + (pb - pa) * kContactGaussXi[gp];
@@ -245,11 +240,10 @@ double for_each_contact_point(const ElementProperties& e, const LoadContext& ctx
 /// Adds the dynamic generalised forces to g (12 entries; g accumulates) at
 /// element state q (positions/slopes), q̇ = v and q̈ = acc; fills mats if
 /// given (they accumulate too).
-inline void add_dynamic_element_forces(const ElementProperties& e,
-                                       const DynamicElementProperties& d, const LoadContext& ctx,
-                                       const SeabedDynamics& bed, const ElementFluid& fluid,
-                                       const double* q, const double* v, const double* acc,
-                                       double* g, ElementDynamicMatrices* mats) {
+inline void add_dynamic_element_forces(const ElementProperties& e, const DynamicElementProperties& d,
+                                       const LoadContext& ctx, const SeabedDynamics& bed, const ElementFluid& fluid,
+                                       const double* q, const double* v, const double* acc, double* g,
+                                       ElementDynamicMatrices* mats) {
   const double L = e.length_m;
   const bool drag = e.normal_drag_N_s2_per_m3 > 0.0 || e.tangential_drag_N_s2_per_m3 > 0.0;
   for (std::size_t gp = 0; gp < kGaussXi.size(); ++gp) {
@@ -280,8 +274,7 @@ inline void add_dynamic_element_forces(const ElementProperties& e,
       const std::array<double, 4> S = sh.S, dS = sh.dS;
       detail::add_outer(mats->M, S, S, Mg, wds);
       if (drag) detail::add_outer(mats->C, S, S, Cd, wds);
-      if (d.axial_damping_Ns > 0.0)
-        detail::add_outer(mats->C, dS, dS, Tt, -wds * d.axial_damping_Ns);
+      if (d.axial_damping_Ns > 0.0) detail::add_outer(mats->C, dS, dS, Tt, -wds * d.axial_damping_Ns);
       if (d.axial_force_offset_N[gp] != 0.0) {
         // ∂/∂a of (N_0 a/|a|) = N_0 P_n / |a|, entering g with + sign.
         detail::add_outer(mats->K, dS, dS, Pn, wds * d.axial_force_offset_N[gp] / na);
@@ -291,17 +284,16 @@ inline void add_dynamic_element_forces(const ElementProperties& e,
 
   // Seabed damping and friction on the contact pieces of the penalty spring.
   if (!detail::has_bed_dynamics(ctx, bed)) return;
-  detail::for_each_contact_point(
-      e, ctx, q, v,
-      [&](const ShapeAt& sh, double w, double pen, const double* a, const double* rd) {
-        double p[3] = {0.0, 0.0, 0.0}, Cb[3][3];
-        detail::add_seabed_point_load(bed, ctx.seabed_stiffness_N_per_m2 * pen, a, rd, p,
-                                      mats != nullptr ? Cb : nullptr);
-        for (int k = 0; k < 4; ++k) {
-          for (int x = 0; x < 3; ++x) g[3 * k + x] += w * sh.S[k] * p[x];
-        }
-        if (mats != nullptr) detail::add_outer(mats->C, sh.S, sh.S, Cb, w);
-      });
+  detail::for_each_contact_point(e, ctx, q, v,
+                                 [&](const ShapeAt& sh, double w, double pen, const double* a, const double* rd) {
+                                   double p[3] = {0.0, 0.0, 0.0}, Cb[3][3];
+                                   detail::add_seabed_point_load(bed, ctx.seabed_stiffness_N_per_m2 * pen, a, rd, p,
+                                                                 mats != nullptr ? Cb : nullptr);
+                                   for (int k = 0; k < 4; ++k) {
+                                     for (int x = 0; x < 3; ++x) g[3 * k + x] += w * sh.S[k] * p[x];
+                                   }
+                                   if (mats != nullptr) detail::add_outer(mats->C, sh.S, sh.S, Cb, w);
+                                 });
 }
 
 /// Every generalised force of the dynamics on the 12 DOFs in one pass — the
@@ -313,9 +305,8 @@ inline void add_dynamic_element_forces(const ElementProperties& e,
 /// water), not ctx, whose current is ignored. g is overwritten. Returns the
 /// fraction of the element in contact with the seabed.
 inline double dynamic_element_forces(const ElementProperties& e, const DynamicElementProperties& d,
-                                     const GaussShapes& shapes, const LoadContext& ctx,
-                                     const SeabedDynamics& bed, const ElementFluid* fluid,
-                                     const double* q, const double* v, const double* acc,
+                                     const GaussShapes& shapes, const LoadContext& ctx, const SeabedDynamics& bed,
+                                     const ElementFluid* fluid, const double* q, const double* v, const double* acc,
                                      double* g) {
   const double L = e.length_m;
   const bool bending = e.EI_Nm2 > 0.0;
@@ -335,8 +326,7 @@ inline double dynamic_element_forces(const ElementProperties& e, const DynamicEl
     V3<double> fa, fb;
     strain_energy_gradient(e, av, bv, aa, na, fa, fb);
     const detail::PointLoad pl = detail::point_load(e, d, gp, a, na, ad, rd, rdd, fluid);
-    const double fat[3] = {fa.x + pl.n_axial * pl.t[0], fa.y + pl.n_axial * pl.t[1],
-                           fa.z + pl.n_axial * pl.t[2]};
+    const double fat[3] = {fa.x + pl.n_axial * pl.t[0], fa.y + pl.n_axial * pl.t[1], fa.z + pl.n_axial * pl.t[2]};
     const double fbt[3] = {fb.x, fb.y, fb.z};
     const double p[3] = {pl.p[0], pl.p[1], pl.p[2] - e.weight_N_per_m};
     for (int k = 0; k < 4; ++k) {
@@ -348,8 +338,7 @@ inline double dynamic_element_forces(const ElementProperties& e, const DynamicEl
   // Seabed penalty (as add_seabed_contact), damping and friction.
   const bool bed_dynamics = detail::has_bed_dynamics(ctx, bed);
   return detail::for_each_contact_point(
-      e, ctx, q, v,
-      [&](const ShapeAt& sh, double w, double pen, const double* a, const double* rd) {
+      e, ctx, q, v, [&](const ShapeAt& sh, double w, double pen, const double* a, const double* rd) {
         const double normal_N_per_m = ctx.seabed_stiffness_N_per_m2 * pen;
         double p[3] = {0.0, 0.0, normal_N_per_m};
         if (bed_dynamics) detail::add_seabed_point_load(bed, normal_N_per_m, a, rd, p, nullptr);
@@ -370,9 +359,9 @@ inline double dynamic_element_forces(const ElementProperties& e, const DynamicEl
 /// symmetric. Returns the fraction of the element in seabed contact, as
 /// dynamic_element_forces.
 inline double element_newton_matrices(const ElementProperties& e, const DynamicElementProperties& d,
-                                      const GaussShapes& shapes, const LoadContext& ctx,
-                                      const SeabedDynamics& bed, const ElementFluid* fluid,
-                                      const double* q, const double* v, ElementDynamicMatrices& m) {
+                                      const GaussShapes& shapes, const LoadContext& ctx, const SeabedDynamics& bed,
+                                      const ElementFluid* fluid, const double* q, const double* v,
+                                      ElementDynamicMatrices& m) {
   const double L = e.length_m;
   const bool bending = e.EI_Nm2 > 0.0;
   const bool drag = e.normal_drag_N_s2_per_m3 > 0.0 || e.tangential_drag_N_s2_per_m3 > 0.0;
@@ -382,8 +371,8 @@ inline double element_newton_matrices(const ElementProperties& e, const DynamicE
   m.C.fill(0.0);
   m.K.fill(0.0);
   // m(k, j) += c su_k sv_j P for the 3×3 blocks (k, j).
-  auto add_pair = [](ElementMatrix& mat, const std::array<double, 4>& su,
-                     const std::array<double, 4>& sv, const M3& P, double c) {
+  auto add_pair = [](ElementMatrix& mat, const std::array<double, 4>& su, const std::array<double, 4>& sv, const M3& P,
+                     double c) {
     for (std::size_t k = 0; k < 4; ++k) {
       for (std::size_t j = 0; j < 4; ++j) {
         const double ckj = c * su[k] * sv[j];
@@ -446,8 +435,7 @@ inline double element_newton_matrices(const ElementProperties& e, const DynamicE
 
   // Seabed penalty (K), damping and friction (C) at the contact points.
   return detail::for_each_contact_point(
-      e, ctx, q, v,
-      [&](const ShapeAt& sh, double w, double pen, const double* a, const double* rd) {
+      e, ctx, q, v, [&](const ShapeAt& sh, double w, double pen, const double* a, const double* rd) {
         double p[3] = {0.0, 0.0, 0.0}, cb[3][3];
         detail::add_seabed_point_load(bed, ctx.seabed_stiffness_N_per_m2 * pen, a, rd, p, cb);
         M3 Cb, Kb{};

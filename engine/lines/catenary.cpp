@@ -26,12 +26,9 @@ namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 
-[[noreturn]] void fail(const std::string& message) {
-  throw SolverError("catenary: " + message);
-}
+[[noreturn]] void fail(const std::string& message) { throw SolverError("catenary: " + message); }
 
-LineView check_inputs(const CatenaryLine& line, const CatenaryGeometry& g,
-                      const CatenaryOptions& o) {
+LineView check_inputs(const CatenaryLine& line, const CatenaryGeometry& g, const CatenaryOptions& o) {
   if (!(!line.segments.empty())) fail("segments: at least one segment is required");
   const std::size_t n = line.segments.size();
   LineView view;
@@ -41,16 +38,15 @@ LineView check_inputs(const CatenaryLine& line, const CatenaryGeometry& g,
     if (!(std::isfinite(s.length_m) && s.length_m > 0.0))
       fail(fmt::format("segments[{}].length_m: must be > 0, got {} m", i, s.length_m));
     if (!(std::isfinite(s.weight_N_per_m)))
-      fail(fmt::format("segments[{}].weight_N_per_m: must be finite, got {} N/m", i,
-                       s.weight_N_per_m));
+      fail(fmt::format("segments[{}].weight_N_per_m: must be finite, got {} N/m", i, s.weight_N_per_m));
     if (!(std::isfinite(s.EA_N) && s.EA_N > 0.0))
       fail(fmt::format("segments[{}].EA_N: must be > 0, got {} N", i, s.EA_N));
     view.total_weight_N += s.weight_N_per_m * s.length_m;
     view.total_length_m += s.length_m;
   }
   if (!(line.joint_load_N.empty() || line.joint_load_N.size() == n - 1))
-    fail(fmt::format("joint_load_N: must be empty or have {} entries (one per joint), got {}",
-                     n - 1, line.joint_load_N.size()));
+    fail(fmt::format("joint_load_N: must be empty or have {} entries (one per joint), got {}", n - 1,
+                     line.joint_load_N.size()));
   for (std::size_t i = 0; i < line.joint_load_N.size(); ++i) {
     if (!(std::isfinite(line.joint_load_N[i])))
       fail(fmt::format("joint_load_N[{}]: must be finite, got {} N", i, line.joint_load_N[i]));
@@ -63,17 +59,14 @@ LineView check_inputs(const CatenaryLine& line, const CatenaryGeometry& g,
   if (!(std::isfinite(g.vertical_span_m)))
     fail(fmt::format("vertical_span_m: must be finite, got {} m", g.vertical_span_m));
   if (!(std::isfinite(g.anchor_height_above_seabed_m) && g.anchor_height_above_seabed_m >= 0.0))
-    fail(fmt::format("anchor_height_above_seabed_m: must be >= 0, got {} m",
-                     g.anchor_height_above_seabed_m));
+    fail(fmt::format("anchor_height_above_seabed_m: must be >= 0, got {} m", g.anchor_height_above_seabed_m));
   if (!(std::isfinite(o.tolerance_m) && o.tolerance_m > 0.0))
     fail(fmt::format("options.tolerance_m: must be > 0, got {} m", o.tolerance_m));
-  if (!(o.max_iterations > 0))
-    fail(fmt::format("options.max_iterations: must be > 0, got {}", o.max_iterations));
+  if (!(o.max_iterations > 0)) fail(fmt::format("options.max_iterations: must be > 0, got {}", o.max_iterations));
   if (!(std::isfinite(o.max_strain) && o.max_strain > 0.0))
     fail(fmt::format("options.max_strain: must be > 0, got {}", o.max_strain));
   if (!(o.profile_points_per_segment >= 0))
-    fail(fmt::format("options.profile_points_per_segment: must be >= 0, got {}",
-                     o.profile_points_per_segment));
+    fail(fmt::format("options.profile_points_per_segment: must be >= 0, got {}", o.profile_points_per_segment));
   view.anchor_on_seabed = g.anchor_height_above_seabed_m == 0.0;
   if (!(!view.anchor_on_seabed || g.vertical_span_m > 0.0))
     fail(
@@ -82,11 +75,10 @@ LineView check_inputs(const CatenaryLine& line, const CatenaryGeometry& g,
                     g.vertical_span_m));
   const double chord_m = std::hypot(g.horizontal_span_m, g.vertical_span_m);
   if (chord_m >= view.total_length_m * (1.0 + o.max_strain)) {
-    throw SolverError(fmt::format(
-        "catenary: line too short for its span: chord {:.3f} m, unstretched length {:.3f} m, "
-        "needs mean strain {:.2f} % (limit options.max_strain = {:.2f} %)",
-        chord_m, view.total_length_m, 100.0 * (chord_m / view.total_length_m - 1.0),
-        100.0 * o.max_strain));
+    throw SolverError(
+        fmt::format("catenary: line too short for its span: chord {:.3f} m, unstretched length {:.3f} m, "
+                    "needs mean strain {:.2f} % (limit options.max_strain = {:.2f} %)",
+                    chord_m, view.total_length_m, 100.0 * (chord_m / view.total_length_m - 1.0), 100.0 * o.max_strain));
   }
   return view;
 }
@@ -145,14 +137,11 @@ bool usable(const Iterate& it) {
   return it.e.infeasible == Infeasibility::none && std::isfinite(it.rx) && std::isfinite(it.rz);
 }
 
-bool closed(const Iterate& it, double tol) {
-  return std::abs(it.rx) <= tol && std::abs(it.rz) <= tol;
-}
+bool closed(const Iterate& it, double tol) { return std::abs(it.rx) <= tol && std::abs(it.rz) <= tol; }
 
 /// Newton on (H, V_F) with the analytic Jacobian and a backtracking (Armijo)
 /// line search on the closure norm.
-Attempt newton(const LineView& view, const CatenaryGeometry& g, double H0, double V0, double tol,
-               int max_iterations) {
+Attempt newton(const LineView& view, const CatenaryGeometry& g, double H0, double V0, double tol, int max_iterations) {
   constexpr double kCollapsedH = 1e-12;  // H below this fraction of the vertical forces
   constexpr double kMinFraction = 0.05;  // H may fall to 5 % of its value in one step
   constexpr double kArmijo = 1e-4;
@@ -212,8 +201,8 @@ Attempt newton(const LineView& view, const CatenaryGeometry& g, double H0, doubl
 // globally convergent for the monotone spans of a catenary.
 
 /// V_F closing z at fixed H; z is increasing in V_F. Infeasible points lie at low V_F.
-bool solve_V_at_H(const LineView& view, const CatenaryGeometry& g, double H, double& V, double tol,
-                  Iterate& out, int& evaluations, Attempt& record) {
+bool solve_V_at_H(const LineView& view, const CatenaryGeometry& g, double H, double& V, double tol, Iterate& out,
+                  int& evaluations, Attempt& record) {
   const double step0 = std::max({std::abs(view.total_weight_N), H, 1.0});
   auto f_at = [&](double v, Iterate& it) {
     ++evaluations;
@@ -255,8 +244,7 @@ bool solve_V_at_H(const LineView& view, const CatenaryGeometry& g, double H, dou
     const double fv = f_at(v, it);
     if (std::isfinite(fv) && std::abs(fv) <= 0.1 * tol) break;
     (fv > 0.0 ? hi : lo) = v;
-    double next = std::isfinite(fv) && it.e.jacobian(1, 1) > 0.0 ? v - fv / it.e.jacobian(1, 1)
-                                                                 : 0.5 * (lo + hi);
+    double next = std::isfinite(fv) && it.e.jacobian(1, 1) > 0.0 ? v - fv / it.e.jacobian(1, 1) : 0.5 * (lo + hi);
     if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
     if (hi - lo <= 4.0 * kEps * std::max(std::abs(lo), std::abs(hi))) break;
     v = next;
@@ -267,8 +255,8 @@ bool solve_V_at_H(const LineView& view, const CatenaryGeometry& g, double H, dou
   return true;
 }
 
-Attempt bracketing_fallback(const LineView& view, const CatenaryGeometry& g, double H0, double V0,
-                            double tol, int max_iterations) {
+Attempt bracketing_fallback(const LineView& view, const CatenaryGeometry& g, double H0, double V0, double tol,
+                            int max_iterations) {
   Attempt a;
   double V = V0;
   int evaluations = 0;
@@ -397,14 +385,13 @@ struct Progress {
   int iterations = 0;
   bool converged = false;
   bool have_best = false;
-  Iterate best;  // converged iterate, else the smallest closure residual seen
+  Iterate best;                                    // converged iterate, else the smallest closure residual seen
   Infeasibility infeasible = Infeasibility::none;  // only the model limits (buoyant on seabed)
   int infeasible_index = -1;
 
   void record(const Attempt& a) {
     iterations += a.iterations;
-    if (a.infeasible == Infeasibility::buoyant_segment_on_seabed ||
-        a.infeasible == Infeasibility::buoy_on_seabed) {
+    if (a.infeasible == Infeasibility::buoyant_segment_on_seabed || a.infeasible == Infeasibility::buoy_on_seabed) {
       infeasible = a.infeasible;
       infeasible_index = a.infeasible_index;
     }
@@ -420,21 +407,19 @@ struct Progress {
 }  // namespace
 
 CatenarySolution solve_catenary(const CatenaryLine& line, const CatenaryGeometry& geometry,
-                                const CatenaryOptions& options,
-                                const std::optional<CatenaryGuess>& warm_start) {
+                                const CatenaryOptions& options, const std::optional<CatenaryGuess>& warm_start) {
   const LineView view = check_inputs(line, geometry, options);
   // Closure tolerance: the requested one, but never below the round-off floor of
   // summing spans of the line's size (a few ulps of the largest length involved).
-  const double scale_m =
-      view.total_length_m + geometry.horizontal_span_m + std::abs(geometry.vertical_span_m);
+  const double scale_m = view.total_length_m + geometry.horizontal_span_m + std::abs(geometry.vertical_span_m);
   const double tol = std::max(options.tolerance_m, 64.0 * kEps * scale_m);
 
   Progress progress;
   // Warm start first: it is usually 1-3 Newton steps from the answer.
-  if (warm_start && std::isfinite(warm_start->horizontal_N) &&
-      std::isfinite(warm_start->vertical_N) && warm_start->horizontal_N > 0.0) {
-    progress.record(newton(view, geometry, warm_start->horizontal_N, warm_start->vertical_N, tol,
-                           options.max_iterations));
+  if (warm_start && std::isfinite(warm_start->horizontal_N) && std::isfinite(warm_start->vertical_N) &&
+      warm_start->horizontal_N > 0.0) {
+    progress.record(
+        newton(view, geometry, warm_start->horizontal_N, warm_start->vertical_N, tol, options.max_iterations));
   }
   CatenarySolution solution;
   if (!progress.converged && detail::solve_vertical(view, geometry, tol, solution)) {
@@ -459,8 +444,7 @@ CatenarySolution solve_catenary(const CatenaryLine& line, const CatenaryGeometry
     progress.record(newton(view, geometry, start.H, start.V, tol, options.max_iterations));
     if (!progress.converged) {
       // Newton stalled: bracketing fallback, then Newton to polish its answer.
-      const Attempt fb =
-          bracketing_fallback(view, geometry, start.H, start.V, tol, options.max_iterations);
+      const Attempt fb = bracketing_fallback(view, geometry, start.H, start.V, tol, options.max_iterations);
       progress.record(fb);
       if (usable(fb.it) && !progress.converged) {
         progress.record(newton(view, geometry, fb.it.H, fb.it.V, tol, options.max_iterations));
@@ -468,21 +452,18 @@ CatenarySolution solve_catenary(const CatenaryLine& line, const CatenaryGeometry
     }
   }
   if (!progress.converged) {
-    const double residual =
-        progress.have_best ? progress.best.norm() : std::numeric_limits<double>::infinity();
+    const double residual = progress.have_best ? progress.best.norm() : std::numeric_limits<double>::infinity();
     const SolverDiagnostics diagnostics{progress.iterations, residual, "m"};
     if (progress.infeasible != Infeasibility::none) {
-      throw SolverError(
-          "catenary: " + infeasibility_text(line, progress.infeasible, progress.infeasible_index),
-          diagnostics);
+      throw SolverError("catenary: " + infeasibility_text(line, progress.infeasible, progress.infeasible_index),
+                        diagnostics);
     }
-    throw SolverError(
-        fmt::format("catenary: no convergence after {} iterations, span closure residual {:.3e} m "
-                    "(tolerance {:.1e} m); XF = {} m, ZF = {} m, unstretched length {} m; check "
-                    "the line data, raise options.max_iterations or give a warm start",
-                    progress.iterations, residual, tol, geometry.horizontal_span_m,
-                    geometry.vertical_span_m, view.total_length_m),
-        diagnostics);
+    throw SolverError(fmt::format("catenary: no convergence after {} iterations, span closure residual {:.3e} m "
+                                  "(tolerance {:.1e} m); XF = {} m, ZF = {} m, unstretched length {} m; check "
+                                  "the line data, raise options.max_iterations or give a warm start",
+                                  progress.iterations, residual, tol, geometry.horizontal_span_m,
+                                  geometry.vertical_span_m, view.total_length_m),
+                      diagnostics);
   }
   solution = from_iterate(progress.best, progress.iterations);
   if (!solution.tangent_stiffness.allFinite()) solution.tangent_stiffness.setZero();

@@ -85,8 +85,8 @@ struct CatenaryProfilePoint {
   /// (horizontal_N = H on the suspended part; vertical_N = 0 on the seabed).
   double horizontal_N = 0.0;
   double vertical_N = 0.0;
-  int segment = 0;            ///< index of the segment the point belongs to
-  bool on_seabed = false;     ///< the point rests on the seabed
+  int segment = 0;         ///< index of the segment the point belongs to
+  bool on_seabed = false;  ///< the point rests on the seabed
 };
 
 struct CatenarySolution {
@@ -94,16 +94,16 @@ struct CatenarySolution {
   double fairlead_horizontal_N = 0.0;  ///< H_F, pulls the fairlead towards the anchor
   double fairlead_vertical_N = 0.0;    ///< V_F, pulls the fairlead down (< 0: up)
   double fairlead_tension_N = 0.0;
-  double anchor_horizontal_N = 0.0;    ///< H_A, pulls the anchor towards the fairlead
-  double anchor_vertical_N = 0.0;      ///< V_A, pulls the anchor up (< 0: down)
+  double anchor_horizontal_N = 0.0;  ///< H_A, pulls the anchor towards the fairlead
+  double anchor_vertical_N = 0.0;    ///< V_A, pulls the anchor up (< 0: down)
   double anchor_tension_N = 0.0;
-  double laid_length_m = 0.0;          ///< unstretched length resting on the seabed
-  double touchdown_x_m = 0.0;          ///< horizontal distance anchor -> touchdown point (0 if none)
+  double laid_length_m = 0.0;  ///< unstretched length resting on the seabed
+  double touchdown_x_m = 0.0;  ///< horizontal distance anchor -> touchdown point (0 if none)
   CatenaryRegime regime = CatenaryRegime::suspended;
   /// d(H_F, V_F)/d(XF, ZF): the line's tangent stiffness in its plane, N/m.
   Eigen::Matrix2d tangent_stiffness = Eigen::Matrix2d::Zero();
   int iterations = 0;
-  double residual_m = 0.0;             ///< final closure error (norm of the span errors), m
+  double residual_m = 0.0;  ///< final closure error (norm of the span errors), m
   std::vector<CatenaryProfilePoint> profile;
 };
 

@@ -24,8 +24,8 @@ double laid_tension_integral(double T_top, double d, double mu_w) {
 
 }  // namespace
 
-void fill_catenary_profile(const CatenaryLine& line, const CatenaryGeometry& geometry,
-                           int points_per_segment, CatenarySolution& solution) {
+void fill_catenary_profile(const CatenaryLine& line, const CatenaryGeometry& geometry, int points_per_segment,
+                           CatenarySolution& solution) {
   detail::LineView view;
   view.line = &line;
   view.anchor_on_seabed = geometry.anchor_height_above_seabed_m == 0.0;
@@ -82,8 +82,7 @@ void fill_catenary_profile(const CatenaryLine& line, const CatenaryGeometry& geo
     const double w = seg.weight_N_per_m, EA = seg.EA_N, mu_w = mu * w;
     const double ell = laid[i];
     // Laid piece: horizontal length of the whole piece.
-    const double x_laid_piece =
-        slack ? ell * slack_scale : ell + laid_tension_integral(T_top[i], ell, mu_w) / EA;
+    const double x_laid_piece = slack ? ell * slack_scale : ell + laid_tension_integral(T_top[i], ell, mu_w) / EA;
     const bool td_piece = contact && ell > 0.0 && ell < seg.length_m;
     const double V_susp_bottom = td_piece ? 0.0 : V_top[i] - w * seg.length_m;
 
@@ -103,11 +102,10 @@ void fill_catenary_profile(const CatenaryLine& line, const CatenaryGeometry& geo
       if (at <= ell && ell > 0.0) {
         const double d = ell - at;  // distance below the laid piece's top
         const double T = std::max(T_top[i] - mu_w * d, 0.0);
-        p.x_m = slack ? x_bottom + at * slack_scale
-                      : x_bottom + at +
-                            (laid_tension_integral(T_top[i], ell, mu_w) -
-                             laid_tension_integral(T_top[i], d, mu_w)) /
-                                EA;
+        p.x_m = slack
+                    ? x_bottom + at * slack_scale
+                    : x_bottom + at +
+                          (laid_tension_integral(T_top[i], ell, mu_w) - laid_tension_integral(T_top[i], d, mu_w)) / EA;
         p.z_m = z_bottom;
         p.tension_N = p.horizontal_N = T;
         p.on_seabed = true;
@@ -135,8 +133,7 @@ void fill_catenary_profile(const CatenaryLine& line, const CatenaryGeometry& geo
     double dx = 0.0, dz = 0.0;
     if (up_total > 0.0) {
       if (H > 0.0) {
-        const detail::PieceSpans sp =
-            detail::suspended_piece(H, V_susp_bottom + w * up_total, up_total, w, EA);
+        const detail::PieceSpans sp = detail::suspended_piece(H, V_susp_bottom + w * up_total, up_total, w, EA);
         dx = sp.x_m;
         dz = sp.z_m;
       } else {

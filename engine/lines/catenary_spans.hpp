@@ -19,13 +19,9 @@
 namespace spiral::engine::catenary_detail {
 
 /// log1p(r)/r, continuous at r = 0.
-inline double log1p_over(double r) {
-  return std::abs(r) < 1e-8 ? 1.0 - 0.5 * r : std::log1p(r) / r;
-}
+inline double log1p_over(double r) { return std::abs(r) < 1e-8 ? 1.0 - 0.5 * r : std::log1p(r) / r; }
 /// sinh(u)/u, continuous at u = 0.
-inline double sinh_over(double u) {
-  return std::abs(u) < 1e-5 ? 1.0 + u * u / 6.0 : std::sinh(u) / u;
-}
+inline double sinh_over(double u) { return std::abs(u) < 1e-5 ? 1.0 + u * u / 6.0 : std::sinh(u) / u; }
 
 /// Spans of one piece and their partial derivatives with respect to the
 /// horizontal force H, the vertical force at the piece's top V_top, and the
@@ -145,9 +141,7 @@ struct LineView {
   bool anchor_on_seabed = true;
   double total_weight_N = 0.0;  // sum of w L and joint loads
   double total_length_m = 0.0;
-  double joint_load(std::size_t i) const {
-    return line->joint_load_N.empty() ? 0.0 : line->joint_load_N[i];
-  }
+  double joint_load(std::size_t i) const { return line->joint_load_N.empty() ? 0.0 : line->joint_load_N[i]; }
 };
 
 /// x, z and their Jacobian at (H, V_F); H > 0. No allocation.
@@ -157,13 +151,12 @@ SpanEvaluation evaluate_spans(const LineView& view, double H, double V_F);
 /// the rest on the seabed (anchor on the seabed, XF <= laid length), or, for
 /// XF <= tol, a straight vertical line taut along its whole length. Returns false
 /// if neither applies; throws SolverError for XF = 0 with a line that would fold.
-bool solve_vertical(const LineView& view, const CatenaryGeometry& g, double tol,
-                    CatenarySolution& solution);
+bool solve_vertical(const LineView& view, const CatenaryGeometry& g, double tol, CatenarySolution& solution);
 
 }  // namespace spiral::engine::catenary_detail
 
 namespace spiral::engine {
 /// Fills solution.profile for a solved line (catenary_profile.cpp).
-void fill_catenary_profile(const CatenaryLine& line, const CatenaryGeometry& geometry,
-                           int points_per_segment, CatenarySolution& solution);
+void fill_catenary_profile(const CatenaryLine& line, const CatenaryGeometry& geometry, int points_per_segment,
+                           CatenarySolution& solution);
 }  // namespace spiral::engine

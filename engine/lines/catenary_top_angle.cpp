@@ -31,21 +31,17 @@ constexpr double kScanStartFraction = 1e-12;
 // Bisection/Newton steps on the bracket: enough to reach round-off of V_F.
 constexpr int kMaxRootIterations = 200;
 
-[[noreturn]] void fail(const std::string& message) {
-  throw SolverError("catenary (top angle): " + message);
-}
+[[noreturn]] void fail(const std::string& message) { throw SolverError("catenary (top angle): " + message); }
 
 }  // namespace
 
-TopAngleCatenary solve_catenary_for_top_angle(const CatenaryLine& line, double vertical_span_m,
-                                              double top_angle_rad) {
+TopAngleCatenary solve_catenary_for_top_angle(const CatenaryLine& line, double vertical_span_m, double top_angle_rad) {
   if (line.segments.empty()) fail("segments: at least one segment is required");
   if (!(std::isfinite(vertical_span_m) && vertical_span_m > 0.0)) {
     fail(fmt::format("vertical_span_m: must be > 0, got {} m", vertical_span_m));
   }
   if (!(top_angle_rad > 0.0 && top_angle_rad < 0.5 * std::numbers::pi)) {
-    fail(fmt::format("top angle: must be in (0, 90) deg from vertical, got {} deg",
-                     top_angle_rad * kRadToDeg));
+    fail(fmt::format("top angle: must be in (0, 90) deg from vertical, got {} deg", top_angle_rad * kRadToDeg));
   }
   if (line.seabed_friction != 0.0) {
     fail(fmt::format("seabed_friction: must be 0 for the placement, got {}", line.seabed_friction));
@@ -56,8 +52,8 @@ TopAngleCatenary solve_catenary_for_top_angle(const CatenaryLine& line, double v
   double min_EA_N = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < line.segments.size(); ++i) {
     const CatenarySegment& s = line.segments[i];
-    if (!(std::isfinite(s.length_m) && s.length_m > 0.0 && std::isfinite(s.weight_N_per_m) &&
-          std::isfinite(s.EA_N) && s.EA_N > 0.0)) {
+    if (!(std::isfinite(s.length_m) && s.length_m > 0.0 && std::isfinite(s.weight_N_per_m) && std::isfinite(s.EA_N) &&
+          s.EA_N > 0.0)) {
       fail(fmt::format("segments[{}]: needs length_m > 0, finite weight_N_per_m and EA_N > 0", i));
     }
     view.total_weight_N += s.weight_N_per_m * s.length_m;
@@ -91,16 +87,14 @@ TopAngleCatenary solve_catenary_for_top_angle(const CatenaryLine& line, double v
   const auto closure = [&](double V, double& slope) {
     ++result.evaluations;
     const detail::SpanEvaluation e = detail::evaluate_spans(view, V * tan_theta, V);
-    if (e.infeasible != detail::Infeasibility::none)
-      return std::numeric_limits<double>::quiet_NaN();
+    if (e.infeasible != detail::Infeasibility::none) return std::numeric_limits<double>::quiet_NaN();
     slope = e.jacobian(1, 0) * tan_theta + e.jacobian(1, 1);
     return e.z_m - vertical_span_m;
   };
 
   // Scan upwards from the feasibility edge for the first sign change.
   const double d_first = kScanStartFraction * scale;
-  const int points =
-      1 + static_cast<int>(std::ceil(kScanPointsPerDecade * std::log10((V_max - V_min) / d_first)));
+  const int points = 1 + static_cast<int>(std::ceil(kScanPointsPerDecade * std::log10((V_max - V_min) / d_first)));
   const double ratio = std::pow((V_max - V_min) / d_first, 1.0 / (points - 1));
   double slope = 0.0;
   double lo = V_min + d_first;
@@ -125,23 +119,22 @@ TopAngleCatenary solve_catenary_for_top_angle(const CatenaryLine& line, double v
     }
   }
   if (!bracketed && g_edge > 0.0) {
-    fail(fmt::format(
-        "for every V_F in [{:.4g}, {:.4g}] N the line rises higher than its top {:.2f} m above the "
-        "foot (at the lowest V_F, with the whole non-buoyant run from the foot laid: {:.2f} m): it "
-        "is too long or too buoyant for this span, a buoyant segment would have to lie on the "
-        "seabed; increase the top angle ({:.2f} deg) or shorten the segments above the bottom run",
-        V_min, V_max, vertical_span_m, g_edge + vertical_span_m, top_angle_rad * kRadToDeg));
+    fail(
+        fmt::format("for every V_F in [{:.4g}, {:.4g}] N the line rises higher than its top {:.2f} m above the "
+                    "foot (at the lowest V_F, with the whole non-buoyant run from the foot laid: {:.2f} m): it "
+                    "is too long or too buoyant for this span, a buoyant segment would have to lie on the "
+                    "seabed; increase the top angle ({:.2f} deg) or shorten the segments above the bottom run",
+                    V_min, V_max, vertical_span_m, g_edge + vertical_span_m, top_angle_rad * kRadToDeg));
   }
   if (!bracketed) {
-    fail(fmt::format(
-        "no bottom-end position gives the top angle {:.2f} deg: over V_F in [{:.4g}, {:.4g}] N the "
-        "line never reaches the top {:.2f} m above the seabed (too short for this angle)",
-        top_angle_rad * kRadToDeg, V_min, V_max, vertical_span_m));
+    fail(
+        fmt::format("no bottom-end position gives the top angle {:.2f} deg: over V_F in [{:.4g}, {:.4g}] N the "
+                    "line never reaches the top {:.2f} m above the seabed (too short for this angle)",
+                    top_angle_rad * kRadToDeg, V_min, V_max, vertical_span_m));
   }
   // Newton inside the bracket [lo, hi] (g changes sign across it), bisection
   // where a Newton step would leave it.
-  const double tolerance_m =
-      64.0 * std::numeric_limits<double>::epsilon() * (view.total_length_m + vertical_span_m);
+  const double tolerance_m = 64.0 * std::numeric_limits<double>::epsilon() * (view.total_length_m + vertical_span_m);
   const bool rising = g_hi > g_lo;
   double V = g_lo == 0.0 ? lo : lo - g_lo * (hi - lo) / (g_hi - g_lo);
   for (int k = 0; k < kMaxRootIterations; ++k) {

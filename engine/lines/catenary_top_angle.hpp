@@ -31,9 +31,8 @@ struct TopAngleCatenary {
   double horizontal_span_m = 0.0;      ///< XF, bottom end -> top end
   double fairlead_horizontal_N = 0.0;  ///< H at the top
   double fairlead_vertical_N = 0.0;    ///< V_F at the top (> 0 pulls the top down)
-  double laid_length_m =
-      0.0;              ///< unstretched length on the seabed (0: the line meets it at an angle)
-  int evaluations = 0;  ///< span evaluations spent
+  double laid_length_m = 0.0;          ///< unstretched length on the seabed (0: the line meets it at an angle)
+  int evaluations = 0;                 ///< span evaluations spent
 };
 
 /// The catenary through a top point `vertical_span_m` (> 0) above a seabed
@@ -45,7 +44,6 @@ struct TopAngleCatenary {
 /// returned. Throws SolverError (with the range of V_F searched) when no
 /// solution exists: the line is too short for the angle, or would need a
 /// buoyant segment on the seabed.
-TopAngleCatenary solve_catenary_for_top_angle(const CatenaryLine& line, double vertical_span_m,
-                                              double top_angle_rad);
+TopAngleCatenary solve_catenary_for_top_angle(const CatenaryLine& line, double vertical_span_m, double top_angle_rad);
 
 }  // namespace spiral::engine

@@ -72,8 +72,7 @@ Hanging hanging_line(const LineView& view, double V_F) {
 /// V_F of the vertical hanging line with a laid part closing ZF (bracketed
 /// Newton on the monotone z(V_F) over (0, W_total)). Returns false when no
 /// such configuration exists.
-bool solve_hanging(const LineView& view, double ZF, double tol, double& V_F, Hanging& h,
-                   int& iterations) {
+bool solve_hanging(const LineView& view, double ZF, double tol, double& V_F, Hanging& h, int& iterations) {
   double lo = 0.0, hi = view.total_weight_N;
   if (hi <= 0.0) return false;
   const Hanging top = hanging_line(view, hi);
@@ -111,8 +110,7 @@ double vertical_compliance_integral(double Vt, double L, double w) {
 /// or a straight vertical line for XF = 0. Returns false if neither applies.
 }  // namespace
 
-bool solve_vertical(const LineView& view, const CatenaryGeometry& g, double tol,
-                    CatenarySolution& s) {
+bool solve_vertical(const LineView& view, const CatenaryGeometry& g, double tol, CatenarySolution& s) {
   const double XF = g.horizontal_span_m, ZF = g.vertical_span_m;
   if (view.anchor_on_seabed) {
     double V = 0.0;
@@ -149,14 +147,14 @@ bool solve_vertical(const LineView& view, const CatenaryGeometry& g, double tol,
   for (int i = n - 1; i >= 0; --i) {
     const double Vt = V_F - above, Vb = Vt - seg[i].weight_N_per_m * seg[i].length_m;
     if (Vt < 0.0 || Vb < 0.0) {
-      throw SolverError(fmt::format(
-          "catenary: zero horizontal span with a line that is not taut along its whole length "
-          "(vertical force {:.6g} N at the bottom of segments[{}]): the line would fold on "
-          "itself; give a horizontal span > 0",
-          std::min(Vt, Vb), i));
+      throw SolverError(
+          fmt::format("catenary: zero horizontal span with a line that is not taut along its whole length "
+                      "(vertical force {:.6g} N at the bottom of segments[{}]): the line would fold on "
+                      "itself; give a horizontal span > 0",
+                      std::min(Vt, Vb), i));
     }
-    compliance_x += vertical_compliance_integral(Vt, seg[i].length_m, seg[i].weight_N_per_m) +
-                    seg[i].length_m / seg[i].EA_N;
+    compliance_x +=
+        vertical_compliance_integral(Vt, seg[i].length_m, seg[i].weight_N_per_m) + seg[i].length_m / seg[i].EA_N;
     above += seg[i].weight_N_per_m * seg[i].length_m;
     if (i > 0) above += view.joint_load(i - 1);
   }

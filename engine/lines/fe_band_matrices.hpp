@@ -187,5 +187,4 @@ class NewtonMatrix {
   bool cholesky_ = true;
 };
 
-
 }  // namespace spiral::engine::fe_detail

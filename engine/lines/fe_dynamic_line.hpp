@@ -33,7 +33,6 @@ namespace spiral::engine::fe_detail {
 // (docs/decisions/fe-line-dynamics-integrator.md).
 constexpr double kContactChangeForRefresh = 0.1;
 
-
 [[noreturn]] inline void invalid_dynamics(const std::string& what) {
   throw SolverError("FE line dynamics: invalid input: " + what);
 }
@@ -43,10 +42,9 @@ struct DynamicLine final : ImplicitSystem {
   std::vector<ancf::DynamicElementProperties> dyn;
   std::vector<std::array<int, kElementDofs>> element_dofs;  // global DOF of each element DOF
   std::vector<ancf::GaussShapes> shapes;                    // element lengths are fixed
-  std::vector<std::array<double, 2>>
-      end_force_offset_N;         // N_0 at ξ = 0, 1 per element (node tensions)
-  ancf::LoadContext static_ctx;   // no current: the drag is dynamic
-  ancf::LoadContext current_ctx;  // for current_at
+  std::vector<std::array<double, 2>> end_force_offset_N;    // N_0 at ξ = 0, 1 per element (node tensions)
+  ancf::LoadContext static_ctx;                             // no current: the drag is dynamic
+  ancf::LoadContext current_ctx;                            // for current_at
   std::vector<CurrentProfilePoint> current;
   ancf::SeabedDynamics bed;
   WaveKinematicsFn waves;
@@ -73,13 +71,12 @@ struct DynamicLine final : ImplicitSystem {
   // before each residual and setup, and its Schur complement (below).
   EndKinematics end_B_attached;
   std::array<double, kElementDofs * kElementDofs> end_S{}, end_D{};  // last element, setup c_j
-  Eigen::Matrix<double, Eigen::Dynamic, 3> end_B_influence;         // X = S_ff⁻¹ S_fB
+  Eigen::Matrix<double, Eigen::Dynamic, 3> end_B_influence;          // X = S_ff⁻¹ S_fB
   Eigen::Matrix3d end_B_schur = Eigen::Matrix3d::Zero();             // S_BB − S_Bf X
-  static constexpr int kEndBLocal = 6;  // r_b in the element's [r_a, r'_a, r_b, r'_b]
+  static constexpr int kEndBLocal = 6;                               // r_b in the element's [r_a, r'_a, r_b, r'_b]
 
   /// Overwrites the prescribed DOFs of (q, v, a) with their values at t.
-  void apply_prescribed(double t, Eigen::VectorXd& q, Eigen::VectorXd& v,
-                        Eigen::VectorXd& a) const {
+  void apply_prescribed(double t, Eigen::VectorXd& q, Eigen::VectorXd& v, Eigen::VectorXd& a) const {
     const int ra = p.r_dof.front(), rb = p.r_dof.back();
     if (options.end_A == FeEndCondition::fixed) {
       q.segment<3>(ra) = end_A_rest_m;
@@ -91,8 +88,7 @@ struct DynamicLine final : ImplicitSystem {
       v.segment<3>(rb).setZero();
       a.segment<3>(rb).setZero();
     } else if (options.end_B != FeEndCondition::free) {
-      const EndKinematics k =
-          options.end_B == FeEndCondition::prescribed ? options.end_B_motion(t) : end_B_attached;
+      const EndKinematics k = options.end_B == FeEndCondition::prescribed ? options.end_B_motion(t) : end_B_attached;
       q.segment<3>(rb) = k.position_m;
       v.segment<3>(rb) = k.velocity_m_per_s;
       a.segment<3>(rb) = k.acceleration_m_per_s2;
@@ -125,8 +121,7 @@ struct DynamicLine final : ImplicitSystem {
     for (std::size_t gp = 0; gp < ancf::kGaussXi.size(); ++gp) {
       const ancf::ShapeAt& sh = shapes[e][gp];
       Eigen::Vector3d r = Eigen::Vector3d::Zero();
-      for (int k = 0; k < 4; ++k)
-        r += sh.S[k] * Eigen::Vector3d(qe[3 * k], qe[3 * k + 1], qe[3 * k + 2]);
+      for (int k = 0; k < 4; ++k) r += sh.S[k] * Eigen::Vector3d(qe[3 * k], qe[3 * k + 1], qe[3 * k + 2]);
       Eigen::Vector3d u = Eigen::Vector3d::Zero(), a = Eigen::Vector3d::Zero();
       if (!current.empty()) {
         const ancf::V3<double> c = ancf::current_at<double>(current_ctx, r.z());
@@ -167,37 +162,32 @@ struct DynamicLine final : ImplicitSystem {
   /// Net generalised forces of element e (inertia included, d'Alembert);
   /// returns the element's fraction in seabed contact.
   double element_forces(double t, std::size_t e, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
-                        const Eigen::VectorXd& a, std::array<double, kElementDofs>& ge,
-                        bool alone = false) const {
+                        const Eigen::VectorXd& a, std::array<double, kElementDofs>& ge, bool alone = false) const {
     const ElementValues x = gather(e, q, v, a);
     ancf::ElementFluid fluid;
     if (!still_water) fluid_at(t, e, x.q.data(), fluid, alone);
     return ancf::dynamic_element_forces(p.elements[e], dyn[e], shapes[e], static_ctx, bed,
-                                        still_water ? nullptr : &fluid, x.q.data(), x.v.data(),
-                                        x.a.data(), ge.data());
+                                        still_water ? nullptr : &fluid, x.q.data(), x.v.data(), x.a.data(), ge.data());
   }
 
   /// Net generalised nodal forces G (inertia included, d'Alembert) at (t, q,
   /// v, a); with contact, each element's fraction in seabed contact.
-  void assemble_forces(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
-                       const Eigen::VectorXd& a, Eigen::VectorXd& g,
-                       std::vector<double>* contact = nullptr) const {
+  void assemble_forces(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, const Eigen::VectorXd& a,
+                       Eigen::VectorXd& g, std::vector<double>* contact = nullptr) const {
     g.setZero(n);
     std::array<double, kElementDofs> ge;
     for (std::size_t e = 0; e < p.elements.size(); ++e) {
       const double c = element_forces(t, e, q, v, a, ge);
       if (contact != nullptr) (*contact)[e] = c;
-      for (int i = 0; i < kElementDofs; ++i)
-        g[element_dofs[e][static_cast<std::size_t>(i)]] += ge[i];
+      for (int i = 0; i < kElementDofs; ++i) g[element_dofs[e][static_cast<std::size_t>(i)]] += ge[i];
     }
-    for (const auto& [node, f] : p.mesh.point_loads)
-      g[p.r_dof[static_cast<std::size_t>(node)] + 2] -= f;
+    for (const auto& [node, f] : p.mesh.point_loads) g[p.r_dof[static_cast<std::size_t>(node)] + 2] -= f;
   }
 
   /// The net force on the position DOFs of an end node (0: end A, else end
   /// B): G there, from the one element at that end.
-  Eigen::Vector3d end_force(bool end_B, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
-                            const Eigen::VectorXd& a, double t) const {
+  Eigen::Vector3d end_force(bool end_B, const Eigen::VectorXd& q, const Eigen::VectorXd& v, const Eigen::VectorXd& a,
+                            double t) const {
     const std::size_t e = end_B ? p.elements.size() - 1 : 0;
     const int node = end_B ? p.n_nodes - 1 : 0;
     std::array<double, kElementDofs> ge;
@@ -212,14 +202,13 @@ struct DynamicLine final : ImplicitSystem {
 
   /// The Newton matrices of element e (M, C = ∂G/∂v, K = ∂G/∂q) at (t, q,
   /// v), and its seabed contact there.
-  void evaluate_element_matrices(double t, std::size_t e, const Eigen::VectorXd& q,
-                                 const Eigen::VectorXd& v) {
+  void evaluate_element_matrices(double t, std::size_t e, const Eigen::VectorXd& q, const Eigen::VectorXd& v) {
     const ElementValues x = gather(e, q, v, v);  // the matrices do not depend on q̈
     ancf::ElementFluid fluid;
     if (!still_water) fluid_at(t, e, x.q.data(), fluid);
-    contact_at_setup[e] = ancf::element_newton_matrices(
-        p.elements[e], dyn[e], shapes[e], static_ctx, bed, still_water ? nullptr : &fluid,
-        x.q.data(), x.v.data(), element_matrices[e]);
+    contact_at_setup[e] =
+        ancf::element_newton_matrices(p.elements[e], dyn[e], shapes[e], static_ctx, bed, still_water ? nullptr : &fluid,
+                                      x.q.data(), x.v.data(), element_matrices[e]);
     element_stale[e] = 0;
   }
 
@@ -337,12 +326,8 @@ struct DynamicLine final : ImplicitSystem {
   // Σ_B = S_BB − S_Bf X (the line's dynamic stiffness at its end: the
   // Schur complement of the free DOFs). Only the last element touches end B.
 
-  double end_S_at(int i, int j) const {
-    return end_S[static_cast<std::size_t>(kElementDofs * i + j)];
-  }
-  double end_D_at(int i, int j) const {
-    return end_D[static_cast<std::size_t>(kElementDofs * i + j)];
-  }
+  double end_S_at(int i, int j) const { return end_S[static_cast<std::size_t>(kElementDofs * i + j)]; }
+  double end_D_at(int i, int j) const { return end_D[static_cast<std::size_t>(kElementDofs * i + j)]; }
   int end_dof(int k) const { return element_dofs.back()[static_cast<std::size_t>(k)]; }
 
   /// After a setup or update at c_j: the last element's S and D, which the
@@ -382,8 +367,7 @@ struct DynamicLine final : ImplicitSystem {
   }
 
   /// First half of the solve: y_f (kept in `rhs`) and φ.
-  Eigen::Vector3d solve_free(const Eigen::Ref<const Eigen::VectorXd>& b,
-                             const Eigen::Vector3d& beta_B) {
+  Eigen::Vector3d solve_free(const Eigen::Ref<const Eigen::VectorXd>& b, const Eigen::Vector3d& beta_B) {
     w = b.head(n);
     rhs = b.tail(n);
     for (int i : fixed_dofs) w[i] = 0.0;
@@ -427,8 +411,8 @@ struct DynamicLine final : ImplicitSystem {
     Eigen::VectorXd y0, yp0;
     IdaOptions ida;
   };
-  Start initialize(const FeLineModel& model, const FeDynamicEnvironment& environment,
-                   const FeStaticsResult& initial, const FeDynamicsOptions& options);
+  Start initialize(const FeLineModel& model, const FeDynamicEnvironment& environment, const FeStaticsResult& initial,
+                   const FeDynamicsOptions& options);
 };
 
 }  // namespace spiral::engine::fe_detail

@@ -17,14 +17,12 @@ namespace spiral::engine {
 namespace fe_detail {
 namespace {
 
-void validate_dynamics(const FeLineModel& model, const FeDynamicEnvironment& env,
-                       const FeDynamicsOptions& o) {
+void validate_dynamics(const FeLineModel& model, const FeDynamicEnvironment& env, const FeDynamicsOptions& o) {
   for (std::size_t i = 0; i < model.sections.size(); ++i) {
     const auto& s = model.sections[i];
     auto check = [&](const char* field, double v, const char* unit) {
       if (!std::isfinite(v) || v < 0.0)
-        invalid_dynamics(
-            fmt::format("sections[{}].{}: must be >= 0 {}, got {}", i, field, unit, v));
+        invalid_dynamics(fmt::format("sections[{}].{}: must be >= 0 {}, got {}", i, field, unit, v));
     };
     check("displaced_area_m2", s.displaced_area_m2, "m2");
     check("added_mass_normal", s.added_mass_normal, "");
@@ -32,65 +30,54 @@ void validate_dynamics(const FeLineModel& model, const FeDynamicEnvironment& env
     check("axial_damping_Ns", s.axial_damping_Ns, "N s");
     check("EA_dynamic_N", s.EA_dynamic_N, "N");
     if (!(s.mass_kg_per_m > 0.0) && !(s.added_mass_normal * s.displaced_area_m2 > 0.0)) {
-      invalid_dynamics(fmt::format(
-          "sections[{}].mass_kg_per_m: must be > 0 kg/m for dynamics, got {}", i, s.mass_kg_per_m));
+      invalid_dynamics(
+          fmt::format("sections[{}].mass_kg_per_m: must be > 0 kg/m for dynamics, got {}", i, s.mass_kg_per_m));
     }
   }
   auto check_env = [](const char* field, double v, bool ok, const char* rule) {
-    if (!std::isfinite(v) || !ok)
-      invalid_dynamics(fmt::format("{}: must be {}, got {}", field, rule, v));
+    if (!std::isfinite(v) || !ok) invalid_dynamics(fmt::format("{}: must be {}, got {}", field, rule, v));
   };
-  check_env("seabed_lateral_friction", env.seabed_lateral_friction,
-            env.seabed_lateral_friction >= 0.0, ">= 0");
-  check_env("seabed_axial_friction", env.statics.seabed_axial_friction,
-            env.statics.seabed_axial_friction >= 0.0, ">= 0");
-  check_env("seabed_damping_N_s_per_m2", env.seabed_damping_N_s_per_m2,
-            env.seabed_damping_N_s_per_m2 >= 0.0, ">= 0 N s/m2");
-  check_env("friction_velocity_m_per_s", env.friction_velocity_m_per_s,
-            env.friction_velocity_m_per_s > 0.0, "> 0 m/s");
+  check_env("seabed_lateral_friction", env.seabed_lateral_friction, env.seabed_lateral_friction >= 0.0, ">= 0");
+  check_env("seabed_axial_friction", env.statics.seabed_axial_friction, env.statics.seabed_axial_friction >= 0.0,
+            ">= 0");
+  check_env("seabed_damping_N_s_per_m2", env.seabed_damping_N_s_per_m2, env.seabed_damping_N_s_per_m2 >= 0.0,
+            ">= 0 N s/m2");
+  check_env("friction_velocity_m_per_s", env.friction_velocity_m_per_s, env.friction_velocity_m_per_s > 0.0, "> 0 m/s");
   check_env("sea_ramp_s", env.sea_ramp_s, env.sea_ramp_s >= 0.0, ">= 0 s");
   if (o.end_B == FeEndCondition::prescribed && !o.end_B_motion)
     invalid_dynamics("end_B_motion: required when end B is prescribed");
-  if (o.end_A == FeEndCondition::prescribed)
-    invalid_dynamics("end_A: may be fixed or free (prescribe end B)");
+  if (o.end_A == FeEndCondition::prescribed) invalid_dynamics("end_A: may be fixed or free (prescribe end B)");
   if (o.end_A == FeEndCondition::free && o.end_B == FeEndCondition::free)
     invalid_dynamics("end_A, end_B: at least one end must be held");
   check_env("relative_tolerance", o.relative_tolerance, o.relative_tolerance > 0.0, "> 0");
   check_env("position_tolerance_m", o.position_tolerance_m, o.position_tolerance_m > 0.0, "> 0 m");
   check_env("slope_tolerance", o.slope_tolerance, o.slope_tolerance > 0.0, "> 0");
-  check_env("velocity_tolerance_m_per_s", o.velocity_tolerance_m_per_s,
-            o.velocity_tolerance_m_per_s > 0.0, "> 0 m/s");
+  check_env("velocity_tolerance_m_per_s", o.velocity_tolerance_m_per_s, o.velocity_tolerance_m_per_s > 0.0, "> 0 m/s");
 }
 
 }  // namespace
 
-DynamicLine::Start DynamicLine::initialize(const FeLineModel& model,
-                                           const FeDynamicEnvironment& environment,
-                                           const FeStaticsResult& initial,
-                                           const FeDynamicsOptions& options) {
+DynamicLine::Start DynamicLine::initialize(const FeLineModel& model, const FeDynamicEnvironment& environment,
+                                           const FeStaticsResult& initial, const FeDynamicsOptions& options) {
   DynamicLine& m = *this;
   validate_dynamics(model, environment, options);
-  if (initial.node_position_m.size() < 2)
-    invalid_dynamics("initial: not a static solution (no nodes)");
+  if (initial.node_position_m.size() < 2) invalid_dynamics("initial: not a static solution (no nodes)");
   const FeLineEnds ends{initial.node_position_m.front(), initial.node_position_m.back()};
   fe_detail::validate(model, environment.statics, ends, FeStaticsOptions{});
   m.options = options;
   m.p = fe_detail::make_problem(model, environment.statics, ends);
   m.n = m.p.n_dofs;
   if (initial.state.size() != m.n || !initial.state.allFinite()) {
-    invalid_dynamics(fmt::format(
-        "initial.state: needs {} finite entries (a static solution of this model), got {}", m.n,
-        initial.state.size()));
+    invalid_dynamics(fmt::format("initial.state: needs {} finite entries (a static solution of this model), got {}",
+                                 m.n, initial.state.size()));
   }
   fe_detail::set_node_arc_lengths(m.p, initial.node_arc_length_m);
   m.end_A_rest_m = ends.end_A_m;
   m.end_B_rest_m = ends.end_B_m;
   if (options.end_B == FeEndCondition::attached) m.end_B_attached = EndKinematics{ends.end_B_m};
   for (int k = 0; k < 3; ++k) {
-    if (options.end_A == FeEndCondition::free)
-      m.p.fixed[static_cast<std::size_t>(m.p.r_dof.front() + k)] = 0;
-    if (options.end_B == FeEndCondition::free)
-      m.p.fixed[static_cast<std::size_t>(m.p.r_dof.back() + k)] = 0;
+    if (options.end_A == FeEndCondition::free) m.p.fixed[static_cast<std::size_t>(m.p.r_dof.front() + k)] = 0;
+    if (options.end_B == FeEndCondition::free) m.p.fixed[static_cast<std::size_t>(m.p.r_dof.back() + k)] = 0;
   }
   m.current = environment.statics.current;
   m.current_ctx.current = &m.current;
@@ -135,8 +122,7 @@ DynamicLine::Start DynamicLine::initialize(const FeLineModel& model,
     std::vector<Eigen::Vector3d> midpoints;
     for (std::size_t e = 0; e < m.p.elements.size(); ++e) {
       const fe_detail::ElementState qe = fe_detail::gather(m.p, q0, e);
-      midpoints.push_back(
-          fe_detail::position(ancf::shape_at(0.5, m.p.elements[e].length_m), qe));
+      midpoints.push_back(fe_detail::position(ancf::shape_at(0.5, m.p.elements[e].length_m), qe));
     }
     m.element_waves = std::make_unique<FixedPointWaveKinematics>(environment.sea, midpoints);
     m.sea_ramp_s = environment.sea_ramp_s;
@@ -146,8 +132,7 @@ DynamicLine::Start DynamicLine::initialize(const FeLineModel& model,
   for (std::size_t e = 0; e < m.p.elements.size(); ++e) {
     const auto blocks = fe_detail::element_blocks(m.p, e);
     for (int k = 0; k < kElementDofs; ++k)
-      m.element_dofs[e][static_cast<std::size_t>(k)] =
-          blocks[static_cast<std::size_t>(k / 3)] + k % 3;
+      m.element_dofs[e][static_cast<std::size_t>(k)] = blocks[static_cast<std::size_t>(k / 3)] + k % 3;
     m.shapes[e] = ancf::gauss_shapes(m.p.elements[e].length_m);
   }
   for (int i = 0; i < m.n; ++i) {
@@ -180,8 +165,7 @@ DynamicLine::Start DynamicLine::initialize(const FeLineModel& model,
       const double s = m.p.mesh.s[i];
       v0.segment<3>(m.p.r_dof[i]) = options.initial_velocity(s);
       const double s0 = std::max(0.0, s - delta), s1 = std::min(m.p.line_length_m, s + delta);
-      const Eigen::Vector3d rate =
-          (options.initial_velocity(s1) - options.initial_velocity(s0)) / (s1 - s0);
+      const Eigen::Vector3d rate = (options.initial_velocity(s1) - options.initial_velocity(s0)) / (s1 - s0);
       v0.segment<3>(m.p.t_in[i]) = rate;
       v0.segment<3>(m.p.t_out[i]) = rate;
     }
@@ -254,25 +238,17 @@ FeLineDynamics::FeLineDynamics(const FeLineModel& model, const FeDynamicEnvironm
     : impl_(std::make_unique<Impl>()) {
   if (options.end_B == FeEndCondition::attached)
     fe_detail::invalid_dynamics("end_B: attached ends belong to a coupled system");
-  const fe_detail::DynamicLine::Start start =
-      impl_->line.initialize(model, environment, initial, options);
-  impl_->ida = std::make_unique<IdaIntegrator>(impl_->line, options.start_time_s, start.y0,
-                                               start.yp0, start.ida);
+  const fe_detail::DynamicLine::Start start = impl_->line.initialize(model, environment, initial, options);
+  impl_->ida = std::make_unique<IdaIntegrator>(impl_->line, options.start_time_s, start.y0, start.yp0, start.ida);
 }
 
 FeLineDynamics::~FeLineDynamics() = default;
 FeLineDynamics::FeLineDynamics(FeLineDynamics&&) noexcept = default;
 FeLineDynamics& FeLineDynamics::operator=(FeLineDynamics&&) noexcept = default;
 
-void FeLineDynamics::advance_to(double t_s) {
-  impl_->ida->advance_to(t_s);
-}
-double FeLineDynamics::time_s() const {
-  return impl_->ida->time_s();
-}
-IdaStatistics FeLineDynamics::statistics() const {
-  return impl_->ida->statistics();
-}
+void FeLineDynamics::advance_to(double t_s) { impl_->ida->advance_to(t_s); }
+double FeLineDynamics::time_s() const { return impl_->ida->time_s(); }
+IdaStatistics FeLineDynamics::statistics() const { return impl_->ida->statistics(); }
 
 Eigen::Vector3d FeLineDynamics::end_B_force_N() const {
   fe_detail::DynamicLine& m = impl_->line;
@@ -294,21 +270,17 @@ FeLineDynamicSnapshot FeLineDynamics::snapshot() const {
     double sum = 0.0;
     int count = 0;
     if (i > 0) {
-      sum += m.p.elements[i - 1].EA_N * (m.qw.segment<3>(m.p.t_in[i]).norm() - 1.0) -
-             m.end_force_offset_N[i - 1][1];
+      sum += m.p.elements[i - 1].EA_N * (m.qw.segment<3>(m.p.t_in[i]).norm() - 1.0) - m.end_force_offset_N[i - 1][1];
       ++count;
     }
     if (i + 1 < nn) {
-      sum += m.p.elements[i].EA_N * (m.qw.segment<3>(m.p.t_out[i]).norm() - 1.0) -
-             m.end_force_offset_N[i][0];
+      sum += m.p.elements[i].EA_N * (m.qw.segment<3>(m.p.t_out[i]).norm() - 1.0) - m.end_force_offset_N[i][0];
       ++count;
     }
     snap.node_tension_N.push_back(sum / count);
   }
-  if (m.options.end_A != FeEndCondition::free)
-    snap.end_A_force_N = m.end_force(false, m.qw, m.vw, m.aw, t);
-  if (m.options.end_B != FeEndCondition::free)
-    snap.end_B_force_N = m.end_force(true, m.qw, m.vw, m.aw, t);
+  if (m.options.end_A != FeEndCondition::free) snap.end_A_force_N = m.end_force(false, m.qw, m.vw, m.aw, t);
+  if (m.options.end_B != FeEndCondition::free) snap.end_B_force_N = m.end_force(true, m.qw, m.vw, m.aw, t);
   return snap;
 }
 
@@ -335,11 +307,10 @@ FeLineEnergy FeLineDynamics::energy() const {
       en.strain_J += density * wds;
       en.gravity_J += ep.weight_N_per_m * r.z() * wds;
     }
-    ancf::detail::for_each_contact_point(
-        ep, m.static_ctx, qe.data(), ve.data(),
-        [&](const ancf::ShapeAt&, double w, double pen, const double*, const double*) {
-          en.seabed_J += 0.5 * m.static_ctx.seabed_stiffness_N_per_m2 * pen * pen * w;
-        });
+    ancf::detail::for_each_contact_point(ep, m.static_ctx, qe.data(), ve.data(),
+                                         [&](const ancf::ShapeAt&, double w, double pen, const double*, const double*) {
+                                           en.seabed_J += 0.5 * m.static_ctx.seabed_stiffness_N_per_m2 * pen * pen * w;
+                                         });
   }
   for (const auto& [node, f] : m.p.mesh.point_loads)
     en.gravity_J += f * m.qw[m.p.r_dof[static_cast<std::size_t>(node)] + 2];

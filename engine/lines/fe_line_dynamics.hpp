@@ -77,13 +77,12 @@ namespace spiral::engine {
 /// Fluid velocity and acceleration of the waves at a global point and time
 /// (Airy kinematics with Wheeler stretching, engine/environment); zero above
 /// the surface.
-using WaveKinematicsFn =
-    std::function<void(const Eigen::Vector3d& point_m, double t_s,
-                       Eigen::Vector3d& velocity_m_per_s, Eigen::Vector3d& acceleration_m_per_s2)>;
+using WaveKinematicsFn = std::function<void(const Eigen::Vector3d& point_m, double t_s,
+                                            Eigen::Vector3d& velocity_m_per_s, Eigen::Vector3d& acceleration_m_per_s2)>;
 
 struct FeDynamicEnvironment {
-  FeEnvironment statics;  ///< density, current, seabed level, penalty stiffness and axial friction
-                          ///< coefficient
+  FeEnvironment statics;                    ///< density, current, seabed level, penalty stiffness and axial friction
+                                            ///< coefficient
   double seabed_lateral_friction = 0.0;     ///< μ across the line, >= 0
   double seabed_damping_N_s_per_m2 = 0.0;   ///< per m of line per m/s vertical, in contact, >= 0
   double friction_velocity_m_per_s = 0.01;  ///< full friction above this sliding speed, > 0
@@ -113,8 +112,7 @@ enum class FeEndCondition { fixed, prescribed, free, attached };
 struct FeDynamicsOptions {
   FeEndCondition end_A = FeEndCondition::fixed;
   FeEndCondition end_B = FeEndCondition::prescribed;
-  EndMotionFn
-      end_B_motion;  ///< required when end_B is prescribed; at t0 it must equal the static position
+  EndMotionFn end_B_motion;  ///< required when end_B is prescribed; at t0 it must equal the static position
   double start_time_s = 0.0;
   /// Optional initial velocity field of the line (global, m/s) as a function
   /// of unstretched arc length from end A (default: at rest); slope rates
@@ -142,12 +140,9 @@ struct FeLineDynamicSnapshot {
   double time_s = 0.0;
   std::vector<Eigen::Vector3d> node_position_m;
   std::vector<Eigen::Vector3d> node_velocity_m_per_s;
-  std::vector<double>
-      node_tension_N;  ///< effective tension at the nodes (mean of the adjacent element ends)
-  Eigen::Vector3d end_A_force_N =
-      Eigen::Vector3d::Zero();  ///< force of the line on its end A support
-  Eigen::Vector3d end_B_force_N =
-      Eigen::Vector3d::Zero();  ///< force of the line on its end B support
+  std::vector<double> node_tension_N;  ///< effective tension at the nodes (mean of the adjacent element ends)
+  Eigen::Vector3d end_A_force_N = Eigen::Vector3d::Zero();  ///< force of the line on its end A support
+  Eigen::Vector3d end_B_force_N = Eigen::Vector3d::Zero();  ///< force of the line on its end B support
 };
 
 /// Mechanical energy of the line (no fluid: kinetic energy of the structural
@@ -167,8 +162,8 @@ class FeLineDynamics {
   /// drag on the relative velocity equals the static current drag, so the
   /// static solution is the dynamic equilibrium). Throws SolverError on
   /// invalid input (field and value named).
-  FeLineDynamics(const FeLineModel& model, const FeDynamicEnvironment& environment,
-                 const FeStaticsResult& initial, const FeDynamicsOptions& options);
+  FeLineDynamics(const FeLineModel& model, const FeDynamicEnvironment& environment, const FeStaticsResult& initial,
+                 const FeDynamicsOptions& options);
   ~FeLineDynamics();
   FeLineDynamics(FeLineDynamics&&) noexcept;
   FeLineDynamics& operator=(FeLineDynamics&&) noexcept;

@@ -30,7 +30,7 @@ double bisect(F f, double lo, double hi) {
 /// Inextensible catenary of length L and mean weight w (sign: up/down) through
 /// A and B, as a function of the geometric arc length from A, and its H.
 static InitialShape inextensible_shape(double L, double weight, const FeEnvironment& environment,
-                                const Eigen::Vector3d& end_A_m, const Eigen::Vector3d& end_B_m) {
+                                       const Eigen::Vector3d& end_A_m, const Eigen::Vector3d& end_B_m) {
   const Eigen::Vector3d A = end_A_m, B = end_B_m;
   auto straight = [A, B, L](double s) -> Eigen::Vector3d { return A + (B - A) * (s / L); };
 
@@ -54,16 +54,17 @@ static InitialShape inextensible_shape(double L, double weight, const FeEnvironm
     // X − Lb = a·asinh(Ls/a).
     auto a_of = [Z](double Ls) { return (Ls * Ls - Z * Z) / (2.0 * Z); };
     // f rises from L − Z − X (vertical hang) to its fully suspended value.
-  auto f = [&](double Ls) { return (L - Ls) + a_of(Ls) * std::asinh(Ls / a_of(Ls)) - X; };
+    auto f = [&](double Ls) { return (L - Ls) + a_of(Ls) * std::asinh(Ls / a_of(Ls)) - X; };
     const double lo = Z * (1.0 + 1e-9);
     if (f(lo) < 0.0 && f(L) > 0.0) {
       const double Ls = bisect(f, lo, L);
       const double a = a_of(Ls), Lb = L - Ls;
       return {[=](double s) {
-        if (s <= Lb) return to_global(s, 0.0);
-        const double sigma = (s - Lb) / a;
-        return to_global(Lb + a * std::asinh(sigma), a * (std::sqrt(1.0 + sigma * sigma) - 1.0));
-      }, a * w};
+                if (s <= Lb) return to_global(s, 0.0);
+                const double sigma = (s - Lb) / a;
+                return to_global(Lb + a * std::asinh(sigma), a * (std::sqrt(1.0 + sigma * sigma) - 1.0));
+              },
+              a * w};
     }
   }
   // Suspended catenary through both ends: √(L² − Z²) = 2a·sinh(X / 2a).
@@ -76,12 +77,13 @@ static InitialShape inextensible_shape(double L, double weight, const FeEnvironm
   const double beta = bisect(g, 1e-9, hi);
   const double a = X / (2.0 * beta);
   const double x0 = 0.5 * X - a * std::atanh(Z / L);  // vertex
-  const double s0 = std::sinh(-x0 / a);                // arc from vertex to A, over a (signed)
+  const double s0 = std::sinh(-x0 / a);               // arc from vertex to A, over a (signed)
   const double c0 = std::cosh(-x0 / a);
   return {[=](double s) {
-    const double u = std::asinh(s / a + s0);  // (x − x0)/a
-    return to_global(x0 + a * u, a * (std::cosh(u) - c0));
-  }, a * w};
+            const double u = std::asinh(s / a + s0);  // (x − x0)/a
+            return to_global(x0 + a * u, a * (std::cosh(u) - c0));
+          },
+          a * w};
 }
 
 /// The multi-segment elastic catenary (solve_catenary: per-section weight
@@ -105,8 +107,7 @@ std::optional<InitialShape> catenary_solver_shape(const FeLineModel& model, cons
   g.horizontal_span_m = X;
   g.vertical_span_m = B.z() - A.z();
   // Without a seabed (or an anchor off it) the catenary must not see one.
-  const bool on_seabed = environment.seabed_stiffness_N_per_m2 > 0.0 &&
-                         A.z() <= environment.seabed_z_m + 1e-6 * L;
+  const bool on_seabed = environment.seabed_stiffness_N_per_m2 > 0.0 && A.z() <= environment.seabed_z_m + 1e-6 * L;
   g.anchor_height_above_seabed_m = on_seabed ? 0.0 : std::max(1e6, 10.0 * L);
   CatenaryOptions o;
   // Profile points ≈ every 0.1 m (200..2000 per segment): the nodal slopes

@@ -23,9 +23,7 @@ struct InitialShape {
   double horizontal_tension_N = 0.0;
 };
 
-InitialShape default_initial_shape(const FeLineModel& model,
-                                                            const FeEnvironment& environment,
-                                                            const Eigen::Vector3d& end_A_m,
-                                                            const Eigen::Vector3d& end_B_m);
+InitialShape default_initial_shape(const FeLineModel& model, const FeEnvironment& environment,
+                                   const Eigen::Vector3d& end_A_m, const Eigen::Vector3d& end_B_m);
 
 }  // namespace spiral::engine

@@ -76,7 +76,7 @@ NewtonOutcome newton(const Problem& p, const FeStaticsOptions& o, Eigen::VectorX
   // halves the residual norm at least, so they cannot cycle).
   int it = 0, chord_steps = 0;
   bool try_chord = t.chord_steps && t.valid;  // not after a damped Newton step: its chord step would be too long too
-  bool polishing = false;    // the last step was a chord step
+  bool polishing = false;                     // the last step was a chord step
   for (;; ++it) {
     out.scale_N = std::max(p.load_scale_N, max_axial_force(p, q));
     out.residual_N = residual_norm(p, g);
@@ -99,8 +99,7 @@ NewtonOutcome newton(const Problem& p, const FeStaticsOptions& o, Eigen::VectorX
       jac.solve_in_place(dq);
       if (dq.allFinite() && step_limit(dq) >= 1.0) {
         q_trial = q + dq;
-        if (assemble(p, q_trial, g_trial, nullptr) &&
-            merit(p, g_trial) <= kChordContraction * kChordContraction * m0) {
+        if (assemble(p, q_trial, g_trial, nullptr) && merit(p, g_trial) <= kChordContraction * kChordContraction * m0) {
           q.swap(q_trial);
           g.swap(g_trial);
           short_steps = 0;
@@ -223,8 +222,8 @@ NewtonOutcome newton(const Problem& p, const FeStaticsOptions& o, Eigen::VectorX
 /// G is the moment of the weight, drag and contact loads about the chord),
 /// by a march in kSwingAngleStep to a sign change, then Illinois regula falsi.
 static bool swing_into_current(const Problem& p, Eigen::VectorXd& q) {
-  constexpr double kSwingAngleStep = 0.1;  // rad; the march that brackets the root
-  constexpr double kMaxSwingAngle = 1.5;   // rad; a line swung further is left to the continuations
+  constexpr double kSwingAngleStep = 0.1;        // rad; the march that brackets the root
+  constexpr double kMaxSwingAngle = 1.5;         // rad; a line swung further is left to the continuations
   constexpr double kSwingAngleTolerance = 1e-3;  // rad; Newton removes the rest
   constexpr int kMaxRegulaFalsiSteps = 30;
   // Pivot: the last node on the seabed (the laid part stays where it lies).
@@ -244,8 +243,7 @@ static bool swing_into_current(const Problem& p, Eigen::VectorXd& q) {
   Eigen::VectorXd g(p.n_dofs);
   auto turn = [&](double theta) {
     const Eigen::Matrix3d R = Eigen::AngleAxisd(theta, u).toRotationMatrix();
-    for (std::size_t i = static_cast<std::size_t>(pivot) + 1;
-         i + 1 < static_cast<std::size_t>(p.n_nodes); ++i) {
+    for (std::size_t i = static_cast<std::size_t>(pivot) + 1; i + 1 < static_cast<std::size_t>(p.n_nodes); ++i) {
       q.segment<3>(p.r_dof[i]) = c + R * (q0.segment<3>(p.r_dof[i]) - c);
       q.segment<3>(p.t_in[i]) = R * q0.segment<3>(p.t_in[i]);
       q.segment<3>(p.t_out[i]) = R * q0.segment<3>(p.t_out[i]);
@@ -255,12 +253,10 @@ static bool swing_into_current(const Problem& p, Eigen::VectorXd& q) {
     turn(theta);
     if (!assemble(p, q, g, nullptr)) return false;
     G = 0.0;
-    for (std::size_t i = static_cast<std::size_t>(pivot) + 1;
-         i + 1 < static_cast<std::size_t>(p.n_nodes); ++i) {
+    for (std::size_t i = static_cast<std::size_t>(pivot) + 1; i + 1 < static_cast<std::size_t>(p.n_nodes); ++i) {
       G += g.segment<3>(p.r_dof[i]).dot(u.cross(q.segment<3>(p.r_dof[i]) - c));
       G += g.segment<3>(p.t_in[i]).dot(u.cross(q.segment<3>(p.t_in[i])));
-      if (p.t_out[i] != p.t_in[i])
-        G += g.segment<3>(p.t_out[i]).dot(u.cross(q.segment<3>(p.t_out[i])));
+      if (p.t_out[i] != p.t_in[i]) G += g.segment<3>(p.t_out[i]).dot(u.cross(q.segment<3>(p.t_out[i])));
     }
     return std::isfinite(G);
   };
@@ -310,8 +306,8 @@ static bool swing_into_current(const Problem& p, Eigen::VectorXd& q) {
 /// Continuation on the current velocity factor λ (drag ∝ λ²) from the state
 /// converged at λ = 0: steps grow by half after a success, halve after a
 /// failure. Leaves current_factor at 1.
-static NewtonOutcome current_continuation(Problem& p, const FeStaticsOptions& o, Eigen::VectorXd& q,
-                                          Tangent& t, Counters& counters) {
+static NewtonOutcome current_continuation(Problem& p, const FeStaticsOptions& o, Eigen::VectorXd& q, Tangent& t,
+                                          Counters& counters) {
   p.load.current_factor = 0.0;
   NewtonOutcome last = newton(p, o, q, t);
   counters.iterations += last.iterations;
@@ -350,8 +346,8 @@ static NewtonOutcome current_continuation(Problem& p, const FeStaticsOptions& o,
 ///     flexible riser). With EA ≈ 10 T a step can turn the line by ≈ 0.5 rad;
 ///     raising EA afterwards changes the shape only by the stretch.
 /// (2) if that fails, current continuation with the model's EA.
-NewtonOutcome solve_with_current_steps(Problem& p, const FeStaticsOptions& o, Eigen::VectorXd& q,
-                                       Tangent& t, Counters& counters, CurrentSteps steps) {
+NewtonOutcome solve_with_current_steps(Problem& p, const FeStaticsOptions& o, Eigen::VectorXd& q, Tangent& t,
+                                       Counters& counters, CurrentSteps steps) {
   const bool has_current = p.load.current != nullptr && !p.load.current->empty();
   const Eigen::VectorXd q_start = q;
   p.load.current_factor = 1.0;
@@ -467,7 +463,6 @@ static bool move_node_to(Problem& p, Eigen::VectorXd& q, double s_new, double to
   update_lengths(p);
   return true;
 }
-
 
 /// Touchdown node: move the nearest interior node onto the touchdown point
 /// and re-solve, until it stays put (touchdown_node_target). A cubic element

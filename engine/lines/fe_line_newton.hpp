@@ -10,7 +10,7 @@
 
 namespace spiral::engine::fe_detail {
 
-inline constexpr int kFinalSnapPasses = 10;        // touchdown node re-solves at the final stiffness
+inline constexpr int kFinalSnapPasses = 10;          // touchdown node re-solves at the final stiffness
 inline constexpr int kDirectAttemptIterations = 12;  // before falling back to seabed continuation
 // Newton iterations allowed from the swung start of a cold solve under
 // current (crawling still stops it early). Measured on the default scenario's
@@ -49,8 +49,8 @@ struct CurrentSteps {
   bool continuations = true;
 };
 /// Newton at the full current, else current / axial-stiffness continuations.
-NewtonOutcome solve_with_current_steps(Problem& p, const FeStaticsOptions& o, Eigen::VectorXd& q,
-                                       Tangent& t, Counters& counters, CurrentSteps steps = {});
+NewtonOutcome solve_with_current_steps(Problem& p, const FeStaticsOptions& o, Eigen::VectorXd& q, Tangent& t,
+                                       Counters& counters, CurrentSteps steps = {});
 /// Touchdown node: move the nearest node onto the touchdown point and
 /// re-solve until it stays (at most max_passes re-solves). `last`: the
 /// outcome of the converged solve of q, returned if no node moves.

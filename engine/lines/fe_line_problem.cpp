@@ -21,12 +21,9 @@ bool finite(const Eigen::Vector3d& v) { return v.allFinite(); }
 
 }  // namespace
 
-[[noreturn]] void invalid(const std::string& what) {
-  throw SolverError("FE line statics: invalid input: " + what);
-}
+[[noreturn]] void invalid(const std::string& what) { throw SolverError("FE line statics: invalid input: " + what); }
 
-void validate(const FeLineModel& m, const FeEnvironment& env, const FeLineEnds& ends,
-              const FeStaticsOptions& o) {
+void validate(const FeLineModel& m, const FeEnvironment& env, const FeLineEnds& ends, const FeStaticsOptions& o) {
   if (m.sections.empty()) invalid("sections: at least one section is required, got none");
   for (std::size_t i = 0; i < m.sections.size(); ++i) {
     const auto& s = m.sections[i];
@@ -44,8 +41,8 @@ void validate(const FeLineModel& m, const FeEnvironment& env, const FeLineEnds& 
     check("element_length_m", s.element_length_m, s.element_length_m > 0.0, "> 0");
   }
   if (!m.joint_load_N.empty() && m.joint_load_N.size() + 1 != m.sections.size()) {
-    invalid(fmt::format("joint_load_N: needs {} entries (one per joint) or none, got {}",
-                        m.sections.size() - 1, m.joint_load_N.size()));
+    invalid(fmt::format("joint_load_N: needs {} entries (one per joint) or none, got {}", m.sections.size() - 1,
+                        m.joint_load_N.size()));
   }
   for (std::size_t i = 0; i < m.joint_load_N.size(); ++i) {
     if (!std::isfinite(m.joint_load_N[i])) invalid(fmt::format("joint_load_N[{}]: must be finite", i));
@@ -53,8 +50,8 @@ void validate(const FeLineModel& m, const FeEnvironment& env, const FeLineEnds& 
   if (m.refinement) {
     const auto& z = *m.refinement;
     if (!(z.length_m > 0.0) || !(z.element_length_m > 0.0) || !std::isfinite(z.start_arc_length_m)) {
-      invalid(fmt::format("refinement: needs length_m > 0 and element_length_m > 0, got {} and {}",
-                          z.length_m, z.element_length_m));
+      invalid(fmt::format("refinement: needs length_m > 0 and element_length_m > 0, got {} and {}", z.length_m,
+                          z.element_length_m));
     }
   }
   if (!(env.water_density_kg_per_m3 > 0.0) || !std::isfinite(env.water_density_kg_per_m3)) {
@@ -222,8 +219,7 @@ bool is_fixed(const Problem& p, int dof) { return p.fixed[static_cast<std::size_
 
 /// Net generalised forces g(q) (6 per node) and, if jac != nullptr, the
 /// Jacobian ∂g/∂q in band storage. Returns false if a non-finite value appears.
-bool assemble(const Problem& p, const Eigen::VectorXd& q, Eigen::VectorXd& g, BandMatrix* jac,
-              bool drag_jacobian) {
+bool assemble(const Problem& p, const Eigen::VectorXd& q, Eigen::VectorXd& g, BandMatrix* jac, bool drag_jacobian) {
   ancf::LoadContext load = p.load;
   load.drag_jacobian = drag_jacobian;
   g.setZero(p.n_dofs);
@@ -241,7 +237,8 @@ bool assemble(const Problem& p, const Eigen::VectorXd& q, Eigen::VectorXd& g, Ba
       ancf::element_forces_and_tangent(p.elements[e], load, qe.data(), ge.data(), ke);
       for (int i = 0; i < kElementDofs; ++i) {
         g[dof[i]] += ge[i];
-        for (int j = 0; j < kElementDofs; ++j) jac->at(dof[i], dof[j]) += ke[static_cast<std::size_t>(kElementDofs * i + j)];
+        for (int j = 0; j < kElementDofs; ++j)
+          jac->at(dof[i], dof[j]) += ke[static_cast<std::size_t>(kElementDofs * i + j)];
       }
     } else {
       ancf::element_forces<double>(p.elements[e], p.load, qe.data(), ge.data());
@@ -292,16 +289,17 @@ void set_node_arc_lengths(Problem& p, const std::vector<double>& s) {
     if (i + 1 < n && p.mesh.section[i - 1] != p.mesh.section[i]) ok = ok && s[i] == p.mesh.s[i];
   }
   if (!ok) {
-    invalid(fmt::format("warm_start_node_arc_length_m: must be the {} increasing node arc lengths of a "
-                        "solution of this model, got {} values",
-                        n, s.size()));
+    invalid(
+        fmt::format("warm_start_node_arc_length_m: must be the {} increasing node arc lengths of a "
+                    "solution of this model, got {} values",
+                    n, s.size()));
   }
   p.mesh.s = s;
   update_lengths(p);
 }
 
-Eigen::VectorXd initial_state(Problem& p, const FeLineModel& m, const FeEnvironment& env,
-                              const FeLineEnds& ends, const FeStaticsOptions& o) {
+Eigen::VectorXd initial_state(Problem& p, const FeLineModel& m, const FeEnvironment& env, const FeLineEnds& ends,
+                              const FeStaticsOptions& o) {
   Eigen::VectorXd q(p.n_dofs);
   if (o.warm_start_state) {
     if (o.warm_start_state->size() != p.n_dofs || !o.warm_start_state->allFinite()) {
@@ -409,8 +407,7 @@ std::optional<FeTouchdown> find_touchdown(const Problem& p, const Eigen::VectorX
     const ElementState qe = gather(p, q, static_cast<std::size_t>(e));
     // The cubic lies in the convex hull of its Bézier points r_a, r_a + L/3
     // r'_a, r_b − L/3 r'_b, r_b: none below the seabed, no sample can be.
-    const double z_min =
-        std::min({qe[2], qe[2] + L / 3.0 * qe[5], qe[8] - L / 3.0 * qe[11], qe[8]});
+    const double z_min = std::min({qe[2], qe[2] + L / 3.0 * qe[5], qe[8] - L / 3.0 * qe[11], qe[8]});
     if (z_min >= z_contact) continue;
     for (int j = kSamples; j >= 0; --j) {
       const double xi = static_cast<double>(j) / kSamples;

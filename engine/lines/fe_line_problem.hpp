@@ -38,8 +38,8 @@ using ElementState = Eigen::Matrix<double, kElementDofs, 1>;
 inline constexpr double kContactRoundOff = 1e-12;
 
 struct Mesh {
-  std::vector<double> s;                  // node arc lengths
-  std::vector<int> section;               // section of each element
+  std::vector<double> s;                            // node arc lengths
+  std::vector<int> section;                         // section of each element
   std::vector<std::pair<int, double>> point_loads;  // (node, downward N)
 };
 
@@ -51,7 +51,7 @@ struct Problem {
   int n_nodes = 0;
   int n_dofs = 0;
   double line_length_m = 0.0;
-  double load_scale_N = 0.0;  // total |weight| + |point loads| + drag estimate
+  double load_scale_N = 0.0;          // total |weight| + |point loads| + drag estimate
   std::vector<double> node_length_m;  // mean adjacent element length (slope residual scale)
   // DOF map. Each node has a position r and a slope r'; at a section joint
   // that is a hinge (see make_problem) the two elements have their own

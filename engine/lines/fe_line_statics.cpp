@@ -42,7 +42,8 @@ FeStaticsResult post_process(const Problem& p, const FeStaticsOptions& o, const 
     double sum = 0.0;
     int cnt = 0;
     if (i > 0) sum += p.elements[i - 1].EA_N * (q.segment<3>(p.t_in[i]).norm() - 1.0), ++cnt;
-    if (i + 1 < static_cast<std::size_t>(nn)) sum += p.elements[i].EA_N * (q.segment<3>(p.t_out[i]).norm() - 1.0), ++cnt;
+    if (i + 1 < static_cast<std::size_t>(nn))
+      sum += p.elements[i].EA_N * (q.segment<3>(p.t_out[i]).norm() - 1.0), ++cnt;
     r.node_tension_N[i] = sum / cnt;
   }
   for (std::size_t e = 0; e < p.elements.size(); ++e) {
@@ -98,7 +99,6 @@ FeStaticsResult post_process(const Problem& p, const FeStaticsOptions& o, const 
   }
   return r;
 }
-
 
 }  // namespace
 
@@ -163,8 +163,7 @@ FeStaticsResult solve_fe_line_statics(const FeLineModel& model, const FeEnvironm
     FeStaticsOptions direct = options;
     direct.max_iterations = std::min(options.max_iterations, kDirectAttemptIterations);
     Counters trial;
-    last = solve_with_current_steps(p, direct, q, t, trial,
-                                    {.swing_predictor = swing_direct, .continuations = false});
+    last = solve_with_current_steps(p, direct, q, t, trial, {.swing_predictor = swing_direct, .continuations = false});
     if (last.converged) last = snap_touchdown(p, options, q, t, trial, kFinalSnapPasses, last);
     counters.iterations += trial.iterations;
     counters.load_steps += trial.load_steps;
@@ -189,9 +188,8 @@ FeStaticsResult solve_fe_line_statics(const FeLineModel& model, const FeEnvironm
       const bool final_stage = k >= k_target;
       // The first stage repeats no attempt the direct one just made.
       const bool repeat = first_stage && final_stage && k_target > 0.0;
-      last = solve_with_current_steps(
-          p, final_stage ? options : stage_options, q, t, counters,
-          {.swing_predictor = first_stage && !swing_direct, .direct = !repeat});
+      last = solve_with_current_steps(p, final_stage ? options : stage_options, q, t, counters,
+                                      {.swing_predictor = first_stage && !swing_direct, .direct = !repeat});
       if (!last.converged) break;
       if (final_stage) {
         last = snap_touchdown(p, options, q, t, counters, kFinalSnapPasses, last);
@@ -215,13 +213,13 @@ FeStaticsResult solve_fe_line_statics(const FeLineModel& model, const FeEnvironm
     const double slack_length_m = std::hypot(AB.x(), AB.y()) + AB.z();
     const bool a_on_seabed = environment.seabed_stiffness_N_per_m2 > 0.0 &&
                              ends.end_A_m.z() <= environment.seabed_z_m + 1e-6 * p.line_length_m;
-    const std::string slack =
-        a_on_seabed && p.line_length_m >= slack_length_m
-            ? fmt::format(" The line is slack: its length {:.2f} m is at least its horizontal span plus "
-                          "height, {:.2f} m, so it has no taut equilibrium on a frictionless seabed; "
-                          "shorten it or move the ends apart.",
-                          p.line_length_m, slack_length_m)
-            : std::string();
+    const std::string slack = a_on_seabed && p.line_length_m >= slack_length_m
+                                  ? fmt::format(
+                                        " The line is slack: its length {:.2f} m is at least its horizontal span plus "
+                                        "height, {:.2f} m, so it has no taut equilibrium on a frictionless seabed; "
+                                        "shorten it or move the ends apart.",
+                                        p.line_length_m, slack_length_m)
+                                  : std::string();
     throw SolverError(
         fmt::format("FE line statics did not converge: {} Newton iterations, {} Newton solves (continuation "
                     "stages), force residual {:.4g} N against a tolerance of {:.4g} N.{} Try: check that the "

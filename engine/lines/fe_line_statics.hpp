@@ -92,15 +92,15 @@ struct FeLineTangent;  // opaque: the factorised Jacobian of a converged state
 
 /// One homogeneous section of the line.
 struct FeLineSection {
-  double length_m = 0.0;               ///< unstretched length, > 0
-  double EA_N = 0.0;                   ///< axial stiffness, > 0
-  double EI_Nm2 = 0.0;                 ///< bending stiffness, >= 0 (0: chain, rope)
-  double mass_kg_per_m = 0.0;          ///< mass per unstretched length (incl. contents), >= 0; unused by statics
-  double weight_N_per_m = 0.0;         ///< submerged (effective) weight per length; < 0 is buoyant
-  double hydro_diameter_m = 0.0;       ///< outer hydrodynamic diameter for drag, >= 0
-  double drag_normal = 0.0;            ///< Cdn on hydro_diameter_m, >= 0
-  double drag_tangential = 0.0;        ///< Cdt on π·hydro_diameter_m, >= 0
-  double element_length_m = 0.0;       ///< target element length, > 0 (elements are equal within a section)
+  double length_m = 0.0;          ///< unstretched length, > 0
+  double EA_N = 0.0;              ///< axial stiffness, > 0
+  double EI_Nm2 = 0.0;            ///< bending stiffness, >= 0 (0: chain, rope)
+  double mass_kg_per_m = 0.0;     ///< mass per unstretched length (incl. contents), >= 0; unused by statics
+  double weight_N_per_m = 0.0;    ///< submerged (effective) weight per length; < 0 is buoyant
+  double hydro_diameter_m = 0.0;  ///< outer hydrodynamic diameter for drag, >= 0
+  double drag_normal = 0.0;       ///< Cdn on hydro_diameter_m, >= 0
+  double drag_tangential = 0.0;   ///< Cdt on π·hydro_diameter_m, >= 0
+  double element_length_m = 0.0;  ///< target element length, > 0 (elements are equal within a section)
   // Dynamics only (fe_line_dynamics.hpp); statics ignores them.
   double displaced_area_m2 = 0.0;      ///< volume per length (Froude–Krylov, added mass), >= 0
   double added_mass_normal = 0.0;      ///< C_an on displaced_area_m2, >= 0
@@ -136,7 +136,7 @@ struct FeLineEnds {
 
 /// Current velocity at one depth.
 struct CurrentProfilePoint {
-  double z_m = 0.0;                                             ///< global z (negative below MWL)
+  double z_m = 0.0;                                            ///< global z (negative below MWL)
   Eigen::Vector3d velocity_m_per_s = Eigen::Vector3d::Zero();  ///< global frame
 };
 
@@ -146,9 +146,9 @@ struct FeEnvironment {
   /// Current, sorted by increasing z; linear in z between points, constant
   /// beyond the ends; empty means no current.
   std::vector<CurrentProfilePoint> current;
-  double seabed_z_m = -1.0e30;                      ///< seabed level (global z)
-  double seabed_stiffness_N_per_m2 = 0.0;           ///< per m of line per m penetration, >= 0
-  double seabed_axial_friction = 0.0;               ///< kept for dynamics; not applied in statics (see top)
+  double seabed_z_m = -1.0e30;             ///< seabed level (global z)
+  double seabed_stiffness_N_per_m2 = 0.0;  ///< per m of line per m penetration, >= 0
+  double seabed_axial_friction = 0.0;      ///< kept for dynamics; not applied in statics (see top)
 };
 
 struct FeStaticsOptions {
@@ -157,8 +157,8 @@ struct FeStaticsOptions {
   /// of: total |weight| + |point loads| + drag estimate, and the largest axial
   /// force), or below the round-off floor 10 ε max(EA/h) × coordinate size.
   double relative_force_tolerance = 1e-10;
-  int max_iterations = 100;              ///< Newton iterations per continuation stage
-  int max_load_step_halvings = 10;       ///< current continuation: step halvings allowed
+  int max_iterations = 100;         ///< Newton iterations per continuation stage
+  int max_load_step_halvings = 10;  ///< current continuation: step halvings allowed
   /// Initial shape as a function of unstretched arc length from end A
   /// (e.g. a catenary profile). Default: inextensible catenary in the
   /// vertical plane through A and B, lying on the seabed from A if A is on it;
@@ -184,26 +184,26 @@ struct FeStaticsOptions {
   /// contract, to 1e-3 of the tolerance (the state a Newton step would have
   /// left). Off for screening solves that only need the tolerance.
   bool polish_chord_steps = true;
-  bool snap_node_to_touchdown = true;   ///< condensed 3×3 dF_B/dx_B (cheap: 3 back-substitutions)
+  bool snap_node_to_touchdown = true;  ///< condensed 3×3 dF_B/dx_B (cheap: 3 back-substitutions)
 };
 
 struct FeTouchdown {
-  double arc_length_m = 0.0;                          ///< unstretched, from end A
+  double arc_length_m = 0.0;  ///< unstretched, from end A
   Eigen::Vector3d position_m = Eigen::Vector3d::Zero();
 };
 
 struct FeStaticsResult {
   // Per node (node 0 at end A).
-  std::vector<double> node_arc_length_m;              ///< unstretched arc length from A
+  std::vector<double> node_arc_length_m;  ///< unstretched arc length from A
   std::vector<Eigen::Vector3d> node_position_m;
-  std::vector<double> node_tension_N;                 ///< effective tension EA(|r'| − 1) at the node
-  std::vector<double> node_curvature_per_m;           ///< κ, mean of the two adjacent elements
-  std::vector<double> node_bending_moment_Nm;         ///< EI κ
+  std::vector<double> node_tension_N;          ///< effective tension EA(|r'| − 1) at the node
+  std::vector<double> node_curvature_per_m;    ///< κ, mean of the two adjacent elements
+  std::vector<double> node_bending_moment_Nm;  ///< EI κ
   /// Net force on each node's position DOFs (internal + external), N: zero up
   /// to the tolerance at free nodes; at the ends it is the end force below.
   std::vector<Eigen::Vector3d> node_force_residual_N;
   // Per element.
-  std::vector<double> element_tension_N;              ///< effective tension at the element midpoint
+  std::vector<double> element_tension_N;  ///< effective tension at the element midpoint
   // Ends: the force the line exerts on each end, N (global frame).
   Eigen::Vector3d end_A_force_N = Eigen::Vector3d::Zero();
   Eigen::Vector3d end_B_force_N = Eigen::Vector3d::Zero();
@@ -215,12 +215,12 @@ struct FeStaticsResult {
   /// empty when nothing touches. With a penalty seabed it lies ≈ √(H/k)
   /// beyond the rigid-seabed touchdown point (H: horizontal tension).
   std::optional<FeTouchdown> touchdown;
-  int iterations = 0;                                 ///< total Newton iterations
-  int load_steps = 0;                                 ///< Newton solves (continuation stages)
-  int touchdown_remeshes = 0;                         ///< node moves onto the touchdown point
-  int jacobian_evaluations = 0;                       ///< Jacobian assemblies + factorisations (incl. the end-B stiffness)
-  double residual_N = 0.0;                            ///< final max nodal force residual
-  double force_scale_N = 0.0;                         ///< scale the tolerance refers to
+  int iterations = 0;            ///< total Newton iterations
+  int load_steps = 0;            ///< Newton solves (continuation stages)
+  int touchdown_remeshes = 0;    ///< node moves onto the touchdown point
+  int jacobian_evaluations = 0;  ///< Jacobian assemblies + factorisations (incl. the end-B stiffness)
+  double residual_N = 0.0;       ///< final max nodal force residual
+  double force_scale_N = 0.0;    ///< scale the tolerance refers to
   /// [r, r'] per node (a second r' at hinge joints), for warm starts.
   Eigen::VectorXd state;
   /// Factorised Jacobian (at the converged state when compute_end_B_stiffness),

@@ -15,15 +15,11 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-double circle_area(double diameter_m) {
-  return 0.25 * kPi * diameter_m * diameter_m;
-}
+double circle_area(double diameter_m) { return 0.25 * kPi * diameter_m * diameter_m; }
 
-void require(bool condition, const char* field, const std::string& expectation, double value,
-             const char* unit) {
+void require(bool condition, const char* field, const std::string& expectation, double value, const char* unit) {
   if (!condition || !std::isfinite(value)) {
-    throw std::invalid_argument(
-        fmt::format("{}: must be {}, got {} {}", field, expectation, value, unit));
+    throw std::invalid_argument(fmt::format("{}: must be {}, got {} {}", field, expectation, value, unit));
   }
 }
 
@@ -34,26 +30,23 @@ void validate(const PipeSection& s, const Seawater& water) {
         "pipe: give exactly one of wall_thickness_m (homogeneous steel wall) and inner_diameter_m "
         "(layered flexible wall, its bore)");
   }
-  require(s.contents_density_kg_per_m3 >= 0.0, "pipe.contents_density_kg_per_m3", ">= 0",
-          s.contents_density_kg_per_m3, "kg/m^3");
+  require(s.contents_density_kg_per_m3 >= 0.0, "pipe.contents_density_kg_per_m3", ">= 0", s.contents_density_kg_per_m3,
+          "kg/m^3");
   const auto& e = s.explicit_properties;
   if (s.wall_thickness_m) {
-    require(*s.wall_thickness_m > 0.0 && *s.wall_thickness_m < 0.5 * s.outer_diameter_m,
-            "pipe.wall_thickness_m", fmt::format("in (0, OD/2 = {})", 0.5 * s.outer_diameter_m),
-            *s.wall_thickness_m, "m");
+    require(*s.wall_thickness_m > 0.0 && *s.wall_thickness_m < 0.5 * s.outer_diameter_m, "pipe.wall_thickness_m",
+            fmt::format("in (0, OD/2 = {})", 0.5 * s.outer_diameter_m), *s.wall_thickness_m, "m");
     require(s.yield_stress_Pa > 0.0, "pipe.yield_stress_Pa", "> 0", s.yield_stress_Pa, "Pa");
     if (!e.EA_N || !e.EI_N_m2) {
-      require(s.youngs_modulus_Pa > 0.0, "pipe.youngs_modulus_Pa", "> 0", s.youngs_modulus_Pa,
-              "Pa");
+      require(s.youngs_modulus_Pa > 0.0, "pipe.youngs_modulus_Pa", "> 0", s.youngs_modulus_Pa, "Pa");
     }
     if (!e.mass_per_length_kg_per_m) {
-      require(s.steel_density_kg_per_m3 > 0.0, "pipe.steel_density_kg_per_m3", "> 0",
-              s.steel_density_kg_per_m3, "kg/m^3");
+      require(s.steel_density_kg_per_m3 > 0.0, "pipe.steel_density_kg_per_m3", "> 0", s.steel_density_kg_per_m3,
+              "kg/m^3");
     }
   } else {
-    require(*s.inner_diameter_m > 0.0 && *s.inner_diameter_m < s.outer_diameter_m,
-            "pipe.inner_diameter_m", fmt::format("in (0, OD = {})", s.outer_diameter_m),
-            *s.inner_diameter_m, "m");
+    require(*s.inner_diameter_m > 0.0 && *s.inner_diameter_m < s.outer_diameter_m, "pipe.inner_diameter_m",
+            fmt::format("in (0, OD = {})", s.outer_diameter_m), *s.inner_diameter_m, "m");
     if (!e.EA_N || !e.EI_N_m2 || !e.mass_per_length_kg_per_m) {
       throw std::invalid_argument(
           "pipe.explicit_properties: a layered (flexible) wall needs EA_N, EI_N_m2 and "
@@ -65,14 +58,13 @@ void validate(const PipeSection& s, const Seawater& water) {
     require(*e.EI_N_m2 >= 0.0, "pipe.explicit_properties.EI_N_m2", ">= 0", *e.EI_N_m2, "N*m^2");
   }
   if (e.mass_per_length_kg_per_m) {
-    require(*e.mass_per_length_kg_per_m > 0.0, "pipe.explicit_properties.mass_per_length_kg_per_m",
-            "> 0", *e.mass_per_length_kg_per_m, "kg/m");
+    require(*e.mass_per_length_kg_per_m > 0.0, "pipe.explicit_properties.mass_per_length_kg_per_m", "> 0",
+            *e.mass_per_length_kg_per_m, "kg/m");
   }
   if (s.coating) {
-    require(s.coating->thickness_m > 0.0, "pipe.coating.thickness_m", "> 0", s.coating->thickness_m,
-            "m");
-    require(s.coating->density_kg_per_m3 >= 0.0, "pipe.coating.density_kg_per_m3", ">= 0",
-            s.coating->density_kg_per_m3, "kg/m^3");
+    require(s.coating->thickness_m > 0.0, "pipe.coating.thickness_m", "> 0", s.coating->thickness_m, "m");
+    require(s.coating->density_kg_per_m3 >= 0.0, "pipe.coating.density_kg_per_m3", ">= 0", s.coating->density_kg_per_m3,
+            "kg/m^3");
   }
   if (s.buoyancy) {
     const double coated = s.outer_diameter_m + (s.coating ? 2.0 * s.coating->thickness_m : 0.0);
@@ -81,18 +73,14 @@ void validate(const PipeSection& s, const Seawater& water) {
     require(s.buoyancy->density_kg_per_m3 >= 0.0, "pipe.buoyancy.density_kg_per_m3", ">= 0",
             s.buoyancy->density_kg_per_m3, "kg/m^3");
   }
-  require(water.density_kg_per_m3 > 0.0, "water.density_kg_per_m3", "> 0", water.density_kg_per_m3,
-          "kg/m^3");
-  require(water.gravity_m_per_s2 > 0.0, "water.gravity_m_per_s2", "> 0", water.gravity_m_per_s2,
-          "m/s^2");
+  require(water.density_kg_per_m3 > 0.0, "water.density_kg_per_m3", "> 0", water.density_kg_per_m3, "kg/m^3");
+  require(water.gravity_m_per_s2 > 0.0, "water.gravity_m_per_s2", "> 0", water.gravity_m_per_s2, "m/s^2");
 }
 
 void check_conversion_inputs(double tension_N, const PipePressures& pressures) {
   require(std::isfinite(tension_N), "tension_N", "finite", tension_N, "N");
-  require(std::isfinite(pressures.internal_Pa), "pressures.internal_Pa", "finite",
-          pressures.internal_Pa, "Pa");
-  require(std::isfinite(pressures.external_Pa), "pressures.external_Pa", "finite",
-          pressures.external_Pa, "Pa");
+  require(std::isfinite(pressures.internal_Pa), "pressures.internal_Pa", "finite", pressures.internal_Pa, "Pa");
+  require(std::isfinite(pressures.external_Pa), "pressures.external_Pa", "finite", pressures.external_Pa, "Pa");
 }
 
 }  // namespace
@@ -124,15 +112,13 @@ PipeSectionProperties pipe_section_properties(const PipeSection& section, const 
   // Layers outside the wall: coating, then smeared buoyancy (each an annulus).
   p.coated_diameter_m = od + (section.coating ? 2.0 * section.coating->thickness_m : 0.0);
   if (section.coating) {
-    p.coating_mass_kg_per_m =
-        section.coating->density_kg_per_m3 * (circle_area(p.coated_diameter_m) - p.outer_area_m2);
+    p.coating_mass_kg_per_m = section.coating->density_kg_per_m3 * (circle_area(p.coated_diameter_m) - p.outer_area_m2);
   }
   p.hydrodynamic_diameter_m = p.coated_diameter_m;
   if (section.buoyancy) {
     p.hydrodynamic_diameter_m = section.buoyancy->outer_diameter_m;
-    p.buoyancy_mass_kg_per_m =
-        section.buoyancy->density_kg_per_m3 *
-        (circle_area(p.hydrodynamic_diameter_m) - circle_area(p.coated_diameter_m));
+    p.buoyancy_mass_kg_per_m = section.buoyancy->density_kg_per_m3 *
+                               (circle_area(p.hydrodynamic_diameter_m) - circle_area(p.coated_diameter_m));
   }
   p.displaced_area_m2 = circle_area(p.hydrodynamic_diameter_m);
 
@@ -142,19 +128,17 @@ PipeSectionProperties pipe_section_properties(const PipeSection& section, const 
   const ExplicitSectionProperties& given = section.explicit_properties;
   p.EA_N = given.EA_N.value_or(section.youngs_modulus_Pa * p.steel_area_m2);
   p.EI_N_m2 = given.EI_N_m2.value_or(section.youngs_modulus_Pa * p.second_moment_m4);
-  p.steel_mass_kg_per_m =
-      given.mass_per_length_kg_per_m.value_or(section.steel_density_kg_per_m3 * p.steel_area_m2);
-  p.mass_per_length_kg_per_m =
-      p.steel_mass_kg_per_m + p.coating_mass_kg_per_m + p.buoyancy_mass_kg_per_m;
+  p.steel_mass_kg_per_m = given.mass_per_length_kg_per_m.value_or(section.steel_density_kg_per_m3 * p.steel_area_m2);
+  p.mass_per_length_kg_per_m = p.steel_mass_kg_per_m + p.coating_mass_kg_per_m + p.buoyancy_mass_kg_per_m;
   p.contents_mass_kg_per_m = section.contents_density_kg_per_m3 * p.inner_area_m2;
 
   // Effective (apparent) weight, Sparks (1984); DNV-OS-F201 (Sec. 4, recalled):
   // w_e = (m + m_c - rho_w A_displaced) g. Summing pressure end-cap forces of the
   // internal and external fluid columns into the tension (T_eff) turns the real
   // pressure field on a curved pipe into this Archimedes buoyancy per length.
-  p.effective_weight_N_per_m = (p.mass_per_length_kg_per_m + p.contents_mass_kg_per_m -
-                                water.density_kg_per_m3 * p.displaced_area_m2) *
-                               water.gravity_m_per_s2;
+  p.effective_weight_N_per_m =
+      (p.mass_per_length_kg_per_m + p.contents_mass_kg_per_m - water.density_kg_per_m3 * p.displaced_area_m2) *
+      water.gravity_m_per_s2;
   return p;
 }
 
@@ -164,19 +148,18 @@ double external_pressure_Pa(double z_m, const Seawater& water) {
   return z_m < 0.0 ? water.density_kg_per_m3 * water.gravity_m_per_s2 * (-z_m) : 0.0;
 }
 
-double internal_pressure_Pa(const InternalPressureProfile& profile, double z_m,
-                            double gravity_m_per_s2) {
-  require(profile.contents_density_kg_per_m3 >= 0.0, "internal_pressure.contents_density_kg_per_m3",
-          ">= 0", profile.contents_density_kg_per_m3, "kg/m^3");
+double internal_pressure_Pa(const InternalPressureProfile& profile, double z_m, double gravity_m_per_s2) {
+  require(profile.contents_density_kg_per_m3 >= 0.0, "internal_pressure.contents_density_kg_per_m3", ">= 0",
+          profile.contents_density_kg_per_m3, "kg/m^3");
   require(std::isfinite(z_m), "z_m", "finite", z_m, "m");
-  require(std::isfinite(profile.reference_pressure_Pa), "internal_pressure.reference_pressure_Pa",
-          "finite", profile.reference_pressure_Pa, "Pa");
-  require(std::isfinite(profile.reference_elevation_m), "internal_pressure.reference_elevation_m",
-          "finite", profile.reference_elevation_m, "m");
+  require(std::isfinite(profile.reference_pressure_Pa), "internal_pressure.reference_pressure_Pa", "finite",
+          profile.reference_pressure_Pa, "Pa");
+  require(std::isfinite(profile.reference_elevation_m), "internal_pressure.reference_elevation_m", "finite",
+          profile.reference_elevation_m, "m");
   // Static column of contents below the reference point (no friction losses):
   // p_i(z) = p_ref + rho_c g (z_ref - z).
-  return profile.reference_pressure_Pa + profile.contents_density_kg_per_m3 * gravity_m_per_s2 *
-                                             (profile.reference_elevation_m - z_m);
+  return profile.reference_pressure_Pa +
+         profile.contents_density_kg_per_m3 * gravity_m_per_s2 * (profile.reference_elevation_m - z_m);
 }
 
 double effective_tension_N(double wall_tension_N, const PipePressures& pressures,
@@ -224,23 +207,22 @@ double api_rp_2rd_design_factor(RiserDesignCondition condition) {
 }
 
 StressCheckResult check_pipe_stress(const PipeSectionProperties& p, const StressCheckInput& in) {
-  require(in.design_factor > 0.0 && in.design_factor <= 1.0, "stress_check.design_factor",
-          "in (0, 1]", in.design_factor, "");
+  require(in.design_factor > 0.0 && in.design_factor <= 1.0, "stress_check.design_factor", "in (0, 1]",
+          in.design_factor, "");
   require(std::isfinite(in.loads.wall_tension_N), "stress_check.loads.wall_tension_N", "finite",
           in.loads.wall_tension_N, "N");
-  require(std::isfinite(in.loads.bending_moment_N_m), "stress_check.loads.bending_moment_N_m",
-          "finite", in.loads.bending_moment_N_m, "N*m");
-  require(std::isfinite(in.loads.pressures.internal_Pa), "stress_check.loads.pressures.internal_Pa",
-          "finite", in.loads.pressures.internal_Pa, "Pa");
-  require(std::isfinite(in.loads.pressures.external_Pa), "stress_check.loads.pressures.external_Pa",
-          "finite", in.loads.pressures.external_Pa, "Pa");
+  require(std::isfinite(in.loads.bending_moment_N_m), "stress_check.loads.bending_moment_N_m", "finite",
+          in.loads.bending_moment_N_m, "N*m");
+  require(std::isfinite(in.loads.pressures.internal_Pa), "stress_check.loads.pressures.internal_Pa", "finite",
+          in.loads.pressures.internal_Pa, "Pa");
+  require(std::isfinite(in.loads.pressures.external_Pa), "stress_check.loads.pressures.external_Pa", "finite",
+          in.loads.pressures.external_Pa, "Pa");
   if (p.wall == PipeWall::layered) {
     throw std::invalid_argument(
         "check_pipe_stress: a layered (flexible) pipe wall has no homogeneous wall stress; check "
         "its minimum bending radius (check_bending_radius) and tension limits instead");
   }
-  require(p.steel_area_m2 > 0.0 && p.second_moment_m4 > 0.0, "section.steel_area_m2", "> 0",
-          p.steel_area_m2, "m^2");
+  require(p.steel_area_m2 > 0.0 && p.second_moment_m4 > 0.0, "section.steel_area_m2", "> 0", p.steel_area_m2, "m^2");
 
   const double pi = in.loads.pressures.internal_Pa;
   const double pe = in.loads.pressures.external_Pa;
@@ -298,9 +280,8 @@ StressCheckResult check_pipe_stress(const PipeSectionProperties& p, const Stress
       {SectionPoint::inner_tension_fibre, r.inner_tension_fibre.von_mises_Pa},
       {SectionPoint::inner_compression_fibre, r.inner_compression_fibre.von_mises_Pa},
   }};
-  const auto governing =
-      std::max_element(candidates.begin(), candidates.end(),
-                       [](const auto& lhs, const auto& rhs) { return lhs.second < rhs.second; });
+  const auto governing = std::max_element(candidates.begin(), candidates.end(),
+                                          [](const auto& lhs, const auto& rhs) { return lhs.second < rhs.second; });
   r.governing_point = governing->first;
   r.max_von_mises_Pa = governing->second;
 
@@ -311,10 +292,8 @@ StressCheckResult check_pipe_stress(const PipeSectionProperties& p, const Stress
 }
 
 BendingRadiusCheck check_bending_radius(double curvature_1_per_m, double minimum_bending_radius_m) {
-  require(std::isfinite(curvature_1_per_m), "curvature_1_per_m", "finite", curvature_1_per_m,
-          "1/m");
-  require(minimum_bending_radius_m > 0.0, "minimum_bending_radius_m", "> 0",
-          minimum_bending_radius_m, "m");
+  require(std::isfinite(curvature_1_per_m), "curvature_1_per_m", "finite", curvature_1_per_m, "1/m");
+  require(minimum_bending_radius_m > 0.0, "minimum_bending_radius_m", "> 0", minimum_bending_radius_m, "m");
   BendingRadiusCheck c;
   const double kappa = std::abs(curvature_1_per_m);
   // R = 1/kappa (plane-curve radius of curvature); a straight pipe has R = infinity.

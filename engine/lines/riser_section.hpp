@@ -63,10 +63,9 @@ struct SmearedBuoyancy {
 /// Explicit properties (flexible pipes, umbilicals; or overrides on a steel
 /// pipe): each one given replaces its steel formula. A layered wall needs all three.
 struct ExplicitSectionProperties {
-  std::optional<double> EA_N;     ///< axial stiffness, > 0
-  std::optional<double> EI_N_m2;  ///< bending stiffness, >= 0
-  std::optional<double>
-      mass_per_length_kg_per_m;  ///< structural mass in air, contents excluded, > 0
+  std::optional<double> EA_N;                      ///< axial stiffness, > 0
+  std::optional<double> EI_N_m2;                   ///< bending stiffness, >= 0
+  std::optional<double> mass_per_length_kg_per_m;  ///< structural mass in air, contents excluded, > 0
 };
 
 /// What carries the loads in the pipe wall (see the top of this file).
@@ -82,10 +81,9 @@ struct PipeSection {
   std::optional<double> wall_thickness_m;  ///< homogeneous wall: 0 < WT < OD/2
   /// Layered (flexible) wall: the bore, 0 < ID < OD; needs all three explicit_properties.
   std::optional<double> inner_diameter_m;
-  double youngs_modulus_Pa =
-      207.0e9;  ///< steel E (conventional value, reference-platforms §2.5, U)
+  double youngs_modulus_Pa = 207.0e9;  ///< steel E (conventional value, reference-platforms §2.5, U)
   double steel_density_kg_per_m3 = 7850.0;
-  double yield_stress_Pa = 448.0e6;  ///< SMYS (default: API 5L X65, 448 MPa); homogeneous wall
+  double yield_stress_Pa = 448.0e6;         ///< SMYS (default: API 5L X65, 448 MPa); homogeneous wall
   double contents_density_kg_per_m3 = 0.0;  ///< bore fluid, >= 0 (0: empty/air-filled)
   std::optional<PipeCoating> coating;
   std::optional<SmearedBuoyancy> buoyancy;
@@ -121,8 +119,7 @@ struct PipeSectionProperties {
 
 /// Section properties. Formulas: reference-platforms §2.5 (A_s, m, EA, EI, w_e);
 /// Sparks (1984) / DNV-OS-F201 Sec. 4 for the effective weight.
-PipeSectionProperties pipe_section_properties(const PipeSection& section,
-                                              const Seawater& water = {});
+PipeSectionProperties pipe_section_properties(const PipeSection& section, const Seawater& water = {});
 
 /// Hydrostatic (gauge) pressure of the sea at elevation z: rho_w g (-z) below the
 /// mean water level, 0 above it (no wave pressure).
@@ -136,8 +133,7 @@ struct InternalPressureProfile {
 };
 
 /// p_i(z) = p_ref + rho_c g (z_ref - z): static contents column, no flow losses.
-double internal_pressure_Pa(const InternalPressureProfile& profile, double z_m,
-                            double gravity_m_per_s2 = 9.80665);
+double internal_pressure_Pa(const InternalPressureProfile& profile, double z_m, double gravity_m_per_s2 = 9.80665);
 
 /// Pressures acting on the pipe wall at one station (gauge).
 struct PipePressures {
@@ -175,12 +171,7 @@ struct SectionLoads {
 };
 
 /// Which point of the section governs the equivalent stress.
-enum class SectionPoint {
-  outer_tension_fibre,
-  outer_compression_fibre,
-  inner_tension_fibre,
-  inner_compression_fibre
-};
+enum class SectionPoint { outer_tension_fibre, outer_compression_fibre, inner_tension_fibre, inner_compression_fibre };
 
 /// Principal stresses (no torsion/shear) at one point of the wall, Pa, tension positive.
 struct PointStresses {
@@ -226,8 +217,7 @@ struct StressCheckResult {
 /// sigma_vm / (design_factor * SMYS) (API RP 2RD §4.2, §4.5).
 /// Throws std::invalid_argument for design_factor outside (0, 1], non-finite
 /// loads, or a layered (flexible) wall, which has no homogeneous wall stress.
-StressCheckResult check_pipe_stress(const PipeSectionProperties& properties,
-                                    const StressCheckInput& input);
+StressCheckResult check_pipe_stress(const PipeSectionProperties& properties, const StressCheckInput& input);
 
 /// von Mises equivalent of three principal stresses:
 /// sqrt(((s1-s2)^2 + (s2-s3)^2 + (s3-s1)^2) / 2).

@@ -20,9 +20,7 @@ thread_local WorkerPool* t_pool = nullptr;
 constexpr Eigen::Index kMinSplitStates = 20000;
 
 /// Whether an operation on n states goes to the pool.
-bool on_pool(Eigen::Index n) {
-  return t_pool != nullptr && t_pool->threads() > 1 && n >= kMinSplitStates;
-}
+bool on_pool(Eigen::Index n) { return t_pool != nullptr && t_pool->threads() > 1 && n >= kMinSplitStates; }
 
 /// op(begin, length) over [0, n): on the pool in one contiguous range per
 /// thread, else at once. Elementwise operations give the same values either way.
@@ -58,31 +56,22 @@ void div(N_Vector x, N_Vector y, N_Vector z) {
   });
 }
 void scale(realtype c, N_Vector x, N_Vector z) {
-  elementwise(NV_LENGTH_S(z), [&](Eigen::Index i, Eigen::Index m) {
-    vec(z).segment(i, m) = c * vec(x).segment(i, m);
-  });
+  elementwise(NV_LENGTH_S(z), [&](Eigen::Index i, Eigen::Index m) { vec(z).segment(i, m) = c * vec(x).segment(i, m); });
 }
 void abs(N_Vector x, N_Vector z) {
-  elementwise(NV_LENGTH_S(z), [&](Eigen::Index i, Eigen::Index m) {
-    vec(z).segment(i, m) = vec(x).segment(i, m).cwiseAbs();
-  });
+  elementwise(NV_LENGTH_S(z),
+              [&](Eigen::Index i, Eigen::Index m) { vec(z).segment(i, m) = vec(x).segment(i, m).cwiseAbs(); });
 }
 void inv(N_Vector x, N_Vector z) {
-  elementwise(NV_LENGTH_S(z), [&](Eigen::Index i, Eigen::Index m) {
-    vec(z).segment(i, m) = vec(x).segment(i, m).cwiseInverse();
-  });
+  elementwise(NV_LENGTH_S(z),
+              [&](Eigen::Index i, Eigen::Index m) { vec(z).segment(i, m) = vec(x).segment(i, m).cwiseInverse(); });
 }
 void add_const(N_Vector x, realtype b, N_Vector z) {
-  elementwise(NV_LENGTH_S(z), [&](Eigen::Index i, Eigen::Index m) {
-    vec(z).segment(i, m) = vec(x).segment(i, m).array() + b;
-  });
+  elementwise(NV_LENGTH_S(z),
+              [&](Eigen::Index i, Eigen::Index m) { vec(z).segment(i, m) = vec(x).segment(i, m).array() + b; });
 }
-realtype dot(N_Vector x, N_Vector y) {
-  return vec(x).dot(vec(y));
-}
-realtype max_norm(N_Vector x) {
-  return NV_LENGTH_S(x) > 0 ? vec(x).cwiseAbs().maxCoeff() : 0.0;
-}
+realtype dot(N_Vector x, N_Vector y) { return vec(x).dot(vec(y)); }
+realtype max_norm(N_Vector x) { return NV_LENGTH_S(x) > 0 ? vec(x).cwiseAbs().maxCoeff() : 0.0; }
 // Block error norms (IdaOptions::error_group_starts): the integrator in
 // IDASolve on this thread, or null (one group). Set by set_solve_context only.
 thread_local const std::vector<Eigen::Index>* t_error_groups = nullptr;
@@ -99,9 +88,7 @@ realtype grouped_wrms(const Vec& x, const Vec& w, const double* mask) {
     const Eigen::Index a = starts[g], m = (g + 1 < starts.size() ? starts[g + 1] : n) - a;
     const auto xw2 = (x.segment(a, m).array() * w.segment(a, m).array()).square();
     const double sum =
-        mask == nullptr
-            ? xw2.sum()
-            : (Eigen::Map<const Eigen::ArrayXd>(mask + a, m) > 0.0).select(xw2, 0.0).sum();
+        mask == nullptr ? xw2.sum() : (Eigen::Map<const Eigen::ArrayXd>(mask + a, m) > 0.0).select(xw2, 0.0).sum();
     mean_square[g] = sum / static_cast<double>(m);
   };
   const int groups = static_cast<int>(starts.size());
@@ -123,15 +110,9 @@ realtype wrms_norm_mask(N_Vector x, N_Vector w, N_Vector id) {
   const double sum = (vec(id).array() > 0.0).select(xw * xw, 0.0).sum();
   return std::sqrt(sum / static_cast<double>(NV_LENGTH_S(x)));
 }
-realtype min(N_Vector x) {
-  return NV_LENGTH_S(x) > 0 ? vec(x).minCoeff() : BIG_REAL;
-}
-realtype wl2_norm(N_Vector x, N_Vector w) {
-  return vec(x).cwiseProduct(vec(w)).norm();
-}
-realtype l1_norm(N_Vector x) {
-  return vec(x).lpNorm<1>();
-}
+realtype min(N_Vector x) { return NV_LENGTH_S(x) > 0 ? vec(x).minCoeff() : BIG_REAL; }
+realtype wl2_norm(N_Vector x, N_Vector w) { return vec(x).cwiseProduct(vec(w)).norm(); }
+realtype l1_norm(N_Vector x) { return vec(x).lpNorm<1>(); }
 void compare(realtype c, N_Vector x, N_Vector z) {
   elementwise(NV_LENGTH_S(z), [&](Eigen::Index i, Eigen::Index m) {
     vec(z).segment(i, m) = (vec(x).segment(i, m).array().abs() >= c).select(Eigen::VectorXd::Ones(m), 0.0);

@@ -24,9 +24,7 @@ class WorkerPool;
 namespace spiral::engine::fast_nvector {
 
 /// The data of a serial N_Vector as an Eigen vector (no copy).
-inline Eigen::Map<Eigen::VectorXd> vec(N_Vector v) {
-  return {NV_DATA_S(v), static_cast<Eigen::Index>(NV_LENGTH_S(v))};
-}
+inline Eigen::Map<Eigen::VectorXd> vec(N_Vector v) { return {NV_DATA_S(v), static_cast<Eigen::Index>(NV_LENGTH_S(v))}; }
 
 /// Installs the operations in the ops table of `v`.
 void install(N_Vector v);

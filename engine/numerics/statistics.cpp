@@ -16,8 +16,7 @@ constexpr double kEulerGamma = 0.57721566490153286;
 
 void require_samples(std::span<const double> x, std::size_t minimum, const char* what) {
   if (x.size() < minimum) {
-    throw std::invalid_argument(
-        fmt::format("{}: need at least {} samples, got {}", what, minimum, x.size()));
+    throw std::invalid_argument(fmt::format("{}: need at least {} samples, got {}", what, minimum, x.size()));
   }
   for (std::size_t i = 0; i < x.size(); ++i) {
     if (!std::isfinite(x[i])) {
@@ -70,17 +69,14 @@ ChannelMoments channel_moments(std::span<const double> x) {
 Spectrum welch_spectrum(std::span<const double> x, double dt_s, std::size_t L) {
   require_dt(dt_s, "welch_spectrum");
   if (L < 16) {
-    throw std::invalid_argument(
-        fmt::format("welch_spectrum: segment_length must be >= 16 samples, got {}", L));
+    throw std::invalid_argument(fmt::format("welch_spectrum: segment_length must be >= 16 samples, got {}", L));
   }
   require_samples(x, L, "welch_spectrum (segment_length)");
   // Hann window (periodic form, exact 50 % overlap-add), Welch (1967).
   std::vector<double> w(L);
   double sum_w2 = 0.0;
   for (std::size_t i = 0; i < L; ++i) {
-    w[i] =
-        0.5 *
-        (1.0 - std::cos(2.0 * std::numbers::pi * static_cast<double>(i) / static_cast<double>(L)));
+    w[i] = 0.5 * (1.0 - std::cos(2.0 * std::numbers::pi * static_cast<double>(i) / static_cast<double>(L)));
     sum_w2 += w[i] * w[i];
   }
   const std::size_t hop = L / 2;
@@ -95,8 +91,7 @@ Spectrum welch_spectrum(std::span<const double> x, double dt_s, std::size_t L) {
     const double mu = mean_of(part);
     for (std::size_t i = 0; i < L; ++i) segment[i] = (part[i] - mu) * w[i];
     fft.fwd(spectrum, segment);
-    for (std::size_t k = 0; k < n_bins; ++k)
-      power(static_cast<Eigen::Index>(k)) += std::norm(spectrum[k]);
+    for (std::size_t k = 0; k < n_bins; ++k) power(static_cast<Eigen::Index>(k)) += std::norm(spectrum[k]);
   }
   // Two-sided P(f_k) = |X_k|² / (fs sum w²); one-sided doubles every bin but
   // DC and (even L) Nyquist; S(w) = P(f)/(2 pi).
@@ -107,9 +102,8 @@ Spectrum welch_spectrum(std::span<const double> x, double dt_s, std::size_t L) {
   }
   Spectrum out;
   out.frequency_step_rad_s = 2.0 * std::numbers::pi / (static_cast<double>(L) * dt_s);
-  out.frequency_rad_s =
-      Eigen::VectorXd::LinSpaced(static_cast<Eigen::Index>(n_bins), 0.0,
-                                 out.frequency_step_rad_s * static_cast<double>(n_bins - 1));
+  out.frequency_rad_s = Eigen::VectorXd::LinSpaced(static_cast<Eigen::Index>(n_bins), 0.0,
+                                                   out.frequency_step_rad_s * static_cast<double>(n_bins - 1));
   out.density = power;
   out.segments = n_seg;
   return out;
@@ -117,16 +111,15 @@ Spectrum welch_spectrum(std::span<const double> x, double dt_s, std::size_t L) {
 
 std::vector<double> low_pass_dft(std::span<const double> x, double dt_s, double cutoff_rad_s) {
   if (x.size() < 2 || !(dt_s > 0.0) || !(cutoff_rad_s > 0.0)) {
-    throw std::invalid_argument(fmt::format(
-        "low_pass_dft: need >= 2 samples, dt > 0 s and a cut-off > 0 rad/s; got {}, {} s, {} "
-        "rad/s",
-        x.size(), dt_s, cutoff_rad_s));
+    throw std::invalid_argument(
+        fmt::format("low_pass_dft: need >= 2 samples, dt > 0 s and a cut-off > 0 rad/s; got {}, {} s, {} "
+                    "rad/s",
+                    x.size(), dt_s, cutoff_rad_s));
   }
   const std::size_t n = x.size();
   const double slope = (x.back() - x.front()) / static_cast<double>(n - 1);
   std::vector<double> detrended(n);
-  for (std::size_t i = 0; i < n; ++i)
-    detrended[i] = x[i] - x.front() - slope * static_cast<double>(i);
+  for (std::size_t i = 0; i < n; ++i) detrended[i] = x[i] - x.front() - slope * static_cast<double>(i);
   Eigen::FFT<double> fft;
   fft.SetFlag(Eigen::FFT<double>::HalfSpectrum);
   std::vector<std::complex<double>> spectrum;
@@ -141,9 +134,7 @@ std::vector<double> low_pass_dft(std::span<const double> x, double dt_s, double 
   return out;
 }
 
-double spectrum_variance(const Spectrum& s) {
-  return s.density.sum() * s.frequency_step_rad_s;
-}
+double spectrum_variance(const Spectrum& s) { return s.density.sum() * s.frequency_step_rad_s; }
 
 double spectral_peak_period_s(const Spectrum& s) {
   if (s.density.size() < 2) throw std::invalid_argument("spectral_peak_period_s: empty spectrum");
@@ -168,9 +159,8 @@ double zero_upcrossing_period_s(std::span<const double> x, double dt_s) {
   require_samples(x, 3, "zero_upcrossing_period_s");
   const auto t = upcrossing_times_s(x, dt_s, mean_of(x));
   if (t.size() < 2) {
-    throw std::invalid_argument(
-        fmt::format("zero_upcrossing_period_s: need >= 2 mean up-crossings, found {} in {} s",
-                    t.size(), static_cast<double>(x.size()) * dt_s));
+    throw std::invalid_argument(fmt::format("zero_upcrossing_period_s: need >= 2 mean up-crossings, found {} in {} s",
+                                            t.size(), static_cast<double>(x.size()) * dt_s));
   }
   return (t.back() - t.front()) / static_cast<double>(t.size() - 1);
 }
@@ -206,8 +196,8 @@ GumbelFit fit_gumbel_moments(std::span<const double> maxima) {
 
 WeibullFit fit_weibull_least_squares(std::span<const double> excess, double upper_fraction) {
   if (!(upper_fraction > 0.0 && upper_fraction <= 1.0)) {
-    throw std::invalid_argument(fmt::format(
-        "fit_weibull_least_squares: upper_fraction must be in (0, 1], got {}", upper_fraction));
+    throw std::invalid_argument(
+        fmt::format("fit_weibull_least_squares: upper_fraction must be in (0, 1], got {}", upper_fraction));
   }
   std::vector<double> x;
   x.reserve(excess.size());
@@ -234,8 +224,7 @@ WeibullFit fit_weibull_least_squares(std::span<const double> excess, double uppe
   }
   if (n < 3.0) {
     throw std::invalid_argument(fmt::format(
-        "fit_weibull_least_squares: need >= 3 samples in the fitted upper fraction {}, got {}",
-        upper_fraction, n));
+        "fit_weibull_least_squares: need >= 3 samples in the fitted upper fraction {}, got {}", upper_fraction, n));
   }
   const double denom = n * sxx - sx * sx;
   if (!(denom > 0.0)) throw std::invalid_argument("fit_weibull_least_squares: all excesses equal");
@@ -244,17 +233,15 @@ WeibullFit fit_weibull_least_squares(std::span<const double> excess, double uppe
   return WeibullFit{std::exp(-intercept / c), c};
 }
 
-ExtremeEstimate most_probable_maximum(std::span<const double> x, double dt_s,
-                                      const ExtremeOptions& options) {
+ExtremeEstimate most_probable_maximum(std::span<const double> x, double dt_s, const ExtremeOptions& options) {
   require_dt(dt_s, "most_probable_maximum");
   if (options.gumbel_segments < 2) {
-    throw std::invalid_argument(fmt::format(
-        "most_probable_maximum: gumbel_segments must be >= 2, got {}", options.gumbel_segments));
+    throw std::invalid_argument(
+        fmt::format("most_probable_maximum: gumbel_segments must be >= 2, got {}", options.gumbel_segments));
   }
   if (!(options.target_duration_s > 0.0)) {
     throw std::invalid_argument(
-        fmt::format("most_probable_maximum: target_duration_s must be > 0 s, got {} s",
-                    options.target_duration_s));
+        fmt::format("most_probable_maximum: target_duration_s must be > 0 s, got {} s", options.target_duration_s));
   }
   require_samples(x, 8 * options.gumbel_segments, "most_probable_maximum");
   const ChannelMoments mom = channel_moments(x);
@@ -270,8 +257,7 @@ ExtremeEstimate most_probable_maximum(std::span<const double> x, double dt_s,
   }
   e.gumbel = fit_gumbel_moments(seg_max);
   const double seg_duration_s = static_cast<double>(seg_len) * dt_s;
-  e.mpm_gumbel =
-      e.gumbel.location + e.gumbel.scale * std::log(options.target_duration_s / seg_duration_s);
+  e.mpm_gumbel = e.gumbel.location + e.gumbel.scale * std::log(options.target_duration_s / seg_duration_s);
 
   // (b) Weibull on the global-peak excesses over the mean.
   const auto peaks = cycle_maxima(x, mom.mean);
@@ -279,25 +265,21 @@ ExtremeEstimate most_probable_maximum(std::span<const double> x, double dt_s,
   std::vector<double> excess(peaks.size());
   for (std::size_t i = 0; i < peaks.size(); ++i) excess[i] = peaks[i] - mom.mean;
   e.weibull = fit_weibull_least_squares(excess, options.weibull_upper_fraction);
-  e.expected_peaks_in_target =
-      static_cast<double>(peaks.size()) * options.target_duration_s / e.record_duration_s;
+  e.expected_peaks_in_target = static_cast<double>(peaks.size()) * options.target_duration_s / e.record_duration_s;
   if (!(e.expected_peaks_in_target > 1.0)) {
     throw std::invalid_argument("most_probable_maximum: fewer than 1 expected peak in the target");
   }
-  e.mpm_weibull = mom.mean + e.weibull.scale * std::pow(std::log(e.expected_peaks_in_target),
-                                                        1.0 / e.weibull.shape);
+  e.mpm_weibull = mom.mean + e.weibull.scale * std::pow(std::log(e.expected_peaks_in_target), 1.0 / e.weibull.shape);
 
   // (c) Rayleigh check for a Gaussian process.
   const double Tz = zero_upcrossing_period_s(x, dt_s);
   e.expected_cycles_in_target = options.target_duration_s / Tz;
-  e.mpm_rayleigh =
-      mom.mean +
-      mom.std_dev * std::sqrt(2.0 * std::log(std::max(e.expected_cycles_in_target, 1.0)));
+  e.mpm_rayleigh = mom.mean + mom.std_dev * std::sqrt(2.0 * std::log(std::max(e.expected_cycles_in_target, 1.0)));
   return e;
 }
 
-ChannelStatistics analyze_channel(std::span<const double> x, double dt_s,
-                                  std::size_t welch_segment_length, const ExtremeOptions& options) {
+ChannelStatistics analyze_channel(std::span<const double> x, double dt_s, std::size_t welch_segment_length,
+                                  const ExtremeOptions& options) {
   ChannelStatistics c;
   c.moments = channel_moments(x);
   c.spectrum = welch_spectrum(x, dt_s, welch_segment_length);

@@ -143,8 +143,7 @@ struct ExtremeEstimate {
 };
 
 /// The three MPM estimates of the channel maximum over the target duration.
-ExtremeEstimate most_probable_maximum(std::span<const double> x, double dt_s,
-                                      const ExtremeOptions& options = {});
+ExtremeEstimate most_probable_maximum(std::span<const double> x, double dt_s, const ExtremeOptions& options = {});
 
 /// Everything the results store keeps per channel.
 struct ChannelStatistics {
@@ -157,8 +156,7 @@ struct ChannelStatistics {
 };
 
 /// Moments, Welch spectrum (segment_length samples), periods and extremes.
-ChannelStatistics analyze_channel(std::span<const double> x, double dt_s,
-                                  std::size_t welch_segment_length,
+ChannelStatistics analyze_channel(std::span<const double> x, double dt_s, std::size_t welch_segment_length,
                                   const ExtremeOptions& options = {});
 
 /// Welch segment length for a record of `samples` samples: the largest power

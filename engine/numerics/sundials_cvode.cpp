@@ -97,8 +97,8 @@ struct CvodeIntegrator::Impl {
     try {
       self->rhs(t, self->y_work, self->ydot_work);
       if (self->ydot_work.size() != n) {
-        throw std::logic_error(fmt::format("ODE right-hand side wrote {} derivatives for {} states",
-                                           self->ydot_work.size(), n));
+        throw std::logic_error(
+            fmt::format("ODE right-hand side wrote {} derivatives for {} states", self->ydot_work.size(), n));
       }
       if (!self->ydot_work.allFinite()) {
         self->last_rhs_message = fmt::format("non-finite derivative at t = {} s", t);
@@ -118,16 +118,14 @@ struct CvodeIntegrator::Impl {
   }
 
   // Keeps CVODE from printing to stderr: its message goes into the exception.
-  static void error_handler(int /*code*/, const char* module, const char* function, char* msg,
-                            void* user_data) {
+  static void error_handler(int /*code*/, const char* module, const char* function, char* msg, void* user_data) {
     auto* self = static_cast<Impl*>(user_data);
     self->last_cvode_message = fmt::format("{}/{}: {}", module, function, msg);
   }
 
   void check(int flag, const char* call) const {
     if (flag < 0) {
-      throw SolverError(fmt::format("CVODE setup: {} returned {} ({})", call, flag_name(flag),
-                                    last_cvode_message));
+      throw SolverError(fmt::format("CVODE setup: {} returned {} ({})", call, flag_name(flag), last_cvode_message));
     }
   }
 };
@@ -145,24 +143,21 @@ CvodeIntegrator::CvodeIntegrator(OdeRightHandSide rhs, double t0_s, const Eigen:
         fmt::format("CVODE: relative_tolerance and absolute_tolerance must be > 0, got {} and {}",
                     options.relative_tolerance, options.absolute_tolerance));
   }
-  if (options.absolute_tolerances && (options.absolute_tolerances->size() != y0.size() ||
-                                      !(options.absolute_tolerances->array() > 0.0).all())) {
-    throw std::invalid_argument(
-        fmt::format("CVODE: absolute_tolerances must have {} entries, all > 0", y0.size()));
+  if (options.absolute_tolerances &&
+      (options.absolute_tolerances->size() != y0.size() || !(options.absolute_tolerances->array() > 0.0).all())) {
+    throw std::invalid_argument(fmt::format("CVODE: absolute_tolerances must have {} entries, all > 0", y0.size()));
   }
   if (options.max_step_s && !(*options.max_step_s > 0.0)) {
-    throw std::invalid_argument(
-        fmt::format("CVODE: max_step_s must be > 0 s, got {} s", *options.max_step_s));
+    throw std::invalid_argument(fmt::format("CVODE: max_step_s must be > 0 s, got {} s", *options.max_step_s));
   }
   if (options.initial_step_s && !(*options.initial_step_s > 0.0)) {
-    throw std::invalid_argument(
-        fmt::format("CVODE: initial_step_s must be > 0 s, got {} s", *options.initial_step_s));
+    throw std::invalid_argument(fmt::format("CVODE: initial_step_s must be > 0 s, got {} s", *options.initial_step_s));
   }
   if (options.max_order) {
     const int limit = options.method == CvodeMethod::bdf_newton_dense ? 5 : 12;
     if (*options.max_order < 1 || *options.max_order > limit) {
-      throw std::invalid_argument(fmt::format(
-          "CVODE: max_order must be 1..{} for this method, got {}", limit, *options.max_order));
+      throw std::invalid_argument(
+          fmt::format("CVODE: max_order must be 1..{} for this method, got {}", limit, *options.max_order));
     }
   }
   if (options.max_steps_between_outputs <= 0) {
@@ -194,12 +189,10 @@ CvodeIntegrator::CvodeIntegrator(OdeRightHandSide rhs, double t0_s, const Eigen:
   if (options.absolute_tolerances) {
     m.atol = N_VNew_Serial(n, m.context);
     if (m.atol == nullptr) throw SolverError("CVODE setup: N_VNew_Serial failed");
-    Eigen::Map<Eigen::VectorXd>(N_VGetArrayPointer_Serial(m.atol), y0.size()) =
-        *options.absolute_tolerances;
+    Eigen::Map<Eigen::VectorXd>(N_VGetArrayPointer_Serial(m.atol), y0.size()) = *options.absolute_tolerances;
     m.check(CVodeSVtolerances(m.cvode, options.relative_tolerance, m.atol), "CVodeSVtolerances");
   } else {
-    m.check(CVodeSStolerances(m.cvode, options.relative_tolerance, options.absolute_tolerance),
-            "CVodeSStolerances");
+    m.check(CVodeSStolerances(m.cvode, options.relative_tolerance, options.absolute_tolerance), "CVodeSStolerances");
   }
   if (options.method == CvodeMethod::adams_fixed_point) {
     m.nonlinear_solver = SUNNonlinSol_FixedPoint(m.y, 0, m.context);
@@ -232,8 +225,8 @@ void CvodeIntegrator::set_stop_time(double tstop_s) {
 const Eigen::VectorXd& CvodeIntegrator::advance_to(double t_out_s) {
   Impl& m = *impl_;
   if (!(t_out_s > m.t_out)) {
-    throw std::invalid_argument(fmt::format(
-        "CVODE: output time {} s must be after the current output time {} s", t_out_s, m.t_out));
+    throw std::invalid_argument(
+        fmt::format("CVODE: output time {} s must be after the current output time {} s", t_out_s, m.t_out));
   }
   realtype t_reached = m.t_out;
   const int flag = CVode(m.cvode, t_out_s, m.y, &t_reached, CV_NORMAL);
@@ -247,17 +240,14 @@ const Eigen::VectorXd& CvodeIntegrator::advance_to(double t_out_s) {
     // continued past this time whatever the step budget (a force that fails
     // or jumps there): say so instead of blaming the step budget.
     constexpr double kCollapsedStepUlps = 1e3;
-    const bool collapsed = std::abs(s.last_step_s) < kCollapsedStepUlps *
-                                                         std::numeric_limits<double>::epsilon() *
+    const bool collapsed = std::abs(s.last_step_s) < kCollapsedStepUlps * std::numeric_limits<double>::epsilon() *
                                                          std::max(1.0, std::abs(s.current_time_s));
     std::string message = fmt::format(
         "CVODE failed at t = {:.6g} s on the way to t = {:.6g} s: {}{} after {} steps, last step "
         "h = {:.3g} s (order {}). {}{}. Hint: {}",
-        s.current_time_s, t_out_s, flag_name(flag), collapsed ? " (step size collapsed)" : "",
-        s.steps, s.last_step_s, s.last_order, m.last_cvode_message,
-        m.last_rhs_message.empty()
-            ? ""
-            : fmt::format(" Last right-hand side error: {}", m.last_rhs_message),
+        s.current_time_s, t_out_s, flag_name(flag), collapsed ? " (step size collapsed)" : "", s.steps, s.last_step_s,
+        s.last_order, m.last_cvode_message,
+        m.last_rhs_message.empty() ? "" : fmt::format(" Last right-hand side error: {}", m.last_rhs_message),
         collapsed ? "the right-hand side fails or is discontinuous at this time: check the "
                     "forces (line solver, tabulated input) at the state reached"
                   : hint_for(flag));
@@ -269,12 +259,8 @@ const Eigen::VectorXd& CvodeIntegrator::advance_to(double t_out_s) {
   return m.y_out;
 }
 
-double CvodeIntegrator::time_s() const {
-  return impl_->t_out;
-}
-const Eigen::VectorXd& CvodeIntegrator::state() const {
-  return impl_->y_out;
-}
+double CvodeIntegrator::time_s() const { return impl_->t_out; }
+const Eigen::VectorXd& CvodeIntegrator::state() const { return impl_->y_out; }
 
 CvodeStatistics CvodeIntegrator::statistics() const {
   const Impl& m = *impl_;
@@ -282,8 +268,8 @@ CvodeStatistics CvodeIntegrator::statistics() const {
   long nsteps = 0, nfevals = 0, nlinsetups = 0, netfails = 0;
   int qlast = 0, qcur = 0;
   realtype hinused = 0, hlast = 0, hcur = 0, tcur = 0;
-  CVodeGetIntegratorStats(m.cvode, &nsteps, &nfevals, &nlinsetups, &netfails, &qlast, &qcur,
-                          &hinused, &hlast, &hcur, &tcur);
+  CVodeGetIntegratorStats(m.cvode, &nsteps, &nfevals, &nlinsetups, &netfails, &qlast, &qcur, &hinused, &hlast, &hcur,
+                          &tcur);
   s.steps = nsteps;
   s.rhs_evaluations = nfevals;
   s.error_test_failures = netfails;
@@ -305,10 +291,10 @@ OdeSolution integrate_ode(const OdeRightHandSide& rhs, double t0_s, const Eigen:
     const double prev = k == 0 ? t0_s : output_times_s[k - 1];
     const bool first_at_start = k == 0 && output_times_s[0] == t0_s;
     if (!(output_times_s[k] > prev) && !first_at_start) {
-      throw std::invalid_argument(fmt::format(
-          "integrate_ode: output times must be strictly increasing and after t0 = {} s; "
-          "output_times_s[{}] = {} s",
-          t0_s, k, output_times_s[k]));
+      throw std::invalid_argument(
+          fmt::format("integrate_ode: output times must be strictly increasing and after t0 = {} s; "
+                      "output_times_s[{}] = {} s",
+                      t0_s, k, output_times_s[k]));
     }
   }
   CvodeIntegrator integrator(rhs, t0_s, y0, options);

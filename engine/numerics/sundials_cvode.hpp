@@ -37,8 +37,7 @@
 namespace spiral::engine {
 
 /// y' = f(t, y): writes ydot (already sized like y). t in s.
-using OdeRightHandSide =
-    std::function<void(double t, const Eigen::VectorXd& y, Eigen::VectorXd& ydot)>;
+using OdeRightHandSide = std::function<void(double t, const Eigen::VectorXd& y, Eigen::VectorXd& ydot)>;
 
 enum class CvodeMethod { bdf_newton_dense, adams_newton_dense, adams_fixed_point };
 
@@ -46,13 +45,13 @@ enum class CvodeMethod { bdf_newton_dense, adams_newton_dense, adams_fixed_point
 /// the local error of y_i is kept below rtol·|y_i| + atol_i.
 struct CvodeOptions {
   CvodeMethod method = CvodeMethod::adams_newton_dense;
-  double relative_tolerance = 1e-8;   ///< > 0 (CVODE warns below ~1e-15)
-  double absolute_tolerance = 1e-10;  ///< > 0, in the unit of every state; used if no vector
+  double relative_tolerance = 1e-8;                    ///< > 0 (CVODE warns below ~1e-15)
+  double absolute_tolerance = 1e-10;                   ///< > 0, in the unit of every state; used if no vector
   std::optional<Eigen::VectorXd> absolute_tolerances;  ///< per state, > 0, size of y
   std::optional<double> max_step_s;                    ///< > 0; none = unbounded
   std::optional<double> initial_step_s;                ///< > 0; none = CVODE's estimate
   long max_steps_between_outputs = 500000;             ///< CVodeSetMaxNumSteps (> 0)
-  std::optional<int> max_order;  ///< CVodeSetMaxOrd: 1..5 (BDF), 1..12 (Adams); none = maximum
+  std::optional<int> max_order;                        ///< CVodeSetMaxOrd: 1..5 (BDF), 1..12 (Adams); none = maximum
 };
 
 /// Counters of a CVODE run (cumulative since construction).
@@ -73,8 +72,8 @@ struct CvodeStatistics {
 /// CVODE failed: carries how far it got.
 class IntegrationError : public SolverError {
  public:
-  IntegrationError(const std::string& message, double time_reached_s, double last_step_s,
-                   int cvode_flag, SolverDiagnostics diagnostics)
+  IntegrationError(const std::string& message, double time_reached_s, double last_step_s, int cvode_flag,
+                   SolverDiagnostics diagnostics)
       : SolverError(message, std::move(diagnostics)),
         time_reached_s_(time_reached_s),
         last_step_s_(last_step_s),
@@ -97,8 +96,7 @@ class CvodeIntegrator {
  public:
   /// Throws std::invalid_argument for an empty y0, non-finite y0 / t0 or
   /// invalid options; SolverError if a SUNDIALS object cannot be created.
-  CvodeIntegrator(OdeRightHandSide rhs, double t0_s, const Eigen::VectorXd& y0,
-                  const CvodeOptions& options = {});
+  CvodeIntegrator(OdeRightHandSide rhs, double t0_s, const Eigen::VectorXd& y0, const CvodeOptions& options = {});
   ~CvodeIntegrator();
   CvodeIntegrator(CvodeIntegrator&&) noexcept;
   CvodeIntegrator& operator=(CvodeIntegrator&&) noexcept;

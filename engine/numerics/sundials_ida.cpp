@@ -144,17 +144,14 @@ struct IdaIntegrator::Impl {
     return kResidualSuccess;
   }
 
-  static SUNLinearSolver_Type solver_type(SUNLinearSolver) {
-    return SUNLINEARSOLVER_MATRIX_EMBEDDED;
-  }
+  static SUNLinearSolver_Type solver_type(SUNLinearSolver) { return SUNLINEARSOLVER_MATRIX_EMBEDDED; }
 
   static int solve_callback(SUNLinearSolver ls, SUNMatrix, N_Vector x, N_Vector b, realtype) {
     auto* self = static_cast<Impl*>(ls->content);
     realtype t = 0.0, cj = 0.0;
     N_Vector yy_pred, yp_pred, yy, yp, res;
     void* user_data = nullptr;
-    if (IDAGetNonlinearSystemData(self->ida, &t, &yy_pred, &yp_pred, &yy, &yp, &res, &cj,
-                                  &user_data) != 0) {
+    if (IDAGetNonlinearSystemData(self->ida, &t, &yy_pred, &yp_pred, &yy, &yp, &res, &cj, &user_data) != 0) {
       return SUNLS_PACKAGE_FAIL_UNREC;
     }
     try {
@@ -163,8 +160,8 @@ struct IdaIntegrator::Impl {
       IDAGetNumNonlinSolvConvFails(self->ida, &failures);
       const bool full = !self->factored || failures > self->convergence_failures_at_setup ||
                         steps - self->steps_at_setup >= self->options.max_steps_between_setups;
-      const bool update = !full && (std::abs(cj / self->cj_at_setup - 1.0) > kCjChangeForSetup ||
-                                    self->system->newton_matrix_stale());
+      const bool update =
+          !full && (std::abs(cj / self->cj_at_setup - 1.0) > kCjChangeForSetup || self->system->newton_matrix_stale());
       if (full || update) {
         ++self->setups;
         if (full) {
@@ -211,8 +208,7 @@ struct IdaIntegrator::Impl {
   // effect: the energy drift of the undamped chain test falls 10× at rtol
   // 1e-8, and the OC4 benchmark's Newton divergences (rate > 0.9 after a
   // contact change) are caught instead of accepted.
-  static int convergence_test(SUNNonlinearSolver nls, N_Vector, N_Vector del, realtype tol,
-                              N_Vector ewt, void* data) {
+  static int convergence_test(SUNNonlinearSolver nls, N_Vector, N_Vector del, realtype tol, N_Vector ewt, void* data) {
     auto* self = static_cast<Impl*>(data);
     const double norm = N_VWrmsNorm(del, ewt);
     int m = 0;
@@ -237,55 +233,48 @@ struct IdaIntegrator::Impl {
     return self->rate_factor * norm <= tol ? SUN_NLS_SUCCESS : SUN_NLS_CONTINUE;
   }
 
-  static void error_handler(int, const char* module, const char* function, char* msg,
-                            void* user_data) {
-    static_cast<Impl*>(user_data)->last_ida_message =
-        fmt::format("{}/{}: {}", module, function, msg);
+  static void error_handler(int, const char* module, const char* function, char* msg, void* user_data) {
+    static_cast<Impl*>(user_data)->last_ida_message = fmt::format("{}/{}: {}", module, function, msg);
   }
 
   void check(int flag, const char* call) const {
     if (flag < 0) {
-      throw SolverError(
-          fmt::format("IDA setup: {} returned {} ({})", call, flag_name(flag), last_ida_message));
+      throw SolverError(fmt::format("IDA setup: {} returned {} ({})", call, flag_name(flag), last_ida_message));
     }
   }
 };
 
-IdaIntegrator::IdaIntegrator(ImplicitSystem& system, double t0_s, const Eigen::VectorXd& y0,
-                             const Eigen::VectorXd& yp0, const IdaOptions& options)
+IdaIntegrator::IdaIntegrator(ImplicitSystem& system, double t0_s, const Eigen::VectorXd& y0, const Eigen::VectorXd& yp0,
+                             const IdaOptions& options)
     : impl_(std::make_unique<Impl>()) {
   const Eigen::Index n = y0.size();
   if (n == 0 || yp0.size() != n) {
-    throw std::invalid_argument(fmt::format(
-        "IDA: y0 and yp0 must be non-empty and of one size, got {} and {}", n, yp0.size()));
+    throw std::invalid_argument(
+        fmt::format("IDA: y0 and yp0 must be non-empty and of one size, got {} and {}", n, yp0.size()));
   }
   if (!y0.allFinite() || !yp0.allFinite() || !std::isfinite(t0_s)) {
     throw std::invalid_argument("IDA: the initial time, state and derivative must be finite");
   }
   if (!(options.relative_tolerance > 0.0) || !(options.absolute_tolerance > 0.0)) {
-    throw std::invalid_argument(
-        fmt::format("IDA: relative_tolerance and absolute_tolerance must be > 0, got {} and {}",
-                    options.relative_tolerance, options.absolute_tolerance));
+    throw std::invalid_argument(fmt::format("IDA: relative_tolerance and absolute_tolerance must be > 0, got {} and {}",
+                                            options.relative_tolerance, options.absolute_tolerance));
   }
-  if (options.absolute_tolerances && (options.absolute_tolerances->size() != n ||
-                                      !(options.absolute_tolerances->array() > 0.0).all())) {
-    throw std::invalid_argument(
-        fmt::format("IDA: absolute_tolerances must have {} entries, all > 0", n));
+  if (options.absolute_tolerances &&
+      (options.absolute_tolerances->size() != n || !(options.absolute_tolerances->array() > 0.0).all())) {
+    throw std::invalid_argument(fmt::format("IDA: absolute_tolerances must have {} entries, all > 0", n));
   }
   if (options.differential_id && options.differential_id->size() != n) {
     throw std::invalid_argument(fmt::format("IDA: differential_id must have {} entries", n));
   }
   if (options.max_order < 1 || options.max_order > 5) {
-    throw std::invalid_argument(
-        fmt::format("IDA: max_order must be 1..5, got {}", options.max_order));
+    throw std::invalid_argument(fmt::format("IDA: max_order must be 1..5, got {}", options.max_order));
   }
   if ((options.max_step_s && !(*options.max_step_s > 0.0)) ||
       (options.initial_step_s && !(*options.initial_step_s > 0.0))) {
     throw std::invalid_argument("IDA: max_step_s and initial_step_s must be > 0 s");
   }
   if (options.max_steps_between_outputs <= 0 || options.max_steps_between_setups <= 0) {
-    throw std::invalid_argument(
-        "IDA: max_steps_between_outputs and max_steps_between_setups must be > 0");
+    throw std::invalid_argument("IDA: max_steps_between_outputs and max_steps_between_setups must be > 0");
   }
 
   if (!options.error_group_starts.empty()) {
@@ -293,8 +282,7 @@ IdaIntegrator::IdaIntegrator(ImplicitSystem& system, double t0_s, const Eigen::V
     bool ok = g.front() == 0;
     for (std::size_t i = 1; i < g.size(); ++i) ok = ok && g[i] > g[i - 1];
     if (!ok || g.back() >= n)
-      throw std::invalid_argument(
-          "IDA: error_group_starts must start at 0 and increase strictly below the state size");
+      throw std::invalid_argument("IDA: error_group_starts must start at 0 and increase strictly below the state size");
   }
 
   Impl& m = *impl_;
@@ -305,8 +293,7 @@ IdaIntegrator::IdaIntegrator(ImplicitSystem& system, double t0_s, const Eigen::V
   m.yp_out = yp0;
   m.t_out = t0_s;
 
-  if (SUNContext_Create(nullptr, &m.context) != 0)
-    throw SolverError("IDA setup: SUNContext_Create failed");
+  if (SUNContext_Create(nullptr, &m.context) != 0) throw SolverError("IDA setup: SUNContext_Create failed");
   const auto len = static_cast<sunindextype>(n);
   for (N_Vector* v : {&m.y, &m.yp}) {
     *v = N_VNew_Serial(len, m.context);
@@ -327,8 +314,7 @@ IdaIntegrator::IdaIntegrator(ImplicitSystem& system, double t0_s, const Eigen::V
     Impl::map(m.atol) = *options.absolute_tolerances;
     m.check(IDASVtolerances(m.ida, options.relative_tolerance, m.atol), "IDASVtolerances");
   } else {
-    m.check(IDASStolerances(m.ida, options.relative_tolerance, options.absolute_tolerance),
-            "IDASStolerances");
+    m.check(IDASStolerances(m.ida, options.relative_tolerance, options.absolute_tolerance), "IDASStolerances");
   }
   if (options.differential_id) {
     m.id = N_VNew_Serial(len, m.context);
@@ -347,13 +333,11 @@ IdaIntegrator::IdaIntegrator(ImplicitSystem& system, double t0_s, const Eigen::V
   if (m.nonlinear_solver == nullptr) throw SolverError("IDA setup: SUNNonlinSol_Newton failed");
   m.check(IDASetNonlinearSolver(m.ida, m.nonlinear_solver), "IDASetNonlinearSolver");
   // After IDASetNonlinearSolver, which installs IDA's own test.
-  m.check(SUNNonlinSolSetConvTestFn(m.nonlinear_solver, &Impl::convergence_test, &m),
-          "SUNNonlinSolSetConvTestFn");
+  m.check(SUNNonlinSolSetConvTestFn(m.nonlinear_solver, &Impl::convergence_test, &m), "SUNNonlinSolSetConvTestFn");
   m.check(IDASetMaxOrd(m.ida, options.max_order), "IDASetMaxOrd");
   m.check(IDASetMaxNumSteps(m.ida, options.max_steps_between_outputs), "IDASetMaxNumSteps");
   if (options.max_step_s) m.check(IDASetMaxStep(m.ida, *options.max_step_s), "IDASetMaxStep");
-  if (options.initial_step_s)
-    m.check(IDASetInitStep(m.ida, *options.initial_step_s), "IDASetInitStep");
+  if (options.initial_step_s) m.check(IDASetInitStep(m.ida, *options.initial_step_s), "IDASetInitStep");
 }
 
 IdaIntegrator::~IdaIntegrator() = default;
@@ -363,12 +347,10 @@ IdaIntegrator& IdaIntegrator::operator=(IdaIntegrator&&) noexcept = default;
 void IdaIntegrator::advance_to(double t_out_s) {
   Impl& m = *impl_;
   if (!(t_out_s > m.t_out)) {
-    throw std::invalid_argument(
-        fmt::format("IDA: output time {} s must be after {} s", t_out_s, m.t_out));
+    throw std::invalid_argument(fmt::format("IDA: output time {} s must be after {} s", t_out_s, m.t_out));
   }
   realtype t_reached = m.t_out;
-  fast_nvector::set_solve_context(m.options.vector_pool,
-                                  m.error_groups.empty() ? nullptr : &m.error_groups);
+  fast_nvector::set_solve_context(m.options.vector_pool, m.error_groups.empty() ? nullptr : &m.error_groups);
   const int flag = IDASolve(m.ida, t_out_s, &t_reached, m.y, m.yp, IDA_NORMAL);
   fast_nvector::set_solve_context(nullptr, nullptr);
   if (m.fatal_exception) {
@@ -379,8 +361,8 @@ void IdaIntegrator::advance_to(double t_out_s) {
     realtype h = 0.0, t_cur = 0.0;
     IDAGetLastStep(m.ida, &h);
     IDAGetCurrentTime(m.ida, &t_cur);
-    std::string msg = fmt::format("IDA failed at t = {:.6g} s (step {:.3g} s): {}; {}", t_cur, h,
-                                  flag_name(flag), hint_for(flag));
+    std::string msg =
+        fmt::format("IDA failed at t = {:.6g} s (step {:.3g} s): {}; {}", t_cur, h, flag_name(flag), hint_for(flag));
     if (!m.last_residual_message.empty())
       msg += fmt::format(" (last residual/solver message: {})", m.last_residual_message);
     if (!m.last_ida_message.empty()) msg += fmt::format(" [{}]", m.last_ida_message);
@@ -397,15 +379,9 @@ void IdaIntegrator::set_stop_time(double tstop_s) {
   impl_->check(IDASetStopTime(impl_->ida, tstop_s), "IDASetStopTime");
 }
 
-double IdaIntegrator::time_s() const {
-  return impl_->t_out;
-}
-const Eigen::VectorXd& IdaIntegrator::state() const {
-  return impl_->y_out;
-}
-const Eigen::VectorXd& IdaIntegrator::state_derivative() const {
-  return impl_->yp_out;
-}
+double IdaIntegrator::time_s() const { return impl_->t_out; }
+const Eigen::VectorXd& IdaIntegrator::state() const { return impl_->y_out; }
+const Eigen::VectorXd& IdaIntegrator::state_derivative() const { return impl_->yp_out; }
 
 Eigen::VectorXd IdaIntegrator::weighted_local_errors() const {
   const Impl& m = *impl_;

@@ -127,8 +127,8 @@ class IdaIntegrator {
  public:
   /// y0, yp0: consistent initial values (F(t0, y0, yp0) ≈ 0). Throws
   /// std::invalid_argument for bad sizes, non-finite values or options.
-  IdaIntegrator(ImplicitSystem& system, double t0_s, const Eigen::VectorXd& y0,
-                const Eigen::VectorXd& yp0, const IdaOptions& options = {});
+  IdaIntegrator(ImplicitSystem& system, double t0_s, const Eigen::VectorXd& y0, const Eigen::VectorXd& yp0,
+                const IdaOptions& options = {});
   ~IdaIntegrator();
   IdaIntegrator(IdaIntegrator&&) noexcept;
   IdaIntegrator& operator=(IdaIntegrator&&) noexcept;

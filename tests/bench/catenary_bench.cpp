@@ -60,28 +60,18 @@ void warm(benchmark::State& state, const Case& c) {
   for (auto _ : state) {
     g.horizontal_span_m += sign * 0.1;
     sign = -sign;
-    s = solve_catenary(c.line, g, {},
-                       CatenaryGuess{s.fairlead_horizontal_N, s.fairlead_vertical_N});
+    s = solve_catenary(c.line, g, {}, CatenaryGuess{s.fairlead_horizontal_N, s.fairlead_vertical_N});
     total_iterations += s.iterations;
     ++solves;
     benchmark::DoNotOptimize(s.fairlead_horizontal_N);
   }
-  state.counters["newton_iterations"] =
-      static_cast<double>(total_iterations) / std::max(solves, 1L);
+  state.counters["newton_iterations"] = static_cast<double>(total_iterations) / std::max(solves, 1L);
 }
 
-void BM_Oc4Cold(benchmark::State& state) {
-  cold(state, oc4());
-}
-void BM_Oc4Warm(benchmark::State& state) {
-  warm(state, oc4());
-}
-void BM_ChainPolyesterChainCold(benchmark::State& state) {
-  cold(state, chain_polyester_chain());
-}
-void BM_ChainPolyesterChainWarm(benchmark::State& state) {
-  warm(state, chain_polyester_chain());
-}
+void BM_Oc4Cold(benchmark::State& state) { cold(state, oc4()); }
+void BM_Oc4Warm(benchmark::State& state) { warm(state, oc4()); }
+void BM_ChainPolyesterChainCold(benchmark::State& state) { cold(state, chain_polyester_chain()); }
+void BM_ChainPolyesterChainWarm(benchmark::State& state) { warm(state, chain_polyester_chain()); }
 
 BENCHMARK(BM_Oc4Cold);
 BENCHMARK(BM_Oc4Warm);

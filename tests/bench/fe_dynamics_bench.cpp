@@ -72,8 +72,7 @@ const Run& reference() {
 double error_pct(const Run& r) {
   const Run& ref = reference();
   double worst = 0.0, peak = 0.0;
-  for (std::size_t i = static_cast<std::size_t>(kRamp_s / kSample_s); i < ref.tension_N.size();
-       ++i) {
+  for (std::size_t i = static_cast<std::size_t>(kRamp_s / kSample_s); i < ref.tension_N.size(); ++i) {
     worst = std::max(worst, std::abs(r.tension_N[i] - ref.tension_N[i]));
     peak = std::max(peak, ref.tension_N[i]);
   }
@@ -90,8 +89,8 @@ void BM_Oc4LineDynamics600s(benchmark::State& state) {
     r = run(elements, rtol);
     benchmark::DoNotOptimize(r);
   }
-  state.counters["s_per_simulated_s"] = benchmark::Counter(
-      kDuration_s, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  state.counters["s_per_simulated_s"] =
+      benchmark::Counter(kDuration_s, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
   state.counters["tension_error_pct"] = error_pct(r);
   state.counters["steps"] = static_cast<double>(r.stats.steps);
   state.counters["residuals"] = static_cast<double>(r.stats.residual_evaluations);

@@ -36,8 +36,7 @@ Case three_hour_case() {
   // Slow drift-like force: three difference-frequency components per DOF.
   c.force = [](double t, const Vector6d&, const Vector6d&) {
     Vector6d f;
-    const double s = 2e5 * std::sin(0.031 * t) + 1.2e5 * std::sin(0.057 * t + 1.0) +
-                     0.8e5 * std::sin(0.083 * t + 2.0);
+    const double s = 2e5 * std::sin(0.031 * t) + 1.2e5 * std::sin(0.057 * t + 1.0) + 0.8e5 * std::sin(0.083 * t + 2.0);
     f << 3e5 + s, 0.3 * s, 0.05 * s, -2e6 + 5.0 * s, 8e6 + 10.0 * s, 2e5 + s;
     return f;
   };
@@ -50,8 +49,7 @@ void report(benchmark::State& state, const engine::HullTimeSeries& run) {
   state.counters["rhs_evals"] = static_cast<double>(run.statistics.rhs_evaluations);
   state.counters["jac_evals"] = static_cast<double>(run.statistics.jacobian_evaluations);
   state.counters["err_test_fails"] = static_cast<double>(run.statistics.error_test_failures);
-  state.counters["nonlin_conv_fails"] =
-      static_cast<double>(run.statistics.nonlinear_convergence_failures);
+  state.counters["nonlin_conv_fails"] = static_cast<double>(run.statistics.nonlinear_convergence_failures);
   std::vector<double> surge(run.position.row(0).begin(), run.position.row(0).end());
   state.counters["surge_std_m"] = engine::channel_moments(surge).std_dev;
 }
@@ -60,8 +58,8 @@ void BM_Hull3h_SemiCoupled(benchmark::State& state) {
   const Case c = three_hour_case();
   engine::HullTimeSeries run;
   for (auto _ : state) {
-    run = engine::simulate_hull(c.model, engine::HullLoads{c.lines, c.force}, Vector6d::Zero(),
-                                Vector6d::Zero(), c.options);
+    run = engine::simulate_hull(c.model, engine::HullLoads{c.lines, c.force}, Vector6d::Zero(), Vector6d::Zero(),
+                                c.options);
     benchmark::DoNotOptimize(run.position.data());
   }
   report(state, run);
@@ -73,8 +71,8 @@ void BM_Hull3h_SemiCoupled_BDF(benchmark::State& state) {
   c.options.integrator.method = engine::CvodeMethod::bdf_newton_dense;
   engine::HullTimeSeries run;
   for (auto _ : state) {
-    run = engine::simulate_hull(c.model, engine::HullLoads{c.lines, c.force}, Vector6d::Zero(),
-                                Vector6d::Zero(), c.options);
+    run = engine::simulate_hull(c.model, engine::HullLoads{c.lines, c.force}, Vector6d::Zero(), Vector6d::Zero(),
+                                c.options);
     benchmark::DoNotOptimize(run.position.data());
   }
   report(state, run);
@@ -92,8 +90,8 @@ void BM_Hull3h_NonlinearLines(benchmark::State& state) {
   };
   engine::HullTimeSeries run;
   for (auto _ : state) {
-    run = engine::simulate_hull(c.model, engine::HullLoads{curve, c.force}, Vector6d::Zero(),
-                                Vector6d::Zero(), c.options);
+    run = engine::simulate_hull(c.model, engine::HullLoads{curve, c.force}, Vector6d::Zero(), Vector6d::Zero(),
+                                c.options);
     benchmark::DoNotOptimize(run.position.data());
   }
   report(state, run);
@@ -123,8 +121,8 @@ void BM_Hull3h_RadiationMemory(benchmark::State& state) {
   }
   engine::HullTimeSeries run;
   for (auto _ : state) {
-    run = engine::simulate_hull(c.model, engine::HullLoads{c.lines, c.force}, Vector6d::Zero(),
-                                Vector6d::Zero(), c.options);
+    run = engine::simulate_hull(c.model, engine::HullLoads{c.lines, c.force}, Vector6d::Zero(), Vector6d::Zero(),
+                                c.options);
     benchmark::DoNotOptimize(run.position.data());
   }
   report(state, run);

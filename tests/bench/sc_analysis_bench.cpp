@@ -21,8 +21,8 @@ namespace {
 using namespace spiral;
 
 design::ValidatedProject deepwater_with_drift() {
-  design::ValidatedProject p = design::load_validated_project(std::string(SPIRAL_SOURCE_DIR) +
-                                                              "/scenarios/deepwater-fps.yaml");
+  design::ValidatedProject p =
+      design::load_validated_project(std::string(SPIRAL_SOURCE_DIR) + "/scenarios/deepwater-fps.yaml");
   design::MeanDriftFile drift;
   drift.file = std::string(SPIRAL_SCENARIO_DATA_DIR) + "/hydro/oc4-semi/marin_semi.12d";
   drift.ulen_m = 2.0;
@@ -51,8 +51,7 @@ void run(benchmark::State& state, design::AnalysisLevel level) {
                                           result.timing.dynamics_s + result.timing.wave_frequency_s +
                                           result.timing.tensions_s;
   state.counters["cvode_steps"] = static_cast<double>(result.solver.steps);
-  state.counters["surge_std_m"] =
-      std::sqrt((result.total.row(0).array() - result.total.row(0).mean()).square().mean());
+  state.counters["surge_std_m"] = std::sqrt((result.total.row(0).array() - result.total.row(0).mean()).square().mean());
 }
 
 // The fully coupled storm of the same case (hull + 16 mooring lines + 12
@@ -88,24 +87,15 @@ void coupled_storm(benchmark::State& state, bool with_drift) {
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
   state.counters["peak_rss_MB"] = static_cast<double>(usage.ru_maxrss) / 1024.0;
-  state.counters["surge_std_m"] =
-      std::sqrt((result.total.row(0).array() - result.total.row(0).mean()).square().mean());
+  state.counters["surge_std_m"] = std::sqrt((result.total.row(0).array() - result.total.row(0).mean()).square().mean());
 }
 
 // The benchmark of the coupled-analysis issue: the default scenario as shipped.
-void BM_DeepwaterCoupledStorm(benchmark::State& state) {
-  coupled_storm(state, false);
-}
-void BM_DeepwaterCoupledStormWithDrift(benchmark::State& state) {
-  coupled_storm(state, true);
-}
+void BM_DeepwaterCoupledStorm(benchmark::State& state) { coupled_storm(state, false); }
+void BM_DeepwaterCoupledStormWithDrift(benchmark::State& state) { coupled_storm(state, true); }
 
-void BM_DeepwaterScStorm3h(benchmark::State& state) {
-  run(state, design::AnalysisLevel::semi_coupled);
-}
-void BM_DeepwaterUncoupledStorm3h(benchmark::State& state) {
-  run(state, design::AnalysisLevel::uncoupled);
-}
+void BM_DeepwaterScStorm3h(benchmark::State& state) { run(state, design::AnalysisLevel::semi_coupled); }
+void BM_DeepwaterUncoupledStorm3h(benchmark::State& state) { run(state, design::AnalysisLevel::uncoupled); }
 
 BENCHMARK(BM_DeepwaterScStorm3h)->Unit(benchmark::kSecond)->Iterations(1);
 BENCHMARK(BM_DeepwaterUncoupledStorm3h)->Unit(benchmark::kSecond)->Iterations(1);

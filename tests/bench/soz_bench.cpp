@@ -14,8 +14,7 @@ namespace spiral::design {
 namespace {
 
 void run(benchmark::State& state, SozModel model) {
-  const ValidatedProject p =
-      load_validated_project(std::string(SPIRAL_SOURCE_DIR) + "/scenarios/deepwater-fps.yaml");
+  const ValidatedProject p = load_validated_project(std::string(SPIRAL_SOURCE_DIR) + "/scenarios/deepwater-fps.yaml");
   std::vector<RiserDesign> designs;
   for (const Riser& r : p.project.risers) designs.push_back(riser_design(p.project, r));
   SozOptions options;
@@ -35,16 +34,11 @@ void run(benchmark::State& state, SozModel model) {
   }
   state.counters["risers_solved"] = solved;
   state.counters["threads"] = result.threads;
-  state.counters["ms_per_solve_per_thread"] =
-      1e3 * result.zone_wall_s * result.threads / result.solves;
+  state.counters["ms_per_solve_per_thread"] = 1e3 * result.zone_wall_s * result.threads / result.solves;
 }
 
-void BM_Soz_DefaultScenario_Fe(benchmark::State& state) {
-  run(state, SozModel::fe);
-}
-void BM_Soz_DefaultScenario_Catenary(benchmark::State& state) {
-  run(state, SozModel::catenary);
-}
+void BM_Soz_DefaultScenario_Fe(benchmark::State& state) { run(state, SozModel::fe); }
+void BM_Soz_DefaultScenario_Catenary(benchmark::State& state) { run(state, SozModel::catenary); }
 BENCHMARK(BM_Soz_DefaultScenario_Fe)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
 BENCHMARK(BM_Soz_DefaultScenario_Catenary)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
 

@@ -29,11 +29,10 @@ void run(benchmark::State& state, bool fe_mooring) {
   state.counters["newton_iterations"] = iterations;
 }
 
-void BM_CoupledStatics_DefaultScenario_FeRisers_CatenaryMooring_Current(benchmark::State& state) {
-  run(state, false);
-}
+void BM_CoupledStatics_DefaultScenario_FeRisers_CatenaryMooring_Current(benchmark::State& state) { run(state, false); }
 BENCHMARK(BM_CoupledStatics_DefaultScenario_FeRisers_CatenaryMooring_Current)
-    ->Unit(benchmark::kMillisecond)->Iterations(1);
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
 
 void BM_CoupledStatics_DefaultScenario_AllFe_Current(benchmark::State& state) { run(state, true); }
 BENCHMARK(BM_CoupledStatics_DefaultScenario_AllFe_Current)->Unit(benchmark::kMillisecond)->Iterations(1);

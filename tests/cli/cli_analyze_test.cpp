@@ -13,16 +13,13 @@ namespace spiral::test {
 namespace {
 
 TEST(CliAnalyze, ScRunWritesCsvAndJson) {
-  const auto out =
-      std::filesystem::temp_directory_path() / ("spiral-analyze-" + std::to_string(::getpid()));
+  const auto out = std::filesystem::temp_directory_path() / ("spiral-analyze-" + std::to_string(::getpid()));
   std::filesystem::remove_all(out);
   const auto result =
       run_spiral("analyze " + scenario("oc4-semisubmersible.yaml") +
-                 " --case intact-raft-jonswap --level sc --duration 1200 --seed 3 --out '" +
-                 out.string() + "'");
+                 " --case intact-raft-jonswap --level sc --duration 1200 --seed 3 --out '" + out.string() + "'");
   ASSERT_EQ(result.exit_code, app::kExitOk) << result.err;
-  EXPECT_EQ(result.err.find("dynamics ["), std::string::npos)
-      << "no progress bar when stderr is not a terminal";
+  EXPECT_EQ(result.err.find("dynamics ["), std::string::npos) << "no progress bar when stderr is not a terminal";
   const std::string csv = read_text(out / "time_series.csv");
   ASSERT_EQ(csv.rfind("time_s,surge_m,sway_m,heave_m,roll_deg,pitch_deg,yaw_deg,surge_lf_m", 0), 0u)
       << csv.substr(0, 200);
@@ -62,12 +59,11 @@ TEST(CliAnalyze, ScRunWritesCsvAndJson) {
 }
 
 TEST(CliAnalyze, LineDynamicsWritesDynamicTensions) {
-  const auto out =
-      std::filesystem::temp_directory_path() / ("spiral-analyze-dyn-" + std::to_string(::getpid()));
+  const auto out = std::filesystem::temp_directory_path() / ("spiral-analyze-dyn-" + std::to_string(::getpid()));
   std::filesystem::remove_all(out);
-  const auto result = run_spiral(
-      "analyze " + scenario("oc4-semisubmersible.yaml") +
-      " --case intact-raft-jonswap --duration 60 --line-dynamics --out '" + out.string() + "'");
+  const auto result =
+      run_spiral("analyze " + scenario("oc4-semisubmersible.yaml") +
+                 " --case intact-raft-jonswap --duration 60 --line-dynamics --out '" + out.string() + "'");
   ASSERT_EQ(result.exit_code, app::kExitOk) << result.err;
   EXPECT_NE(result.out.find("quasi-static vs dynamic"), std::string::npos) << result.out;
   const std::string csv = read_text(out / "time_series.csv");
@@ -92,11 +88,9 @@ TEST(CliAnalyze, LineDynamicsWritesDynamicTensions) {
 // its integrator statistics in the summary and the coupled tensions as
 // channels.
 TEST(CliAnalyze, CoupledLevelWritesItsSolverAndTensions) {
-  const auto out =
-      std::filesystem::temp_directory_path() / ("spiral-coupled-" + std::to_string(::getpid()));
+  const auto out = std::filesystem::temp_directory_path() / ("spiral-coupled-" + std::to_string(::getpid()));
   const auto result = run_spiral("analyze " + scenario("oc4-semisubmersible.yaml") +
-                                 " --case intact-raft-jonswap --level coupled --duration 120 --out " +
-                                 out.string());
+                                 " --case intact-raft-jonswap --level coupled --duration 120 --out " + out.string());
   ASSERT_EQ(result.exit_code, app::kExitOk) << result.err;
   EXPECT_NE(result.out.find("coupled: 3 lines"), std::string::npos) << result.out;
   const nlohmann::json j = nlohmann::json::parse(read_text((out / "summary.json").string()));
@@ -113,8 +107,7 @@ TEST(CliAnalyze, CoupledLevelWritesItsSolverAndTensions) {
 // `spiral compare`: the four levels on one realization, a table on the
 // terminal and comparison.json with the keys the issue names.
 TEST(CliCompare, FourLevelsSideBySide) {
-  const auto out =
-      std::filesystem::temp_directory_path() / ("spiral-compare-" + std::to_string(::getpid()));
+  const auto out = std::filesystem::temp_directory_path() / ("spiral-compare-" + std::to_string(::getpid()));
   const auto result = run_spiral("compare " + scenario("oc4-semisubmersible.yaml") +
                                  " --case intact-raft-jonswap --duration 300 --out " + out.string());
   ASSERT_EQ(result.exit_code, app::kExitOk) << result.err;
@@ -139,27 +132,23 @@ TEST(CliCompare, UnknownCaseIsBadInput) {
 }
 
 TEST(CliAnalyze, UnknownLevelIsBadInput) {
-  const auto result =
-      run_spiral("analyze " + scenario("oc4-semisubmersible.yaml") +
-                 " --case intact-raft-jonswap --level fully-coupled --out /tmp/spiral-never");
+  const auto result = run_spiral("analyze " + scenario("oc4-semisubmersible.yaml") +
+                                 " --case intact-raft-jonswap --level fully-coupled --out /tmp/spiral-never");
   EXPECT_EQ(result.exit_code, app::kExitBadInput);
   EXPECT_NE(result.err.find("--level"), std::string::npos) << result.err;
 }
 
 TEST(CliAnalyze, MissingRadiationFileIsBadInputWithFile) {
-  const auto dir =
-      std::filesystem::temp_directory_path() / ("spiral-analyze-bad-" + std::to_string(::getpid()));
+  const auto dir = std::filesystem::temp_directory_path() / ("spiral-analyze-bad-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
-  std::string text =
-      read_text(std::string(SPIRAL_SOURCE_DIR) + "/scenarios/oc4-semisubmersible.yaml");
+  std::string text = read_text(std::string(SPIRAL_SOURCE_DIR) + "/scenarios/oc4-semisubmersible.yaml");
   const std::string key = "radiation_file: data/hydro/oc4-semi/marin_semi.1";
   text.replace(text.find(key), key.size(), "radiation_file: nonexistent.1");
   const std::string drift = "data/hydro/oc4-semi/marin_semi.12d";
   text.replace(text.find(drift), drift.size(),
                std::string(SPIRAL_SCENARIO_DATA_DIR) + "/hydro/oc4-semi/marin_semi.12d");
   { std::ofstream(dir / "p.yaml") << text; }
-  const auto result =
-      run_spiral("analyze '" + (dir / "p.yaml").string() + "' --case intact-raft-jonswap");
+  const auto result = run_spiral("analyze '" + (dir / "p.yaml").string() + "' --case intact-raft-jonswap");
   EXPECT_EQ(result.exit_code, app::kExitBadInput);
   EXPECT_NE(result.err.find("hull.hydrodynamics.radiation_file"), std::string::npos) << result.err;
   EXPECT_NE(result.err.find("nonexistent.1"), std::string::npos) << result.err;

@@ -34,8 +34,8 @@ class CliReport : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     dir_ = new fs::path(fresh_dir("spiral-cli-report"));
-    result_ = new CommandResult(run_spiral("report " + scenario("deepwater-fps.yaml") + " --out '" +
-                                           (*dir_ / "report").string() + "'"));
+    result_ = new CommandResult(
+        run_spiral("report " + scenario("deepwater-fps.yaml") + " --out '" + (*dir_ / "report").string() + "'"));
   }
   static void TearDownTestSuite() {
     fs::remove_all(*dir_);
@@ -58,36 +58,30 @@ void PdfRendersWithTheReportedPageCount(const CommandResult* result_, const fs::
   EXPECT_GE(pages, 6);  // title + five sections
   const fs::path png_dir = *dir_ / "png";
   fs::create_directories(png_dir);
-  ASSERT_EQ(std::system(fmt::format("pdftoppm -r 20 -png '{}' '{}/p' 2>/dev/null", pdf.string(),
-                                    png_dir.string())
-                            .c_str()),
-            0);
+  ASSERT_EQ(
+      std::system(fmt::format("pdftoppm -r 20 -png '{}' '{}/p' 2>/dev/null", pdf.string(), png_dir.string()).c_str()),
+      0);
   int count = 0;
-  for (const auto& e : fs::directory_iterator(png_dir))
-    count += e.path().extension() == ".png" ? 1 : 0;
+  for (const auto& e : fs::directory_iterator(png_dir)) count += e.path().extension() == ".png" ? 1 : 0;
   EXPECT_EQ(count, pages);
 }
 
 void PdfTextHoldsTheResultsTableValues(const CommandResult* result_, const fs::path* dir_) {
   ASSERT_EQ(result_->exit_code, app::kExitOk) << result_->err;
   const fs::path txt = *dir_ / "report.txt";
-  ASSERT_EQ(std::system(fmt::format("pdftotext -layout '{}' '{}'",
-                                    (*dir_ / "report" / "report.pdf").string(), txt.string())
-                            .c_str()),
-            0);
+  ASSERT_EQ(
+      std::system(
+          fmt::format("pdftotext -layout '{}' '{}'", (*dir_ / "report" / "report.pdf").string(), txt.string()).c_str()),
+      0);
   const std::string text = read_text(txt);
   // Pretensions from `spiral statics`, the damaged case from `spiral equilibrium`.
-  const auto statics =
-      nlohmann::json::parse(run_spiral("statics --json " + scenario("deepwater-fps.yaml")).out);
+  const auto statics = nlohmann::json::parse(run_spiral("statics --json " + scenario("deepwater-fps.yaml")).out);
   for (const auto& line : statics["lines"]) {
-    const std::string value =
-        fmt::format("{:.1f}", line["fairlead_tension_N"].get<double>() / 1000.0);
+    const std::string value = fmt::format("{:.1f}", line["fairlead_tension_N"].get<double>() / 1000.0);
     EXPECT_NE(text.find(value), std::string::npos) << line["name"] << " pretension " << value;
   }
-  const auto damaged =
-      nlohmann::json::parse(run_spiral("equilibrium --json --case lc3-survival-45deg-damaged-L10 " +
-                                       scenario("deepwater-fps.yaml"))
-                                .out);
+  const auto damaged = nlohmann::json::parse(
+      run_spiral("equilibrium --json --case lc3-survival-45deg-damaged-L10 " + scenario("deepwater-fps.yaml")).out);
   int found = 0;
   for (const auto& line : damaged["lines"]) {
     const std::string value = fmt::format("{:.1f}", line["max_tension_N"].get<double>() / 1000.0);
@@ -102,8 +96,7 @@ void HtmlReferencesOnlyFilesThatExist(const CommandResult* result_, const fs::pa
   const std::string html = read_text(folder / "index.html");
   const std::regex ref(R"re((?:src|href)="([^"#][^"]*)")re");
   int refs = 0;
-  for (auto it = std::sregex_iterator(html.begin(), html.end(), ref); it != std::sregex_iterator();
-       ++it) {
+  for (auto it = std::sregex_iterator(html.begin(), html.end(), ref); it != std::sregex_iterator(); ++it) {
     const std::string target = (*it)[1];
     EXPECT_EQ(target.find("://"), std::string::npos) << target;
     EXPECT_TRUE(fs::exists(folder / target)) << target;
@@ -144,10 +137,10 @@ std::string squeeze(const std::string& text) {
 void VerdictNamesTheFailingCasesAndTheGoverningCheck(const CommandResult* result_, const fs::path* dir_) {
   ASSERT_EQ(result_->exit_code, app::kExitOk) << result_->err;
   const fs::path txt = *dir_ / "verdict.txt";
-  ASSERT_EQ(std::system(fmt::format("pdftotext -l 1 '{}' '{}'", (*dir_ / "report" / "report.pdf").string(),
-                                    txt.string())
-                            .c_str()),
-            0);
+  ASSERT_EQ(
+      std::system(
+          fmt::format("pdftotext -l 1 '{}' '{}'", (*dir_ / "report" / "report.pdf").string(), txt.string()).c_str()),
+      0);
   const std::string text = squeeze(read_text(txt));
   const std::size_t contents = text.find("Contents");
   ASSERT_NE(contents, std::string::npos);
@@ -160,8 +153,8 @@ void VerdictNamesTheFailingCasesAndTheGoverningCheck(const CommandResult* result
   std::string governing_text;
   for (std::size_t row = 1; row < load_cases.size(); ++row) {
     const std::string& name = load_cases[row][0];
-    const auto eq =
-        nlohmann::json::parse(run_spiral("equilibrium --json --case " + name + " " + scenario("deepwater-fps.yaml")).out);
+    const auto eq = nlohmann::json::parse(
+        run_spiral("equilibrium --json --case " + name + " " + scenario("deepwater-fps.yaml")).out);
     bool fails = false;
     for (const auto& riser : eq["risers"]) {
       if (riser["passes"].get<bool>()) continue;
@@ -169,8 +162,8 @@ void VerdictNamesTheFailingCasesAndTheGoverningCheck(const CommandResult* result
       if (riser["utilization"].get<double>() > governing) {
         governing = riser["utilization"].get<double>();
         governing_text = fmt::format("governing failing check: riser criteria {} {}, utilization {:.3f} in {}",
-                                     riser["name"].get<std::string>(),
-                                     riser["governing_criterion"].get<std::string>(), governing, name);
+                                     riser["name"].get<std::string>(), riser["governing_criterion"].get<std::string>(),
+                                     governing, name);
       }
     }
     failing_cases += fails ? 1 : 0;
@@ -209,8 +202,7 @@ TEST(CliReportErrors, UnwritableOutputFolderExitsFourNamingItAndLeavesNothing) {
   const fs::path dir = fresh_dir("spiral-cli-report-bad");
   std::ofstream(dir / "a-file") << "not a folder";
   const fs::path out = dir / "a-file" / "report";
-  const auto result = run_spiral("report " + scenario("oc4-semisubmersible.yaml") + " --out '" +
-                                 out.string() + "'");
+  const auto result = run_spiral("report " + scenario("oc4-semisubmersible.yaml") + " --out '" + out.string() + "'");
   EXPECT_EQ(result.exit_code, app::kExitOutputError) << result.err;
   EXPECT_NE(result.err.find(out.string()), std::string::npos) << result.err;
   int entries = 0;
@@ -249,10 +241,10 @@ TEST(CliReportStages, IntermediateRanksEveryLoadCase) {
   for (const auto& riser : eq["risers"]) worst = std::max(worst, riser["utilization"].get<double>());
   EXPECT_NEAR(std::stod(rows[1][6]), worst, 1e-8 * worst);
   const fs::path txt = dir / "report.txt";
-  ASSERT_EQ(std::system(fmt::format("pdftotext -layout '{}' '{}'", (dir / "report" / "report.pdf").string(),
-                                    txt.string())
-                            .c_str()),
-            0);
+  ASSERT_EQ(
+      std::system(
+          fmt::format("pdftotext -layout '{}' '{}'", (dir / "report" / "report.pdf").string(), txt.string()).c_str()),
+      0);
   EXPECT_NE(read_text(txt).find("Critical case #1: " + rows[1][1]), std::string::npos);
   fs::remove_all(dir);
 }
@@ -298,9 +290,9 @@ TEST(CliReportStages, AdvancedVerifiesTheCriticalCasesCoupled) {
   for (const auto& e : fs::directory_iterator(png_dir)) count += e.path().extension() == ".png" ? 1 : 0;
   EXPECT_EQ(count, pages);
   const fs::path txt = dir / "report.txt";
-  ASSERT_EQ(std::system(fmt::format("pdftotext -layout '{}' '{}'", (folder / "report.pdf").string(), txt.string())
-                            .c_str()),
-            0);
+  ASSERT_EQ(
+      std::system(fmt::format("pdftotext -layout '{}' '{}'", (folder / "report.pdf").string(), txt.string()).c_str()),
+      0);
   const std::string text = read_text(txt);
   const std::string flat = squeeze(text);
 
@@ -353,7 +345,8 @@ TEST(CliReportStages, AdvancedVerifiesTheCriticalCasesCoupled) {
     const double ratio = std::stod(offsets[i][3]);
     EXPECT_NEAR(ratio, std::stod(offsets[i][1]) / 20.0, 1e-9);  // 10 % of 200 m
     all_pass = all_pass && ratio <= 1.0;
-    if (ratio > worst) worst = ratio, worst_text = fmt::format("{}: MPM offset {:.2f} m", offsets[i][0], std::stod(offsets[i][1]));
+    if (ratio > worst)
+      worst = ratio, worst_text = fmt::format("{}: MPM offset {:.2f} m", offsets[i][0], std::stod(offsets[i][1]));
   }
   EXPECT_NE(result.out.find(all_pass ? "(PASS)" : "(FAIL)"), std::string::npos) << result.out;
   EXPECT_NE(flat.find(all_pass ? "PASS — all 2 critical cases verified fully coupled" : "FAIL —"), std::string::npos);
@@ -372,7 +365,8 @@ fs::path oc4_with_panel_mesh(const fs::path& dir, const std::string& mesh) {
   const std::string key = "\n  geometry:\n";
   const std::size_t at = yaml.find(key);
   EXPECT_NE(at, std::string::npos);
-  yaml.insert(at + key.size(), "    panel_mesh: " + std::string(SPIRAL_SOURCE_DIR) + "/tests/data/panel-mesh/" + mesh + "\n");
+  yaml.insert(at + key.size(),
+              "    panel_mesh: " + std::string(SPIRAL_SOURCE_DIR) + "/tests/data/panel-mesh/" + mesh + "\n");
   const fs::path file = dir / "oc4-mesh.yaml";
   std::ofstream(file) << yaml;
   return file;
@@ -393,8 +387,8 @@ TEST(CliReportPanelMesh, ReportRunsWithTheMeshNamedInTheModelSummary) {
 
 TEST(CliReportPanelMesh, MalformedMeshExitsTwoNamingFileAndLine) {
   const fs::path dir = fresh_dir("spiral-cli-report-bad-mesh");
-  const auto result = run_spiral("report '" + oc4_with_panel_mesh(dir, "malformed_line7.gdf").string() +
-                                 "' --out '" + (dir / "report").string() + "'");
+  const auto result = run_spiral("report '" + oc4_with_panel_mesh(dir, "malformed_line7.gdf").string() + "' --out '" +
+                                 (dir / "report").string() + "'");
   EXPECT_EQ(result.exit_code, app::kExitBadInput) << result.err;
   EXPECT_NE(result.err.find("malformed_line7.gdf:7:"), std::string::npos) << result.err;
   EXPECT_FALSE(fs::exists(dir / "report"));
@@ -402,8 +396,7 @@ TEST(CliReportPanelMesh, MalformedMeshExitsTwoNamingFileAndLine) {
 }
 
 TEST(CliReportErrors, UnknownStageIsBadInput) {
-  const auto result =
-      run_spiral("report " + scenario("oc4-semisubmersible.yaml") + " --stage nosuch --out /tmp/x");
+  const auto result = run_spiral("report " + scenario("oc4-semisubmersible.yaml") + " --stage nosuch --out /tmp/x");
   EXPECT_EQ(result.exit_code, app::kExitBadInput);
   EXPECT_NE(result.err.find("nosuch"), std::string::npos) << result.err;
 }

@@ -20,9 +20,7 @@
 namespace spiral::test {
 namespace {
 
-std::string format_sample() {
-  return std::string("'") + SPIRAL_SOURCE_DIR + "/tests/data/format-sample.yaml'";
-}
+std::string format_sample() { return std::string("'") + SPIRAL_SOURCE_DIR + "/tests/data/format-sample.yaml'"; }
 
 /// A free-hanging 8-inch-class flexible in the 400 m SOZ project: bore 0.2 m,
 /// outer sheath 0.3 m, data-sheet EA, EI and mass, oil-filled.
@@ -35,8 +33,7 @@ const std::string kFlexible =
     "    criteria: {min_bending_radius: 3.0}\n";
 
 const nlohmann::json& riser_named(const nlohmann::json& risers, const std::string& name) {
-  const auto it =
-      std::find_if(risers.begin(), risers.end(), [&](const auto& r) { return r["name"] == name; });
+  const auto it = std::find_if(risers.begin(), risers.end(), [&](const auto& r) { return r["name"] == name; });
   if (it == risers.end()) throw std::runtime_error("no riser " + name);
   return *it;
 }
@@ -81,30 +78,23 @@ TEST(CliRiser, EquilibriumJsonHasTheProfileAlongEachRiser) {
     const auto& p = riser["profile"];
     const std::size_t n = p["arc_length_m"].size();
     ASSERT_GT(n, 10u) << name;
-    for (const char* key :
-         {"position_m", "section", "on_seabed", "effective_tension_N", "wall_tension_N",
-          "bending_moment_N_m", "curvature_per_m", "von_mises_Pa", "von_mises_utilization"}) {
+    for (const char* key : {"position_m", "section", "on_seabed", "effective_tension_N", "wall_tension_N",
+                            "bending_moment_N_m", "curvature_per_m", "von_mises_Pa", "von_mises_utilization"}) {
       ASSERT_EQ(p[key].size(), n) << name << " " << key;
     }
     for (std::size_t i = 1; i < n; ++i) {
       EXPECT_GT(p["arc_length_m"][i].get<double>(), p["arc_length_m"][i - 1].get<double>()) << name;
     }
-    EXPECT_NEAR(p["position_m"][n - 1][2].get<double>(), -14.0, 1.0)
-        << name;  // the hang-off, hull near rest
+    EXPECT_NEAR(p["position_m"][n - 1][2].get<double>(), -14.0, 1.0) << name;  // the hang-off, hull near rest
     // The key values are the extremes of the profile.
     std::size_t i_min = 0;
     double max_curvature = 0.0;
     for (std::size_t i = 0; i < n; ++i) {
-      if (p["effective_tension_N"][i].get<double>() < p["effective_tension_N"][i_min].get<double>())
-        i_min = i;
+      if (p["effective_tension_N"][i].get<double>() < p["effective_tension_N"][i_min].get<double>()) i_min = i;
       max_curvature = std::max(max_curvature, p["curvature_per_m"][i].get<double>());
     }
-    EXPECT_EQ(p["effective_tension_N"][i_min].get<double>(),
-              riser["min_effective_tension_N"].get<double>())
-        << name;
-    EXPECT_EQ(p["arc_length_m"][i_min].get<double>(),
-              riser["min_effective_tension_arc_m"].get<double>())
-        << name;
+    EXPECT_EQ(p["effective_tension_N"][i_min].get<double>(), riser["min_effective_tension_N"].get<double>()) << name;
+    EXPECT_EQ(p["arc_length_m"][i_min].get<double>(), riser["min_effective_tension_arc_m"].get<double>()) << name;
     EXPECT_EQ(max_curvature, riser["max_curvature_per_m"].get<double>()) << name;
     EXPECT_DOUBLE_EQ(riser["min_bending_radius_m"].get<double>(), 1.0 / max_curvature) << name;
     if (riser["max_von_mises_utilization"].is_null()) {
@@ -113,12 +103,9 @@ TEST(CliRiser, EquilibriumJsonHasTheProfileAlongEachRiser) {
     }
     std::size_t i_vm = 0;
     for (std::size_t i = 0; i < n; ++i) {
-      if (p["von_mises_utilization"][i].get<double>() >
-          p["von_mises_utilization"][i_vm].get<double>())
-        i_vm = i;
+      if (p["von_mises_utilization"][i].get<double>() > p["von_mises_utilization"][i_vm].get<double>()) i_vm = i;
     }
-    EXPECT_EQ(p["von_mises_utilization"][i_vm].get<double>(),
-              riser["max_von_mises_utilization"].get<double>());
+    EXPECT_EQ(p["von_mises_utilization"][i_vm].get<double>(), riser["max_von_mises_utilization"].get<double>());
     EXPECT_EQ(p["arc_length_m"][i_vm].get<double>(), riser["max_von_mises_arc_m"].get<double>());
   }
   // P1 (OD 273.1 mm, WT 25.4 mm, 10 MPa gauge at the hang-off, ≈ 14 m down):
@@ -129,8 +116,7 @@ TEST(CliRiser, EquilibriumJsonHasTheProfileAlongEachRiser) {
   const double inner_m2 = pi / 4.0 * std::pow(0.2731 - 2.0 * 0.0254, 2);
   const double outer_m2 = pi / 4.0 * 0.2731 * 0.2731;
   const double p_e = 1025.0 * 9.80665 * -p["position_m"][top][2].get<double>();
-  const double expected =
-      p["effective_tension_N"][top].get<double>() + 1.0e7 * inner_m2 - p_e * outer_m2;
+  const double expected = p["effective_tension_N"][top].get<double>() + 1.0e7 * inner_m2 - p_e * outer_m2;
   EXPECT_NEAR(p["wall_tension_N"][top].get<double>(), expected, kIdentityRelTol * expected);
 }
 
@@ -147,9 +133,8 @@ TEST(CliRiser, EquilibriumWithCurrentOnAFlexibleRiser) {
   // top angle fails; the bending radius is far above the 3 m MBR.)
   EXPECT_GT(flexible["min_bending_radius_m"].get<double>(), 3.0);
   const auto& checks = flexible["checks"];
-  const auto mbr = std::find_if(checks.begin(), checks.end(), [](const auto& c) {
-    return c["criterion"] == "min_bending_radius";
-  });
+  const auto mbr =
+      std::find_if(checks.begin(), checks.end(), [](const auto& c) { return c["criterion"] == "min_bending_radius"; });
   ASSERT_NE(mbr, checks.end());
   EXPECT_TRUE((*mbr)["passes"].get<bool>());
 }
@@ -164,10 +149,8 @@ TEST(CliRiser, SozOfAFlexibleRiserWithBothModels) {
     const auto& zone = doc["risers"][0];
     EXPECT_FALSE(zone["fails_at_zero_offset"].get<bool>()) << model;
     ASSERT_EQ(zone["allowable_offset_m"].size(), 4u) << model;
-    for (const auto& criterion : zone["governing_criterion"])
-      EXPECT_NE(criterion, "von_mises") << model;
-    for (const auto& offset : zone["allowable_offset_m"])
-      EXPECT_GT(offset.get<double>(), 0.0) << model;
+    for (const auto& criterion : zone["governing_criterion"]) EXPECT_NE(criterion, "von_mises") << model;
+    for (const auto& offset : zone["allowable_offset_m"]) EXPECT_GT(offset.get<double>(), 0.0) << model;
   }
 }
 

@@ -15,8 +15,7 @@ namespace {
 
 TEST(CliSoz, JsonHasTheDocumentedKeys) {
   const std::string file = write_temp_project(
-      "soz-two.yaml",
-      soz_project_yaml(soz_riser_yaml("A", 0.0, 20.0) + soz_riser_yaml("B", 180.0, 20.0)));
+      "soz-two.yaml", soz_project_yaml(soz_riser_yaml("A", 0.0, 20.0) + soz_riser_yaml("B", 180.0, 20.0)));
   const CommandResult r = run_spiral("soz " + file + " --step-deg 45 --json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json j = nlohmann::json::parse(r.out);
@@ -37,8 +36,8 @@ TEST(CliSoz, JsonHasTheDocumentedKeys) {
   const nlohmann::json& check = j["offset_checks"][0];
   EXPECT_EQ(check["case"], "lc1");
   EXPECT_EQ(check["condition"], "intact");
-  EXPECT_NEAR(check["margin_m"].get<double>(),
-              check["allowable_m"].get<double>() - check["offset_m"].get<double>(), 1e-9);
+  EXPECT_NEAR(check["margin_m"].get<double>(), check["allowable_m"].get<double>() - check["offset_m"].get<double>(),
+              1e-9);
   EXPECT_EQ(check["passes"].get<bool>(), check["ratio"].get<double>() <= 1.0);
   // lc2 has a current: its own zone, named in its check.
   EXPECT_EQ(check["zone"], "still-water");
@@ -50,8 +49,7 @@ TEST(CliSoz, JsonHasTheDocumentedKeys) {
 }
 
 TEST(CliSoz, CaseBringsItsCurrentHullPositionAndCondition) {
-  const std::string file =
-      write_temp_project("soz-case-zone.yaml", soz_project_yaml(soz_riser_yaml("R", 0.0)));
+  const std::string file = write_temp_project("soz-case-zone.yaml", soz_project_yaml(soz_riser_yaml("R", 0.0)));
   const CommandResult r = run_spiral("soz " + file + " --case lc2 --step-deg 90 --json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json j = nlohmann::json::parse(r.out);
@@ -64,8 +62,7 @@ TEST(CliSoz, CaseBringsItsCurrentHullPositionAndCondition) {
 }
 
 TEST(CliSoz, TableAndCsv) {
-  const std::string file =
-      write_temp_project("soz-one.yaml", soz_project_yaml(soz_riser_yaml("R", 0.0)));
+  const std::string file = write_temp_project("soz-one.yaml", soz_project_yaml(soz_riser_yaml("R", 0.0)));
   const CommandResult table = run_spiral("soz " + file + " --step-deg 90 --no-check");
   ASSERT_EQ(table.exit_code, 0) << table.err;
   EXPECT_NE(table.out.find("Riser safe operational zones"), std::string::npos);
@@ -78,18 +75,15 @@ TEST(CliSoz, TableAndCsv) {
 }
 
 TEST(CliSoz, StepThatDoesNotDivide360IsBadInput) {
-  const std::string file =
-      write_temp_project("soz-step.yaml", soz_project_yaml(soz_riser_yaml("R", 0.0)));
+  const std::string file = write_temp_project("soz-step.yaml", soz_project_yaml(soz_riser_yaml("R", 0.0)));
   const CommandResult r = run_spiral("soz " + file + " --step-deg 7");
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find("--step-deg: the direction step must divide 360 deg, got 7 deg"),
-            std::string::npos)
-      << r.err;
+  EXPECT_NE(r.err.find("--step-deg: the direction step must divide 360 deg, got 7 deg"), std::string::npos) << r.err;
 }
 
 TEST(CliSoz, RiserFailingAtZeroOffsetIsBadInputNamingTheCriterion) {
-  const std::string file = write_temp_project(
-      "soz-fail.yaml", soz_project_yaml(soz_riser_yaml("R", 0.0), "    max_top_tension: 3.0e5\n"));
+  const std::string file =
+      write_temp_project("soz-fail.yaml", soz_project_yaml(soz_riser_yaml("R", 0.0), "    max_top_tension: 3.0e5\n"));
   const CommandResult r = run_spiral("soz " + file + " --step-deg 90 --no-check");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("riser 'R' fails its criteria at zero offset"), std::string::npos) << r.err;
@@ -111,8 +105,7 @@ TEST(CliSoz, FlexibleRiserWithoutBendingRadiusIsBadInput) {
 }
 
 TEST(CliSoz, ExtremeOptionsAreCheckedAsBadInput) {
-  const std::string file =
-      write_temp_project("soz-extreme.yaml", soz_project_yaml(soz_riser_yaml("R", 0.0)));
+  const std::string file = write_temp_project("soz-extreme.yaml", soz_project_yaml(soz_riser_yaml("R", 0.0)));
   const CommandResult zero = run_spiral("soz " + file + " --step-deg 90 --extreme --duration 0");
   EXPECT_EQ(zero.exit_code, 2);
   EXPECT_NE(zero.err.find("--duration: must be > 0 s, got 0 s"), std::string::npos) << zero.err;
@@ -124,8 +117,7 @@ TEST(CliSoz, ExtremeOptionsAreCheckedAsBadInput) {
 }
 
 TEST(CliSoz, UnknownCaseIsBadInput) {
-  const std::string file =
-      write_temp_project("soz-case.yaml", soz_project_yaml(soz_riser_yaml("R", 0.0)));
+  const std::string file = write_temp_project("soz-case.yaml", soz_project_yaml(soz_riser_yaml("R", 0.0)));
   const CommandResult r = run_spiral("soz " + file + " --case nope");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("no load case named \"nope\""), std::string::npos) << r.err;

@@ -72,17 +72,14 @@ TEST(CliStaticCase, PerLineAndPerRiserContributionsSumToTheArray) {
   for (int i = 0; i < 6; ++i) {
     EXPECT_NEAR(force_sum[i], doc["force_6dof"][i].get<double>(), kSumRelTol * force_scale) << i;
     for (int j = 0; j < 6; ++j) {
-      EXPECT_NEAR(stiffness_sum[i][j], doc["stiffness_6x6"][i][j].get<double>(),
-                  kSumRelTol * stiffness_scale)
+      EXPECT_NEAR(stiffness_sum[i][j], doc["stiffness_6x6"][i][j].get<double>(), kSumRelTol * stiffness_scale)
           << i << "," << j;
     }
   }
   // A riser contributes: it pulls the hull down and stiffens it horizontally.
   for (const auto& riser : doc["risers"]) {
     EXPECT_LT(riser["force_6dof"][2].get<double>(), 0.0) << riser["name"];
-    EXPECT_GT(
-        riser["stiffness_6x6"][0][0].get<double>() + riser["stiffness_6x6"][1][1].get<double>(),
-        0.0);
+    EXPECT_GT(riser["stiffness_6x6"][0][0].get<double>() + riser["stiffness_6x6"][1][1].get<double>(), 0.0);
   }
 }
 
@@ -95,8 +92,8 @@ TEST(CliStaticCase, EquilibriumTableOfALoadCase) {
 }
 
 TEST(CliStaticCase, DamagedCaseMovesFurther) {
-  const auto intact = run_spiral("equilibrium --json " + scenario("deepwater-fps.yaml") +
-                                 " --case lc2-survival-collinear-45deg");
+  const auto intact =
+      run_spiral("equilibrium --json " + scenario("deepwater-fps.yaml") + " --case lc2-survival-collinear-45deg");
   const auto damaged = run_spiral("equilibrium --json " + scenario("deepwater-fps.yaml") +
                                   " --case lc2-survival-collinear-45deg --damaged L10");
   ASSERT_EQ(intact.exit_code, app::kExitOk) << intact.err;

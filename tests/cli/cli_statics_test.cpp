@@ -50,8 +50,7 @@ TEST(CliStatics, Oc4JsonMatchesMap) {
   EXPECT_EQ(doc["format"], "spiral.statics");
   ASSERT_EQ(doc["lines"].size(), 3u);
   for (const auto& line : doc["lines"]) {
-    EXPECT_NEAR(line["fairlead_tension_N"].get<double>(), kMapFairleadTension_N,
-                kMapTolerance * kMapFairleadTension_N);
+    EXPECT_NEAR(line["fairlead_tension_N"].get<double>(), kMapFairleadTension_N, kMapTolerance * kMapFairleadTension_N);
     EXPECT_NEAR(line["laid_length_m"].get<double>(), kMapLaidLength_m, kMapTolerance * 835.35);
     EXPECT_EQ(line["regime"], "touchdown");
   }
@@ -60,8 +59,7 @@ TEST(CliStatics, Oc4JsonMatchesMap) {
 }
 
 TEST(CliStatics, SurgeOffsetIsRestored) {
-  const auto result =
-      run_spiral("statics --json --offset 10,0,0,0,0,0 " + scenario("oc4-semisubmersible.yaml"));
+  const auto result = run_spiral("statics --json --offset 10,0,0,0,0,0 " + scenario("oc4-semisubmersible.yaml"));
   ASSERT_EQ(result.exit_code, app::kExitOk) << result.err;
   const auto doc = nlohmann::json::parse(result.out);
   EXPECT_LT(doc["hull_force_6dof"][0].get<double>(), 0.0);
@@ -87,8 +85,7 @@ TEST(CliStatics, WrongOffsetArityIsBadInput) {
 
 TEST(CliStatics, ImpossibleOffsetIsSolverFailureNamingTheLine) {
   // 500 m of surge stretches the 835 m line at 180 degrees over a 1.3 km chord.
-  const auto result =
-      run_spiral("statics --offset 500,0,0,0,0,0 " + scenario("oc4-semisubmersible.yaml"));
+  const auto result = run_spiral("statics --offset 500,0,0,0,0,0 " + scenario("oc4-semisubmersible.yaml"));
   EXPECT_EQ(result.exit_code, app::kExitSolverFailure);
   EXPECT_NE(result.err.find("line 'L2'"), std::string::npos) << result.err;
 }
@@ -103,10 +100,10 @@ namespace {
 // message names the file, the line, the field path and the problem.
 struct BadInputCase {
   const char* name;
-  const char* replace;    // text of the valid project to replace
-  const char* with;       // its faulty version
-  const char* expected;   // fragment the message must contain
-  int line;               // line the message must point at
+  const char* replace;   // text of the valid project to replace
+  const char* with;      // its faulty version
+  const char* expected;  // fragment the message must contain
+  int line;              // line the message must point at
 };
 
 constexpr const char* kValidProject = R"(version: 1
@@ -141,35 +138,34 @@ TEST_P(CliBadInput, ExitsTwoAndNamesFileLineAndField) {
   const auto path = write_project(std::string("spiral-cli-") + c.name + ".yaml", text);
   const auto result = run_spiral("statics '" + path.string() + "'");
   EXPECT_EQ(result.exit_code, app::kExitBadInput) << result.err;
-  EXPECT_NE(result.err.find(path.filename().string() + ":" + std::to_string(c.line) + ":"),
-            std::string::npos)
+  EXPECT_NE(result.err.find(path.filename().string() + ":" + std::to_string(c.line) + ":"), std::string::npos)
       << result.err;
   EXPECT_NE(result.err.find(c.expected), std::string::npos) << result.err;
 }
 
 INSTANTIATE_TEST_SUITE_P(
     EveryErrorClass, CliBadInput,
-    ::testing::Values(
-        BadInputCase{"negative-length", "length: 835.35", "length: -20.0",
-                     "mooring.lines[0].segments[0].length: must be > 0 m, got -20 m", 13},
-        BadInputCase{"unknown-key", "gravity: 9.80665", "gravty: 9.80665", "site.gravty: unknown key", 3},
-        BadInputCase{"wrong-type", "depth: 200.0", "depth: deep", "site.depth", 3},
-        BadInputCase{"bad-enum", "kind: user", "kind: usr", "line_types[0].kind", 6},
-        BadInputCase{"undefined-type", "{type: c, length: 835.35}", "{type: chain, length: 835.35}",
-                     "mooring.lines[0].segments[0].type", 13},
-        BadInputCase{"anchor-below-seabed", "anchor: [837.6, 0.0, -200.0]", "anchor: [837.6, 0.0, -210.0]",
-                     "mooring.lines[0].anchor", 10},
-        BadInputCase{"fairlead-above-water", "fairlead: [40.868, 0.0, -14.0]", "fairlead: [40.868, 0.0, 4.0]",
-                     "mooring.lines[0].fairlead", 11},
-        BadInputCase{"line-too-short", "length: 835.35", "length: 500.0", "too short", 13},
-        BadInputCase{"line-too-long", "length: 835.35", "length: 1500.0", "slack", 13},
-        BadInputCase{"duplicate-name", "environments: [{name: calm}]",
-                     "environments: [{name: calm}, {name: calm}]", "environments[1].name", 17},
-        BadInputCase{"undefined-environment", "environment: calm}", "environment: storm}",
-                     "load_cases[0].environment", 18}),
+    ::testing::Values(BadInputCase{"negative-length", "length: 835.35", "length: -20.0",
+                                   "mooring.lines[0].segments[0].length: must be > 0 m, got -20 m", 13},
+                      BadInputCase{"unknown-key", "gravity: 9.80665", "gravty: 9.80665", "site.gravty: unknown key", 3},
+                      BadInputCase{"wrong-type", "depth: 200.0", "depth: deep", "site.depth", 3},
+                      BadInputCase{"bad-enum", "kind: user", "kind: usr", "line_types[0].kind", 6},
+                      BadInputCase{"undefined-type", "{type: c, length: 835.35}", "{type: chain, length: 835.35}",
+                                   "mooring.lines[0].segments[0].type", 13},
+                      BadInputCase{"anchor-below-seabed", "anchor: [837.6, 0.0, -200.0]",
+                                   "anchor: [837.6, 0.0, -210.0]", "mooring.lines[0].anchor", 10},
+                      BadInputCase{"fairlead-above-water", "fairlead: [40.868, 0.0, -14.0]",
+                                   "fairlead: [40.868, 0.0, 4.0]", "mooring.lines[0].fairlead", 11},
+                      BadInputCase{"line-too-short", "length: 835.35", "length: 500.0", "too short", 13},
+                      BadInputCase{"line-too-long", "length: 835.35", "length: 1500.0", "slack", 13},
+                      BadInputCase{"duplicate-name", "environments: [{name: calm}]",
+                                   "environments: [{name: calm}, {name: calm}]", "environments[1].name", 17},
+                      BadInputCase{"undefined-environment", "environment: calm}", "environment: storm}",
+                                   "load_cases[0].environment", 18}),
     [](const ::testing::TestParamInfo<BadInputCase>& info) {
       std::string name = info.param.name;
-      for (char& ch : name) if (ch == '-') ch = '_';
+      for (char& ch : name)
+        if (ch == '-') ch = '_';
       return name;
     });
 

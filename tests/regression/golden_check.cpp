@@ -47,12 +47,18 @@ Arguments parse(int argc, char** argv) {
     if (flag == "--") break;
     if (i + 1 >= argc) throw std::runtime_error(flag + ": value missing");
     const std::string value = argv[++i];
-    if (flag == "--name") a.name = value;
-    else if (flag == "--baseline") a.baseline = value;
-    else if (flag == "--rules") a.rules = value;
-    else if (flag == "--document") a.document = value;
-    else if (flag == "--exit") a.expected_exit = std::stoi(value);
-    else throw std::runtime_error("unknown flag " + flag);
+    if (flag == "--name")
+      a.name = value;
+    else if (flag == "--baseline")
+      a.baseline = value;
+    else if (flag == "--rules")
+      a.rules = value;
+    else if (flag == "--document")
+      a.document = value;
+    else if (flag == "--exit")
+      a.expected_exit = std::stoi(value);
+    else
+      throw std::runtime_error("unknown flag " + flag);
   }
   for (++i; i < argc; ++i) a.command.emplace_back(argv[i]);
   if (a.name.empty() || a.baseline.empty() || a.rules.empty() || a.command.empty())

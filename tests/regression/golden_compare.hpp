@@ -18,10 +18,10 @@ namespace spiral::golden {
 struct ToleranceRule {
   std::string run = "*";
   std::string path = "*";
-  bool ignore = false;      ///< value not compared (wall clock, host paths); the key must still exist
-  double relative = 0.0;    ///< |a - b| <= absolute + relative * max(|a|, |b|)
+  bool ignore = false;    ///< value not compared (wall clock, host paths); the key must still exist
+  double relative = 0.0;  ///< |a - b| <= absolute + relative * max(|a|, |b|)
   double absolute = 0.0;
-  std::string why;          ///< the justification, printed with every failure under this rule
+  std::string why;  ///< the justification, printed with every failure under this rule
 };
 
 /// Reads `{"rules": [{"run", "path", "ignore", "rel", "abs", "why"}, ...]}`;

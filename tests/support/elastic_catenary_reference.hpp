@@ -12,17 +12,17 @@
 namespace spiral::test {
 
 struct ElasticCatenaryReference {
-  double H_N = 0.0;             ///< horizontal tension (constant along the line)
-  double V_N = 0.0;             ///< fairlead vertical force
+  double H_N = 0.0;  ///< horizontal tension (constant along the line)
+  double V_N = 0.0;  ///< fairlead vertical force
   double fairlead_tension_N = 0.0;
   double anchor_tension_N = 0.0;
-  double laid_length_m = 0.0;   ///< unstretched
-  double touchdown_x_m = 0.0;   ///< horizontal distance anchor → touchdown point (stretched)
+  double laid_length_m = 0.0;  ///< unstretched
+  double touchdown_x_m = 0.0;  ///< horizontal distance anchor → touchdown point (stretched)
 };
 
 /// `seabed`: the anchor is on the seabed and the line may lie on it.
-inline ElasticCatenaryReference solve_elastic_catenary(double L, double w, double EA, double XF,
-                                                       double ZF, bool seabed) {
+inline ElasticCatenaryReference solve_elastic_catenary(double L, double w, double EA, double XF, double ZF,
+                                                       bool seabed) {
   auto spans = [&](double H, double V, double& x, double& z) {
     const double Lb = seabed ? L - V / w : 0.0;
     if (seabed && Lb > 0.0) {

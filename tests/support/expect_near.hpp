@@ -20,51 +20,43 @@
 namespace spiral::test {
 
 inline ::testing::AssertionResult rel_near_scale(const char* actual_expr, const char* expected_expr,
-                                                 const char* /*tol_expr*/, const char* scale_expr,
-                                                 double actual, double expected, double rel_tol,
-                                                 double scale) {
+                                                 const char* /*tol_expr*/, const char* scale_expr, double actual,
+                                                 double expected, double rel_tol, double scale) {
   const double diff = std::abs(actual - expected);
   const double allowed = rel_tol * std::abs(scale);
   if (std::isfinite(actual) && diff <= allowed) return ::testing::AssertionSuccess();
   std::ostringstream m;
   m.precision(17);
   m << actual_expr << " = " << actual << "\n  expected " << expected_expr << " = " << expected
-    << "\n  |difference| = " << diff << " > allowed " << allowed << " (relative tolerance "
-    << rel_tol << " of " << scale_expr << " = " << scale << "; relative difference "
-    << (scale != 0.0 ? diff / std::abs(scale) : diff) << ")";
+    << "\n  |difference| = " << diff << " > allowed " << allowed << " (relative tolerance " << rel_tol << " of "
+    << scale_expr << " = " << scale << "; relative difference " << (scale != 0.0 ? diff / std::abs(scale) : diff)
+    << ")";
   return ::testing::AssertionFailure() << m.str();
 }
 
-inline ::testing::AssertionResult rel_near(const char* actual_expr, const char* expected_expr,
-                                           const char* tol_expr, double actual, double expected,
-                                           double rel_tol) {
-  return rel_near_scale(actual_expr, expected_expr, tol_expr, "|expected|", actual, expected,
-                        rel_tol, expected);
+inline ::testing::AssertionResult rel_near(const char* actual_expr, const char* expected_expr, const char* tol_expr,
+                                           double actual, double expected, double rel_tol) {
+  return rel_near_scale(actual_expr, expected_expr, tol_expr, "|expected|", actual, expected, rel_tol, expected);
 }
 
 template <typename A, typename B>
-::testing::AssertionResult eigen_rel_near(const char* actual_expr, const char* expected_expr,
-                                          const char* /*tol_expr*/,
-                                          const Eigen::MatrixBase<A>& actual,
-                                          const Eigen::MatrixBase<B>& expected, double rel_tol) {
+::testing::AssertionResult eigen_rel_near(const char* actual_expr, const char* expected_expr, const char* /*tol_expr*/,
+                                          const Eigen::MatrixBase<A>& actual, const Eigen::MatrixBase<B>& expected,
+                                          double rel_tol) {
   if (actual.rows() != expected.rows() || actual.cols() != expected.cols()) {
-    return ::testing::AssertionFailure()
-           << actual_expr << " is " << actual.rows() << "x" << actual.cols() << " but "
-           << expected_expr << " is " << expected.rows() << "x" << expected.cols();
+    return ::testing::AssertionFailure() << actual_expr << " is " << actual.rows() << "x" << actual.cols() << " but "
+                                         << expected_expr << " is " << expected.rows() << "x" << expected.cols();
   }
   const double scale = expected.cwiseAbs().maxCoeff();
   const double allowed = rel_tol * scale;
-  const auto diff =
-      (actual.derived().template cast<double>() - expected.derived().template cast<double>())
-          .eval();
+  const auto diff = (actual.derived().template cast<double>() - expected.derived().template cast<double>()).eval();
   const double worst = diff.cwiseAbs().maxCoeff();
   if (actual.allFinite() && worst <= allowed) return ::testing::AssertionSuccess();
   std::ostringstream m;
   m.precision(12);
   const Eigen::IOFormat fmt(Eigen::StreamPrecision, 0, ", ", "\n", "    [", "]");
-  m << actual_expr << " differs from " << expected_expr << ": max |difference| = " << worst
-    << " > allowed " << allowed << " (relative tolerance " << rel_tol
-    << " of max|expected| = " << scale << ")\n  actual:\n"
+  m << actual_expr << " differs from " << expected_expr << ": max |difference| = " << worst << " > allowed " << allowed
+    << " (relative tolerance " << rel_tol << " of max|expected| = " << scale << ")\n  actual:\n"
     << actual.format(fmt) << "\n  expected:\n"
     << expected.format(fmt) << "\n  difference:\n"
     << diff.format(fmt);

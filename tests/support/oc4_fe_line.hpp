@@ -52,8 +52,6 @@ inline engine::FeDynamicEnvironment oc4_dynamic_environment() {
 
 /// Line L2 of OC4 in its own vertical plane: anchor at x = −837.6 m on the
 /// seabed, fairlead at (−40.868, 0, −14) m.
-inline engine::FeLineEnds oc4_line_ends() {
-  return {{-837.6, 0.0, -200.0}, {-40.868, 0.0, -14.0}};
-}
+inline engine::FeLineEnds oc4_line_ends() { return {{-837.6, 0.0, -200.0}, {-40.868, 0.0, -14.0}}; }
 
 }  // namespace spiral::test

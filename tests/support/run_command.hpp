@@ -32,8 +32,8 @@ inline CommandResult run_spiral(const std::string& arguments) {
   const auto dir = std::filesystem::temp_directory_path() /
                    ("spiral-cli-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
   std::filesystem::create_directories(dir);
-  const std::string command = std::string("'") + SPIRAL_EXECUTABLE + "' " + arguments + " >'" +
-                              (dir / "out").string() + "' 2>'" + (dir / "err").string() + "' </dev/null";
+  const std::string command = std::string("'") + SPIRAL_EXECUTABLE + "' " + arguments + " >'" + (dir / "out").string() +
+                              "' 2>'" + (dir / "err").string() + "' </dev/null";
   const int status = std::system(command.c_str());
   CommandResult result;
   result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;

@@ -9,10 +9,9 @@
 
 namespace spiral::test {
 
-inline std::string soz_riser_yaml(const std::string& name, double azimuth_deg,
-                                  double hang_off_radius_m = 0.0, const std::string& extra = "") {
-  return "  - name: " + name +
-         "\n    kind: scr\n    hang_off: {radius: " + std::to_string(hang_off_radius_m) +
+inline std::string soz_riser_yaml(const std::string& name, double azimuth_deg, double hang_off_radius_m = 0.0,
+                                  const std::string& extra = "") {
+  return "  - name: " + name + "\n    kind: scr\n    hang_off: {radius: " + std::to_string(hang_off_radius_m) +
          ", azimuth_deg: " + std::to_string(azimuth_deg) +
          ", z: -20.0}\n    azimuth_deg: " + std::to_string(azimuth_deg) +
          "\n    top_angle_deg: 12.0\n    sections:\n"
@@ -25,11 +24,10 @@ inline std::string soz_riser_yaml(const std::string& name, double azimuth_deg,
 }
 
 /// The project text with the given `risers:` entries and riser criteria.
-inline std::string soz_project_yaml(const std::string& risers,
-                                    const std::string& criteria =
-                                        "    min_effective_tension: 0.0\n"
-                                        "    max_top_tension: 0.9e6\n"
-                                        "    max_top_angle_deg: 16.0\n") {
+inline std::string soz_project_yaml(const std::string& risers, const std::string& criteria =
+                                                                   "    min_effective_tension: 0.0\n"
+                                                                   "    max_top_tension: 0.9e6\n"
+                                                                   "    max_top_angle_deg: 16.0\n") {
   return R"(version: 1
 name: soz-test
 site:

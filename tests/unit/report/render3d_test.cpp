@@ -71,13 +71,11 @@ TEST(Render3d, KnownSceneHasSizeContentAndTheLineWhereItProjects) {
   const Scene scene = known_scene();
   for (const double t : {0.3, 0.4, 0.5, 0.6, 0.7}) {
     const Eigen::Vector3d p =
-        scene.lines[0].points_g.front() +
-        t * (scene.lines[0].points_g.back() - scene.lines[0].points_g.front());
+        scene.lines[0].points_g.front() + t * (scene.lines[0].points_g.back() - scene.lines[0].points_g.front());
     const int px = static_cast<int>(std::floor(kWidth / 2.0 + p.x() / m_per_px));
     const int py = static_cast<int>(std::floor(kHeight / 2.0 - p.y() / m_per_px));
     const std::uint8_t* pixel = image.at(px, py);
-    EXPECT_NEAR(pixel[0], expected.r * 255, kColorTolerance)
-        << "t " << t << " at " << px << "," << py;
+    EXPECT_NEAR(pixel[0], expected.r * 255, kColorTolerance) << "t " << t << " at " << px << "," << py;
     EXPECT_NEAR(pixel[1], expected.g * 255, kColorTolerance) << "t " << t;
     EXPECT_NEAR(pixel[2], expected.b * 255, kColorTolerance) << "t " << t;
   }
@@ -90,8 +88,7 @@ TEST(Render3d, KnownSceneHasSizeContentAndTheLineWhereItProjects) {
 
 TEST(Render3d, SameInputRendersByteIdenticalImages) {
   const Scene scene = known_scene();
-  for (const ViewKind kind :
-       {ViewKind::iso, ViewKind::plan, ViewKind::elevation, ViewKind::hull_closeup}) {
+  for (const ViewKind kind : {ViewKind::iso, ViewKind::plan, ViewKind::elevation, ViewKind::hull_closeup}) {
     const Camera camera = frame_view(scene, kind, static_cast<double>(kWidth) / kHeight);
     ViewOptions o = options();
     o.title = "determinism";

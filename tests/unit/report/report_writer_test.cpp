@@ -20,10 +20,8 @@ ReportDocument small_document() {
   doc.title.verdict = "PASS";
   Section s{"Results", {}, true};
   s.blocks.emplace_back(Paragraph{"Some text."});
-  s.blocks.emplace_back(Table{"values",
-                              "Values.",
-                              {"Name", "Value (kN)"},
-                              {{{"a", 1.5, CellStatus::none}, {"12.5", 12.5, CellStatus::pass}}}});
+  s.blocks.emplace_back(Table{
+      "values", "Values.", {"Name", "Value (kN)"}, {{{"a", 1.5, CellStatus::none}, {"12.5", 12.5, CellStatus::pass}}}});
   Figure f;
   f.id = "plot";
   f.caption = "A plot.";
@@ -95,10 +93,8 @@ TEST(ReportWriter, FailureHalfwayLeavesTheOldReportAndNoTemporaryFolder) {
 }
 
 TEST(ReportWriter, CsvQuotesTextAndKeepsFullPrecision) {
-  Table t{"t",
-          "",
-          {"Name", "Value"},
-          {{{"a, b", std::nullopt, CellStatus::none}, {"1.2", 1.23456789, CellStatus::none}}}};
+  Table t{
+      "t", "", {"Name", "Value"}, {{{"a, b", std::nullopt, CellStatus::none}, {"1.2", 1.23456789, CellStatus::none}}}};
   EXPECT_EQ(table_csv(t), "Name,Value\n\"a, b\",1.23456789\n");
 }
 

@@ -56,8 +56,7 @@ TEST(ScAnalysis, Oc4FreeDecayReproducesNaturalPeriods) {
       if (m.dominant_dof == names[dof]) expected = m.period_s;
     ASSERT_GT(expected, 0.0) << names[dof];
     const double dt = 0.1;
-    const auto decay = engine::free_decay(model.hull, model.loads.lines, dof, displacement[dof],
-                                          10.0 * expected, dt);
+    const auto decay = engine::free_decay(model.hull, model.loads.lines, dof, displacement[dof], 10.0 * expected, dt);
     const double period = decay_period_s(decay, dof, model.initial_offset(dof), dt);
     EXPECT_NEAR(period, expected, kModePeriodTolerance * expected) << names[dof];
     std::cout << names[dof] << ": free decay " << period << " s, mode " << expected << " s\n";
@@ -108,12 +107,11 @@ TEST(ScAnalysis, SteadyWindAndCurrentMeanOffsetEqualsStaticOffset) {
     engine::HullSimulationOptions options;
     for (int k = 0; k <= 1080; ++k) options.output_times_s.push_back(10.0 * k);
     if (level == AnalysisLevel::uncoupled) options.integrator.relative_tolerance = 1e-8;
-    const auto run = engine::simulate_hull(model.hull, model.loads, engine::Vector6d::Zero(),
-                                           engine::Vector6d::Zero(), options);
+    const auto run =
+        engine::simulate_hull(model.hull, model.loads, engine::Vector6d::Zero(), engine::Vector6d::Zero(), options);
     const engine::Vector6d mean = run.position.rightCols(361).rowwise().mean();
     for (int d = 0; d < 6; ++d) {
-      EXPECT_NEAR(mean(d), model.statics.offset(d),
-                  d < 3 ? kMeanOffsetTolerance_m : kMeanRotationTolerance_rad)
+      EXPECT_NEAR(mean(d), model.statics.offset(d), d < 3 ? kMeanOffsetTolerance_m : kMeanRotationTolerance_rad)
           << to_string(level) << " dof " << d;
     }
   }
@@ -160,8 +158,8 @@ TEST(ScAnalysis, SlowDriftMeanEqualsStaticMeanDrift) {
   const int n = 21600;
   for (int k = 0; k < n; ++k) sum += model.slow_drift(0.5 * k)(0);
   EXPECT_NEAR(sum / n, static_drift, kTimeAverage * static_drift);
-  std::cout << "mean drift static " << static_drift << " N, realization "
-            << model.mean_slow_drift_force(0) << " N, 3-h time average " << sum / n << " N\n";
+  std::cout << "mean drift static " << static_drift << " N, realization " << model.mean_slow_drift_force(0)
+            << " N, 3-h time average " << sum / n << " N\n";
 }
 
 // The mean offset of a 3-h S-C run in waves equals the static offset under
@@ -234,10 +232,8 @@ TEST(ScAnalysis, Oc4RadiationMemoryKeepsTheFreeDecayPeriods) {
     double expected = 0.0;
     for (const auto& m : a.statics.natural_modes)
       if (m.dominant_dof == names[dof]) expected = m.period_s;
-    const auto da = engine::free_decay(a.hull, a.loads.lines, dof, displacement[dof],
-                                       8.0 * expected, dt, options);
-    const auto db = engine::free_decay(b.hull, b.loads.lines, dof, displacement[dof],
-                                       8.0 * expected, dt, options);
+    const auto da = engine::free_decay(a.hull, a.loads.lines, dof, displacement[dof], 8.0 * expected, dt, options);
+    const auto db = engine::free_decay(b.hull, b.loads.lines, dof, displacement[dof], 8.0 * expected, dt, options);
     const double ta = decay_period_s(da, dof, a.initial_offset(dof), dt);
     const double tb = decay_period_s(db, dof, b.initial_offset(dof), dt);
     EXPECT_NEAR(tb, ta, kMemoryVsLowFrequencyPeriodTol * ta) << names[dof];
@@ -246,14 +242,12 @@ TEST(ScAnalysis, Oc4RadiationMemoryKeepsTheFreeDecayPeriods) {
   }
   // Heave alone (uncoupled in this hull): T = 2 pi sqrt((M + A33(2 pi/T)) / K33).
   const HullModel hull = build_hull_model(low.project);
-  const double K33 = a.hull.hydrostatic_stiffness(2, 2) +
-                     std::get<engine::LinearizedLines>(a.loads.lines).stiffness(2, 2);
+  const double K33 =
+      a.hull.hydrostatic_stiffness(2, 2) + std::get<engine::LinearizedLines>(a.loads.lines).stiffness(2, 2);
   double T = 17.0;
   for (int it = 0; it < 50; ++it) {
     T = 2.0 * std::numbers::pi *
-        std::sqrt((a.hull.mass(2, 2) +
-                   engine::added_mass_at(*hull.radiation, 2.0 * std::numbers::pi / T)(2, 2)) /
-                  K33);
+        std::sqrt((a.hull.mass(2, 2) + engine::added_mass_at(*hull.radiation, 2.0 * std::numbers::pi / T)(2, 2)) / K33);
   }
   EXPECT_NEAR(heave_period, T, kMemoryHeavePeriodTol * T);
   std::cout << "heave with A33(w_n): " << T << " s\n";
@@ -303,8 +297,7 @@ TEST(ScAnalysis, MorisonHullInSteadyCurrentSettlesAtTheMemberDragOffset) {
   e.name = "current-only";
   e.current = Current{0.0, {{0.0, 0.5}, {-200.0, 0.5}}};
   p.project.environments.push_back(e);
-  p.project.load_cases.push_back(
-      {"current-case", "current-only", std::nullopt, DesignCondition::extreme});
+  p.project.load_cases.push_back({"current-case", "current-only", std::nullopt, DesignCondition::extreme});
   DynamicAnalysisRequest request;
   request.load_case = "current-case";
   request.duration_s = 1800.0;
@@ -313,30 +306,27 @@ TEST(ScAnalysis, MorisonHullInSteadyCurrentSettlesAtTheMemberDragOffset) {
   const DynamicModel model = build_dynamic_model(p, request);
   const HullModel hull = build_hull_model(p.project);
   ASSERT_TRUE(hull.morison.has_value());
-  EXPECT_EIGEN_REL_NEAR(
-      model.hull.added_mass,
-      engine::morison_added_mass(*hull.morison, p.project.site.water_density_kg_per_m3), 1e-14);
+  EXPECT_EIGEN_REL_NEAR(model.hull.added_mass,
+                        engine::morison_added_mass(*hull.morison, p.project.site.water_density_kg_per_m3), 1e-14);
   EXPECT_TRUE(model.statics.added_mass_included);
   const engine::CurrentProfile current = current_profile_of(*e.current);
   engine::MorisonFlow flow;
   flow.current = &current;
   flow.water_density_kg_per_m3 = p.project.site.water_density_kg_per_m3;
-  const engine::HullPose pose =
-      engine::pose_from_offset(p.project.hull.reference_point_g, model.initial_offset);
-  const engine::Vector6d F = engine::morison_load(*hull.morison, flow, pose.reference_point_g,
-                                                  pose.rotation, 0.0, engine::Vector6d::Zero())
-                                 .force;
+  const engine::HullPose pose = engine::pose_from_offset(p.project.hull.reference_point_g, model.initial_offset);
+  const engine::Vector6d F =
+      engine::morison_load(*hull.morison, flow, pose.reference_point_g, pose.rotation, 0.0, engine::Vector6d::Zero())
+          .force;
   EXPECT_GT(F(0), 1e5);  // ~1.7e5 N on the columns and pontoons
-  const engine::Matrix6d K = model.hull.hydrostatic_stiffness +
-                             std::get<engine::LinearizedLines>(model.loads.lines).stiffness;
+  const engine::Matrix6d K =
+      model.hull.hydrostatic_stiffness + std::get<engine::LinearizedLines>(model.loads.lines).stiffness;
   const engine::Vector6d expected = model.initial_offset + K.partialPivLu().solve(F);
 
   const DynamicAnalysisResult r = run_dynamic_analysis(p, request);
   const Eigen::Index tail = 600;
   for (const int d : {0, 2, 4}) {
     const double mean = r.total.row(d).tail(tail).mean();
-    EXPECT_NEAR(mean, expected(d),
-                d < 3 ? kMorisonCurrentOffsetTol_m : kMorisonCurrentOffsetTol_m / 30.0)
+    EXPECT_NEAR(mean, expected(d), d < 3 ? kMorisonCurrentOffsetTol_m : kMorisonCurrentOffsetTol_m / 30.0)
         << "dof " << d;
   }
   EXPECT_GT(expected(0) - model.initial_offset(0), 2.0);  // the members moved the hull by metres
@@ -398,16 +388,15 @@ TEST(ScAnalysis, EnhancedScAddsSymmetricLineDampingAndAddedMass) {
     for (const auto& segment : line.segments) {
       for (const auto& type : p.line_types) {
         if (type.name != segment.type) continue;
-        bound_kg += 1025.0 * type.added_mass_normal * 0.25 * std::numbers::pi *
-                    type.hydrodynamic_diameter_m * type.hydrodynamic_diameter_m * segment.length_m;
+        bound_kg += 1025.0 * type.added_mass_normal * 0.25 * std::numbers::pi * type.hydrodynamic_diameter_m *
+                    type.hydrodynamic_diameter_m * segment.length_m;
       }
     }
   }
   EXPECT_LT((*r.line_added_mass)(0, 0), 2.0 * bound_kg);
   EXPECT_GT((*r.line_added_mass)(0, 0), 0.05 * bound_kg);
   EXPECT_GT((*r.line_damping)(0, 0), 0.0);
-  EXPECT_LT(((*r.line_damping) - r.line_damping->transpose()).norm(),
-            1e-9 * r.line_damping->norm());
+  EXPECT_LT(((*r.line_damping) - r.line_damping->transpose()).norm(), 1e-9 * r.line_damping->norm());
   std::cout << "line added mass surge " << (*r.line_added_mass)(0, 0) << " kg (bound " << bound_kg
             << " kg), damping surge " << (*r.line_damping)(0, 0) << " N s/m\n";
 }
@@ -461,8 +450,7 @@ namespace {
 TEST(ScAnalysis, RaosFromExcitationSolveTheMotionEquation) {
   engine::HydroCoefficients radiation;
   radiation.omega_rad_per_s = {0.2, 1.0};
-  radiation.added_mass = {engine::Matrix6d::Identity() * 2.0e6,
-                          engine::Matrix6d::Identity() * 4.0e6};
+  radiation.added_mass = {engine::Matrix6d::Identity() * 2.0e6, engine::Matrix6d::Identity() * 4.0e6};
   radiation.damping = {engine::Matrix6d::Identity() * 1.0e5, engine::Matrix6d::Identity() * 3.0e5};
   engine::ExcitationTable x;
   x.omega_rad_per_s = {0.6};
@@ -480,10 +468,9 @@ TEST(ScAnalysis, RaosFromExcitationSolveTheMotionEquation) {
   const double a = 3.0e6;  // linear between 2e6 at 0.2 and 4e6 at 1.0 rad/s
   const double b = 2.0e5 + 5.0e4;
   for (int d = 0; d < 6; ++d) {
-    const std::complex<double> expected = x.values[static_cast<std::size_t>(d)](0, 0) /
-                                          std::complex<double>(-w * w * (1.0e7 + a) + 3.0e6, w * b);
-    EXPECT_NEAR(std::abs(rao.values[static_cast<std::size_t>(d)](0, 0) - expected), 0.0,
-                1e-12 * std::abs(expected));
+    const std::complex<double> expected =
+        x.values[static_cast<std::size_t>(d)](0, 0) / std::complex<double>(-w * w * (1.0e7 + a) + 3.0e6, w * b);
+    EXPECT_NEAR(std::abs(rao.values[static_cast<std::size_t>(d)](0, 0) - expected), 0.0, 1e-12 * std::abs(expected));
   }
   EXPECT_EQ(rao.quantity, engine::TransferQuantity::motion_rao);
 }

@@ -28,22 +28,18 @@ LineDynamicsInput surge_motion(double amplitude_m, double period_s, double durat
   const auto n = static_cast<Eigen::Index>(duration_s / in.dt_s) + 1;
   in.motion.setZero(6, n);
   for (Eigen::Index k = 0; k < n; ++k) {
-    in.motion(0, k) = amplitude_m * std::sin(2.0 * std::numbers::pi * in.dt_s *
-                                             static_cast<double>(k) / period_s);
+    in.motion(0, k) = amplitude_m * std::sin(2.0 * std::numbers::pi * in.dt_s * static_cast<double>(k) / period_s);
   }
-  in.ramp_s =
-      0.0;  // the sine starts at zero offset; its velocity jump is what the ramp test covers
+  in.ramp_s = 0.0;  // the sine starts at zero offset; its velocity jump is what the ramp test covers
   return in;
 }
 
 TEST(LineDynamics, HullAtRestKeepsTheStaticTension) {
   const ValidatedProject p = load_validated_project(kOc4);
-  const std::vector<LineDynamicsSeries> lines =
-      run_line_dynamics(p.project, surge_motion(0.0, 100.0, 120.0));
+  const std::vector<LineDynamicsSeries> lines = run_line_dynamics(p.project, surge_motion(0.0, 100.0, 120.0));
   ASSERT_EQ(lines.size(), 3u);
   for (const LineDynamicsSeries& l : lines) {
-    for (double t : l.tension_N)
-      EXPECT_NEAR(t, l.tension_N.front(), 1e-6 * l.tension_N.front()) << l.line;
+    for (double t : l.tension_N) EXPECT_NEAR(t, l.tension_N.front(), 1e-6 * l.tension_N.front()) << l.line;
   }
 }
 
@@ -60,21 +56,21 @@ TEST(LineDynamics, ARegularWaveOnTheLinesMakesTheTensionOscillateAtItsPeriod) {
   wave.water_depth_m = p.project.site.depth_m;
   in.sea = std::make_shared<const engine::WaveRealization>(engine::make_regular_wave(wave));
   const std::vector<LineDynamicsSeries> lines = run_line_dynamics(p.project, in);
-  const LineDynamicsSeries& l1 = lines.front();  // L1 lies along the wave direction (+x)
+  const LineDynamicsSeries& l1 = lines.front();                              // L1 lies along the wave direction (+x)
   std::vector<double> late(l1.tension_N.begin() + 200, l1.tension_N.end());  // after 100 s
   const double period = engine::zero_upcrossing_period_s(late, in.dt_s);
   EXPECT_NEAR(period, 10.0, 0.2);
   const auto [lo, hi] = std::minmax_element(late.begin(), late.end());
-  EXPECT_GT(*hi - *lo, 3e-4 * *hi);  // measured 1.7 kN of 1.1 MN (1.5e-3; 1.3 kN without Wheeler stretching); still water: < 1e-6
-  std::cout << "regular wave on the lines: L1 tension range " << (*hi - *lo) / 1e3
-            << " kN, period " << period << " s\n";
+  EXPECT_GT(*hi - *lo,
+            3e-4 * *hi);  // measured 1.7 kN of 1.1 MN (1.5e-3; 1.3 kN without Wheeler stretching); still water: < 1e-6
+  std::cout << "regular wave on the lines: L1 tension range " << (*hi - *lo) / 1e3 << " kN, period " << period
+            << " s\n";
 }
 
 // Risers run with the lines: at rest each keeps its static top tension (the
 // equilibrium's, from the same FE model) — the deep-water scenario's 12 SCRs.
 TEST(LineDynamics, RisersAtRestKeepTheirStaticTopTension) {
-  const ValidatedProject p = load_validated_project(std::string(SPIRAL_SOURCE_DIR) +
-                                                    "/scenarios/deepwater-fps.yaml");
+  const ValidatedProject p = load_validated_project(std::string(SPIRAL_SOURCE_DIR) + "/scenarios/deepwater-fps.yaml");
   LineDynamicsInput in = surge_motion(0.0, 100.0, 10.0);
   const std::vector<LineDynamicsSeries> series = run_line_dynamics(p.project, in);
   ASSERT_EQ(series.size(), p.project.mooring.lines.size() + p.project.risers.size());
@@ -102,14 +98,12 @@ TEST(LineDynamics, SlowSurgeFollowsTheQuasiStaticCatenary) {
     for (Eigen::Index k = 0; k < in.motion.cols(); ++k) {
       const double t = in.dt_s * static_cast<double>(k);
       if (t < 100.0) continue;
-      const engine::HullPose pose =
-          engine::pose_from_offset(p.project.hull.reference_point_g, in.motion.col(k));
+      const engine::HullPose pose = engine::pose_from_offset(p.project.hull.reference_point_g, in.motion.col(k));
       const double quasi_static =
           catenaries.lines[l]
               ->solve(pose.reference_point_g + pose.rotation * catenaries.lines[l]->attachment_b())
               .top_tension_N;
-      worst = std::max(
-          worst, std::abs(lines[l].tension_N[static_cast<std::size_t>(k)] / quasi_static - 1.0));
+      worst = std::max(worst, std::abs(lines[l].tension_N[static_cast<std::size_t>(k)] / quasi_static - 1.0));
     }
     EXPECT_GT(lines[l].solver.steps, 0);
   }

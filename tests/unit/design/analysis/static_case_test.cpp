@@ -67,8 +67,7 @@ TEST(StaticCase, RestSolutionsTakenFromTheCacheGiveIdenticalResults) {
   EXPECT_EQ(cached.stiffness, solved.stiffness);
   ASSERT_EQ(cached.lines.size(), solved.lines.size());
   for (std::size_t i = 0; i < solved.lines.size(); ++i) {
-    EXPECT_EQ(cached.lines[i].fairlead_tension_N, solved.lines[i].fairlead_tension_N)
-        << solved.lines[i].name;
+    EXPECT_EQ(cached.lines[i].fairlead_tension_N, solved.lines[i].fairlead_tension_N) << solved.lines[i].name;
   }
 }
 

@@ -54,10 +54,9 @@ TEST(RiserFlexJoint, HullPitchTowardsTheRiserReducesTheRotationOfAFarOffset) {
   // Yaw γ swings the joint about the vertical: the spherical angle between
   // tilt α at azimuth 0 and tilt θ at azimuth γ.
   const double yaw = 10.0 * kDegToRad;
-  const double expected =
-      std::acos(std::cos(alpha_deg * kDegToRad) * std::cos(theta_deg * kDegToRad) +
-                std::sin(alpha_deg * kDegToRad) * std::sin(theta_deg * kDegToRad) * std::cos(yaw)) *
-      kRadToDeg;
+  const double expected = std::acos(std::cos(alpha_deg * kDegToRad) * std::cos(theta_deg * kDegToRad) +
+                                    std::sin(alpha_deg * kDegToRad) * std::sin(theta_deg * kDegToRad) * std::cos(yaw)) *
+                          kRadToDeg;
   EXPECT_NEAR(riser_statics_row(f.project, f.design, solution, DesignCondition::normal,
                                 engine::rotation_matrix({0.0, 0.0, yaw}))
                   .flex_joint_rotation_deg,
@@ -72,15 +71,14 @@ TEST(RiserFlexJoint, CrossOffsetSwingsTheRiserPlaneBeyondTheChangeOfTopAngle) {
   // 450 m ≈ 4°, the top angle hardly changes; the joint sees the swing.
   const auto cross = evaluator.evaluate({0.0, 30.0}, nullptr);
   ASSERT_TRUE(cross.solution);
-  const double change_of_top_angle_deg =
-      std::abs(cross.row.top_angle_deg - f.design.design_top_angle_rad * kRadToDeg);
+  const double change_of_top_angle_deg = std::abs(cross.row.top_angle_deg - f.design.design_top_angle_rad * kRadToDeg);
   EXPECT_GT(cross.row.flex_joint_rotation_deg, change_of_top_angle_deg + 0.2);
   // The criterion uses it: with a limit below it the riser fails there.
   ASSERT_TRUE(f.design.criteria.max_flex_joint_rotation_rad.has_value());  // scr default
   RiserDesign tight = f.design;
   tight.criteria.max_flex_joint_rotation_rad = 0.5 * cross.row.flex_joint_rotation_deg * kDegToRad;
-  const RiserStaticsRow row = riser_statics_row(f.project, tight, *cross.solution, DesignCondition::normal,
-                                                Eigen::Matrix3d::Identity());
+  const RiserStaticsRow row =
+      riser_statics_row(f.project, tight, *cross.solution, DesignCondition::normal, Eigen::Matrix3d::Identity());
   EXPECT_EQ(row.governing_criterion, "flex_joint_rotation");
   EXPECT_NEAR(row.utilization, 2.0, 1e-12);
   EXPECT_FALSE(row.passes);

@@ -30,18 +30,15 @@ constexpr double kMinimumArchHeight_m = 10.0;
 /// (the default scenario's 273.1 × 25.4 mm oil SCR pipe, w_e 1237 N/m;
 /// smeared syntactic-foam modules of 1.2 m equivalent OD, 500 kg/m³: net
 /// buoyancy 4.28 kN/m) hung off at 28 m.
-std::string lazy_wave_project(double top_m, double buoyant_m, double bottom_m,
-                              double top_angle_deg) {
+std::string lazy_wave_project(double top_m, double buoyant_m, double bottom_m, double top_angle_deg) {
   const std::string pipe =
       "outer_diameter: 0.2731, wall_thickness: 0.0254, youngs_modulus: 2.07e11, yield_stress: "
       "4.48e8, steel_density: 7850.0, contents_density: 800.0";
   std::string text = replace(kMinimal, "  depth: 100.0\n", "  depth: 1800.0\n");
   text = replace(text, "      anchor: {radius: 500.0, azimuth_deg: 0.0}\n",
                  "      anchor: {radius: 2300.0, azimuth_deg: 180.0}\n");
-  text = replace(text, "      fairlead: [10.0, 0.0, -10.0]\n",
-                 "      fairlead: [-10.0, 0.0, -10.0]\n");
-  text = replace(text, "        - {type: c, length: 550.0}\n",
-                 "        - {type: c, length: 2900.0}\n");
+  text = replace(text, "      fairlead: [10.0, 0.0, -10.0]\n", "      fairlead: [-10.0, 0.0, -10.0]\n");
+  text = replace(text, "        - {type: c, length: 550.0}\n", "        - {type: c, length: 2900.0}\n");
   text += fmt::format(R"(risers:
   - name: LW
     kind: lazy_wave
@@ -66,16 +63,16 @@ class LazyWave : public ::testing::TestWithParam<LazyWaveCase> {};
 
 TEST_P(LazyWave, PlacedWithSagAndHogBendsTouchdownAndNoCompression) {
   const LazyWaveCase c = GetParam();
-  const Project project = parse_project(
-      lazy_wave_project(c.top_m, c.buoyant_m, c.bottom_m, c.top_angle_deg), "lazy-wave.yaml");
+  const Project project =
+      parse_project(lazy_wave_project(c.top_m, c.buoyant_m, c.bottom_m, c.top_angle_deg), "lazy-wave.yaml");
   ASSERT_TRUE(check_project(project).empty());
   const RiserDesign design = riser_design(project, project.risers.front());
   auto line = riser_static_line(project, design, std::nullopt);
   const Eigen::Vector3d hang_off_g = project.hull.reference_point_g + design.hang_off_b;
   line->solve(hang_off_g);
   const engine::FeStaticsResult& solution = *line->last_result();
-  const RiserStaticsRow row = riser_statics_row(project, design, solution, DesignCondition::normal,
-                                                Eigen::Matrix3d::Identity());
+  const RiserStaticsRow row =
+      riser_statics_row(project, design, solution, DesignCondition::normal, Eigen::Matrix3d::Identity());
 
   EXPECT_NEAR(row.top_angle_deg, c.top_angle_deg, kTopAngleTolerance_deg);
   ASSERT_TRUE(solution.touchdown.has_value());
@@ -106,8 +103,8 @@ TEST_P(LazyWave, PlacedWithSagAndHogBendsTouchdownAndNoCompression) {
   std::printf(
       "lazy wave %.0f/%.0f/%.0f at %.0f deg: hog z %.1f m, sag z %.1f m, TDP %.1f m from the foot, "
       "T_min %.1f kN, T_top %.1f kN\n",
-      c.top_m, c.buoyant_m, c.bottom_m, c.top_angle_deg, z[hog].z(), sag->z(),
-      solution.touchdown->arc_length_m, row.min_effective_tension_N / 1e3, row.top_tension_N / 1e3);
+      c.top_m, c.buoyant_m, c.bottom_m, c.top_angle_deg, z[hog].z(), sag->z(), solution.touchdown->arc_length_m,
+      row.min_effective_tension_N / 1e3, row.top_tension_N / 1e3);
 }
 
 INSTANTIATE_TEST_SUITE_P(TypicalGeometries, LazyWave,
@@ -118,14 +115,12 @@ INSTANTIATE_TEST_SUITE_P(TypicalGeometries, LazyWave,
 TEST(LazyWave, SagBendOnTheSeabedIsAGeometryError) {
   // A 2600 m top section at 4° sags ≈ 120 m below the seabed (1772 m below
   // the hang-off) before the buoyancy lifts it: it would lie there instead.
-  const Project project =
-      parse_project(lazy_wave_project(2600.0, 300.0, 1500.0, 4.0), "lazy-wave.yaml");
+  const Project project = parse_project(lazy_wave_project(2600.0, 300.0, 1500.0, 4.0), "lazy-wave.yaml");
   try {
     riser_design(project, project.risers.front());
     FAIL() << "expected a SolverError";
   } catch (const engine::SolverError& error) {
-    EXPECT_NE(std::string(error.what()).find("below the seabed"), std::string::npos)
-        << error.what();
+    EXPECT_NE(std::string(error.what()).find("below the seabed"), std::string::npos) << error.what();
   }
 }
 

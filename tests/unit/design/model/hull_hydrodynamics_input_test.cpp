@@ -34,8 +34,8 @@ std::string with_hull_keys(const std::string& extra) {
 }
 
 TEST(HullHydrodynamicsInput, LoadsWithDefaults) {
-  const Project p = parse_project(
-      with_hull_keys("  hydrodynamics: {radiation_file: " + kOc4Radiation + "}\n"), "t.yaml");
+  const Project p =
+      parse_project(with_hull_keys("  hydrodynamics: {radiation_file: " + kOc4Radiation + "}\n"), "t.yaml");
   ASSERT_TRUE(p.hull.hydrodynamics.has_value());
   const HullHydrodynamics& h = *p.hull.hydrodynamics;
   EXPECT_EQ(h.radiation_file.string(), kOc4Radiation);
@@ -49,43 +49,32 @@ TEST(HullHydrodynamicsInput, LoadsWithDefaults) {
 }
 
 TEST(HullHydrodynamicsInput, BadValuesAreNamedConditions) {
-  const Project p = parse_project(
-      with_hull_keys("  hydrodynamics:\n    radiation_file: /nonexistent/x.1\n    ulen: -1\n"
-                     "    period_scale: 0\n    linear_damping: [0, 0, -5, 0, 0, 0]\n"
-                     "    added_mass_frequency: 0\n"),
-      "t.yaml");
+  const Project p =
+      parse_project(with_hull_keys("  hydrodynamics:\n    radiation_file: /nonexistent/x.1\n    ulen: -1\n"
+                                   "    period_scale: 0\n    linear_damping: [0, 0, -5, 0, 0, 0]\n"
+                                   "    added_mass_frequency: 0\n"),
+                    "t.yaml");
   const auto issues = check_project(p, {});
   std::string conditions;
   for (const auto& i : issues) conditions += i.condition + " " + i.path + "\n";
-  EXPECT_NE(conditions.find("file_exists hull.hydrodynamics.radiation_file"), std::string::npos)
+  EXPECT_NE(conditions.find("file_exists hull.hydrodynamics.radiation_file"), std::string::npos) << conditions;
+  EXPECT_NE(conditions.find("hull_value_positive hull.hydrodynamics.ulen"), std::string::npos) << conditions;
+  EXPECT_NE(conditions.find("hull_value_positive hull.hydrodynamics.period_scale"), std::string::npos) << conditions;
+  EXPECT_NE(conditions.find("hull_damping_non_negative hull.hydrodynamics.linear_damping[2]"), std::string::npos)
       << conditions;
-  EXPECT_NE(conditions.find("hull_value_positive hull.hydrodynamics.ulen"), std::string::npos)
-      << conditions;
-  EXPECT_NE(conditions.find("hull_value_positive hull.hydrodynamics.period_scale"),
-            std::string::npos)
-      << conditions;
-  EXPECT_NE(conditions.find("hull_damping_non_negative hull.hydrodynamics.linear_damping[2]"),
-            std::string::npos)
-      << conditions;
-  EXPECT_NE(conditions.find("hull_value_positive hull.hydrodynamics.added_mass_frequency"),
-            std::string::npos)
+  EXPECT_NE(conditions.find("hull_value_positive hull.hydrodynamics.added_mass_frequency"), std::string::npos)
       << conditions;
 }
 
 TEST(HullHydrodynamicsInput, DampingNeedsSixValuesAndUnknownKeysFail) {
   EXPECT_THROW(
-      parse_project(
-          with_hull_keys("  hydrodynamics: {radiation_file: a.1, linear_damping: [1, 2]}\n"),
-          "t.yaml"),
+      parse_project(with_hull_keys("  hydrodynamics: {radiation_file: a.1, linear_damping: [1, 2]}\n"), "t.yaml"),
       InputError);
-  EXPECT_THROW(
-      parse_project(with_hull_keys("  hydrodynamics: {radiation_file: a.1, period_scal: 2}\n"),
-                    "t.yaml"),
-      InputError);
-  EXPECT_THROW(parse_project(
-                   with_hull_keys("  hydrodynamics: {radiation_file: a.1, frequency_column: hz}\n"),
-                   "t.yaml"),
+  EXPECT_THROW(parse_project(with_hull_keys("  hydrodynamics: {radiation_file: a.1, period_scal: 2}\n"), "t.yaml"),
                InputError);
+  EXPECT_THROW(
+      parse_project(with_hull_keys("  hydrodynamics: {radiation_file: a.1, frequency_column: hz}\n"), "t.yaml"),
+      InputError);
 }
 
 TEST(HullHydrodynamicsInput, PeriodScaleMultipliesThePeriods) {
@@ -103,14 +92,11 @@ TEST(HullHydrodynamicsInput, PeriodScaleMultipliesThePeriods) {
   EXPECT_NEAR(b.added_mass[3](0, 0) / a.added_mass[3](0, 0), 8.0, 8.0 * kRoundOff * 10);
   EXPECT_NEAR(b.damping[10](0, 0) / a.damping[10](0, 0), std::pow(2.0, 2.5), 1e-12);
   const auto da = engine::read_wamit_12d_mean_drift(kOc4Drift, 1025.0, 9.80665, 1.0);
-  const auto db =
-      engine::read_wamit_12d_mean_drift(kOc4Drift, 1025.0, 9.80665, 2.0, std::sqrt(2.0));
-  EXPECT_NEAR(db.omega_rad_per_s.front() * std::sqrt(2.0) / da.omega_rad_per_s.front(), 1.0,
-              kRoundOff);
+  const auto db = engine::read_wamit_12d_mean_drift(kOc4Drift, 1025.0, 9.80665, 2.0, std::sqrt(2.0));
+  EXPECT_NEAR(db.omega_rad_per_s.front() * std::sqrt(2.0) / da.omega_rad_per_s.front(), 1.0, kRoundOff);
   // Forces per amplitude squared scale with lambda (ULEN^1).
   EXPECT_NEAR(db.coefficient[0](5, 0) / da.coefficient[0](5, 0), 2.0, 1e-12);
-  EXPECT_THROW(engine::read_wamit_12d_mean_drift(kOc4Drift, 1025.0, 9.80665, 1.0, 0.0),
-               std::invalid_argument);
+  EXPECT_THROW(engine::read_wamit_12d_mean_drift(kOc4Drift, 1025.0, 9.80665, 1.0, 0.0), std::invalid_argument);
 }
 
 TEST(HullHydrodynamicsInput, MalformedRadiationFileNamesFileAndLine) {
@@ -120,8 +106,7 @@ TEST(HullHydrodynamicsInput, MalformedRadiationFileNamesFileAndLine) {
     out << "  0.628319E+03     1     1  8.527234E+03  1.604159E-02\n";
     out << "  0.628319E+03     1     x  8.527234E+03  1.604159E-02\n";
   }
-  ValidatedProject p = load_validated_project(std::string(SPIRAL_SOURCE_DIR) +
-                                              "/scenarios/oc4-semisubmersible.yaml");
+  ValidatedProject p = load_validated_project(std::string(SPIRAL_SOURCE_DIR) + "/scenarios/oc4-semisubmersible.yaml");
   p.project.hull.hydrodynamics->radiation_file = path;
   try {
     build_hull_model(p.project);
@@ -141,8 +126,8 @@ TEST(HullHydrodynamicsInput, MalformedRadiationFileNamesFileAndLine) {
 constexpr double kPeriodBand = 0.10;
 
 TEST(HullHydrodynamicsInput, Oc4NaturalPeriodsWithAddedMassMatchPublished) {
-  const ValidatedProject p = load_validated_project(std::string(SPIRAL_SOURCE_DIR) +
-                                                    "/scenarios/oc4-semisubmersible.yaml");
+  const ValidatedProject p =
+      load_validated_project(std::string(SPIRAL_SOURCE_DIR) + "/scenarios/oc4-semisubmersible.yaml");
   const StaticCaseResult r = run_static_case(p, {});
   ASSERT_TRUE(r.added_mass_included);
   const auto period_of = [&](const std::string& dof) {

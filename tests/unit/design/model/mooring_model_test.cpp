@@ -41,10 +41,9 @@ TEST(MooringModel, FeLineIsRefinedAroundItsAtRestTouchdown) {
   const auto& l3 = project.mooring.lines[2];
   const Eigen::Vector3d fairlead_g = project.hull.reference_point_g + l3.fairlead_b;
   const auto catenary = catenary_of(project, l3, resolve_line_types(project));
-  const double laid_m =
-      engine::solve_catenary(catenary, {(fairlead_g - l3.anchor_g).head<2>().norm(),
-                                        fairlead_g.z() - l3.anchor_g.z(), 0.0})
-          .laid_length_m;
+  const double laid_m = engine::solve_catenary(catenary, {(fairlead_g - l3.anchor_g).head<2>().norm(),
+                                                          fairlead_g.z() - l3.anchor_g.z(), 0.0})
+                            .laid_length_m;
   ASSERT_GT(laid_m, 0.0);
   EXPECT_NEAR(zone.start_arc_length_m + 0.5 * zone.length_m, laid_m, kMeshSlack_m);
 
@@ -52,8 +51,7 @@ TEST(MooringModel, FeLineIsRefinedAroundItsAtRestTouchdown) {
   const std::vector<double> mesh = engine::fe_line_mesh(line.model());
   for (std::size_t i = 1; i < mesh.size(); ++i) {
     const double mid = 0.5 * (mesh[i - 1] + mesh[i]);
-    const bool inside =
-        mid > zone.start_arc_length_m && mid < zone.start_arc_length_m + zone.length_m;
+    const bool inside = mid > zone.start_arc_length_m && mid < zone.start_arc_length_m + zone.length_m;
     EXPECT_LE(mesh[i] - mesh[i - 1], (inside ? 2.0 : 8.0) + kMeshSlack_m) << "element " << i;
   }
 

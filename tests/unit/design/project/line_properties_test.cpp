@@ -30,13 +30,11 @@ constexpr double kFloatSlack = 1e-9;
 ::testing::AssertionResult RoundsTo(double value, double table_value, double last_digit) {
   const double tolerance = kHalfDigit * last_digit + kFloatSlack * std::abs(table_value);
   if (std::abs(value - table_value) <= tolerance) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure()
-         << "computed " << value << " does not round to the table's " << table_value
-         << " (last digit " << last_digit << ", tolerance " << tolerance << ")";
+  return ::testing::AssertionFailure() << "computed " << value << " does not round to the table's " << table_value
+                                       << " (last digit " << last_digit << ", tolerance " << tolerance << ")";
 }
 
-LineTypeInput Chain(double d_m, ChainGrade grade,
-                    ChainConstruction construction = ChainConstruction::studless) {
+LineTypeInput Chain(double d_m, ChainGrade grade, ChainConstruction construction = ChainConstruction::studless) {
   LineTypeInput in;
   in.name = "chain";
   in.kind = LineKind::chain;
@@ -75,8 +73,7 @@ constexpr ChainRow kChainRows[] = {
     {76, 114.9, 979, 462, 477, 522, {4884, 5454, 6001, 6658, 7009}},
     {147, 430.0, 3664, 1633, 1725, 1872, {15536, 17347, 19089, 21179, 22294}},
 };
-constexpr ChainGrade kGrades[] = {ChainGrade::R3, ChainGrade::R3S, ChainGrade::R4, ChainGrade::R4S,
-                                  ChainGrade::R5};
+constexpr ChainGrade kGrades[] = {ChainGrade::R3, ChainGrade::R3S, ChainGrade::R4, ChainGrade::R4S, ChainGrade::R5};
 
 TEST(LineProperties, ChainStudlessReproducesReferenceTable) {
   for (const ChainRow& row : kChainRows) {
@@ -110,8 +107,7 @@ TEST(LineProperties, ChainHydrodynamicsAreMoorPyOnVolumeDiameter) {
 }
 
 TEST(LineProperties, SuperGradesUseTheBaseGradeModulus) {
-  for (auto [super, base] :
-       {std::pair{ChainGrade::R3S, ChainGrade::R3}, std::pair{ChainGrade::R4S, ChainGrade::R4}}) {
+  for (auto [super, base] : {std::pair{ChainGrade::R3S, ChainGrade::R3}, std::pair{ChainGrade::R4S, ChainGrade::R4}}) {
     const auto s = resolve_line_type(Chain(0.147, super), kRho, kG);
     const auto b = resolve_line_type(Chain(0.147, base), kRho, kG);
     EXPECT_DOUBLE_EQ(s.axial_stiffness_N, b.axial_stiffness_N);
@@ -122,8 +118,7 @@ TEST(LineProperties, SuperGradesUseTheBaseGradeModulus) {
 
 TEST(LineProperties, StudlinkChain) {
   const double d = 0.1;
-  const auto stud =
-      resolve_line_type(Chain(d, ChainGrade::R4, ChainConstruction::studlink), kRho, kG);
+  const auto stud = resolve_line_type(Chain(d, ChainGrade::R4, ChainConstruction::studlink), kRho, kG);
   const auto less = resolve_line_type(Chain(d, ChainGrade::R4), kRho, kG);
   EXPECT_DOUBLE_EQ(stud.mass_per_length_kg_per_m, 21.9e3 * d * d);
   EXPECT_DOUBLE_EQ(stud.hydrodynamic_diameter_m, 1.89 * d);
@@ -153,8 +148,7 @@ TEST(LineProperties, PolyesterReproducesReferenceTable) {
     EXPECT_TRUE(RoundsTo(p.breaking_load_N / 1e3, row.MBL_kN, 1.0));
     EXPECT_TRUE(RoundsTo(p.axial_stiffness_N / 1e6, row.EA_s14_MN, 1.0));
     const double mean_20pct = 0.20 * p.breaking_load_N;
-    EXPECT_TRUE(
-        RoundsTo(dynamic_axial_stiffness_N(p, mean_20pct) / 1e6, row.EA_d_moorpy_20_MN, 1.0));
+    EXPECT_TRUE(RoundsTo(dynamic_axial_stiffness_N(p, mean_20pct) / 1e6, row.EA_d_moorpy_20_MN, 1.0));
 
     LineTypeInput abs = Polyester(d);
     abs.dynamic_stiffness_mbl = std::array<double, 2>{16.0, 0.35};  // ABS form (MoorDyn test)
@@ -250,8 +244,7 @@ TEST(LineProperties, UserTypeNamesEachMissingValue) {
        "line_types: user type 'chain76' needs axial_stiffness (N)"},
       {[](LineTypeInput& in) { in.breaking_load_N.reset(); },
        "line_types: user type 'chain76' needs breaking_load (N)"},
-      {[](LineTypeInput& in) { in.diameter_m = 0.0; },
-       "line_types: user type 'chain76' needs diameter (m)"},
+      {[](LineTypeInput& in) { in.diameter_m = 0.0; }, "line_types: user type 'chain76' needs diameter (m)"},
   };
   for (const Case& c : cases) {
     LineTypeInput in = Oc4User();

@@ -52,8 +52,7 @@ TEST(ProjectLoader, MinimalProjectLoadsWithDefaults) {
   EXPECT_EQ(p.mooring.lines[0].model, LineModel::catenary);
   EXPECT_DOUBLE_EQ(p.mooring.lines[0].fe.element_length_m, 10.0);
   EXPECT_FALSE(p.mooring.lines[0].fe.touchdown_refinement.has_value());
-  EXPECT_FALSE(p.hull.wind_coefficients || p.hull.current_coefficients || p.hull.mean_drift ||
-               p.hull.geometry);
+  EXPECT_FALSE(p.hull.wind_coefficients || p.hull.current_coefficients || p.hull.mean_drift || p.hull.geometry);
   EXPECT_EQ(p.load_cases[0].condition, DesignCondition::extreme);
   // Nothing given at project level: a riser gets its kind's defaults.
   EXPECT_FALSE(p.criteria.risers.design_factor_normal || p.criteria.risers.max_top_tension_N ||
@@ -233,20 +232,17 @@ TEST(ProjectLoader, FormatSampleLoadsWithExpectedValues) {
 }
 
 TEST(ProjectLoader, UnknownKeyIsReportedWithPositionAndSuggestion) {
-  const auto issues =
-      issues_of(replace(kMinimal, "  gravity: 9.81\n", "  gravity: 9.81\n  gravty: 9.8\n"));
+  const auto issues = issues_of(replace(kMinimal, "  gravity: 9.81\n", "  gravity: 9.81\n  gravty: 9.8\n"));
   ASSERT_EQ(issues.size(), 1u);
   EXPECT_EQ(issues[0].condition, "unknown_key");
-  EXPECT_EQ(format_issue(issues[0]),
-            "test.yaml:7:3: site.gravty: unknown key \"gravty\" (did you mean \"gravity\"?)");
+  EXPECT_EQ(format_issue(issues[0]), "test.yaml:7:3: site.gravty: unknown key \"gravty\" (did you mean \"gravity\"?)");
 }
 
 TEST(ProjectLoader, WrongTypeNamesExpectedTypeAndUnit) {
   const auto issues = issues_of(replace(kMinimal, "depth: 100.0", "depth: deep"));
   ASSERT_EQ(issues.size(), 1u);
   EXPECT_EQ(issues[0].condition, "wrong_type");
-  EXPECT_EQ(format_issue(issues[0]),
-            "test.yaml:4:10: site.depth: expected a finite number in m, got \"deep\"");
+  EXPECT_EQ(format_issue(issues[0]), "test.yaml:4:10: site.depth: expected a finite number in m, got \"deep\"");
 }
 
 TEST(ProjectLoader, QuotedNumberIsAString) {
@@ -273,16 +269,15 @@ TEST(ProjectLoader, MissingRequiredKeyIsReportedAtItsParent) {
 }
 
 TEST(ProjectLoader, PolarFairleadNeedsZ) {
-  const auto issues = issues_of(replace(kMinimal, "fairlead: [10.0, 0.0, -10.0]",
-                                        "fairlead: {radius: 10.0, azimuth_deg: 0}"));
+  const auto issues =
+      issues_of(replace(kMinimal, "fairlead: [10.0, 0.0, -10.0]", "fairlead: {radius: 10.0, azimuth_deg: 0}"));
   ASSERT_EQ(issues.size(), 1u);
   EXPECT_EQ(issues[0].path, "mooring.lines[0].fairlead.z");
   EXPECT_EQ(issues[0].condition, "missing_key");
 }
 
 TEST(ProjectLoader, ConstructionMustMatchKind) {
-  const auto issues =
-      issues_of(replace(kMinimal, "kind: user,", "kind: user, construction: studless,"));
+  const auto issues = issues_of(replace(kMinimal, "kind: user,", "kind: user, construction: studless,"));
   ASSERT_EQ(issues.size(), 1u);
   EXPECT_EQ(issues[0].path, "line_types[0].construction");
   EXPECT_EQ(issues[0].condition, "key_not_applicable");
@@ -345,9 +340,8 @@ TEST(ProjectLoader, AllErrorsOfAFileAreReportedTogetherInFileOrder) {
 }
 
 TEST(ProjectLoader, DnvCriteriaTakeConsequenceClassDefaults) {
-  const auto p = parse_project(
-      replace(kMinimal, "{code: api_rp_2sk}", "{code: dnv_os_e301, consequence_class: 2}"),
-      "t.yaml");
+  const auto p =
+      parse_project(replace(kMinimal, "{code: api_rp_2sk}", "{code: dnv_os_e301, consequence_class: 2}"), "t.yaml");
   ASSERT_TRUE(p.criteria.mooring.dnv_os_e301.has_value());
   EXPECT_DOUBLE_EQ(p.criteria.mooring.dnv_os_e301->uls_mean, 1.40);
   EXPECT_DOUBLE_EQ(p.criteria.mooring.dnv_os_e301->uls_dynamic, 2.10);
@@ -355,17 +349,17 @@ TEST(ProjectLoader, DnvCriteriaTakeConsequenceClassDefaults) {
 }
 
 TEST(ProjectLoader, HydrostaticsFileResolvesAgainstTheProjectFolder) {
-  const auto p = parse_project(replace(kMinimal, "  waterplane_area: 400.0\n",
-                                       "  waterplane_area: 400.0\n  hydrostatics_file: hull.hst\n"),
-                               "/some/dir/p.yaml");
+  const auto p = parse_project(
+      replace(kMinimal, "  waterplane_area: 400.0\n", "  waterplane_area: 400.0\n  hydrostatics_file: hull.hst\n"),
+      "/some/dir/p.yaml");
   ASSERT_TRUE(p.hull.hydrostatics_file.has_value());
   EXPECT_EQ(*p.hull.hydrostatics_file, std::filesystem::path("/some/dir/hull.hst"));
 }
 
 TEST(ProjectLoader, InertiaAcceptsSixComponents) {
-  const auto p = parse_project(replace(kMinimal, "radii_of_gyration: [30.0, 30.0, 30.0]",
-                                       "inertia: [1.0e10, 2.0e10, 3.0e10, 1.0e8, 0, 0]"),
-                               "t.yaml");
+  const auto p = parse_project(
+      replace(kMinimal, "radii_of_gyration: [30.0, 30.0, 30.0]", "inertia: [1.0e10, 2.0e10, 3.0e10, 1.0e8, 0, 0]"),
+      "t.yaml");
   ASSERT_TRUE(p.hull.inertia_kg_m2.has_value());
   EXPECT_DOUBLE_EQ((*p.hull.inertia_kg_m2)(0, 1), 1.0e8);
   EXPECT_DOUBLE_EQ((*p.hull.inertia_kg_m2)(1, 0), 1.0e8);
@@ -387,8 +381,7 @@ TEST(ProjectLoader, BadLineModelListsAllowedValues) {
 }
 
 TEST(ProjectLoader, UnknownKeyInFeMeshIsReported) {
-  const auto issues =
-      issues_of(replace(kMinimal, kLine, kLine + "      fe: {element_lenght: 5.0}\n"));
+  const auto issues = issues_of(replace(kMinimal, kLine, kLine + "      fe: {element_lenght: 5.0}\n"));
   ASSERT_EQ(issues.size(), 1u);
   EXPECT_EQ(issues[0].condition, "unknown_key");
   EXPECT_EQ(issues[0].path, "mooring.lines[0].fe.element_lenght");
@@ -396,8 +389,7 @@ TEST(ProjectLoader, UnknownKeyInFeMeshIsReported) {
 }
 
 TEST(ProjectLoader, TouchdownRefinementNeedsBothValues) {
-  const auto issues = issues_of(
-      replace(kMinimal, kLine, kLine + "      fe: {touchdown_refinement: {length: 50.0}}\n"));
+  const auto issues = issues_of(replace(kMinimal, kLine, kLine + "      fe: {touchdown_refinement: {length: 50.0}}\n"));
   ASSERT_EQ(issues.size(), 1u);
   EXPECT_EQ(issues[0].condition, "missing_key");
   EXPECT_EQ(issues[0].path, "mooring.lines[0].fe.touchdown_refinement.element_length");
@@ -413,11 +405,11 @@ TEST(ProjectLoader, BadLoadCaseConditionIsAnError) {
 }
 
 TEST(ProjectLoader, CoefficientHeadingsAreReadInDegrees) {
-  const auto p = parse_project(
-      replace(kMinimal, kWaterplane,
-              kWaterplane + "  current_coefficients: {headings_deg: [0, 45, 315], surge: [1, 2, 3],"
-                            " sway: [0, 1, 0], yaw: [0, 0, 0]}\n"),
-      "t.yaml");
+  const auto p =
+      parse_project(replace(kMinimal, kWaterplane,
+                            kWaterplane + "  current_coefficients: {headings_deg: [0, 45, 315], surge: [1, 2, 3],"
+                                          " sway: [0, 1, 0], yaw: [0, 0, 0]}\n"),
+                    "t.yaml");
   ASSERT_TRUE(p.hull.current_coefficients.has_value());
   EXPECT_NEAR(p.hull.current_coefficients->headings_rad[1], std::numbers::pi / 4, kTol);
   EXPECT_NEAR(p.hull.current_coefficients->headings_rad[2], 1.75 * std::numbers::pi, kTol);
@@ -426,10 +418,10 @@ TEST(ProjectLoader, CoefficientHeadingsAreReadInDegrees) {
 }
 
 TEST(ProjectLoader, CoefficientValuesMustBeNumbers) {
-  const auto issues = issues_of(replace(
-      kMinimal, kWaterplane,
-      kWaterplane + "  wind_coefficients: {headings_deg: [0, 180], surge: [1, big], sway: [0, 0],"
-                    " yaw: 0}\n"));
+  const auto issues =
+      issues_of(replace(kMinimal, kWaterplane,
+                        kWaterplane + "  wind_coefficients: {headings_deg: [0, 180], surge: [1, big], sway: [0, 0],"
+                                      " yaw: 0}\n"));
   ASSERT_EQ(issues.size(), 2u);
   EXPECT_EQ(issues[0].path, "hull.wind_coefficients.surge[1]");
   EXPECT_EQ(issues[0].message, "expected a finite number in m^2, got \"big\"");
@@ -439,8 +431,7 @@ TEST(ProjectLoader, CoefficientValuesMustBeNumbers) {
 
 TEST(ProjectLoader, MeanDriftFileResolvesAgainstTheProjectFolder) {
   const auto p =
-      parse_project(replace(kMinimal, kWaterplane,
-                            kWaterplane + "  mean_drift: {file: hydro/hull.12d, ulen: 2.0}\n"),
+      parse_project(replace(kMinimal, kWaterplane, kWaterplane + "  mean_drift: {file: hydro/hull.12d, ulen: 2.0}\n"),
                     "/some/dir/p.yaml");
   ASSERT_TRUE(p.hull.mean_drift.has_value());
   const auto* file = std::get_if<MeanDriftFile>(&*p.hull.mean_drift);
@@ -448,15 +439,14 @@ TEST(ProjectLoader, MeanDriftFileResolvesAgainstTheProjectFolder) {
   EXPECT_EQ(file->file, std::filesystem::path("/some/dir/hydro/hull.12d"));
   EXPECT_DOUBLE_EQ(file->ulen_m, 2.0);
   // ulen defaults to 1 m.
-  const auto q = parse_project(
-      replace(kMinimal, kWaterplane, kWaterplane + "  mean_drift: {file: hull.12d}\n"), "p.yaml");
+  const auto q =
+      parse_project(replace(kMinimal, kWaterplane, kWaterplane + "  mean_drift: {file: hull.12d}\n"), "p.yaml");
   EXPECT_DOUBLE_EQ(std::get<MeanDriftFile>(*q.hull.mean_drift).ulen_m, 1.0);
 }
 
 TEST(ProjectLoader, MeanDriftIsEitherAFileOrATable) {
   auto issues = issues_of(replace(
-      kMinimal, kWaterplane,
-      kWaterplane + "  mean_drift: {file: hull.12d, frequencies: [0.5], surge: [[1.0]]}\n"));
+      kMinimal, kWaterplane, kWaterplane + "  mean_drift: {file: hull.12d, frequencies: [0.5], surge: [[1.0]]}\n"));
   ASSERT_EQ(issues.size(), 2u);
   EXPECT_EQ(issues[0].condition, "conflicting_keys");
   EXPECT_EQ(issues[0].path, "hull.mean_drift.frequencies");
@@ -474,10 +464,10 @@ TEST(ProjectLoader, MeanDriftIsEitherAFileOrATable) {
 }
 
 TEST(ProjectLoader, MeanDriftTableRowsMustBeLists) {
-  const auto issues = issues_of(replace(
-      kMinimal, kWaterplane,
-      kWaterplane + "  mean_drift: {headings_deg: [0, 90], frequencies: [0.5], surge: [1, 2], "
-                    "sway: [[0], [0]], yaw: [[0], [0]]}\n"));
+  const auto issues =
+      issues_of(replace(kMinimal, kWaterplane,
+                        kWaterplane + "  mean_drift: {headings_deg: [0, 90], frequencies: [0.5], surge: [1, 2], "
+                                      "sway: [[0], [0]], yaw: [[0], [0]]}\n"));
   ASSERT_EQ(issues.size(), 2u);
   EXPECT_EQ(issues[0].condition, "wrong_type");
   EXPECT_EQ(issues[0].path, "hull.mean_drift.surge[0]");
@@ -487,11 +477,10 @@ TEST(ProjectLoader, MeanDriftTableRowsMustBeLists) {
 TEST(ProjectLoader, HullGeometryColumnsAndPontoons) {
   const auto p = parse_project(
       replace(kMinimal, kWaterplane,
-              kWaterplane +
-                  "  geometry:\n"
-                  "    columns: [{center: [28.868, 0.0], z_bottom: -20, z_top: 12, diameter: 12}]\n"
-                  "    pontoons: [{from: {radius: 10.0, azimuth_deg: 90.0, z: -17.0},\n"
-                  "                to: [0.0, 0.0, -17.0], diameter: 1.6}]\n"),
+              kWaterplane + "  geometry:\n"
+                            "    columns: [{center: [28.868, 0.0], z_bottom: -20, z_top: 12, diameter: 12}]\n"
+                            "    pontoons: [{from: {radius: 10.0, azimuth_deg: 90.0, z: -17.0},\n"
+                            "                to: [0.0, 0.0, -17.0], diameter: 1.6}]\n"),
       "t.yaml");
   ASSERT_TRUE(p.hull.geometry.has_value());
   EXPECT_DOUBLE_EQ(p.hull.geometry->columns[0].center_b.x(), 28.868);
@@ -514,11 +503,10 @@ TEST(ProjectLoader, RiserCriteriaOverridesMergeWithTheProjectCriteria) {
       "         yield_stress: 4.48e8, steel_density: 7850.0, contents_density: 800.0}\n"
       "    internal_pressure: 2.5e7\n"
       "    criteria: {design_factor: {extreme: 0.7}, max_top_tension: 3.0e6}\n";
-  const std::string text =
-      replace(kMinimal, "  mooring: {code: api_rp_2sk}\n",
-              "  mooring: {code: api_rp_2sk}\n  risers: {design_factor: {normal: 0.6}, "
-              "min_effective_tension: 1.0e4, max_top_tension: 5.0e6}\n") +
-      riser;
+  const std::string text = replace(kMinimal, "  mooring: {code: api_rp_2sk}\n",
+                                   "  mooring: {code: api_rp_2sk}\n  risers: {design_factor: {normal: 0.6}, "
+                                   "min_effective_tension: 1.0e4, max_top_tension: 5.0e6}\n") +
+                           riser;
   const auto p = parse_project(text, "t.yaml");
   ASSERT_EQ(p.risers.size(), 1u);
   EXPECT_DOUBLE_EQ(p.risers[0].internal_pressure_Pa, 2.5e7);
@@ -552,8 +540,7 @@ TEST(ProjectLoader, RiserCriteriaDefaultByKindUnderTheProjectAndRiserValues) {
   // A project value replaces the kind default; a riser value the project's.
   criteria.risers.max_flex_joint_rotation_rad = 10.0 * std::numbers::pi / 180.0;
   criteria.risers.min_bending_radius_m = 4.0;
-  EXPECT_NEAR(*riser_criteria(criteria, scr).max_flex_joint_rotation_rad,
-              10.0 * std::numbers::pi / 180.0, kTol);
+  EXPECT_NEAR(*riser_criteria(criteria, scr).max_flex_joint_rotation_rad, 10.0 * std::numbers::pi / 180.0, kTol);
   flexible.criteria.min_bending_radius_m = 3.5;
   EXPECT_DOUBLE_EQ(*riser_criteria(criteria, flexible).min_bending_radius_m, 3.5);
   EXPECT_DOUBLE_EQ(*riser_criteria(criteria, scr).min_bending_radius_m, 4.0);

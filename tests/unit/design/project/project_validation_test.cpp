@@ -36,8 +36,7 @@ std::string all(const std::vector<InputIssue>& issues) {
 }
 
 /// One issue with the given condition and path.
-void expect_single(const std::vector<InputIssue>& issues, const std::string& condition,
-                   const std::string& path) {
+void expect_single(const std::vector<InputIssue>& issues, const std::string& condition, const std::string& path) {
   ASSERT_EQ(issues.size(), 1u) << all(issues);
   EXPECT_EQ(issues[0].condition, condition) << all(issues);
   EXPECT_EQ(issues[0].path, path) << all(issues);
@@ -70,8 +69,7 @@ TEST(ProjectValidation, NegativeLengthMessageHasTheDocumentedForm) {
   const auto issues = check(replace(kMinimal, "length: 550.0", "length: -20"));
   ASSERT_EQ(issues.size(), 1u) << all(issues);
   EXPECT_EQ(issues[0].condition, "segment_length_positive");
-  EXPECT_EQ(format_issue(issues[0]),
-            "test.yaml:16:29: mooring.lines[0].segments[0].length: must be > 0 m, got -20 m");
+  EXPECT_EQ(format_issue(issues[0]), "test.yaml:16:29: mooring.lines[0].segments[0].length: must be > 0 m, got -20 m");
 }
 
 TEST(ProjectValidation, UndefinedLineTypeIsReported) {
@@ -82,13 +80,11 @@ TEST(ProjectValidation, UndefinedLineTypeIsReported) {
 }
 
 TEST(ProjectValidation, UndefinedReferencesInLoadCasesAndGroups) {
-  std::string text =
-      replace(kMinimal, "environment: calm}", "environment: storm, damaged_line: L9}");
+  std::string text = replace(kMinimal, "environment: calm}", "environment: storm, damaged_line: L9}");
   text = replace(text, "hull:\n", "  groups:\n    - {name: g, lines: [L1, L2]}\nhull:\n");
   const auto issues = check(text);
   ASSERT_EQ(issues.size(), 3u) << all(issues);
-  EXPECT_EQ(conditions(issues),
-            (std::vector<std::string>{"line_defined", "environment_defined", "line_defined"}));
+  EXPECT_EQ(conditions(issues), (std::vector<std::string>{"line_defined", "environment_defined", "line_defined"}));
   EXPECT_EQ(issues[0].path, "mooring.groups[0].lines[1]");
 }
 
@@ -114,8 +110,7 @@ TEST(ProjectValidation, AnchorBelowSeabed) {
 }
 
 TEST(ProjectValidation, AnchorOnTheSeabedWithinRoundOffIsAccepted) {
-  const auto issues =
-      check(replace(kMinimal, "azimuth_deg: 0.0}", "azimuth_deg: 0.0, z: -100.0000000001}"));
+  const auto issues = check(replace(kMinimal, "azimuth_deg: 0.0}", "azimuth_deg: 0.0, z: -100.0000000001}"));
   EXPECT_TRUE(issues.empty()) << all(issues);
 }
 
@@ -126,8 +121,7 @@ TEST(ProjectValidation, FairleadAboveWater) {
 }
 
 TEST(ProjectValidation, FairleadAboveWaterCountsTheHullReferencePoint) {
-  const auto issues = check(
-      replace(kMinimal, "reference_point: [0.0, 0.0, 0.0]", "reference_point: [0.0, 0.0, 12.0]"));
+  const auto issues = check(replace(kMinimal, "reference_point: [0.0, 0.0, 0.0]", "reference_point: [0.0, 0.0, 12.0]"));
   expect_single(issues, "fairlead_above_water", "mooring.lines[0].fairlead");
 }
 
@@ -138,8 +132,7 @@ TEST(ProjectValidation, LineTooShortToReachWithoutBreaking) {
   // 450 m against 498.2 m: strain 10.7 %, EA 1e9 N -> about 1.07e8 N >> MBL 5e6 N.
   const auto issues = check(replace(kMinimal, "length: 550.0", "length: 450.0"));
   expect_single(issues, "line_too_short", "mooring.lines[0].segments");
-  EXPECT_NE(issues[0].message.find("above the breaking load 5e+06 N of line type \"c\""),
-            std::string::npos)
+  EXPECT_NE(issues[0].message.find("above the breaking load 5e+06 N of line type \"c\""), std::string::npos)
       << issues[0].message;
 }
 
@@ -168,8 +161,7 @@ TEST(ProjectValidation, LineTooLongLiesSlack) {
 }
 
 TEST(ProjectValidation, RiserWallThickerThanRadius) {
-  const auto issues =
-      check(kMinimal + replace(kSteelRiser, "wall_thickness: 0.02", "wall_thickness: 0.2"));
+  const auto issues = check(kMinimal + replace(kSteelRiser, "wall_thickness: 0.02", "wall_thickness: 0.2"));
   expect_single(issues, "wall_thinner_than_radius", "risers[0].sections[0].wall_thickness");
   EXPECT_EQ(issues[0].message, "must be < outer_diameter / 2 = 0.15 m, got 0.2 m");
 }
@@ -207,10 +199,9 @@ TEST(ProjectValidation, CurrentProfileMustBeInTheWaterAndSorted) {
 }
 
 TEST(ProjectValidation, SafetyFactorsBelowOne) {
-  const auto issues = check(replace(kMinimal, "{code: api_rp_2sk}",
-                                    "{code: api_rp_2sk, safety_factors: {damaged_dynamic: 0.9}}"));
-  expect_single(issues, "safety_factor_at_least_one",
-                "criteria.mooring.safety_factors.damaged_dynamic");
+  const auto issues =
+      check(replace(kMinimal, "{code: api_rp_2sk}", "{code: api_rp_2sk, safety_factors: {damaged_dynamic: 0.9}}"));
+  expect_single(issues, "safety_factor_at_least_one", "criteria.mooring.safety_factors.damaged_dynamic");
 }
 
 TEST(ProjectValidation, HullHydrostaticsMustBeComplete) {
@@ -230,14 +221,12 @@ TEST(ProjectValidation, SeveralErrorsAreReportedAtOnceInFileOrder) {
   } catch (const InputError& e) {
     const auto& issues = e.issues();
     EXPECT_EQ(conditions(issues),
-              (std::vector<std::string>{"depth_positive", "fairlead_above_water",
-                                        "segment_length_positive", "environment_defined",
-                                        "wall_thinner_than_radius"}))
+              (std::vector<std::string>{"depth_positive", "fairlead_above_water", "segment_length_positive",
+                                        "environment_defined", "wall_thinner_than_radius"}))
         << e.what();
     const std::string what = e.what();
     EXPECT_EQ(std::count(what.begin(), what.end(), '\n'), 4);
-    EXPECT_NE(what.find("test.yaml:4:10: site.depth: must be > 0 m, got -100 m"), std::string::npos)
-        << what;
+    EXPECT_NE(what.find("test.yaml:4:10: site.depth: must be > 0 m, got -100 m"), std::string::npos) << what;
   }
 }
 
@@ -246,9 +235,7 @@ TEST(ProjectValidation, SeveralErrorsAreReportedAtOnceInFileOrder) {
 const std::string kLine = "        - {type: c, length: 550.0}\n";
 const std::string kWaterplane = "  waterplane_inertia: [1.0e5, 1.0e5]\n";
 
-std::string with_hull(const std::string& keys) {
-  return replace(kMinimal, kWaterplane, kWaterplane + keys);
-}
+std::string with_hull(const std::string& keys) { return replace(kMinimal, kWaterplane, kWaterplane + keys); }
 
 const std::string kFlexibleRiser = R"(risers:
   - name: F1
@@ -264,34 +251,31 @@ const std::string kFlexibleRiser = R"(risers:
 TEST(ProjectValidation, NegativeElementLengthIsReportedAtItsKey) {
   const auto issues = check(replace(kMinimal, kLine, kLine + "      fe: {element_length: -5}\n"));
   expect_single(issues, "fe_mesh_positive", "mooring.lines[0].fe.element_length");
-  EXPECT_EQ(format_issue(issues[0]),
-            "test.yaml:17:28: mooring.lines[0].fe.element_length: must be > 0 m, got -5 m");
+  EXPECT_EQ(format_issue(issues[0]), "test.yaml:17:28: mooring.lines[0].fe.element_length: must be > 0 m, got -5 m");
 }
 
 TEST(ProjectValidation, RiserElementLengthAndRefinementMustBePositive) {
-  const auto issues = check(
-      kMinimal + kSteelRiser +
-      "    fe: {element_length: 0.0, touchdown_refinement: {length: -10.0, element_length: 1}}\n");
+  const auto issues =
+      check(kMinimal + kSteelRiser +
+            "    fe: {element_length: 0.0, touchdown_refinement: {length: -10.0, element_length: 1}}\n");
   ASSERT_EQ(issues.size(), 3u) << all(issues);
-  EXPECT_EQ(conditions(issues), (std::vector<std::string>{"fe_mesh_positive", "fe_mesh_positive",
-                                                          "touchdown_refinement_finer"}));
+  EXPECT_EQ(conditions(issues),
+            (std::vector<std::string>{"fe_mesh_positive", "fe_mesh_positive", "touchdown_refinement_finer"}));
   EXPECT_EQ(issues[0].path, "risers[0].fe.element_length");
   EXPECT_EQ(issues[1].path, "risers[0].fe.touchdown_refinement.length");
 }
 
 TEST(ProjectValidation, TouchdownRefinementMustBeFinerThanTheMesh) {
   const auto issues = check(
-      replace(kMinimal, kLine,
-              kLine + "      fe: {touchdown_refinement: {length: 100.0, element_length: 20.0}}\n"));
-  expect_single(issues, "touchdown_refinement_finer",
-                "mooring.lines[0].fe.touchdown_refinement.element_length");
+      replace(kMinimal, kLine, kLine + "      fe: {touchdown_refinement: {length: 100.0, element_length: 20.0}}\n"));
+  expect_single(issues, "touchdown_refinement_finer", "mooring.lines[0].fe.touchdown_refinement.element_length");
   EXPECT_EQ(issues[0].message, "must be <= element_length 10 m (a refinement), got 20 m");
 }
 
 TEST(ProjectValidation, CoefficientListsMustMatchTheHeadings) {
-  const auto issues = check(
-      with_hull("  wind_coefficients: {headings_deg: [0, 90, 180], surge: [1, 0, -1], sway: [0, 1],"
-                " yaw: [0, 0, 0]}\n"));
+  const auto issues =
+      check(with_hull("  wind_coefficients: {headings_deg: [0, 90, 180], surge: [1, 0, -1], sway: [0, 1],"
+                      " yaw: [0, 0, 0]}\n"));
   expect_single(issues, "table_lengths_match", "hull.wind_coefficients.sway");
   EXPECT_EQ(format_issue(issues[0]),
             "test.yaml:26:76: hull.wind_coefficients.sway: must have one value per entry of "
@@ -306,20 +290,19 @@ TEST(ProjectValidation, HeadingsOutOfRange) {
   EXPECT_EQ(format_issue(issues[0]),
             "test.yaml:26:49: hull.current_coefficients.headings_deg[2]: must be in [0, 360) "
             "deg, got 360 deg");
-  const auto negative = check(
-      with_hull("  current_coefficients: {headings_deg: [-90, 90], surge: [0, 0], sway: [1, -1],"
-                " yaw: [0, 0]}\n"));
+  const auto negative =
+      check(with_hull("  current_coefficients: {headings_deg: [-90, 90], surge: [0, 0], sway: [1, -1],"
+                      " yaw: [0, 0]}\n"));
   expect_single(negative, "headings_valid", "hull.current_coefficients.headings_deg[0]");
 }
 
 TEST(ProjectValidation, HeadingsMustIncreaseAndBeAtLeastTwo) {
-  auto issues = check(with_hull(
-      "  wind_coefficients: {headings_deg: [0, 180, 90], surge: [1, -1, 0], sway: [0, 0, 1],"
-      " yaw: [0, 0, 0]}\n"));
+  auto issues =
+      check(with_hull("  wind_coefficients: {headings_deg: [0, 180, 90], surge: [1, -1, 0], sway: [0, 0, 1],"
+                      " yaw: [0, 0, 0]}\n"));
   expect_single(issues, "headings_valid", "hull.wind_coefficients.headings_deg[2]");
   EXPECT_EQ(issues[0].message, "headings must increase strictly, got 90 deg after 180 deg");
-  issues = check(
-      with_hull("  wind_coefficients: {headings_deg: [0], surge: [1], sway: [0], yaw: [0]}\n"));
+  issues = check(with_hull("  wind_coefficients: {headings_deg: [0], surge: [1], sway: [0], yaw: [0]}\n"));
   expect_single(issues, "headings_valid", "hull.wind_coefficients.headings_deg");
 }
 
@@ -331,14 +314,11 @@ TEST(ProjectValidation, MeanDriftFileMustExist) {
 }
 
 TEST(ProjectValidation, MeanDriftFileThatExistsIsAccepted) {
-  const std::filesystem::path folder =
-      std::filesystem::temp_directory_path() / "spiral-validation-mean-drift";
+  const std::filesystem::path folder = std::filesystem::temp_directory_path() / "spiral-validation-mean-drift";
   std::filesystem::create_directories(folder);
-  std::ofstream(folder / "hull.12d")
-      << "    0.62832E+01    0.62832E+01    0.0    0.0    1    0.0    "
-         "0.0    0.0    0.0\n";
-  const Project p =
-      parse_project(with_hull("  mean_drift: {file: hull.12d}\n"), (folder / "p.yaml").string());
+  std::ofstream(folder / "hull.12d") << "    0.62832E+01    0.62832E+01    0.0    0.0    1    0.0    "
+                                        "0.0    0.0    0.0\n";
+  const Project p = parse_project(with_hull("  mean_drift: {file: hull.12d}\n"), (folder / "p.yaml").string());
   const auto issues = check_project(p);
   EXPECT_TRUE(issues.empty()) << all(issues);
   std::filesystem::remove_all(folder);
@@ -351,8 +331,7 @@ TEST(ProjectValidation, MeanDriftTableShapeAndFrequencies) {
                       "               yaw: [[0, 0, 0], [0, 0, 0]]}\n"));
   ASSERT_EQ(issues.size(), 3u) << all(issues);
   EXPECT_EQ(conditions(issues),
-            (std::vector<std::string>{"frequencies_valid", "table_lengths_match",
-                                      "table_lengths_match"}));
+            (std::vector<std::string>{"frequencies_valid", "table_lengths_match", "table_lengths_match"}));
   EXPECT_EQ(issues[0].path, "hull.mean_drift.frequencies[1]");
   EXPECT_EQ(issues[1].path, "hull.mean_drift.surge[1]");
   EXPECT_EQ(issues[1].message, "must have one value per entry of frequencies (3), got 2");
@@ -366,8 +345,7 @@ TEST(ProjectValidation, HullGeometryMembersMustBeSolid) {
                       "    pontoons: [{from: [1, 2, -17], to: [1, 2, -17], diameter: -1.6}]\n"));
   ASSERT_EQ(issues.size(), 3u) << all(issues);
   EXPECT_EQ(conditions(issues),
-            (std::vector<std::string>{"column_top_above_bottom", "pontoon_length_positive",
-                                      "hull_value_positive"}));
+            (std::vector<std::string>{"column_top_above_bottom", "pontoon_length_positive", "hull_value_positive"}));
   EXPECT_EQ(issues[0].path, "hull.geometry.columns[0].z_top");
   EXPECT_EQ(issues[2].path, "hull.geometry.pontoons[0].diameter");
   expect_single(check(with_hull("  geometry: {}\n")), "hull_geometry_members", "hull.geometry");
@@ -386,11 +364,9 @@ TEST(ProjectValidation, FlexibleRiserNeedsAMinimumBendingRadius) {
             0u)
       << format_issue(issues[0]);
   // Either level satisfies it.
-  EXPECT_TRUE(
-      check(kMinimal + kFlexibleRiser + "    criteria: {min_bending_radius: 3.0}\n").empty());
-  const std::string project_level =
-      replace(kMinimal, "  mooring: {code: api_rp_2sk}\n",
-              "  mooring: {code: api_rp_2sk}\n  risers: {min_bending_radius: 3.0}\n");
+  EXPECT_TRUE(check(kMinimal + kFlexibleRiser + "    criteria: {min_bending_radius: 3.0}\n").empty());
+  const std::string project_level = replace(kMinimal, "  mooring: {code: api_rp_2sk}\n",
+                                            "  mooring: {code: api_rp_2sk}\n  risers: {min_bending_radius: 3.0}\n");
   EXPECT_TRUE(check(project_level + kFlexibleRiser).empty());
   // A steel riser does not need one.
   EXPECT_TRUE(check(kMinimal + kSteelRiser).empty());
@@ -398,29 +374,26 @@ TEST(ProjectValidation, FlexibleRiserNeedsAMinimumBendingRadius) {
 
 TEST(ProjectValidation, FlexibleWithoutSteelWallNeedsItsBore) {
   const std::string with_mbr = kFlexibleRiser + "    criteria: {min_bending_radius: 3.0}\n";
-  expect_single(check(kMinimal + replace(with_mbr, " inner_diameter: 0.2032,", "")),
-                "flexible_riser_complete", "risers[0].sections[0]");
-  expect_single(
-      check(kMinimal + replace(with_mbr, "inner_diameter: 0.2032", "inner_diameter: 0.5")),
-      "bore_inside_pipe", "risers[0].sections[0].inner_diameter");
+  expect_single(check(kMinimal + replace(with_mbr, " inner_diameter: 0.2032,", "")), "flexible_riser_complete",
+                "risers[0].sections[0]");
+  expect_single(check(kMinimal + replace(with_mbr, "inner_diameter: 0.2032", "inner_diameter: 0.5")),
+                "bore_inside_pipe", "risers[0].sections[0].inner_diameter");
   // A steel section has its bore from the wall: an inner_diameter too is a conflict.
-  expect_single(check(kMinimal + replace(kSteelRiser, "wall_thickness: 0.02,",
-                                         "wall_thickness: 0.02, inner_diameter: 0.26,")),
-                "bore_defined_once", "risers[0].sections[0].inner_diameter");
+  expect_single(
+      check(kMinimal + replace(kSteelRiser, "wall_thickness: 0.02,", "wall_thickness: 0.02, inner_diameter: 0.26,")),
+      "bore_defined_once", "risers[0].sections[0].inner_diameter");
 }
 
 TEST(ProjectValidation, RiserCriteriaRanges) {
-  const std::string text =
-      replace(kMinimal, "  mooring: {code: api_rp_2sk}\n",
-              "  mooring: {code: api_rp_2sk}\n  risers: {design_factor: {survival: 1.2}, "
-              "min_effective_tension: -1.0, max_top_angle_deg: 95.0}\n") +
-      kSteelRiser + "    internal_pressure: -1.0e5\n    criteria: {max_top_tension: 0.0}\n";
+  const std::string text = replace(kMinimal, "  mooring: {code: api_rp_2sk}\n",
+                                   "  mooring: {code: api_rp_2sk}\n  risers: {design_factor: {survival: 1.2}, "
+                                   "min_effective_tension: -1.0, max_top_angle_deg: 95.0}\n") +
+                           kSteelRiser + "    internal_pressure: -1.0e5\n    criteria: {max_top_tension: 0.0}\n";
   const auto issues = check(text);
   ASSERT_EQ(issues.size(), 5u) << all(issues);
   EXPECT_EQ(conditions(issues),
-            (std::vector<std::string>{"design_factor_range", "riser_criterion_non_negative",
-                                      "riser_angle_limit_range", "riser_value_non_negative",
-                                      "riser_criterion_positive"}));
+            (std::vector<std::string>{"design_factor_range", "riser_criterion_non_negative", "riser_angle_limit_range",
+                                      "riser_value_non_negative", "riser_criterion_positive"}));
   EXPECT_EQ(issues[0].path, "criteria.risers.design_factor.survival");
   EXPECT_EQ(issues[0].message, "must be in (0, 1] (fraction of the yield stress), got 1.2");
   EXPECT_EQ(issues[2].path, "criteria.risers.max_top_angle_deg");
@@ -430,18 +403,16 @@ TEST(ProjectValidation, RiserCriteriaRanges) {
 }
 
 TEST(ProjectValidation, AirDensityMustBePositive) {
-  const auto issues =
-      check(replace(kMinimal, "  gravity: 9.81\n", "  gravity: 9.81\n  air_density: 0\n"));
+  const auto issues = check(replace(kMinimal, "  gravity: 9.81\n", "  gravity: 9.81\n  air_density: 0\n"));
   expect_single(issues, "air_density_positive", "site.air_density");
 }
 
 TEST(ProjectValidation, RadiationMemoryKeysParseAndTheDurationMustExceedTheStep) {
   const std::string semi = std::string(SPIRAL_SCENARIO_DATA_DIR) + "/hydro/oc4-semi/marin_semi.1";
   const std::string hull_line = "  waterplane_inertia: [1.0e5, 1.0e5]\n";
-  const std::string text =
-      replace(kMinimal, hull_line,
-              hull_line + "  hydrodynamics: {radiation_file: " + semi +
-                  ", radiation: memory, memory_duration: 90.0, memory_time_step: 0.05}\n");
+  const std::string text = replace(kMinimal, hull_line,
+                                   hull_line + "  hydrodynamics: {radiation_file: " + semi +
+                                       ", radiation: memory, memory_duration: 90.0, memory_time_step: 0.05}\n");
   const Project p = parse_project(text, "test.yaml");
   ASSERT_TRUE(p.hull.hydrodynamics.has_value());
   EXPECT_EQ(p.hull.hydrodynamics->radiation, RadiationModel::memory);
@@ -450,13 +421,12 @@ TEST(ProjectValidation, RadiationMemoryKeysParseAndTheDurationMustExceedTheStep)
   EXPECT_TRUE(check(text).empty()) << all(check(text));
   // Defaults: low_frequency, 60 s at 0.1 s.
   const Project d = parse_project(
-      replace(kMinimal, hull_line, hull_line + "  hydrodynamics: {radiation_file: " + semi + "}\n"),
-      "test.yaml");
+      replace(kMinimal, hull_line, hull_line + "  hydrodynamics: {radiation_file: " + semi + "}\n"), "test.yaml");
   EXPECT_EQ(d.hull.hydrodynamics->radiation, RadiationModel::low_frequency);
   EXPECT_DOUBLE_EQ(d.hull.hydrodynamics->memory_duration_s, 60.0);
   EXPECT_DOUBLE_EQ(d.hull.hydrodynamics->memory_time_step_s, 0.1);
-  expect_single(check(replace(text, "memory_duration: 90.0", "memory_duration: 0.01")),
-                "memory_duration_above_step", "hull.hydrodynamics.memory_duration");
+  expect_single(check(replace(text, "memory_duration: 90.0", "memory_duration: 0.01")), "memory_duration_above_step",
+                "hull.hydrodynamics.memory_duration");
 }
 
 TEST(ProjectValidation, MorisonHullNeedsGeometryAndTakesNoBemKeys) {
@@ -467,8 +437,7 @@ TEST(ProjectValidation, MorisonHullNeedsGeometryAndTakesNoBemKeys) {
       "               added_mass: 0.9, end_added_mass: 0.5, end_drag: 2.0}]\n"
       "    pontoons: [{from: [0, 0, -20], to: [30, 0, -20], diameter: 2.0, drag: 0.8}]\n";
   const std::string text =
-      replace(kMinimal, hull_line,
-              hull_line + "  hydrodynamics: {model: morison, strip_length: 0.5}\n" + geometry);
+      replace(kMinimal, hull_line, hull_line + "  hydrodynamics: {model: morison, strip_length: 0.5}\n" + geometry);
   const Project p = parse_project(text, "test.yaml");
   ASSERT_TRUE(p.hull.hydrodynamics && p.hull.geometry);
   EXPECT_EQ(p.hull.hydrodynamics->model, HullHydrodynamicsModel::morison);
@@ -482,20 +451,17 @@ TEST(ProjectValidation, MorisonHullNeedsGeometryAndTakesNoBemKeys) {
   EXPECT_DOUBLE_EQ(p.hull.geometry->pontoons[0].coefficients.added_mass, 1.0);  // default
   EXPECT_TRUE(check(text).empty()) << all(check(text));
   // Without geometry.
-  expect_single(
-      check(replace(kMinimal, hull_line, hull_line + "  hydrodynamics: {model: morison}\n")),
-      "morison_needs_geometry", "hull.hydrodynamics.model");
+  expect_single(check(replace(kMinimal, hull_line, hull_line + "  hydrodynamics: {model: morison}\n")),
+                "morison_needs_geometry", "hull.hydrodynamics.model");
   // A BEM key with model: morison, and strip_length with bem.
-  EXPECT_THROW(parse_project(replace(text, "strip_length: 0.5", "radiation_file: x.1"), "t.yaml"),
-               InputError);
+  EXPECT_THROW(parse_project(replace(text, "strip_length: 0.5", "radiation_file: x.1"), "t.yaml"), InputError);
   try {
     parse_project(replace(text, "model: morison, ", ""), "t.yaml");
     FAIL() << "strip_length accepted with model: bem";
   } catch (const InputError& e) {
     bool found = false;
     for (const auto& i : e.issues())
-      found = found ||
-              (i.condition == "key_not_applicable" && i.path == "hull.hydrodynamics.strip_length");
+      found = found || (i.condition == "key_not_applicable" && i.path == "hull.hydrodynamics.strip_length");
     EXPECT_TRUE(found) << e.what();
   }
   // Negative coefficients.

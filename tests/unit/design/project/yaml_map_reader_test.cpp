@@ -67,8 +67,7 @@ TEST(YamlMapReader, ReportsDuplicateAndMissingKeysAndWrongTypes) {
 }
 
 TEST(YamlMapReader, ReadsAPositionInCartesianOrPolarForm) {
-  const YAML::Node node =
-      YAML::Load("xyz: [1, 2, -3]\npolar: {radius: 100, azimuth_deg: 90}\n");
+  const YAML::Node node = YAML::Load("xyz: [1, 2, -3]\npolar: {radius: 100, azimuth_deg: 90}\n");
   Context ctx{"test.yaml", {}, {}};
   {
     MapReader r(ctx, node, "");

@@ -73,8 +73,9 @@ TEST(AdvancedStage, CriticalCasesGetCoupledAndScResultsAndTheFinalChecks) {
     EXPECT_EQ(c.pass, all_pass);
   }
   // The storm case: the coupled FE tension is not the quasi-static S-C one (line dynamics, coupling).
-  const auto storm = std::find_if(r.cases.begin(), r.cases.end(),
-                                  [](const CriticalCaseVerification& c) { return c.case_name == "intact-raft-jonswap"; });
+  const auto storm = std::find_if(r.cases.begin(), r.cases.end(), [](const CriticalCaseVerification& c) {
+    return c.case_name == "intact-raft-jonswap";
+  });
   ASSERT_NE(storm, r.cases.end());
   const std::string line = storm->coupled->most_loaded_line;
   const ChannelSummary* coupled = channel(storm->comparison.levels[1], "tension_" + line + "_N");

@@ -25,8 +25,7 @@ TEST(StaticStage, DefaultScenarioCasesChecksAndCurves) {
     // API RP 2SK quasi-static factors of the scenario.
     EXPECT_DOUBLE_EQ(check.safety_factor, r.cases[i].condition == "damaged" ? 1.43 : 2.0);
     for (std::size_t l = 0; l < check.lines.size(); ++l) {
-      EXPECT_DOUBLE_EQ(check.lines[l].utilization,
-                       r.cases[i].lines[l].utilization * check.safety_factor);
+      EXPECT_DOUBLE_EQ(check.lines[l].utilization, r.cases[i].lines[l].utilization * check.safety_factor);
       EXPECT_EQ(check.lines[l].pass, check.lines[l].utilization <= 1.0);
     }
     ASSERT_TRUE(check.offset_limit_m.has_value());
@@ -34,8 +33,7 @@ TEST(StaticStage, DefaultScenarioCasesChecksAndCurves) {
   }
   ASSERT_EQ(r.restoring.size(), 2u);
   for (const RestoringCurve& c : r.restoring) {
-    ASSERT_EQ(c.offset_m.size(), static_cast<std::size_t>(kRestoringSteps + 1))
-        << c.stopped.value_or("");
+    ASSERT_EQ(c.offset_m.size(), static_cast<std::size_t>(kRestoringSteps + 1)) << c.stopped.value_or("");
     EXPECT_DOUBLE_EQ(c.offset_m.back(), kRestoringMaxOffsetFractionOfDepth * 1800.0);
     for (std::size_t i = 1; i < c.force_N.size(); ++i) EXPECT_GT(c.force_N[i], c.force_N[i - 1]);
   }
@@ -54,10 +52,10 @@ TEST(StaticStage, DefaultScenarioCasesChecksAndCurves) {
     const OffsetCheck& c = *r.checks[i].soz;
     EXPECT_EQ(c.case_name, r.cases[i].case_name);
     EXPECT_DOUBLE_EQ(c.offset_m, r.cases[i].offset_summary.horizontal_m);
-    EXPECT_DOUBLE_EQ(c.allowable_m, polygon_allowable(r.soz->directions_deg, r.soz->platform.allowable_offset_m,
-                                                      c.direction_deg));
-    EXPECT_EQ(r.checks[i].pass, r.checks[i].lines_pass && r.checks[i].offset_pass && r.checks[i].risers_pass &&
-                                    r.checks[i].soz_pass);
+    EXPECT_DOUBLE_EQ(c.allowable_m,
+                     polygon_allowable(r.soz->directions_deg, r.soz->platform.allowable_offset_m, c.direction_deg));
+    EXPECT_EQ(r.checks[i].pass,
+              r.checks[i].lines_pass && r.checks[i].offset_pass && r.checks[i].risers_pass && r.checks[i].soz_pass);
   }
 
   // The S-C storm of the governing case: 3 h at 0.5 s, five channels, and
@@ -91,7 +89,8 @@ TEST(StaticStage, DefaultScenarioCasesChecksAndCurves) {
     motion(0, static_cast<Eigen::Index>(k)) = d.channels[0].values[k];  // surge
     motion(1, static_cast<Eigen::Index>(k)) = d.channels[1].values[k];  // sway
   }
-  const Eigen::VectorXd times = Eigen::Map<const Eigen::VectorXd>(d.times_s.data(), static_cast<Eigen::Index>(d.times_s.size()));
+  const Eigen::VectorXd times =
+      Eigen::Map<const Eigen::VectorXd>(d.times_s.data(), static_cast<Eigen::Index>(d.times_s.size()));
   StaticCaseResult named;
   named.case_name = d.case_name;
   std::string fit_note;

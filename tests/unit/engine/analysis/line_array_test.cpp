@@ -87,7 +87,8 @@ TEST(LineArray, FailingLineIsNamed) {
   auto oc4 = test::oc4_lines();
   std::vector<std::unique_ptr<StaticLine>> lines;
   oc4[1].line.segments[0].length_m = 100.0;  // far too short for an 800 m span
-  for (const auto& l : oc4) lines.push_back(std::make_unique<CatenaryStaticLine>(l.name, l.anchor_g, l.fairlead_b, 0.0, l.line));
+  for (const auto& l : oc4)
+    lines.push_back(std::make_unique<CatenaryStaticLine>(l.name, l.anchor_g, l.fairlead_b, 0.0, l.line));
   try {
     evaluate_line_array(lines, HullPose{});
     FAIL() << "expected SolverError";

@@ -69,8 +69,8 @@ std::vector<std::unique_ptr<StaticLine>> clustered_lines(int skipped = -1) {
       const Eigen::Vector3d anchor(837.6 * std::cos(a), 837.6 * std::sin(a), -200.0);
       const Eigen::Vector3d fairlead(40.868 * std::cos(a), 40.868 * std::sin(a), -14.0);
       if (index++ == skipped) continue;
-      lines.push_back(std::make_unique<CatenaryStaticLine>(fmt::format("L{}", index), anchor,
-                                                           fairlead, 0.0, base.line));
+      lines.push_back(
+          std::make_unique<CatenaryStaticLine>(fmt::format("L{}", index), anchor, fairlead, 0.0, base.line));
     }
   }
   return lines;
@@ -92,8 +92,7 @@ TEST(StaticEquilibrium, DamagedLineMovesTheHullAwayAndLoadsTheNeighbour) {
 
   const double a = 55.0 * std::numbers::pi / 180.0;
   const Eigen::Vector2d away_from_anchor(-std::cos(a), -std::sin(a));
-  EXPECT_GT(damaged.offset.head<2>().dot(away_from_anchor),
-            intact.offset.head<2>().dot(away_from_anchor) + 0.5);
+  EXPECT_GT(damaged.offset.head<2>().dot(away_from_anchor), intact.offset.head<2>().dot(away_from_anchor) + 0.5);
   const double neighbour_intact = intact.lines.lines[1].end.top_tension_N;
   const double neighbour_damaged = damaged.lines.lines[0].end.top_tension_N;
   EXPECT_GT(neighbour_damaged, 1.1 * neighbour_intact);

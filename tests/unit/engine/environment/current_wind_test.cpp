@@ -34,9 +34,7 @@ constexpr double kSpectrumIntegralRelTol = 5e-4;
 // acceptance band is 10 % on sigma at a design (storm) wind speed.
 constexpr double kNpdConsistencyRelTol = 0.10;
 
-CurrentProfile three_point_profile() {
-  return {{-100.0, -50.0, 0.0}, {0.2, 0.8, 1.2}, 30.0 * kPi / 180.0};
-}
+CurrentProfile three_point_profile() { return {{-100.0, -50.0, 0.0}, {0.2, 0.8, 1.2}, 30.0 * kPi / 180.0}; }
 
 TEST(CurrentProfile, InterpolatesLinearlyAndPointsAlongTheHeading) {
   const CurrentProfile p = three_point_profile();
@@ -69,8 +67,7 @@ TEST(CurrentProfile, RejectsMalformedTables) {
     current_velocity_g({{-10.0, 0.0}, {1.0, -0.5}, 0.0}, 0.0);
     FAIL() << "negative speed accepted";
   } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("speed_m_per_s[1] must be >= 0 m/s"), std::string::npos)
-        << e.what();
+    EXPECT_NE(std::string(e.what()).find("speed_m_per_s[1] must be >= 0 m/s"), std::string::npos) << e.what();
   }
 }
 
@@ -101,8 +98,8 @@ TEST(WindProfile, HandComputedSpeedAt50Metres) {
   EXPECT_REL_NEAR(mean_wind_speed_m_per_s({40.0, 50.0}), 49.70380, kHandValueRelTol);
   // API RP 2A: C = 0.0573 sqrt(1 + 0.1499344 x 40) = 0.0573 x 2.645255 = 0.1515731
   //   U = 40 (1 + 0.1515731 x 1.6094379) = 49.75790 m/s
-  EXPECT_REL_NEAR(mean_wind_speed_m_per_s({40.0, 50.0, 3600.0, WindProfileStandard::api_rp_2a}),
-                  49.75790, kHandValueRelTol);
+  EXPECT_REL_NEAR(mean_wind_speed_m_per_s({40.0, 50.0, 3600.0, WindProfileStandard::api_rp_2a}), 49.75790,
+                  kHandValueRelTol);
 }
 
 TEST(WindProfile, GustFactorForShorterAveragingTimes) {
@@ -142,9 +139,7 @@ TEST(WindSpectrum, NpdStandardDeviationIsConsistentWithNpdTurbulenceIntensity) {
   // sigma = I_u U0 (the intensity is defined on the 1-hour mean at z; at 10 m,
   // U(10) = U0). At U0 = 40 m/s: 6.528 m/s; the spectrum gives 6.911 m/s.
   const double U0 = 40.0;
-  const double sigma_spectrum = std::sqrt(integrate_log([&](double f) {
-    return npd_wind_spectrum({U0, 10.0}, f);
-  }));
+  const double sigma_spectrum = std::sqrt(integrate_log([&](double f) { return npd_wind_spectrum({U0, 10.0}, f); }));
   const double sigma_intensity = npd_turbulence_intensity(U0, 10.0) * U0;
   EXPECT_REL_NEAR(sigma_spectrum, sigma_intensity, kNpdConsistencyRelTol);
 }

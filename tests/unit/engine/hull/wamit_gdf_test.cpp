@@ -19,9 +19,7 @@ const std::string kDir = std::string(SPIRAL_SOURCE_DIR) + "/tests/data/panel-mes
 /// 1 − sin(π/24)/(π/24) = 0.29 %, a disc's area by 1 − sin(π/12)/(π/12) = 1.1 %.
 constexpr double kFacetedAreaTolerance = 0.012;
 
-double area(const Panel& p) {
-  return 0.5 * (p[2] - p[0]).cross(p[3] - p[1]).norm();
-}
+double area(const Panel& p) { return 0.5 * (p[2] - p[0]).cross(p[3] - p[1]).norm(); }
 
 TEST(WamitGdf, Oc4ColumnsHeaderSymmetryAndWettedArea) {
   const PanelMesh mesh = read_gdf(kDir + "oc4-columns.gdf");

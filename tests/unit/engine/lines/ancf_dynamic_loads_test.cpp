@@ -70,11 +70,10 @@ double max_abs(const double* x, int n) {
 void expect_fused_forces_match(const Case& c) {
   std::array<double, 12> g_sep{}, g_fused{};
   element_forces<double>(c.e, c.ctx, c.q.data(), g_sep.data());
-  add_dynamic_element_forces(c.e, c.d, c.ctx, c.bed, c.fluid, c.q.data(), c.v.data(), c.a.data(),
-                             g_sep.data(), nullptr);
-  const double contact =
-      dynamic_element_forces(c.e, c.d, gauss_shapes(c.e.length_m), c.ctx, c.bed, &c.fluid,
-                             c.q.data(), c.v.data(), c.a.data(), g_fused.data());
+  add_dynamic_element_forces(c.e, c.d, c.ctx, c.bed, c.fluid, c.q.data(), c.v.data(), c.a.data(), g_sep.data(),
+                             nullptr);
+  const double contact = dynamic_element_forces(c.e, c.d, gauss_shapes(c.e.length_m), c.ctx, c.bed, &c.fluid,
+                                                c.q.data(), c.v.data(), c.a.data(), g_fused.data());
   EXPECT_GT(contact, 0.0);
   EXPECT_LT(contact, 1.0);
   const double scale = max_abs(g_sep.data(), 12);
@@ -87,12 +86,11 @@ void expect_fused_matrices_match(const Case& c) {
   ElementTangent K;
   element_forces_and_tangent(c.e, c.ctx, c.q.data(), g.data(), K);
   ElementDynamicMatrices sep;
-  add_dynamic_element_forces(c.e, c.d, c.ctx, c.bed, c.fluid, c.q.data(), c.v.data(), c.a.data(),
-                             g.data(), &sep);
+  add_dynamic_element_forces(c.e, c.d, c.ctx, c.bed, c.fluid, c.q.data(), c.v.data(), c.a.data(), g.data(), &sep);
   for (std::size_t ij = 0; ij < 144; ++ij) sep.K[ij] += K[ij];
   ElementDynamicMatrices fused;
-  const double contact = element_newton_matrices(c.e, c.d, gauss_shapes(c.e.length_m), c.ctx, c.bed,
-                                                 &c.fluid, c.q.data(), c.v.data(), fused);
+  const double contact = element_newton_matrices(c.e, c.d, gauss_shapes(c.e.length_m), c.ctx, c.bed, &c.fluid,
+                                                 c.q.data(), c.v.data(), fused);
   EXPECT_GT(contact, 0.0);
   const ElementMatrix* pairs[3][2] = {{&fused.M, &sep.M}, {&fused.C, &sep.C}, {&fused.K, &sep.K}};
   const char* names[3] = {"M", "C", "K"};
@@ -100,8 +98,7 @@ void expect_fused_matrices_match(const Case& c) {
     const double scale = max_abs(pairs[m][1]->data(), 144);
     EXPECT_GT(scale, 0.0) << names[m];
     for (std::size_t ij = 0; ij < 144; ++ij) {
-      EXPECT_NEAR((*pairs[m][0])[ij], (*pairs[m][1])[ij], kRoundOffAgreement * scale)
-          << names[m] << "[" << ij << "]";
+      EXPECT_NEAR((*pairs[m][0])[ij], (*pairs[m][1])[ij], kRoundOffAgreement * scale) << names[m] << "[" << ij << "]";
     }
   }
 }

@@ -19,8 +19,7 @@ CatenaryLine chain(double L = 500.0) {
 }
 
 // Runs the solver and returns the SolverError's message ("" if none was thrown).
-std::string error_of(const CatenaryLine& line, const CatenaryGeometry& g,
-                     const CatenaryOptions& o = {}) {
+std::string error_of(const CatenaryLine& line, const CatenaryGeometry& g, const CatenaryOptions& o = {}) {
   try {
     solve_catenary(line, g, o);
   } catch (const SolverError& e) {

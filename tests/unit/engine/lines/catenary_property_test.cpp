@@ -67,8 +67,7 @@ class Generator {
     for (int i = 0; i < n; ++i) {
       CatenarySegment s;
       s.length_m = log_uniform(20.0, 1500.0);
-      s.weight_N_per_m =
-          allow_buoyant && chance(0.25) ? -log_uniform(5.0, 800.0) : log_uniform(2.0, 4000.0);
+      s.weight_N_per_m = allow_buoyant && chance(0.25) ? -log_uniform(5.0, 800.0) : log_uniform(2.0, 4000.0);
       s.EA_N = log_uniform(1e7, 3e9);
       line.segments.push_back(s);
     }
@@ -132,8 +131,7 @@ std::string describe(const Case& c) {
   std::ostringstream o;
   o.precision(17);
   o << "segments (L, w, EA):";
-  for (const auto& s : c.line.segments)
-    o << " (" << s.length_m << ", " << s.weight_N_per_m << ", " << s.EA_N << ")";
+  for (const auto& s : c.line.segments) o << " (" << s.length_m << ", " << s.weight_N_per_m << ", " << s.EA_N << ")";
   o << "; joints:";
   for (double P : c.line.joint_load_N) o << " " << P;
   o << "; mu " << c.line.seabed_friction << "; XF " << c.geometry.horizontal_span_m << ", ZF "
@@ -155,9 +153,8 @@ void check_case(const Case& c, const std::string& label, int& max_warm_iteration
   }
   const double L = total_length(c.line);
   const double T = std::max(s.fairlead_tension_N, 1.0);
-  for (double v :
-       {s.fairlead_horizontal_N, s.fairlead_vertical_N, s.fairlead_tension_N, s.anchor_horizontal_N,
-        s.anchor_vertical_N, s.anchor_tension_N, s.laid_length_m, s.touchdown_x_m, s.residual_m}) {
+  for (double v : {s.fairlead_horizontal_N, s.fairlead_vertical_N, s.fairlead_tension_N, s.anchor_horizontal_N,
+                   s.anchor_vertical_N, s.anchor_tension_N, s.laid_length_m, s.touchdown_x_m, s.residual_m}) {
     ASSERT_TRUE(std::isfinite(v));
   }
   ASSERT_TRUE(s.tangent_stiffness.allFinite());
@@ -165,8 +162,7 @@ void check_case(const Case& c, const std::string& label, int& max_warm_iteration
   EXPECT_GE(s.anchor_horizontal_N, 0.0);
   EXPECT_LE(s.anchor_horizontal_N, s.fairlead_horizontal_N * (1.0 + kEquilibriumRelTol));
   ASSERT_FALSE(s.profile.empty());
-  EXPECT_REL_NEAR_SCALE(s.profile.back().x_m, c.geometry.horizontal_span_m, kProfileClosureRelTol,
-                        L);
+  EXPECT_REL_NEAR_SCALE(s.profile.back().x_m, c.geometry.horizontal_span_m, kProfileClosureRelTol, L);
   EXPECT_REL_NEAR_SCALE(s.profile.back().z_m, c.geometry.vertical_span_m, kProfileClosureRelTol, L);
   if (c.line.seabed_friction == 0.0 && s.regime == CatenaryRegime::touchdown) {
     EXPECT_REL_NEAR(s.anchor_horizontal_N, s.fairlead_horizontal_N, kEquilibriumRelTol);
@@ -185,13 +181,12 @@ void check_case(const Case& c, const std::string& label, int& max_warm_iteration
     }
     ASSERT_TRUE(bottom && top);
     const auto& seg = c.line.segments[i];
-    EXPECT_REL_NEAR_SCALE(top->vertical_N - bottom->vertical_N,
-                          seg.weight_N_per_m * (seg.length_m - laid_m), kEquilibriumRelTol, T)
+    EXPECT_REL_NEAR_SCALE(top->vertical_N - bottom->vertical_N, seg.weight_N_per_m * (seg.length_m - laid_m),
+                          kEquilibriumRelTol, T)
         << "segment " << i;
     if (bottom->horizontal_N > 0.0 && s.regime != CatenaryRegime::slack_vertical) {
       EXPECT_REL_NEAR_SCALE(top->horizontal_N - bottom->horizontal_N,
-                            c.line.seabed_friction * seg.weight_N_per_m * laid_m,
-                            kEquilibriumRelTol, T)
+                            c.line.seabed_friction * seg.weight_N_per_m * laid_m, kEquilibriumRelTol, T)
           << "segment " << i;
     }
   }
@@ -207,8 +202,7 @@ void check_case(const Case& c, const std::string& label, int& max_warm_iteration
   // tendon. Newton must need at most 3 steps.
   const double K_max = s.tangent_stiffness.cwiseAbs().maxCoeff();
   if (K_max > 0.0) {
-    const double move_m =
-        kSmallMoveFraction * std::min(s.fairlead_tension_N / K_max, c.geometry.horizontal_span_m);
+    const double move_m = kSmallMoveFraction * std::min(s.fairlead_tension_N / K_max, c.geometry.horizontal_span_m);
     CatenaryGeometry moved = c.geometry;
     moved.horizontal_span_m += move_m;
     moved.vertical_span_m -= 0.5 * move_m;
@@ -240,8 +234,7 @@ TEST(CatenaryProperty, GeometryFirstRandomLines) {
     check_case(c, "geometry-first case " + std::to_string(k), max_warm);
     if (HasFatalFailure() || testing::Test::HasFailure()) break;  // keep the log readable
   }
-  std::cout << "[ property ] geometry-first: max iterations after a warm-started 0.1 m move "
-            << max_warm << "\n";
+  std::cout << "[ property ] geometry-first: max iterations after a warm-started 0.1 m move " << max_warm << "\n";
 }
 
 TEST(CatenaryProperty, ForcesFirstRandomLinesWithBuoyancy) {
@@ -255,8 +248,7 @@ TEST(CatenaryProperty, ForcesFirstRandomLinesWithBuoyancy) {
     if (testing::Test::HasFailure()) break;
   }
   EXPECT_EQ(done, kForcesFirstCases);
-  std::cout << "[ property ] forces-first: max iterations after a warm-started 0.1 m move "
-            << max_warm << "\n";
+  std::cout << "[ property ] forces-first: max iterations after a warm-started 0.1 m move " << max_warm << "\n";
 }
 
 }  // namespace

@@ -37,15 +37,13 @@ TEST(CatenaryTopAngle, SingleSegmentMatchesTheInextensibleClosedForm) {
 
 TEST(CatenaryTopAngle, LazyWaveRoundTripsThroughTheCatenarySolver) {
   // Heavy – buoyant – heavy (foot first): 1500 m, 300 m at −4284 N/m, 1500 m.
-  const CatenaryLine line{
-      {{1500.0, 1237.0, 4.09e9}, {300.0, -4284.0, 4.09e9}, {1500.0, 1237.0, 4.09e9}}, {}, 0.0};
+  const CatenaryLine line{{{1500.0, 1237.0, 4.09e9}, {300.0, -4284.0, 4.09e9}, {1500.0, 1237.0, 4.09e9}}, {}, 0.0};
   const double Z = 1772.0, theta = 10.0 * kDeg;
   const TopAngleCatenary r = solve_catenary_for_top_angle(line, Z, theta);
   EXPECT_GT(r.laid_length_m, 0.0);
   EXPECT_LT(r.laid_length_m, 1500.0);  // the buoyant section stays suspended
   const CatenarySolution c = solve_catenary(line, {r.horizontal_span_m, Z, 0.0});
-  EXPECT_NEAR(std::atan2(c.fairlead_horizontal_N, c.fairlead_vertical_N), theta,
-              kRoundTripAngleTol_rad);
+  EXPECT_NEAR(std::atan2(c.fairlead_horizontal_N, c.fairlead_vertical_N), theta, kRoundTripAngleTol_rad);
   EXPECT_NEAR(c.laid_length_m, r.laid_length_m, 1e-6);
 }
 
@@ -60,14 +58,12 @@ TEST(CatenaryTopAngle, ImpossibleGeometriesSayWhy) {
   }
   // 1 km of buoyant line between two 10 m heavy ends under a top 100 m
   // above the foot: at any top tension it stands higher than the top.
-  const CatenaryLine floating{
-      {{10.0, 1237.0, 4.09e9}, {1000.0, -4284.0, 4.09e9}, {10.0, 1237.0, 4.09e9}}, {}, 0.0};
+  const CatenaryLine floating{{{10.0, 1237.0, 4.09e9}, {1000.0, -4284.0, 4.09e9}, {10.0, 1237.0, 4.09e9}}, {}, 0.0};
   try {
     solve_catenary_for_top_angle(floating, 100.0, 10.0 * kDeg);
     FAIL();
   } catch (const SolverError& e) {
-    EXPECT_NE(std::string(e.what()).find("buoyant segment would have to lie on the seabed"),
-              std::string::npos)
+    EXPECT_NE(std::string(e.what()).find("buoyant segment would have to lie on the seabed"), std::string::npos)
         << e.what();
   }
 }

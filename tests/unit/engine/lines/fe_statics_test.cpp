@@ -301,15 +301,13 @@ TEST(FeStatics, StrongCrossCurrentOnAFlexibleRiserConverges) {
 // stages. It must land on the equilibrium reached the slow way: warm starts
 // along a ramp of the drag (current speed²) in twentieths.
 TEST(FeStatics, ColdSolveUnderCurrentSwingsIntoIt) {
-  constexpr int kMaxColdIterations =
-      60;  // measured 40: 12 direct, 4 seabed stages, touchdown moves
+  constexpr int kMaxColdIterations = 60;  // measured 40: 12 direct, 4 seabed stages, touchdown moves
   constexpr int kRampSteps = 20;
   constexpr double od = 0.2731, wt = 0.0254, E = 207e9, g = 9.80665;
   const double id = od - 2.0 * wt;
   const double a_steel = M_PI / 4.0 * (od * od - id * id);
   FeLineSection s;
-  s.weight_N_per_m =
-      (7850.0 * a_steel + 800.0 * M_PI / 4.0 * id * id - 1025.0 * M_PI / 4.0 * od * od) * g;
+  s.weight_N_per_m = (7850.0 * a_steel + 800.0 * M_PI / 4.0 * id * id - 1025.0 * M_PI / 4.0 * od * od) * g;
   s.EA_N = E * a_steel;
   s.EI_Nm2 = E * M_PI / 64.0 * (std::pow(od, 4) - std::pow(id, 4));
   s.hydro_diameter_m = od;
@@ -329,8 +327,7 @@ TEST(FeStatics, ColdSolveUnderCurrentSwingsIntoIt) {
     const Eigen::Vector3d direction(std::cos(M_PI / 4), std::sin(M_PI / 4), 0.0);
     for (int i = 0; i <= 18; ++i) {
       const double z = -1800.0 + 100.0 * i;
-      env.current.push_back(
-          {z, surface_speed_m_per_s * std::pow((z + 1800.0) / 1800.0, 1.0 / 7.0) * direction});
+      env.current.push_back({z, surface_speed_m_per_s * std::pow((z + 1800.0) / 1800.0, 1.0 / 7.0) * direction});
     }
     return env;
   };
@@ -340,15 +337,13 @@ TEST(FeStatics, ColdSolveUnderCurrentSwingsIntoIt) {
   for (int k = 1; k <= kRampSteps; ++k) {
     FeStaticsOptions o;
     warm_start_from(o, ramped);
-    ramped =
-        solve_fe_line_statics(m, environment(1.5 * std::sqrt(double(k) / kRampSteps)), ends, o);
+    ramped = solve_fe_line_statics(m, environment(1.5 * std::sqrt(double(k) / kRampSteps)), ends, o);
   }
   // Each state balances every free node to its residual_N; by the global
   // balance their end reactions can differ by at most the sum over the nodes
   // (on the laid part the round-off floor, ≈ 1e-3 N a node, sets it: the
   // anchor reaction agrees to 2e-7 relative, the hang-off one to 1e-10).
-  const double balance_N =
-      static_cast<double>(cold.node_position_m.size()) * (cold.residual_N + ramped.residual_N);
+  const double balance_N = static_cast<double>(cold.node_position_m.size()) * (cold.residual_N + ramped.residual_N);
   EXPECT_LT((cold.end_B_force_N - ramped.end_B_force_N).norm(), balance_N);
   EXPECT_LT((cold.end_A_force_N - ramped.end_A_force_N).norm(), balance_N);
   EXPECT_GT(cold.node_position_m[cold.node_position_m.size() / 2].y(),

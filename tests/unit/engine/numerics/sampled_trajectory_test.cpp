@@ -48,8 +48,7 @@ TEST(SmoothRamp, GoesFromZeroToOneWithZeroRatesAtBothEnds) {
   EXPECT_NEAR(smooth_ramp(t, 10.0).rate_per_s,
               (smooth_ramp(t + h, 10.0).value - smooth_ramp(t - h, 10.0).value) / (2 * h), 1e-8);
   EXPECT_NEAR(smooth_ramp(t, 10.0).rate2_per_s2,
-              (smooth_ramp(t + h, 10.0).rate_per_s - smooth_ramp(t - h, 10.0).rate_per_s) / (2 * h),
-              1e-7);
+              (smooth_ramp(t + h, 10.0).rate_per_s - smooth_ramp(t - h, 10.0).rate_per_s) / (2 * h), 1e-7);
 }
 
 }  // namespace

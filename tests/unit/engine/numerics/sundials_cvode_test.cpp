@@ -28,9 +28,8 @@ TEST_P(CvodeMethods, ExponentialDecayMatchesClosedForm) {
   o.relative_tolerance = 1e-10;
   o.absolute_tolerance = 1e-14;
   const std::vector<double> times{0.0, 1.0, 2.5, 5.0};
-  const auto sol =
-      integrate_ode([](double, const Eigen::VectorXd& y, Eigen::VectorXd& ydot) { ydot = -y; }, 0.0,
-                    Eigen::VectorXd::Constant(1, 1.0), times, o);
+  const auto sol = integrate_ode([](double, const Eigen::VectorXd& y, Eigen::VectorXd& ydot) { ydot = -y; }, 0.0,
+                                 Eigen::VectorXd::Constant(1, 1.0), times, o);
   ASSERT_EQ(sol.states.cols(), 4);
   for (int k = 0; k < 4; ++k) EXPECT_REL_NEAR(sol.states(0, k), std::exp(-times[k]), kExpRelTol);
   EXPECT_GT(sol.statistics.steps, 0);
@@ -43,8 +42,7 @@ TEST_P(CvodeMethods, ExponentialDecayMatchesClosedForm) {
 }
 
 INSTANTIATE_TEST_SUITE_P(AllMethods, CvodeMethods,
-                         testing::Values(CvodeMethod::bdf_newton_dense,
-                                         CvodeMethod::adams_newton_dense,
+                         testing::Values(CvodeMethod::bdf_newton_dense, CvodeMethod::adams_newton_dense,
                                          CvodeMethod::adams_fixed_point));
 
 TEST(CvodeAdapter, FatalRhsExceptionIsRethrownUnchanged) {
@@ -77,8 +75,7 @@ TEST(CvodeAdapter, RepeatedRecoverableFailuresBecomeIntegrationErrorWithContext)
   } catch (const IntegrationError& e) {
     EXPECT_LE(e.time_reached_s(), 1.0 + 1e-12);
     EXPECT_GT(e.time_reached_s(), 0.5);
-    EXPECT_NE(std::string(e.what()).find("line 3: catenary did not converge"), std::string::npos)
-        << e.what();
+    EXPECT_NE(std::string(e.what()).find("line 3: catenary did not converge"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("Hint"), std::string::npos) << e.what();
   }
   EXPECT_GT(integrator.statistics().recoverable_rhs_failures, 0);
@@ -91,17 +88,15 @@ TEST(CvodeAdapter, NonFiniteDerivativeIsRecoverableThenReported) {
   };
   CvodeOptions o;
   o.max_steps_between_outputs = 5000;
-  EXPECT_THROW(integrate_ode(rhs, 0.0, Eigen::VectorXd::Ones(1), std::vector<double>{2.0}, o),
-               IntegrationError);
+  EXPECT_THROW(integrate_ode(rhs, 0.0, Eigen::VectorXd::Ones(1), std::vector<double>{2.0}, o), IntegrationError);
 }
 
 TEST(CvodeAdapter, TooMuchWorkReportsTimeReachedAndStep) {
   CvodeOptions o;
   o.max_steps_between_outputs = 20;
   o.max_step_s = 0.01;
-  CvodeIntegrator integrator(
-      [](double, const Eigen::VectorXd& y, Eigen::VectorXd& ydot) { ydot = -y; }, 0.0,
-      Eigen::VectorXd::Ones(1), o);
+  CvodeIntegrator integrator([](double, const Eigen::VectorXd& y, Eigen::VectorXd& ydot) { ydot = -y; }, 0.0,
+                             Eigen::VectorXd::Ones(1), o);
   try {
     integrator.advance_to(100.0);
     FAIL() << "expected IntegrationError";
@@ -131,19 +126,15 @@ TEST(CvodeAdapter, StopTimeIsHonoured) {
 }
 
 TEST(CvodeAdapter, InvalidInputsThrowInvalidArgument) {
-  const OdeRightHandSide rhs = [](double, const Eigen::VectorXd& y, Eigen::VectorXd& ydot) {
-    ydot = y;
-  };
+  const OdeRightHandSide rhs = [](double, const Eigen::VectorXd& y, Eigen::VectorXd& ydot) { ydot = y; };
   CvodeOptions bad;
   bad.relative_tolerance = 0.0;
   EXPECT_THROW(CvodeIntegrator(rhs, 0.0, Eigen::VectorXd::Ones(1), bad), std::invalid_argument);
   EXPECT_THROW(CvodeIntegrator(rhs, 0.0, Eigen::VectorXd(), {}), std::invalid_argument);
   CvodeOptions bad_atol;
   bad_atol.absolute_tolerances = Eigen::VectorXd::Ones(3);
-  EXPECT_THROW(CvodeIntegrator(rhs, 0.0, Eigen::VectorXd::Ones(2), bad_atol),
-               std::invalid_argument);
-  EXPECT_THROW(integrate_ode(rhs, 0.0, Eigen::VectorXd::Ones(1), std::vector<double>{1.0, 0.5}),
-               std::invalid_argument);
+  EXPECT_THROW(CvodeIntegrator(rhs, 0.0, Eigen::VectorXd::Ones(2), bad_atol), std::invalid_argument);
+  EXPECT_THROW(integrate_ode(rhs, 0.0, Eigen::VectorXd::Ones(1), std::vector<double>{1.0, 0.5}), std::invalid_argument);
   CvodeIntegrator ok(rhs, 0.0, Eigen::VectorXd::Ones(1));
   EXPECT_THROW(ok.advance_to(0.0), std::invalid_argument);
 }

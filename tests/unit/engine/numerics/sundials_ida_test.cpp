@@ -36,9 +36,7 @@ class Oscillator : public ImplicitSystem {
     ++setups;
     return true;
   }
-  void solve_newton_system(double, Eigen::Ref<Eigen::VectorXd> b) override {
-    b = lu_.solve(Eigen::Vector3d(b));
-  }
+  void solve_newton_system(double, Eigen::Ref<Eigen::VectorXd> b) override { b = lu_.solve(Eigen::Vector3d(b)); }
   int setups = 0;
 
  private:
@@ -86,8 +84,7 @@ TEST(SundialsIda, OrderTwoStaysStableOnAnUndampedOscillatorAtLargeSteps) {
   options.absolute_tolerance = 1e-3;
   options.initial_step_s = 0.05;
   options.differential_id = Eigen::Vector3d(1.0, 1.0, 0.0);
-  IdaIntegrator ida(system, 0.0, Eigen::Vector3d(1.0, 0.0, 0.0),
-                    Eigen::Vector3d(0.0, -omega * omega, 0.0), options);
+  IdaIntegrator ida(system, 0.0, Eigen::Vector3d(1.0, 0.0, 0.0), Eigen::Vector3d(0.0, -omega * omega, 0.0), options);
   ida.advance_to(20.0);
   EXPECT_LE(std::abs(ida.state()[0]), 1.0 + 1e-9);
 }
@@ -158,8 +155,7 @@ TEST(SundialsIda, VectorOperationsOnAPoolGiveTheSameSolution) {
 
 TEST(SundialsIda, RejectsInconsistentSizes) {
   Oscillator system(1.0, 0.0);
-  EXPECT_THROW(IdaIntegrator(system, 0.0, Eigen::Vector3d::Zero(), Eigen::Vector2d::Zero()),
-               std::invalid_argument);
+  EXPECT_THROW(IdaIntegrator(system, 0.0, Eigen::Vector3d::Zero(), Eigen::Vector2d::Zero()), std::invalid_argument);
   IdaOptions bad;
   bad.max_order = 6;
   EXPECT_THROW(IdaIntegrator(system, 0.0, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), bad),

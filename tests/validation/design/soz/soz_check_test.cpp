@@ -82,14 +82,16 @@ TEST(SozCheck, ExtremeOffsetOfEveryCaseFromTheEnhancedScAnalysis) {
 /// The SOZ test project (risers A at 0°, B at 180°) with a third case whose
 /// environment has another name but the same current as lc2.
 ValidatedProject two_risers_three_cases() {
-  std::string text = test::soz_project_yaml(test::soz_riser_yaml("A", 0.0, 20.0) +
-                                            test::soz_riser_yaml("B", 180.0, 20.0));
-  const std::string env = "  - name: current-east\n    current:\n      heading_deg: 0.0\n"
-                          "      profile: [[0.0, 1.0], [-400.0, 0.5]]\n";
+  std::string text =
+      test::soz_project_yaml(test::soz_riser_yaml("A", 0.0, 20.0) + test::soz_riser_yaml("B", 180.0, 20.0));
+  const std::string env =
+      "  - name: current-east\n    current:\n      heading_deg: 0.0\n"
+      "      profile: [[0.0, 1.0], [-400.0, 0.5]]\n";
   const auto at = text.find(env);
   EXPECT_NE(at, std::string::npos);
-  text.insert(at + env.size(), "  - name: same-current\n    current:\n      heading_deg: 0.0\n"
-                               "      profile: [[0.0, 1.0], [-400.0, 0.5]]\n");
+  text.insert(at + env.size(),
+              "  - name: same-current\n    current:\n      heading_deg: 0.0\n"
+              "      profile: [[0.0, 1.0], [-400.0, 0.5]]\n");
   const std::string lc2 = "  - {name: lc2, environment: current-east, condition: extreme}\n";
   text.insert(text.find(lc2) + lc2.size(), "  - {name: lc3, environment: same-current, condition: extreme}\n");
   const std::filesystem::path file =
@@ -130,9 +132,9 @@ TEST(SozCheck, EachCaseIsCheckedAgainstTheZoneOfItsOwnCurrent) {
   const OffsetCheck& c = r.offset_checks[1];
   EXPECT_NEAR(c.allowable_m, platform_at(own, c.direction_deg), kSameArithmetic * c.allowable_m);
   // Solves add up over the zones.
-  EXPECT_EQ(r.solves, std::accumulate(r.risers.begin(), r.risers.end(), 0,
-                                      [](int n, const RiserSoz& z) { return n + z.solves; }) +
-                          zone.solves);
+  EXPECT_EQ(r.solves, std::accumulate(r.risers.begin(), r.risers.end(), 0, [](int n, const RiserSoz& z) {
+                        return n + z.solves;
+                      }) + zone.solves);
   // --still-water-only: every case against the still-water zone.
   o.zone_per_current = false;
   const SozResult still = run_soz(p, o);

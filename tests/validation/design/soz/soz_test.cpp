@@ -36,8 +36,7 @@ constexpr double kSweepFine_m = 0.02;
 constexpr double kScreeningTopTension = 0.01;
 constexpr double kScreeningOffset = 0.10;
 
-Project project(const std::string& risers,
-                const std::optional<std::string>& criteria = std::nullopt) {
+Project project(const std::string& risers, const std::optional<std::string>& criteria = std::nullopt) {
   Project p = criteria ? parse_project(test::soz_project_yaml(risers, *criteria), "soz-test.yaml")
                        : parse_project(test::soz_project_yaml(risers), "soz-test.yaml");
   return p;
@@ -73,8 +72,7 @@ TEST(Soz, SymmetricAboutTheAzimuthPlaneAndNearFarGovernedByDifferentPhysics) {
   ASSERT_FALSE(z.fails_at_zero_offset) << z.zero_offset_governing_criterion;
   for (std::size_t k = 1; k < r.directions_deg.size() / 2; ++k) {
     const std::size_t mirror = r.directions_deg.size() - k;
-    EXPECT_NEAR(z.directions[k].allowable_offset_m, z.directions[mirror].allowable_offset_m,
-                kSymmetry_m)
+    EXPECT_NEAR(z.directions[k].allowable_offset_m, z.directions[mirror].allowable_offset_m, kSymmetry_m)
         << r.directions_deg[k] << "° vs " << r.directions_deg[mirror] << "°";
     EXPECT_EQ(z.directions[k].governing_criterion, z.directions[mirror].governing_criterion);
   }
@@ -84,9 +82,7 @@ TEST(Soz, SymmetricAboutTheAzimuthPlaneAndNearFarGovernedByDifferentPhysics) {
   const std::string& near = z.directions.front().governing_criterion;
   const std::string& far = z.directions[r.directions_deg.size() / 2].governing_criterion;
   EXPECT_NE(near, far);
-  EXPECT_TRUE(near == "von_mises" || near == "min_effective_tension" ||
-              near == "min_bending_radius")
-      << near;
+  EXPECT_TRUE(near == "von_mises" || near == "min_effective_tension" || near == "min_bending_radius") << near;
   EXPECT_TRUE(far == "max_top_tension" || far == "max_top_angle" || far == "von_mises") << far;
   EXPECT_TRUE(z.star_shaped);
   EXPECT_GT(z.near_m, 0.0);
@@ -100,13 +96,11 @@ TEST(Soz, SearchAgreesWithABruteForceSweep) {
   // covered by the neighbouring direction of the task (soz.cpp).
   const SozResult coarse = compute_soz(p, d, {}, options(90.0));
   const SozResult fine = compute_soz(p, d, {}, options(5.0));
-  for (const auto& [r, direction_deg] : {std::pair{&coarse, 0.0}, std::pair{&coarse, 180.0},
-                                         std::pair{&fine, 0.0}, std::pair{&fine, 180.0},
-                                         std::pair{&fine, 5.0}, std::pair{&fine, 145.0}}) {
+  for (const auto& [r, direction_deg] : {std::pair{&coarse, 0.0}, std::pair{&coarse, 180.0}, std::pair{&fine, 0.0},
+                                         std::pair{&fine, 180.0}, std::pair{&fine, 5.0}, std::pair{&fine, 145.0}}) {
     const double found = at(*r, 0, direction_deg);
     const RiserOffsetEvaluator evaluator(p, d[0], {}, SozModel::fe);
-    const Eigen::Vector2d unit(std::cos(direction_deg * M_PI / 180.0),
-                               std::sin(direction_deg * M_PI / 180.0));
+    const Eigen::Vector2d unit(std::cos(direction_deg * M_PI / 180.0), std::sin(direction_deg * M_PI / 180.0));
     std::shared_ptr<const engine::FeStaticsResult> warm = evaluator.zero_offset().solution;
     double last_pass = 0.0;
     for (double s = kSweepCoarse_m;; s += kSweepCoarse_m) {
@@ -163,8 +157,7 @@ TEST(Soz, CoveredMarchPointsDoNotChangeTheZone) {
 TEST(Soz, IdenticalRiserTurnedAboutTheVerticalSharesTheZone) {
   // A and B differ only in azimuth (0° and 90°, three 30° steps): without
   // current or hull rotations B's zone is A's turned by 90°.
-  const Project p =
-      project(test::soz_riser_yaml("A", 0.0, 20.0) + test::soz_riser_yaml("B", 90.0, 20.0));
+  const Project p = project(test::soz_riser_yaml("A", 0.0, 20.0) + test::soz_riser_yaml("B", 90.0, 20.0));
   const std::vector<RiserDesign> both = designs(p);
   const SozResult r = compute_soz(p, both, {}, options(30.0));
   ASSERT_EQ(r.risers.size(), 2u);
@@ -189,8 +182,7 @@ TEST(Soz, IdenticalRiserTurnedAboutTheVerticalSharesTheZone) {
   EXPECT_TRUE(with_current.risers[1].zone_rotated_from.empty());
   EXPECT_GT(with_current.risers[1].solves, 0);
   // So does an azimuth that is not a whole number of steps away.
-  const Project q =
-      project(test::soz_riser_yaml("A", 0.0, 20.0) + test::soz_riser_yaml("B", 100.0, 20.0));
+  const Project q = project(test::soz_riser_yaml("A", 0.0, 20.0) + test::soz_riser_yaml("B", 100.0, 20.0));
   EXPECT_TRUE(compute_soz(q, designs(q), {}, options(30.0)).risers[1].zone_rotated_from.empty());
 }
 
@@ -251,14 +243,12 @@ TEST(Soz, RiserSymmetricAboutItsOwnPlaneIsSearchedOnOneHalf) {
 }
 
 TEST(Soz, PlatformZoneIsTheIntersectionAndShrinksWithEveryRiser) {
-  const Project p =
-      project(test::soz_riser_yaml("A", 0.0, 20.0) + test::soz_riser_yaml("B", 120.0, 20.0) +
-              test::soz_riser_yaml("C", 240.0, 20.0));
+  const Project p = project(test::soz_riser_yaml("A", 0.0, 20.0) + test::soz_riser_yaml("B", 120.0, 20.0) +
+                            test::soz_riser_yaml("C", 240.0, 20.0));
   const std::vector<RiserDesign> all = designs(p);
   const SozResult r = compute_soz(p, all, {}, options(30.0));
   for (std::size_t k = 0; k < r.directions_deg.size(); ++k) {
-    for (const RiserSoz& z : r.risers)
-      EXPECT_LE(r.platform.allowable_offset_m[k], z.directions[k].allowable_offset_m);
+    for (const RiserSoz& z : r.risers) EXPECT_LE(r.platform.allowable_offset_m[k], z.directions[k].allowable_offset_m);
   }
   // Remove the riser that governs direction 0 and recompute.
   const std::string governing = r.platform.governing_riser[0];
@@ -273,8 +263,8 @@ TEST(Soz, PlatformZoneIsTheIntersectionAndShrinksWithEveryRiser) {
   bool larger_somewhere = false;
   for (std::size_t k = 0; k < r.directions_deg.size(); ++k) {
     EXPECT_GE(s.platform.allowable_offset_m[k], r.platform.allowable_offset_m[k] - kSymmetry_m);
-    larger_somewhere = larger_somewhere ||
-                       s.platform.allowable_offset_m[k] > r.platform.allowable_offset_m[k] + kSymmetry_m;
+    larger_somewhere =
+        larger_somewhere || s.platform.allowable_offset_m[k] > r.platform.allowable_offset_m[k] + kSymmetry_m;
   }
   EXPECT_GT(s.platform.allowable_offset_m[0], r.platform.allowable_offset_m[0] + kSymmetry_m);
   EXPECT_TRUE(larger_somewhere);
@@ -309,17 +299,15 @@ TEST(Soz, CatenaryScreeningAgreesWithFeWhereTensionGovernsAndIsConservativeAtThe
   const SozResult fe = compute_soz(p, d, {}, o);
   o.model = SozModel::catenary;
   const SozResult catenary = compute_soz(p, d, {}, o);
-  const RiserOffsetEvaluator fe_zero(p, d[0], {}, SozModel::fe),
-      cat_zero(p, d[0], {}, SozModel::catenary);
-  EXPECT_NEAR(cat_zero.zero_offset().row.top_tension_N / fe_zero.zero_offset().row.top_tension_N,
-              1.0, kScreeningTopTension);
+  const RiserOffsetEvaluator fe_zero(p, d[0], {}, SozModel::fe), cat_zero(p, d[0], {}, SozModel::catenary);
+  EXPECT_NEAR(cat_zero.zero_offset().row.top_tension_N / fe_zero.zero_offset().row.top_tension_N, 1.0,
+              kScreeningTopTension);
   for (std::size_t k = 0; k < fe.directions_deg.size(); ++k) {
     const SozDirection& f = fe.risers[0].directions[k];
     const SozDirection& c = catenary.risers[0].directions[k];
-    const std::string where =
-        std::to_string(fe.directions_deg[k]) + "°: fe " + std::to_string(f.allowable_offset_m) +
-        " m (" + f.governing_criterion + "), catenary " + std::to_string(c.allowable_offset_m) +
-        " m (" + c.governing_criterion + ")";
+    const std::string where = std::to_string(fe.directions_deg[k]) + "°: fe " + std::to_string(f.allowable_offset_m) +
+                              " m (" + f.governing_criterion + "), catenary " + std::to_string(c.allowable_offset_m) +
+                              " m (" + c.governing_criterion + ")";
     if (f.governing_criterion == "von_mises") {
       // Near: the TDP curvature. The catenary's w/H is the rigid-seabed
       // boundary-layer peak (Pesce et al. 1998); the FE riser rests on the
@@ -335,9 +323,8 @@ TEST(Soz, CatenaryScreeningAgreesWithFeWhereTensionGovernsAndIsConservativeAtThe
 TEST(Soz, TouchdownExcursionLimitsTheZoneWhereGiven) {
   // TDP travel is about as large as the hull offset along the riser plane:
   // a 5 m limit governs there, long before the top angle.
-  const Project p =
-      project(test::soz_riser_yaml("R", 0.0), std::string("    max_top_angle_deg: 16.0\n"
-                                                          "    max_touchdown_excursion: 5.0\n"));
+  const Project p = project(test::soz_riser_yaml("R", 0.0), std::string("    max_top_angle_deg: 16.0\n"
+                                                                        "    max_touchdown_excursion: 5.0\n"));
   const std::vector<RiserDesign> d = designs(p);
   const SozResult r = compute_soz(p, d, {}, options(180.0));
   const SozDirection& far = r.risers[0].directions[1];
@@ -345,9 +332,9 @@ TEST(Soz, TouchdownExcursionLimitsTheZoneWhereGiven) {
   const RiserOffsetEvaluator evaluator(p, d[0], {}, SozModel::fe);
   const auto e = evaluator.evaluate({-far.allowable_offset_m, 0.0}, nullptr);
   ASSERT_TRUE(e.passes());
-  const auto check = std::find_if(
-      e.row.checks.begin(), e.row.checks.end(),
-      [](const RiserCriterionCheck& c) { return c.criterion == "max_touchdown_excursion"; });
+  const auto check = std::find_if(e.row.checks.begin(), e.row.checks.end(), [](const RiserCriterionCheck& c) {
+    return c.criterion == "max_touchdown_excursion";
+  });
   ASSERT_NE(check, e.row.checks.end());
   EXPECT_LE(check->value, 5.0);
   EXPECT_GT(check->value, 5.0 - 2.0 * kTolerance_m);  // TDP moves ≈ as far as the hang-off
@@ -355,9 +342,8 @@ TEST(Soz, TouchdownExcursionLimitsTheZoneWhereGiven) {
 
 /// The riser evaluated at `d_m` along `unit`, reached by warm-started steps
 /// of `step_m` from zero offset (a cold solve 400 m out need not converge).
-RiserOffsetEvaluator::Evaluation evaluate_along(const RiserOffsetEvaluator& evaluator,
-                                                const Eigen::Vector2d& unit, double d_m,
-                                                double step_m) {
+RiserOffsetEvaluator::Evaluation evaluate_along(const RiserOffsetEvaluator& evaluator, const Eigen::Vector2d& unit,
+                                                double d_m, double step_m) {
   std::shared_ptr<const engine::FeStaticsResult> warm = evaluator.zero_offset().solution;
   for (double s = std::min(step_m, d_m);; s = std::min(s + step_m, d_m)) {
     auto e = evaluator.evaluate(s * unit, warm.get());
@@ -429,8 +415,7 @@ TEST(Soz, ResultsDoNotDependOnTheThreadCount) {
 }
 
 TEST(Soz, RiserFailingAtZeroOffsetHasNoZoneAndNamesTheCriterion) {
-  const Project p =
-      project(test::soz_riser_yaml("R", 0.0), std::string("    max_top_tension: 3.0e5\n"));
+  const Project p = project(test::soz_riser_yaml("R", 0.0), std::string("    max_top_tension: 3.0e5\n"));
   const SozResult r = compute_soz(p, designs(p), {}, options(90.0));
   const RiserSoz& z = r.risers[0];
   EXPECT_TRUE(z.fails_at_zero_offset);

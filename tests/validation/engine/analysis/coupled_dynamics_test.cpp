@@ -39,14 +39,13 @@ const std::string kOc4 = std::string(SPIRAL_SOURCE_DIR) + "/scenarios/oc4-semisu
 /// `quasi_static`: mass ×0.01, no added mass, drag, Froude–Krylov, seabed
 /// damping or friction — lines whose dynamics the hull cannot feel.
 std::vector<engine::CoupledLine> oc4_lines(const Project& project, const engine::Vector6d& q,
-                                           const std::optional<engine::CurrentProfile>& current,
-                                           bool quasi_static) {
+                                           const std::optional<engine::CurrentProfile>& current, bool quasi_static) {
   const engine::HullPose pose = engine::pose_from_offset(project.hull.reference_point_g, q);
   const std::vector<LineTypeProperties> types = resolve_line_types(project);
   std::vector<engine::CoupledLine> lines;
   for (const MooringLine& line : project.mooring.lines) {
-    DynamicLineSetup s = dynamic_mooring_line(
-        project, line, types, current, pose.reference_point_g + pose.rotation * line.fairlead_b);
+    DynamicLineSetup s =
+        dynamic_mooring_line(project, line, types, current, pose.reference_point_g + pose.rotation * line.fairlead_b);
     if (quasi_static) {
       for (engine::FeLineSection& sec : s.model.sections) {
         sec.mass_kg_per_m *= 0.01;
@@ -89,8 +88,7 @@ std::vector<double> outputs(double duration_s, double dt_s) {
   return t;
 }
 
-double mean_period_s(const Eigen::Matrix<double, 6, Eigen::Dynamic>& x, int dof, double level,
-                     double dt_s) {
+double mean_period_s(const Eigen::Matrix<double, 6, Eigen::Dynamic>& x, int dof, double level, double dt_s) {
   std::vector<double> v(static_cast<std::size_t>(x.cols()));
   for (Eigen::Index k = 0; k < x.cols(); ++k) v[static_cast<std::size_t>(k)] = x(dof, k) - level;
   const auto up = engine::upcrossing_times_s(v, dt_s, 0.0);
@@ -132,8 +130,8 @@ TEST(CoupledDynamics, StillWaterStaysAtTheStaticEquilibrium) {
     for (double v : t) EXPECT_NEAR(v, t.front(), 1e-5 * v);
     EXPECT_NEAR(t.front(), r.tensions[l].tension_N.front(), 1e-3 * t.front());
   }
-  std::cout << "still water: largest hull drift " << drift << " m over 300 s, "
-            << r.coupled_solver->steps << " steps\n";
+  std::cout << "still water: largest hull drift " << drift << " m over 300 s, " << r.coupled_solver->steps
+            << " steps\n";
 }
 
 // Lines whose inertia and damping the hull cannot feel: the coupled free
@@ -151,8 +149,7 @@ TEST(CoupledDynamics, QuasiStaticLinesReproduceTheScFreeDecayPeriods) {
   } cases[] = {{0, 1.0, 400.0}, {2, 0.5, 100.0}, {5, std::numbers::pi / 180.0, 300.0}};
   for (const auto& c : cases) {
     const double dt = 0.1;
-    const auto sc =
-        engine::free_decay(model.hull, model.loads.lines, c.dof, c.displacement, c.duration_s, dt);
+    const auto sc = engine::free_decay(model.hull, model.loads.lines, c.dof, c.displacement, c.duration_s, dt);
     const double sc_period = mean_period_s(sc.position, c.dof, q0(c.dof), dt);
 
     engine::Vector6d start = q0;
@@ -165,13 +162,13 @@ TEST(CoupledDynamics, QuasiStaticLinesReproduceTheScFreeDecayPeriods) {
     options.hull_position_tolerance_m = 1e-5;
     options.hull_rotation_tolerance_rad = 1e-7;
     const engine::HullLoads loads = loads_without_linearized_lines();
-    const engine::CoupledTimeSeries coupled = engine::simulate_coupled(
-        model.hull, loads, p.project.hull.reference_point_g, start,
-        oc4_lines(p.project, start, std::nullopt, true), options);
+    const engine::CoupledTimeSeries coupled =
+        engine::simulate_coupled(model.hull, loads, p.project.hull.reference_point_g, start,
+                                 oc4_lines(p.project, start, std::nullopt, true), options);
     const double coupled_period = mean_period_s(coupled.position, c.dof, q0(c.dof), dt);
     EXPECT_NEAR(coupled_period, sc_period, 5e-3 * sc_period) << "dof " << c.dof;
-    std::cout << "dof " << c.dof << ": S-C period " << sc_period << " s, coupled "
-              << coupled_period << " s (" << coupled.statistics.steps << " steps)\n";
+    std::cout << "dof " << c.dof << ": S-C period " << sc_period << " s, coupled " << coupled_period << " s ("
+              << coupled.statistics.steps << " steps)\n";
   }
 }
 
@@ -188,8 +185,7 @@ TEST(CoupledDynamics, RealLinesAddMassAndDampingInSurge) {
   const engine::HullLoads loads = loads_without_linearized_lines();
   const auto run = [&](bool quasi_static) {
     return engine::simulate_coupled(model.hull, loads, p.project.hull.reference_point_g, start,
-                                    oc4_lines(p.project, start, std::nullopt, quasi_static),
-                                    options);
+                                    oc4_lines(p.project, start, std::nullopt, quasi_static), options);
   };
   const engine::CoupledTimeSeries light = run(true), real = run(false);
   const double q0 = model.initial_offset(0);
@@ -207,8 +203,8 @@ TEST(CoupledDynamics, RealLinesAddMassAndDampingInSurge) {
   EXPECT_GT(t_real, t_light);
   EXPECT_LT(t_real, 1.001 * t_light);
   EXPECT_LT(r_real, r_light - 0.05);
-  std::cout << "surge from 5 m: S-C peak ratio " << r_sc << "; quasi-static lines " << t_light << " s, peak ratio " << r_light
-            << "; real lines " << t_real << " s, peak ratio " << r_real << "\n";
+  std::cout << "surge from 5 m: S-C peak ratio " << r_sc << "; quasi-static lines " << t_light << " s, peak ratio "
+            << r_light << "; real lines " << t_real << " s, peak ratio " << r_real << "\n";
 }
 
 // OC4 with its chains as FE lines (current drag on them) in a steady
@@ -252,12 +248,11 @@ TEST(CoupledDynamics, MeanOffsetInSteadyCurrentIsTheCoupledStaticEquilibrium) {
       engine::simulate_coupled(model.hull, loads, p.project.hull.reference_point_g, q_still,
                                oc4_lines(p.project, q_still, current, false), options);
   const auto last = static_cast<Eigen::Index>(2.0 * period / dt);
-  const engine::Vector6d mean =
-      run.position.rightCols(last).rowwise().mean();
+  const engine::Vector6d mean = run.position.rightCols(last).rowwise().mean();
   EXPECT_NEAR(mean(0), q_current(0), 0.01);
   EXPECT_NEAR(mean(1), q_current(1), 0.01);
-  std::cout << "current: static equilibrium surge " << q_current(0) << " m (still water "
-            << q_still(0) << " m); coupled mean of the last 220 s " << mean(0) << " m\n";
+  std::cout << "current: static equilibrium surge " << q_current(0) << " m (still water " << q_still(0)
+            << " m); coupled mean of the last 220 s " << mean(0) << " m\n";
 }
 
 // A step-size collapse (here: a work limit of 2 steps per output) stops the
@@ -291,8 +286,7 @@ TEST(CoupledDynamics, ANonFiniteLineIsNamed) {
   const DynamicModel model = still_water_model(p);
   const engine::Vector6d start = model.initial_offset;
   std::vector<engine::CoupledLine> lines = oc4_lines(p.project, start, std::nullopt, false);
-  lines[1].environment.waves = [](const Eigen::Vector3d&, double t, Eigen::Vector3d& u,
-                                  Eigen::Vector3d& a) {
+  lines[1].environment.waves = [](const Eigen::Vector3d&, double t, Eigen::Vector3d& u, Eigen::Vector3d& a) {
     u = a = Eigen::Vector3d::Zero();
     if (t > 5.0) u.x() = std::numeric_limits<double>::quiet_NaN();
   };
@@ -300,8 +294,7 @@ TEST(CoupledDynamics, ANonFiniteLineIsNamed) {
   options.output_times_s = outputs(20.0, 1.0);
   const engine::HullLoads loads = loads_without_linearized_lines();
   try {
-    engine::simulate_coupled(model.hull, loads, p.project.hull.reference_point_g, start, lines,
-                             options);
+    engine::simulate_coupled(model.hull, loads, p.project.hull.reference_point_g, start, lines, options);
     FAIL() << "a NaN in a line must stop the integration";
   } catch (const engine::SolverError& e) {
     const std::string what = e.what();

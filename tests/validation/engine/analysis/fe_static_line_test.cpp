@@ -48,8 +48,7 @@ std::unique_ptr<FeStaticLine> oc4_fe_line(double current_m_per_s, FeStaticsOptio
   environment.seabed_z_m = -200.0;
   environment.seabed_stiffness_N_per_m2 = 1e7;
   environment.current = {{-200.0, {current_m_per_s, 0.0, 0.0}}, {0.0, {current_m_per_s, 0.0, 0.0}}};
-  return std::make_unique<FeStaticLine>(oc4.name, oc4.anchor_g, oc4.fairlead_b, model, environment,
-                                        std::move(options));
+  return std::make_unique<FeStaticLine>(oc4.name, oc4.anchor_g, oc4.fairlead_b, model, environment, std::move(options));
 }
 
 TEST(FeStaticLine, AgreesWithTheCatenaryWithoutCurrent) {
@@ -64,8 +63,7 @@ TEST(FeStaticLine, AgreesWithTheCatenaryWithoutCurrent) {
 
 /// −dF/dx of the line's force at `attachment` by central differences of step
 /// `step_m`, each solve warm-started from the previous one.
-Eigen::Matrix3d finite_difference_stiffness(FeStaticLine& line, const Eigen::Vector3d& attachment,
-                                            double step_m) {
+Eigen::Matrix3d finite_difference_stiffness(FeStaticLine& line, const Eigen::Vector3d& attachment, double step_m) {
   Eigen::Matrix3d fd;
   for (int j = 0; j < 3; ++j) {
     Eigen::Vector3d plus = attachment, minus = attachment;
@@ -96,8 +94,8 @@ TEST(FeStaticLine, StiffnessMatchesFiniteDifferencesOnAFixedMesh) {
   ASSERT_TRUE(fe->last_result()->touchdown.has_value());  // the contact terms are exercised
   const Eigen::Matrix3d fd = finite_difference_stiffness(*fe, attachment, kFdStep_m);
   const double difference = (k - fd).norm() / fd.norm();
-  std::printf("FE line K vs central differences (h = %.0e m, fixed mesh): %.2e (‖K‖ %.3e N/m)\n",
-              kFdStep_m, difference, fd.norm());
+  std::printf("FE line K vs central differences (h = %.0e m, fixed mesh): %.2e (‖K‖ %.3e N/m)\n", kFdStep_m, difference,
+              fd.norm());
   EXPECT_LT(difference, kStiffnessVsFixedMesh) << k << "\n\n" << fd;
 }
 

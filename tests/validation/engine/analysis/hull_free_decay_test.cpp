@@ -196,8 +196,8 @@ TEST(HullFreeDecay, CoupledSurgePitchModesDecayAtTheirDampedEigenvalues) {
     const int n = static_cast<int>(std::ceil(6.0 * period / kOutputStep_s));
     for (int k = 0; k <= n; ++k) options.output_times_s.push_back(k * kOutputStep_s);
     const auto run = simulate_hull(oc4.model, HullLoads{oc4.lines, {}}, q0, v0, options);
-    SCOPED_TRACE(testing::Message() << "dominant DOF " << dominant << ", T_d = " << period
-                                    << " s, share " << best_share);
+    SCOPED_TRACE(testing::Message() << "dominant DOF " << dominant << ", T_d = " << period << " s, share "
+                                    << best_share);
     const auto o = measure(run.position, dominant, 0.0);
     const double delta = 2.0 * kPi * sigma / wd;
     EXPECT_REL_NEAR(o.period_s, period, kPeriodTightRelTol);
@@ -234,17 +234,14 @@ TEST(HullFreeDecay, CoupledModesOfOc4OscillateAtTheirEigenperiods) {
     Vector6d shape = modes.eigenvectors().col(mode);
     // Scale: 1 m (translation-dominated) or 0.02 rad (rotation-dominated) peak.
     Eigen::Index dominant = 0;
-    const Vector6d scaled =
-        shape.cwiseAbs().cwiseProduct((Vector6d() << 1, 1, 1, 50, 50, 50).finished());
+    const Vector6d scaled = shape.cwiseAbs().cwiseProduct((Vector6d() << 1, 1, 1, 50, 50, 50).finished());
     scaled.maxCoeff(&dominant);
     shape *= (dominant < 3 ? 1.0 : 0.02) / shape(dominant);
     HullSimulationOptions options;
     const int n = static_cast<int>(std::ceil(6.0 * period / kOutputStep_s));
     for (int k = 0; k <= n; ++k) options.output_times_s.push_back(k * kOutputStep_s);
-    const auto run =
-        simulate_hull(oc4.model, HullLoads{oc4.lines, {}}, shape, Vector6d::Zero(), options);
-    SCOPED_TRACE(testing::Message()
-                 << "mode " << mode << ", T = " << period << " s, dominant DOF " << dominant);
+    const auto run = simulate_hull(oc4.model, HullLoads{oc4.lines, {}}, shape, Vector6d::Zero(), options);
+    SCOPED_TRACE(testing::Message() << "mode " << mode << ", T = " << period << " s, dominant DOF " << dominant);
     const auto o = measure(run.position, static_cast<int>(dominant), 0.0);
     EXPECT_REL_NEAR(o.period_s, period, kPeriodRelTol);
     EXPECT_REL_NEAR(o.period_s, period, kPeriodTightRelTol);
@@ -261,8 +258,7 @@ TEST(HullFreeDecay, CoupledModesOfOc4OscillateAtTheirEigenperiods) {
   EXPECT_REL_NEAR(periods[5], 17.24, 0.03);
 }
 
-double mechanical_energy(const Matrix6d& M, const Matrix6d& K, const Vector6d& q,
-                         const Vector6d& v) {
+double mechanical_energy(const Matrix6d& M, const Matrix6d& K, const Vector6d& q, const Vector6d& v) {
   return 0.5 * v.dot(M * v) + 0.5 * q.dot(K * q);
 }
 
@@ -279,8 +275,7 @@ TEST(HullFreeDecay, UndampedEnergyIsConservedOver20Periods) {
       *options.integrator.absolute_tolerances * (kEnergyTestRelativeTolerance / 1e-10);
   const double duration = 20.0 * 112.8;  // 20 periods of the slowest mode
   for (double t = 0.0; t <= duration; t += 1.0) options.output_times_s.push_back(t);
-  const auto run =
-      simulate_hull(oc4.model, HullLoads{oc4.lines, {}}, q0, Vector6d::Zero(), options);
+  const auto run = simulate_hull(oc4.model, HullLoads{oc4.lines, {}}, q0, Vector6d::Zero(), options);
   const double E0 = mechanical_energy(M, K, q0, Vector6d::Zero());
   double worst = 0.0;
   for (Eigen::Index k = 0; k < run.times_s.size(); ++k) {
@@ -307,15 +302,13 @@ TEST(HullFreeDecay, HarmonicForceAtResonance) {
 
   // Undamped: x(t) = F0/(2 m w^2) (sin wt − wt cos wt), envelope F0 t/(2 m w).
   {
-    const auto run = simulate_hull(oc4.model, HullLoads{oc4.lines, force}, Vector6d::Zero(),
-                                   Vector6d::Zero(), options);
+    const auto run = simulate_hull(oc4.model, HullLoads{oc4.lines, force}, Vector6d::Zero(), Vector6d::Zero(), options);
     const double t_end = run.times_s(run.times_s.size() - 1);
     const double scale = F0_N * t_end / (2.0 * kHeaveMass_kg * w);
     double worst = 0.0;
     for (Eigen::Index k = 0; k < run.times_s.size(); ++k) {
       const double t = run.times_s(k);
-      const double exact =
-          F0_N / (2.0 * kHeaveMass_kg * w * w) * (std::sin(w * t) - w * t * std::cos(w * t));
+      const double exact = F0_N / (2.0 * kHeaveMass_kg * w * w) * (std::sin(w * t) - w * t * std::cos(w * t));
       worst = std::max(worst, std::abs(run.position(2, k) - exact));
     }
     EXPECT_LT(worst, kResonanceRelTol * scale);
@@ -331,8 +324,7 @@ TEST(HullFreeDecay, HarmonicForceAtResonance) {
   {
     const double B = 2.0 * 0.05 * std::sqrt(kHeaveStiffness_N_m * kHeaveMass_kg);
     oc4.model.linear_damping(2, 2) = B;
-    const auto run = simulate_hull(oc4.model, HullLoads{oc4.lines, force}, Vector6d::Zero(),
-                                   Vector6d::Zero(), options);
+    const auto run = simulate_hull(oc4.model, HullLoads{oc4.lines, force}, Vector6d::Zero(), Vector6d::Zero(), options);
     const Eigen::Index tail = static_cast<Eigen::Index>(2.0 * kHeavePeriod_s / kOutputStep_s);
     const double amplitude = run.position.row(2).tail(tail).cwiseAbs().maxCoeff();
     // Sampled maximum: error <= (w dt/2)^2/2 = 4e-5 of the amplitude.
@@ -347,14 +339,13 @@ TEST(HullFreeDecay, SemiCoupledEquilibriumHoldsFor3Hours) {
   LinearizedLines lines = oc4.lines;
   lines.equilibrium_offset << 12.0, -4.0, -0.3, 0.004, 0.02, 0.03;
   // F0 balances the hull at q0: F_hs0 − C q0 + F0 = 0.
-  lines.force_at_equilibrium = oc4.model.hydrostatic_stiffness * lines.equilibrium_offset -
-                               oc4.model.hydrostatic_force_at_rest;
+  lines.force_at_equilibrium =
+      oc4.model.hydrostatic_stiffness * lines.equilibrium_offset - oc4.model.hydrostatic_force_at_rest;
   lines.damping = Matrix6d(Vector6d::Constant(1e5).asDiagonal());  // enhanced S-C
   lines.added_mass = Matrix6d(Vector6d::Constant(1e5).asDiagonal());
   HullSimulationOptions options;
   for (double t = 0.0; t <= 10800.0; t += 10.0) options.output_times_s.push_back(t);
-  const auto run = simulate_hull(oc4.model, HullLoads{lines, {}}, lines.equilibrium_offset,
-                                 Vector6d::Zero(), options);
+  const auto run = simulate_hull(oc4.model, HullLoads{lines, {}}, lines.equilibrium_offset, Vector6d::Zero(), options);
   const double drift = (run.position.colwise() - lines.equilibrium_offset).cwiseAbs().maxCoeff();
   EXPECT_LT(drift, kEquilibriumDrift_m);
 }
@@ -409,8 +400,7 @@ TEST(HullFreeDecay, RadiationMemoryActsAsItsEquivalentLinearDamping) {
   // frequency dependence of A(w) over the decay is second order.
   constexpr double kMemoryDecrementRelTol = 2e-2;
   EXPECT_REL_NEAR(o.period_s, 2.0 * kPi / wd, kPeriodRelTol);
-  EXPECT_REL_NEAR(o.log_decrement, 2.0 * kPi * zeta / std::sqrt(1.0 - zeta * zeta),
-                  kMemoryDecrementRelTol);
+  EXPECT_REL_NEAR(o.log_decrement, 2.0 * kPi * zeta / std::sqrt(1.0 - zeta * zeta), kMemoryDecrementRelTol);
   RecordProperty("memory_period_rel_error", sci(o.period_s * wd / (2 * kPi) - 1.0));
   RecordProperty("memory_decrement_rel_error",
                  sci(o.log_decrement / (2.0 * kPi * zeta / std::sqrt(1.0 - zeta * zeta)) - 1.0));

@@ -28,8 +28,9 @@ TEST(LineArrayStiffness, AnalyticEqualsFiniteDifferencesAtRest) {
   const HullPose pose;
   const auto analytic = evaluate_line_array(lines, pose).stiffness;
   const auto fd = finite_difference_stiffness(lines, pose);
-  EXPECT_LT(relative_difference(analytic, fd), kAnalyticVsFiniteDifference)
-      << "analytic\n" << analytic << "\nFD\n" << fd;
+  EXPECT_LT(relative_difference(analytic, fd), kAnalyticVsFiniteDifference) << "analytic\n"
+                                                                            << analytic << "\nFD\n"
+                                                                            << fd;
 }
 
 TEST(LineArrayStiffness, AnalyticEqualsFiniteDifferencesAtAnOffsetAttitude) {
@@ -39,8 +40,9 @@ TEST(LineArrayStiffness, AnalyticEqualsFiniteDifferencesAtAnOffsetAttitude) {
   const HullPose pose = pose_from_offset(Eigen::Vector3d::Zero(), offset);
   const auto analytic = evaluate_line_array(lines, pose).stiffness;
   const auto fd = finite_difference_stiffness(lines, pose);
-  EXPECT_LT(relative_difference(analytic, fd), kAnalyticVsFiniteDifference)
-      << "analytic\n" << analytic << "\nFD\n" << fd;
+  EXPECT_LT(relative_difference(analytic, fd), kAnalyticVsFiniteDifference) << "analytic\n"
+                                                                            << analytic << "\nFD\n"
+                                                                            << fd;
 }
 
 TEST(LineArrayStiffness, SymmetricSpreadAtRest) {

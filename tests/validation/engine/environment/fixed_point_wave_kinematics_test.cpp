@@ -20,23 +20,22 @@
 namespace spiral::engine {
 namespace {
 
-void direct_sum(const WaveRealization& sea, const Eigen::Vector3d& x, double t,
-                Eigen::Vector3d& u, Eigen::Vector3d& a) {
+void direct_sum(const WaveRealization& sea, const Eigen::Vector3d& x, double t, Eigen::Vector3d& u,
+                Eigen::Vector3d& a) {
   u.setZero();
   a.setZero();
   for (const WaveComponent& c : sea.components) {
-    const double theta =
-        c.omega_rad_per_s * t - c.kx_rad_per_m * x.x() - c.ky_rad_per_m * x.y() + c.phase_rad;
+    const double theta = c.omega_rad_per_s * t - c.kx_rad_per_m * x.x() - c.ky_rad_per_m * x.y() + c.phase_rad;
     const double k = c.wavenumber_rad_per_m, h = *sea.water_depth_m;
     // cosh k(z+h) / sinh kh written with e^{kz} (no overflow at kh of hundreds).
     const double e = std::exp(k * x.z()), g = std::exp(-2.0 * k * (x.z() + h));
     const double fh = e * (1.0 + g) / (1.0 - std::exp(-2.0 * k * h));
     const double fv = e * (1.0 - g) / (1.0 - std::exp(-2.0 * k * h));
     const double aw = c.amplitude_m * c.omega_rad_per_s, aw2 = aw * c.omega_rad_per_s;
-    u += Eigen::Vector3d(aw * fh * std::cos(theta) * c.cos_heading,
-                         aw * fh * std::cos(theta) * c.sin_heading, -aw * fv * std::sin(theta));
-    a += Eigen::Vector3d(-aw2 * fh * std::sin(theta) * c.cos_heading,
-                         -aw2 * fh * std::sin(theta) * c.sin_heading, -aw2 * fv * std::cos(theta));
+    u += Eigen::Vector3d(aw * fh * std::cos(theta) * c.cos_heading, aw * fh * std::cos(theta) * c.sin_heading,
+                         -aw * fv * std::sin(theta));
+    a += Eigen::Vector3d(-aw2 * fh * std::sin(theta) * c.cos_heading, -aw2 * fh * std::sin(theta) * c.sin_heading,
+                         -aw2 * fv * std::cos(theta));
   }
 }
 

@@ -61,9 +61,7 @@ constexpr double kKinematicsAbs_m = 1e-12;
 // differs from the amplitude by ~1e-13; 1e-4 of the amplitude bounds both.
 constexpr double kPhaseLeadRelTol = 1e-4;
 
-WaveSpectrum test_spectrum() {
-  return make_jonswap_spectrum({6.0, 12.0, 3.3});
-}
+WaveSpectrum test_spectrum() { return make_jonswap_spectrum({6.0, 12.0, 3.3}); }
 
 WaveRealizationInput long_crested(std::uint64_t seed) {
   WaveRealizationInput in;
@@ -81,9 +79,7 @@ Eigen::VectorXd record_times() {
   return Eigen::VectorXd::LinSpaced(n, 0.0, (n - 1) * kDt_s);
 }
 
-double variance(const Eigen::VectorXd& x) {
-  return (x.array() - x.mean()).square().mean();
-}
+double variance(const Eigen::VectorXd& x) { return (x.array() - x.mean()).square().mean(); }
 
 // Gaussian-process relative std of an m0 estimate over T: sqrt(2 pi int S^2 dw / T) / m0.
 double m0_relative_std(const WaveSpectrum& s, double T) {
@@ -132,8 +128,7 @@ TEST(WaveRealization, WelchPeriodogramPeaksAtTp) {
   Eigen::VectorXd window(kSegment);
   for (int i = 0; i < kSegment; ++i) window(i) = 0.5 - 0.5 * std::cos(2.0 * kPi * i / kSegment);
   for (int seed = 1; seed <= 4; ++seed) {
-    const Eigen::VectorXd eta =
-        surface_elevation_many(make_wave_realization(long_crested(seed)), 0.0, 0.0, t);
+    const Eigen::VectorXd eta = surface_elevation_many(make_wave_realization(long_crested(seed)), 0.0, 0.0, t);
     for (Eigen::Index start = 0; start + kSegment <= eta.size(); start += kSegment / 2) {
       std::vector<double> segment(kSegment);
       for (int i = 0; i < kSegment; ++i) segment[i] = window(i) * eta(start + i);
@@ -185,8 +180,7 @@ double correlation_at_lag(const WaveRealization& sea, double lag_s) {
 }
 
 TEST(WaveRealization, DoesNotRepeatAtTheMeanFrequencySpacingLag) {
-  for (const auto selection :
-       {FrequencySelection::equal_energy_random, FrequencySelection::equal_spacing_random}) {
+  for (const auto selection : {FrequencySelection::equal_energy_random, FrequencySelection::equal_spacing_random}) {
     auto in = long_crested(7);
     in.frequency_selection = selection;
     const auto sea = make_wave_realization(in);
@@ -208,14 +202,13 @@ TEST(Dispersion, DeepAndShallowLimits) {
   // Deep water: k = w^2 / g exactly, and a deep finite depth agrees.
   const double w = 1.2;
   EXPECT_EQ(solve_dispersion({w, std::nullopt, kG}).wavenumber_rad_per_m, w * w / kG);
-  EXPECT_REL_NEAR(solve_dispersion({w, 1000.0, kG}).wavenumber_rad_per_m, w * w / kG,
-                  kRoundOffRelTol);
+  EXPECT_REL_NEAR(solve_dispersion({w, 1000.0, kG}).wavenumber_rad_per_m, w * w / kG, kRoundOffRelTol);
   // Shallow water: k -> w / sqrt(g h) (1 + (kh)^2 / 6).
   const double ws = 0.01;
   const double h = 10.0;
   const double k0 = ws / std::sqrt(kG * h);
-  EXPECT_REL_NEAR(solve_dispersion({ws, h, kG}).wavenumber_rad_per_m,
-                  k0 * (1.0 + (k0 * h) * (k0 * h) / 6.0), kShallowSeriesRelTol);
+  EXPECT_REL_NEAR(solve_dispersion({ws, h, kG}).wavenumber_rad_per_m, k0 * (1.0 + (k0 * h) * (k0 * h) / 6.0),
+                  kShallowSeriesRelTol);
   // Intermediate depths: residual at round-off.
   for (const double wi : {0.05, 0.3, 0.7, 1.5, 4.0}) {
     for (const double hi : {5.0, 50.0, 200.0, 2000.0}) {
@@ -250,12 +243,10 @@ TEST(WheelerStretching, SurfaceValuesEqualAiryAtMeanLevelAndZeroAbove) {
     const double uh = a * w / std::tanh(k * h) * std::cos(theta);
     const double duh = -a * w * w / std::tanh(k * h) * std::sin(theta);
     const Eigen::Vector3d u(uh * std::cos(beta), uh * std::sin(beta), -a * w * std::sin(theta));
-    const Eigen::Vector3d du(duh * std::cos(beta), duh * std::sin(beta),
-                             -a * w * w * std::cos(theta));
+    const Eigen::Vector3d du(duh * std::cos(beta), duh * std::sin(beta), -a * w * w * std::cos(theta));
     EXPECT_EIGEN_REL_NEAR(at.velocity_m_per_s, u, kKinematicsRelTol);
     EXPECT_EIGEN_REL_NEAR(at.acceleration_m_per_s2, du, kKinematicsRelTol);
-    EXPECT_REL_NEAR_SCALE(at.dynamic_pressure_Pa, kRho * kG * eta, kKinematicsRelTol,
-                          kRho * kG * a);
+    EXPECT_REL_NEAR_SCALE(at.dynamic_pressure_Pa, kRho * kG * eta, kKinematicsRelTol, kRho * kG * a);
     // Just above the surface: nothing.
     const auto dry = wave_kinematics(sea, {xy.x(), xy.y(), eta + 1e-6}, t);
     EXPECT_FALSE(dry.wet);
@@ -266,25 +257,22 @@ TEST(WheelerStretching, SurfaceValuesEqualAiryAtMeanLevelAndZeroAbove) {
     const auto bed = wave_kinematics(sea, {xy.x(), xy.y(), -h}, t);
     EXPECT_NEAR(bed.velocity_m_per_s.z(), 0.0, kKinematicsAbs_m);
     EXPECT_REL_NEAR_SCALE(std::hypot(bed.velocity_m_per_s.x(), bed.velocity_m_per_s.y()),
-                          std::abs(a * w / std::sinh(k * h) * std::cos(theta)), kKinematicsRelTol,
-                          a * w);
+                          std::abs(a * w / std::sinh(k * h) * std::cos(theta)), kKinematicsRelTol, a * w);
     // Mid-depth: the profile at the stretched z' = (z - eta) h / (h + eta).
     const double z = -20.0;
     const double zs = (z - eta) * h / (h + eta);
     const auto mid = wave_kinematics(sea, {xy.x(), xy.y(), z}, t);
     EXPECT_NEAR(mid.stretched_z_m, zs, kKinematicsAbs_m);
-    EXPECT_REL_NEAR_SCALE(
-        mid.dynamic_pressure_Pa,
-        kRho * kG * a * std::cosh(k * (zs + h)) / std::cosh(k * h) * std::cos(theta),
-        kKinematicsRelTol, kRho * kG * a);
+    EXPECT_REL_NEAR_SCALE(mid.dynamic_pressure_Pa,
+                          kRho * kG * a * std::cosh(k * (zs + h)) / std::cosh(k * h) * std::cos(theta),
+                          kKinematicsRelTol, kRho * kG * a);
   }
   EXPECT_THROW(wave_kinematics(sea, {0.0, 0.0, -h - 1.0}, 0.0), std::invalid_argument);
   // Deep water: z' = z - eta and the e^{kz'} profile.
   const auto deep = make_regular_wave({a, w, 0.0, 0.0, std::nullopt, {kRho, kG}});
   const auto d = wave_kinematics(deep, {0.0, 0.0, -10.0}, 0.0);  // crest: eta = a
   EXPECT_NEAR(d.stretched_z_m, -10.0 - a, kKinematicsAbs_m);
-  EXPECT_REL_NEAR(d.velocity_m_per_s.x(), a * w * std::exp(w * w / kG * (-10.0 - a)),
-                  kKinematicsRelTol);
+  EXPECT_REL_NEAR(d.velocity_m_per_s.x(), a * w * std::exp(w * w / kG * (-10.0 - a)), kKinematicsRelTol);
 }
 
 TEST(FirstOrderExcitation, RegularWaveIsModulusTimesCosineWithPhaseLead) {
@@ -302,17 +290,15 @@ TEST(FirstOrderExcitation, RegularWaveIsModulusTimesCosineWithPhaseLead) {
   for (const double t : {0.0, 2.0, 5.5, 13.0}) {
     const Vector6d f = evaluate_first_order(series, t);
     for (int i = 0; i < 6; ++i) {
-      EXPECT_REL_NEAR_SCALE(f(i), std::abs(X(i)) * a * std::cos(w * t + phi + std::arg(X(i))),
-                            kRoundOffRelTol, std::abs(X(0)) * a + std::abs(X(2)) * a);
+      EXPECT_REL_NEAR_SCALE(f(i), std::abs(X(i)) * a * std::cos(w * t + phi + std::arg(X(i))), kRoundOffRelTol,
+                            std::abs(X(0)) * a + std::abs(X(2)) * a);
     }
   }
   // Surge leads the crest at the origin by ~90 deg: at the crest it is ~0 and
   // a quarter period earlier it is at its maximum.
   const double t_crest = (2.0 * kPi - phi) / w;
-  EXPECT_LT(std::abs(evaluate_first_order(series, t_crest)(0)),
-            kPhaseLeadRelTol * std::abs(X(0)) * a);
-  EXPECT_REL_NEAR(evaluate_first_order(series, t_crest - 0.5 * kPi / w)(0), std::abs(X(0)) * a,
-                  kPhaseLeadRelTol);
+  EXPECT_LT(std::abs(evaluate_first_order(series, t_crest)(0)), kPhaseLeadRelTol * std::abs(X(0)) * a);
+  EXPECT_REL_NEAR(evaluate_first_order(series, t_crest - 0.5 * kPi / w)(0), std::abs(X(0)) * a, kPhaseLeadRelTol);
   // Hull offset (x0, 0): the wave reaches it with phase -k x0. Hull yawed by
   // 30 deg in waves towards 30 deg: body-relative heading 0, force rotated.
   const double k = sea.components[0].wavenumber_rad_per_m;

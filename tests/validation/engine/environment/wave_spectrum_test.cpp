@@ -55,8 +55,8 @@ double trapezoid(const std::function<double(double)>& f, double a, double b, int
 // m_n integrated independently to 10 wp (the brief's upper limit).
 double moment_to_10wp(const WaveSpectrum& s, int n) {
   const double wp = s.peak_rad_per_s();
-  return trapezoid([&](double w) { return std::pow(w, n) * spectral_density_m2s_per_rad(s, w); },
-                   0.0, 10.0 * wp, 200000);
+  return trapezoid([&](double w) { return std::pow(w, n) * spectral_density_m2s_per_rad(s, w); }, 0.0, 10.0 * wp,
+                   200000);
 }
 
 TEST(WaveSpectrum, PiersonMoskowitzVarianceIsHsSquaredOver16) {
@@ -113,8 +113,7 @@ TEST(WaveSpectrum, DefaultGammaFollowsDnvRpC205) {
   // 1-yr GoM, Hs 4 m, Tp 10 s: ratio 5.0 exactly -> 1 (reference-platforms.md §2.6).
   EXPECT_EQ(default_jonswap_gamma(4.0, 10.0), 1.0);
   // No gamma given: the default.
-  EXPECT_EQ(make_jonswap_spectrum({12.0, 14.0, std::nullopt}).gamma,
-            default_jonswap_gamma(12.0, 14.0));
+  EXPECT_EQ(make_jonswap_spectrum({12.0, 14.0, std::nullopt}).gamma, default_jonswap_gamma(12.0, 14.0));
 }
 
 TEST(WaveSpectrum, PiersonMoskowitzPeriodRatios) {
@@ -162,13 +161,11 @@ TEST(WaveSpectrum, InvalidInputsNameTheQuantityAndUnit) {
 TEST(DirectionalSpreading, DensityIntegratesToOne) {
   for (const auto form : {SpreadingForm::cos_2s, SpreadingForm::cos_power}) {
     for (const double e : {0.0, 1.0, 2.0, 7.5, 30.0, 400.0}) {
-      SCOPED_TRACE(std::string(form == SpreadingForm::cos_2s ? "cos-2s" : "cos^n") + ", exponent " +
-                   std::to_string(e));
+      SCOPED_TRACE(std::string(form == SpreadingForm::cos_2s ? "cos-2s" : "cos^n") + ", exponent " + std::to_string(e));
       const DirectionalSpreading d{form, e};
       // Over the support (the cos^n density is a box for n = 0: no jump inside the range).
       const double half = form == SpreadingForm::cos_2s ? kPi : 0.5 * kPi;
-      const double integral =
-          trapezoid([&](double t) { return spreading_density_per_rad(d, t); }, -half, half, 20000);
+      const double integral = trapezoid([&](double t) { return spreading_density_per_rad(d, t); }, -half, half, 20000);
       EXPECT_REL_NEAR(integral, 1.0, kSpreadingRelTol);
     }
   }
@@ -185,16 +182,13 @@ TEST(DirectionalSpreading, DiscreteWeightsSumToOneAndAreSymmetric) {
       EXPECT_REL_NEAR(sum, 1.0, kSpreadingRelTol);
       // Symmetric about the mean direction 0.3 rad.
       EXPECT_REL_NEAR(dirs.front().weight, dirs.back().weight, kSpreadingRelTol);
-      EXPECT_REL_NEAR_SCALE(dirs.front().heading_rad - 0.3, 0.3 - dirs.back().heading_rad,
-                            kSpreadingRelTol, kPi);
+      EXPECT_REL_NEAR_SCALE(dirs.front().heading_rad - 0.3, 0.3 - dirs.back().heading_rad, kSpreadingRelTol, kPi);
     }
   }
   // Odd N puts the central direction on the mean.
-  EXPECT_REL_NEAR(discretise_spreading({SpreadingForm::cos_2s, 10.0}, 1.0, 15)[7].heading_rad, 1.0,
-                  kSpreadingRelTol);
+  EXPECT_REL_NEAR(discretise_spreading({SpreadingForm::cos_2s, 10.0}, 1.0, 15)[7].heading_rad, 1.0, kSpreadingRelTol);
   EXPECT_THROW(discretise_spreading({SpreadingForm::cos_2s, 10.0}, 0.0, 0), std::invalid_argument);
-  EXPECT_THROW(spreading_density_per_rad({SpreadingForm::cos_2s, -1.0}, 0.0),
-               std::invalid_argument);
+  EXPECT_THROW(spreading_density_per_rad({SpreadingForm::cos_2s, -1.0}, 0.0), std::invalid_argument);
 }
 
 }  // namespace

@@ -41,9 +41,7 @@ constexpr double kBracedC33RelTol = 5e-3;
 // Non-dimensional values written with 7 significant figures in the test .hst.
 constexpr double kHstDigitsRelTol = 1e-6;
 
-double rel(double value, double reference) {
-  return std::abs(value - reference) / std::abs(reference);
-}
+double rel(double value, double reference) { return std::abs(value - reference) / std::abs(reference); }
 
 // ---------------------------------------------------------------------------
 // Box barge L x B x T, reference point at the waterplane centre on the SWL.
@@ -78,11 +76,8 @@ TEST(Hydrostatics, BoxBargeMatchesMetacentricHeightFormulas) {
   EXPECT_LE(rel(r.metacentric_height_transverse_m, GMt), kExactRelTol);
   EXPECT_LE(rel(r.metacentric_height_longitudinal_m, GMl), kExactRelTol);
   // Buoyancy part = rho g (I + V z_b); gravity part = -m g z_g.
-  EXPECT_LE(
-      rel(r.buoyancy_6x6(3, 3), rg * (barge.L * std::pow(barge.B, 3) / 12.0 - V * barge.T / 2.0)),
-      kExactRelTol);
-  EXPECT_LE(rel(r.gravity_6x6(3, 3), -barge.mass().mass_kg * kWater.gravity_m_per_s2 * barge.zg),
-            kExactRelTol);
+  EXPECT_LE(rel(r.buoyancy_6x6(3, 3), rg * (barge.L * std::pow(barge.B, 3) / 12.0 - V * barge.T / 2.0)), kExactRelTol);
+  EXPECT_LE(rel(r.gravity_6x6(3, 3), -barge.mass().mass_kg * kWater.gravity_m_per_s2 * barge.zg), kExactRelTol);
   // Symmetric hull, reference point on the centroid: no couplings, no yaw/surge/sway.
   Matrix6d diag_only = r.total_6x6;
   for (int k = 2; k < 5; ++k) diag_only(k, k) = 0.0;
@@ -193,15 +188,13 @@ TEST(Hydrostatics, Oc4RollStiffnessWithGravityFromReportBuoyancyMatrix) {
 
   // Platform only (report mass 1.3473e7 kg, CM 13.46 m below SWL): sheet 1.4008e9.
   const BodyMass platform{1.3473e7, {0.0, 0.0, -13.46}};
-  const auto rp =
-      hydrostatic_restoring(hst.restoring_6x6, 13917.0, {0.0, 0.0, 0.0}, platform, kWater);
+  const auto rp = hydrostatic_restoring(hst.restoring_6x6, 13917.0, {0.0, 0.0, 0.0}, platform, kWater);
   EXPECT_LE(rel(rp.total_6x6(3, 3), 1.4008e9), kSheetC44RelTol);
 
   // Buoyancy rho g V = 1.398911e8 N (HD-sum, S) and the excess left for the mooring:
   // (1.42649e7 - 1.40751e7) g = 1.861e6 N (sheet §2.4, D).
   constexpr double kHdSumBuoyancyRelTol = 1e-6;  // HD-sum prints 7 significant figures
-  EXPECT_LE(rel(r.rest_force(2) + full.mass_kg * kWater.gravity_m_per_s2, 1.398911e8),
-            kHdSumBuoyancyRelTol);
+  EXPECT_LE(rel(r.rest_force(2) + full.mass_kg * kWater.gravity_m_per_s2, 1.398911e8), kHdSumBuoyancyRelTol);
   // Printed as 1.861e6 and computed from masses rounded to 6 figures
   // (1.42649e7 - 1.40751e7 kg): a difference of two rounded numbers, good to ~1 kN.
   constexpr double kSheetExcessTol_N = 0.001e6;
@@ -256,8 +249,7 @@ TEST(WamitHst, DimensionalisesEachEntryWithItsExponent) {
 
 TEST(WamitHst, SharedHamsBuoyFileIsAllZeros) {
   // shared/data/hydro/cylinder-buoy/Buoy.hst: HAMS wrote zeros (no hydrostatic input).
-  const auto hst = read_wamit_hst(
-      std::string(SPIRAL_TEST_DATA_DIR) + "/hydro/cylinder-buoy/Buoy.hst", {1.0, kWater});
+  const auto hst = read_wamit_hst(std::string(SPIRAL_TEST_DATA_DIR) + "/hydro/cylinder-buoy/Buoy.hst", {1.0, kWater});
   EXPECT_EQ(hst.entries_read, 36);
   EXPECT_EQ(hst.restoring_6x6.norm(), 0.0);
 }

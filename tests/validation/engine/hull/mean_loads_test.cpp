@@ -69,15 +69,14 @@ TEST(CoefficientLoads, InterpolatesLinearlyInHeadingIncludingTheWrap) {
   // Flow towards 45 deg: halfway between the 0 and 90 deg rows.
   const double V = 1.5;
   const double q = 0.5 * 1025.0 * V * V;
-  const auto r = coefficient_load(
-      four_heading_table(), {1025.0, {V * std::cos(45 * kDeg), V * std::sin(45 * kDeg), 0.0}, 0.0});
+  const auto r =
+      coefficient_load(four_heading_table(), {1025.0, {V * std::cos(45 * kDeg), V * std::sin(45 * kDeg), 0.0}, 0.0});
   EXPECT_REL_NEAR(r.load_b(0), q * 60.0, kRoundOffRelTol);
   EXPECT_REL_NEAR(r.load_b(1), q * 150.0, kRoundOffRelTol);
   EXPECT_REL_NEAR(r.load_b(5), q * 2500.0, kRoundOffRelTol);
   // Towards 315 deg: halfway between 270 and 360 (= 0) deg rows, across the wrap.
   const auto w =
-      coefficient_load(four_heading_table(),
-                       {1025.0, {V * std::cos(-45 * kDeg), V * std::sin(-45 * kDeg), 0.0}, 0.0});
+      coefficient_load(four_heading_table(), {1025.0, {V * std::cos(-45 * kDeg), V * std::sin(-45 * kDeg), 0.0}, 0.0});
   EXPECT_REL_NEAR(w.relative_heading_rad, 315.0 * kDeg, kRoundOffRelTol);
   EXPECT_REL_NEAR(w.load_b(0), q * 60.0, kRoundOffRelTol);
   EXPECT_REL_NEAR(w.load_b(1), q * -150.0, kRoundOffRelTol);
@@ -104,8 +103,8 @@ TEST(CoefficientLoads, HullYawRotatesTheRelativeHeadingAndTheLoad) {
 TEST(CoefficientLoads, CurrentUsesTheReferenceDepthAndWindTheGivenSpeed) {
   const CurrentProfile current{{-200.0, 0.0}, {0.5, 1.5}, 0.0};
   // Surface current 1.5 m/s by default; 1.0 m/s at z = -100 m.
-  EXPECT_REL_NEAR(current_load(four_heading_table(), current, 1025.0, 0.0).load_g(0),
-                  0.5 * 1025.0 * 100.0 * 1.5 * 1.5, kRoundOffRelTol);
+  EXPECT_REL_NEAR(current_load(four_heading_table(), current, 1025.0, 0.0).load_g(0), 0.5 * 1025.0 * 100.0 * 1.5 * 1.5,
+                  kRoundOffRelTol);
   EXPECT_REL_NEAR(current_load(four_heading_table(), current, 1025.0, 0.0, -100.0).load_g(0),
                   0.5 * 1025.0 * 100.0 * 1.0 * 1.0, kRoundOffRelTol);
   // Wind 40 m/s towards 90 deg, hull yaw 0: beta = 90 deg, Fy = 1/2 1.225 300 40^2.
@@ -238,22 +237,17 @@ TEST(WamitQtf12d, MeanDriftDiagonalOfTheOc4Semi) {
   };
   // Line 4411: "0.62832E+01 0.62832E+01 0.0 0.0 1 3.12197E+00 ... RE 3.12197E+00":
   // surge force, k = 1: D = rho g ULEN RE = 1025 x 9.80665 x 1 x 3.12197 N/m^2.
-  EXPECT_REL_NEAR(t.coefficient[0](row_of(6.2832), 0), 1025.0 * 9.80665 * 1.0 * 3.12197,
-                  kRoundOffRelTol);
+  EXPECT_REL_NEAR(t.coefficient[0](row_of(6.2832), 0), 1025.0 * 9.80665 * 1.0 * 3.12197, kRoundOffRelTol);
   // Line 4413: same period, I = 5 (pitch moment), RE 1.30159E+01, k = 2:
   // D = rho g ULEN^2 RE = 1025 x 9.80665 x 1^2 x 13.0159 N m/m^2.
-  EXPECT_REL_NEAR(t.coefficient[4](row_of(6.2832), 0), 1025.0 * 9.80665 * 1.0 * 13.0159,
-                  kRoundOffRelTol);
+  EXPECT_REL_NEAR(t.coefficient[4](row_of(6.2832), 0), 1025.0 * 9.80665 * 1.0 * 13.0159, kRoundOffRelTol);
   // Line 1621: PER 12.566 s, I = 1, RE -6.68055E-02 (a negative surge drift in
   // the long-wave range, as printed).
-  EXPECT_REL_NEAR(t.coefficient[0](row_of(12.566), 0), 1025.0 * 9.80665 * -6.68055e-2,
-                  kRoundOffRelTol);
+  EXPECT_REL_NEAR(t.coefficient[0](row_of(12.566), 0), 1025.0 * 9.80665 * -6.68055e-2, kRoundOffRelTol);
   // ULEN scaling: forces ~ ULEN, moments ~ ULEN^2.
   const MeanDriftTable t2 = read_wamit_12d_mean_drift(kSemi12d, rho, g, 2.0);
-  EXPECT_REL_NEAR(t2.coefficient[0](row_of(6.2832), 0), 2.0 * t.coefficient[0](row_of(6.2832), 0),
-                  kRoundOffRelTol);
-  EXPECT_REL_NEAR(t2.coefficient[4](row_of(6.2832), 0), 4.0 * t.coefficient[4](row_of(6.2832), 0),
-                  kRoundOffRelTol);
+  EXPECT_REL_NEAR(t2.coefficient[0](row_of(6.2832), 0), 2.0 * t.coefficient[0](row_of(6.2832), 0), kRoundOffRelTol);
+  EXPECT_REL_NEAR(t2.coefficient[4](row_of(6.2832), 0), 4.0 * t.coefficient[4](row_of(6.2832), 0), kRoundOffRelTol);
 }
 
 std::string format_error_of(const std::string& text) {
@@ -279,22 +273,17 @@ TEST(WamitQtf12d, MalformedFilesNameFileAndLine) {
     EXPECT_REL_NEAR(t.coefficient[0](1, 0), 1000.0 * 10.0 * 3.0, kRoundOffRelTol);  // T = 8 s
     EXPECT_FALSE(t.present[1]);
   }
-  EXPECT_NE(format_error_of(good + "  8.0 8.0 0.0 0.0 1 3.0 0.0 abc 0.0\n").find("bad.12d:4:"),
-            std::string::npos);
-  EXPECT_NE(format_error_of(good + "  8.0 8.0 0.0\n").find("bad.12d:4: expected 9 fields"),
-            std::string::npos);
-  EXPECT_NE(format_error_of(good + "  8.0 8.0 0.0 0.0 7 3.0 0.0 3.0 0.0\n").find("bad.12d:4:"),
-            std::string::npos);
+  EXPECT_NE(format_error_of(good + "  8.0 8.0 0.0 0.0 1 3.0 0.0 abc 0.0\n").find("bad.12d:4:"), std::string::npos);
+  EXPECT_NE(format_error_of(good + "  8.0 8.0 0.0\n").find("bad.12d:4: expected 9 fields"), std::string::npos);
+  EXPECT_NE(format_error_of(good + "  8.0 8.0 0.0 0.0 7 3.0 0.0 3.0 0.0\n").find("bad.12d:4:"), std::string::npos);
   // A DOF given at one period only: incomplete diagonal (whole-file problem, line 0).
   EXPECT_NE(format_error_of(good + "  8.0 8.0 0.0 0.0 2 3.0 0.0 3.0 0.0\n")
                 .find("bad.12d: incomplete mean drift diagonal: I = 2"),
             std::string::npos);
   // Conflicting repeat of a diagonal entry.
-  EXPECT_NE(format_error_of(good + "  8.0 8.0 0.0 0.0 1 3.5 0.0 3.5 0.0\n").find("bad.12d:4:"),
-            std::string::npos);
+  EXPECT_NE(format_error_of(good + "  8.0 8.0 0.0 0.0 1 3.5 0.0 3.5 0.0\n").find("bad.12d:4:"), std::string::npos);
   EXPECT_NE(format_error_of("").find("no diagonal"), std::string::npos);
-  EXPECT_THROW(read_wamit_12d_mean_drift("/nonexistent/x.12d", 1025.0, 9.80665, 1.0),
-               FileFormatError);
+  EXPECT_THROW(read_wamit_12d_mean_drift("/nonexistent/x.12d", 1025.0, 9.80665, 1.0), FileFormatError);
 }
 
 }  // namespace

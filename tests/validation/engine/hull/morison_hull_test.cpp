@@ -65,11 +65,9 @@ TEST(MorisonHull, VerticalCylinderAddedMassIsStripTheory) {
   EXPECT_REL_NEAR(A(0, 4), -kCa * kRho * area * T * T / 2.0, kExactSumRelTol);
   EXPECT_REL_NEAR(A(1, 3), kCa * kRho * area * T * T / 2.0, kExactSumRelTol);
   // int z^2 dz by the midpoint rule on strips of ds: T^3/3 − T ds^2/12 exactly.
-  EXPECT_REL_NEAR(A(4, 4), kCa * kRho * area * (T * T * T / 3.0 - T * kStrip_m * kStrip_m / 12.0),
-                  kExactSumRelTol);
+  EXPECT_REL_NEAR(A(4, 4), kCa * kRho * area * (T * T * T / 3.0 - T * kStrip_m * kStrip_m / 12.0), kExactSumRelTol);
   // Heave: only the bottom face (the top one is dry), one wetted side of a disc.
-  EXPECT_REL_NEAR(A(2, 2), kCaEnd * kRho * (2.0 / 3.0) * kPi * std::pow(kRadius_m, 3),
-                  kExactSumRelTol);
+  EXPECT_REL_NEAR(A(2, 2), kCaEnd * kRho * (2.0 / 3.0) * kPi * std::pow(kRadius_m, 3), kExactSumRelTol);
   EXPECT_NEAR(A(5, 5), 0.0, 1e-6);  // an axisymmetric column has no yaw added mass
 }
 
@@ -82,22 +80,22 @@ TEST(MorisonHull, VerticalCylinderSurgeAndHeaveExcitationAreTheHandFormulas) {
     const double k = solve_dispersion({w, h, kG}).wavenumber_rad_per_m;
     const Vector6cd X = morison_excitation(hull, water, h, w, 0.0);
     // Surge: i rho (1 + Ca) A w^2 int_{-T}^0 cosh k(z+h)/sinh kh dz.
-    const double surge = kRho * (1.0 + kCa) * area * w * w *
-                         (std::sinh(k * h) - std::sinh(k * (h - T))) / (k * std::sinh(k * h));
+    const double surge =
+        kRho * (1.0 + kCa) * area * w * w * (std::sinh(k * h) - std::sinh(k * (h - T))) / (k * std::sinh(k * h));
     // Midpoint rule on ds: relative error (k ds)^2/24 <= 1.1e-3 at w = 1 (k = 0.102).
     const double midpoint_tol = std::pow(k * kStrip_m, 2) / 24.0 * 1.01 + kExactSumRelTol;
     EXPECT_REL_NEAR(X(0).imag(), surge, midpoint_tol) << "w = " << w;
     EXPECT_NEAR(X(0).real(), 0.0, 1e-9 * surge);  // the force leads the crest by 90 deg
     // Pitch: M_y = int z dF_x, int_{-T}^0 z cosh k(z+h) dz in closed form.
-    const double z_moment = -std::cosh(k * h) / (k * k) + T * std::sinh(k * (h - T)) / k +
-                            std::cosh(k * (h - T)) / (k * k);
+    const double z_moment =
+        -std::cosh(k * h) / (k * k) + T * std::sinh(k * (h - T)) / k + std::cosh(k * (h - T)) / (k * k);
     const double pitch = kRho * (1.0 + kCa) * area * w * w * z_moment / std::sinh(k * h);
     EXPECT_REL_NEAR(X(4).imag(), pitch, midpoint_tol + std::pow(kStrip_m / T, 2)) << "w = " << w;
     EXPECT_LT(pitch, 0.0);  // a surge force below the waterline pitches bow-down about +y
     // Heave: pressure on the base + end added mass times the vertical acceleration there.
-    const double heave = kRho * kG * area * std::cosh(k * (h - T)) / std::cosh(k * h) -
-                         w * w * kCaEnd * kRho * (2.0 / 3.0) * kPi * std::pow(kRadius_m, 3) *
-                             std::sinh(k * (h - T)) / std::sinh(k * h);
+    const double heave =
+        kRho * kG * area * std::cosh(k * (h - T)) / std::cosh(k * h) -
+        w * w * kCaEnd * kRho * (2.0 / 3.0) * kPi * std::pow(kRadius_m, 3) * std::sinh(k * (h - T)) / std::sinh(k * h);
     EXPECT_REL_NEAR(X(2).real(), heave, kExactSumRelTol) << "w = " << w;
     EXPECT_NEAR(X(2).imag(), 0.0, 1e-9 * std::abs(heave));
     // Waves along +y load sway as surge.
@@ -119,8 +117,8 @@ TEST(MorisonHull, TimeDomainLoadInASmallWaveIsTheLinearExcitation) {
   flow.highest_crest_m = a;
   const Vector6cd X = morison_excitation(hull, {kRho, kG}, kDepth_m, w, 0.0);
   for (const double t : {0.0, 1.7, 4.2, 8.0}) {
-    const MorisonLoad load = morison_load(hull, flow, Eigen::Vector3d::Zero(),
-                                          Eigen::Matrix3d::Identity(), t, Vector6d::Zero());
+    const MorisonLoad load =
+        morison_load(hull, flow, Eigen::Vector3d::Zero(), Eigen::Matrix3d::Identity(), t, Vector6d::Zero());
     const std::complex<double> e = a * std::exp(std::complex<double>(0.0, w * t + 0.3));
     for (const int d : {0, 2, 4}) {
       const double linear = (X(d) * e).real();
@@ -136,8 +134,8 @@ TEST(MorisonHull, SteadyCurrentDragIsHalfRhoCdDTU2) {
   MorisonFlow flow;
   flow.current = &current;
   flow.water_density_kg_per_m3 = kRho;
-  const MorisonLoad load = morison_load(hull, flow, Eigen::Vector3d::Zero(),
-                                        Eigen::Matrix3d::Identity(), 0.0, Vector6d::Zero());
+  const MorisonLoad load =
+      morison_load(hull, flow, Eigen::Vector3d::Zero(), Eigen::Matrix3d::Identity(), 0.0, Vector6d::Zero());
   const double drag = 0.5 * kRho * cd * 2.0 * kRadius_m * kDraft_m * U * U;
   EXPECT_REL_NEAR(load.force(1), drag, kExactSumRelTol);
   EXPECT_NEAR(load.force(0), 0.0, 1e-9 * drag);
@@ -146,8 +144,7 @@ TEST(MorisonHull, SteadyCurrentDragIsHalfRhoCdDTU2) {
   // Moving with the current: no relative velocity, no drag.
   Vector6d v = Vector6d::Zero();
   v(1) = U;
-  const MorisonLoad moving =
-      morison_load(hull, flow, Eigen::Vector3d::Zero(), Eigen::Matrix3d::Identity(), 0.0, v);
+  const MorisonLoad moving = morison_load(hull, flow, Eigen::Vector3d::Zero(), Eigen::Matrix3d::Identity(), 0.0, v);
   EXPECT_NEAR(moving.force.norm(), 0.0, 1e-9 * drag);
 }
 
@@ -168,9 +165,8 @@ TEST(MorisonHull, TimeDomainMotionInARegularWaveIsTheRao) {
   const double z_g = -15.0, z_b = -kDraft_m / 2.0;
   HullDynamicsModel model;
   const double I = mass * 12.0 * 12.0;  // radius of gyration 12 m about the CoG
-  model.mass = rigid_body_mass_matrix(
-      mass, {0.0, 0.0, z_g},
-      Eigen::Vector3d(I, I, 0.5 * mass * kRadius_m * kRadius_m).asDiagonal());
+  model.mass = rigid_body_mass_matrix(mass, {0.0, 0.0, z_g},
+                                      Eigen::Vector3d(I, I, 0.5 * mass * kRadius_m * kRadius_m).asDiagonal());
   model.added_mass = morison_added_mass(hull, kRho);
   Matrix6d C = Matrix6d::Zero();
   C(2, 2) = kRho * kG * kPi * kRadius_m * kRadius_m;
@@ -192,9 +188,7 @@ TEST(MorisonHull, TimeDomainMotionInARegularWaveIsTheRao) {
   flow.water_density_kg_per_m3 = kRho;
   flow.highest_crest_m = a;
   HullLoads loads{lines, [&](double t, const Vector6d&, const Vector6d& qd) {
-                    return morison_load(hull, flow, Eigen::Vector3d::Zero(),
-                                        Eigen::Matrix3d::Identity(), t, qd)
-                        .force;
+                    return morison_load(hull, flow, Eigen::Vector3d::Zero(), Eigen::Matrix3d::Identity(), t, qd).force;
                   }};
   HullSimulationOptions options;
   const double period = 2.0 * kPi / w;
@@ -208,8 +202,7 @@ TEST(MorisonHull, TimeDomainMotionInARegularWaveIsTheRao) {
       worst = std::max(worst, std::abs(run.position(d, k) - exact));
     }
     EXPECT_LT(worst, kTimeDomainRaoRelTol * std::abs(xi(d))) << "dof " << d;
-    RecordProperty("rao_time_domain_rel_dof" + std::to_string(d),
-                   std::to_string(worst / std::abs(xi(d))));
+    RecordProperty("rao_time_domain_rel_dof" + std::to_string(d), std::to_string(worst / std::abs(xi(d))));
   }
 }
 
@@ -304,8 +297,7 @@ TEST(MorisonHull, HamsCylinderExcitationInLongWavesIsMorison) {
   // lowers the inertia force well below Morison's (1 + Ca) rho V a and lags
   // it (HAMS: 72.8 deg instead of 90): the strip model over-predicts surge.
   const std::size_t last = x.omega_rad_per_s.size() - 1;
-  const Vector6cd M =
-      morison_excitation(hull, {kRho, kG}, std::nullopt, x.omega_rad_per_s[last], 0.0);
+  const Vector6cd M = morison_excitation(hull, {kRho, kG}, std::nullopt, x.omega_rad_per_s[last], 0.0);
   EXPECT_GT(std::abs(M(0)) / std::abs(X(0, last)), 1.3);
 }
 

@@ -69,10 +69,8 @@ TEST(RadiationMemory, Oc4KernelCosineTransformGivesTheDampingBack) {
   double peak15 = 0.0, worst15 = 0.0;
   for (const Matrix6d& B : r.damping) peak15 = std::max(peak15, std::abs(B(0, 4)));
   for (std::size_t i = 0; i < r.omega_rad_per_s.size(); ++i) {
-    worst15 =
-        std::max(worst15, std::abs(kernel_cosine_transform(m.kernel, r.omega_rad_per_s[i])(0, 4) -
-                                   r.damping[i](0, 4)) /
-                              peak15);
+    worst15 = std::max(
+        worst15, std::abs(kernel_cosine_transform(m.kernel, r.omega_rad_per_s[i])(0, 4) - r.damping[i](0, 4)) / peak15);
   }
   EXPECT_LT(worst15, kDampingFromKernelTol);
 }
@@ -100,8 +98,7 @@ TEST(RadiationMemory, DataThatDoNotReachTheDecayedDampingAreRefused) {
   WamitReadOptions o;
   o.frequency_column = FrequencyColumn::angular_frequency;
   o.water = {kRho, kG};
-  const HydroCoefficients buoy =
-      read_wamit_1(SPIRAL_TEST_DATA_DIR "/hydro/cylinder-buoy/Buoy.1", o);
+  const HydroCoefficients buoy = read_wamit_1(SPIRAL_TEST_DATA_DIR "/hydro/cylinder-buoy/Buoy.1", o);
   try {
     make_radiation_memory(buoy, {});
     FAIL() << "expected RadiationDataError";

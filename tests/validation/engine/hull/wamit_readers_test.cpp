@@ -96,8 +96,7 @@ TEST(Wamit1, Oc4SemiInterpolatesAt110s) {
   std::size_t j = 0;
   while (c.omega_rad_per_s[j] < w1 - 1e-9) ++j;
   ASSERT_REL_NEAR(c.omega_rad_per_s[j - 1], w0, kPrintedPeriodRelTol);
-  const double s = (2.0 * kPi / 110.0 - c.omega_rad_per_s[j - 1]) /
-                   (c.omega_rad_per_s[j] - c.omega_rad_per_s[j - 1]);
+  const double s = (2.0 * kPi / 110.0 - c.omega_rad_per_s[j - 1]) / (c.omega_rad_per_s[j] - c.omega_rad_per_s[j - 1]);
   const Matrix6d expected = (1.0 - s) * c.added_mass[j - 1] + s * c.added_mass[j];
   EXPECT_EIGEN_REL_NEAR(A, expected, kRoundOffRelTol);
   // Held at the ends.
@@ -203,8 +202,7 @@ TEST(Wamit3, BuoyExcitationDimensionalisationAndPhase) {
     transfer_at(x, 0.3, 10.0 * kDeg);
     FAIL() << "expected std::invalid_argument";
   } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("heading 10 deg outside the database range [0, 0] deg"),
-              std::string::npos)
+    EXPECT_NE(std::string(e.what()).find("heading 10 deg outside the database range [0, 0] deg"), std::string::npos)
         << e.what();
   }
 }
@@ -222,8 +220,7 @@ TEST(Wamit3, BilinearInHeadingAndFrequency) {
   const double rho_g = kRho * kG;
   const Vector6cd v = transfer_at(x, 0.25 * w0 + 0.75 * w1, 30.0 * kDeg);
   // Bilinear: heading weight 1/3, frequency weight 3/4.
-  const double re =
-      (2.0 / 3.0) * (0.25 * 1.0 + 0.75 * 5.0) + (1.0 / 3.0) * (0.25 * 3.0 + 0.75 * 7.0);
+  const double re = (2.0 / 3.0) * (0.25 * 1.0 + 0.75 * 5.0) + (1.0 / 3.0) * (0.25 * 3.0 + 0.75 * 7.0);
   const double im = (1.0 / 3.0) * (0.25 * 2.0 + 0.75 * 4.0);
   EXPECT_REL_NEAR(v(2).real(), rho_g * re, kRoundOffRelTol);
   EXPECT_REL_NEAR(v(2).imag(), rho_g * im, kRoundOffRelTol);

@@ -46,9 +46,8 @@ struct Spans {
 Spans suspended_spans(double H, double V_F, double w, double EA, double L) {
   const double V_A = V_F - w * L;
   const double XF = H / w * (std::asinh(V_F / H) - std::asinh(V_A / H)) + H * L / EA;
-  const double ZF =
-      H / w * (std::sqrt(1.0 + std::pow(V_F / H, 2)) - std::sqrt(1.0 + std::pow(V_A / H, 2))) +
-      (V_F * L - 0.5 * w * L * L) / EA;
+  const double ZF = H / w * (std::sqrt(1.0 + std::pow(V_F / H, 2)) - std::sqrt(1.0 + std::pow(V_A / H, 2))) +
+                    (V_F * L - 0.5 * w * L * L) / EA;
   return {XF, ZF};
 }
 
@@ -60,8 +59,7 @@ Spans seabed_spans(double H, double V_F, double w, double EA, double L, double C
     const double d = LB - H / (CB * w);
     XF += CB * w / (2.0 * EA) * (-LB * LB + d * std::max(d, 0.0));
   }
-  const double ZF =
-      H / w * (std::sqrt(1.0 + std::pow(V_F / H, 2)) - 1.0) + V_F * V_F / (2.0 * EA * w);
+  const double ZF = H / w * (std::sqrt(1.0 + std::pow(V_F / H, 2)) - 1.0) + V_F * V_F / (2.0 * EA * w);
   return {XF, ZF};
 }
 
@@ -162,8 +160,7 @@ TEST(CatenaryAnalytic, HorizontalForceConstantAndSlopeMatchesForcesWithoutFricti
     // Geometry against forces: slope dz/dx of the profile = V/H (suspended part).
     if (p[i - 1].on_seabed || p[i].on_seabed || p[i + 1].on_seabed) continue;
     if (p[i - 1].segment != p[i + 1].segment) continue;
-    if (p[i - 1].arc_length_m == p[i].arc_length_m || p[i].arc_length_m == p[i + 1].arc_length_m)
-      continue;
+    if (p[i - 1].arc_length_m == p[i].arc_length_m || p[i].arc_length_m == p[i + 1].arc_length_m) continue;
     const double slope = (p[i + 1].z_m - p[i - 1].z_m) / (p[i + 1].x_m - p[i - 1].x_m);
     EXPECT_REL_NEAR_SCALE(slope, p[i].vertical_N / H, kProfileSlopeRelTol,
                           std::max(1.0, std::abs(p[i].vertical_N / H)));
@@ -195,13 +192,13 @@ TEST(CatenaryAnalytic, ForceBalanceOfEachSegment) {
       const auto& seg = line.segments[s];
       const double suspended_m = seg.length_m - laid_m;
       // Vertical: the seabed carries the laid weight; the rest is V_top - V_bottom.
-      EXPECT_REL_NEAR_SCALE(top->vertical_N - bottom->vertical_N, seg.weight_N_per_m * suspended_m,
-                            kEquilibriumRelTol, T)
+      EXPECT_REL_NEAR_SCALE(top->vertical_N - bottom->vertical_N, seg.weight_N_per_m * suspended_m, kEquilibriumRelTol,
+                            T)
           << "mu " << mu << " segment " << s;
       // Horizontal: friction mu w on the laid part where tension remains, else none.
       if (bottom->horizontal_N > 0.0) {
-        EXPECT_REL_NEAR_SCALE(top->horizontal_N - bottom->horizontal_N,
-                              mu * seg.weight_N_per_m * laid_m, kEquilibriumRelTol, T)
+        EXPECT_REL_NEAR_SCALE(top->horizontal_N - bottom->horizontal_N, mu * seg.weight_N_per_m * laid_m,
+                              kEquilibriumRelTol, T)
             << "mu " << mu << " segment " << s;
       }
     }
@@ -214,8 +211,7 @@ TEST(CatenaryAnalytic, ForceBalanceOfEachSegment) {
       suspended_weight_N += seg.weight_N_per_m * (seg.length_m - laid);
       if (s < 2 && remaining_laid <= 0.0) suspended_weight_N += line.joint_load_N[s];
     }
-    EXPECT_REL_NEAR_SCALE(sol.fairlead_vertical_N - sol.anchor_vertical_N, suspended_weight_N,
-                          kEquilibriumRelTol, T);
+    EXPECT_REL_NEAR_SCALE(sol.fairlead_vertical_N - sol.anchor_vertical_N, suspended_weight_N, kEquilibriumRelTol, T);
   }
 }
 
@@ -230,8 +226,7 @@ TEST(CatenaryAnalytic, SplitSegmentsEqualSingleSegment) {
       const CatenarySolution three = solve_catenary(split, g);
       EXPECT_REL_NEAR(three.fairlead_horizontal_N, one.fairlead_horizontal_N, kSplitRelTol);
       EXPECT_REL_NEAR(three.fairlead_vertical_N, one.fairlead_vertical_N, kSplitRelTol);
-      EXPECT_REL_NEAR_SCALE(three.anchor_horizontal_N, one.anchor_horizontal_N, kSplitRelTol,
-                            one.fairlead_tension_N);
+      EXPECT_REL_NEAR_SCALE(three.anchor_horizontal_N, one.anchor_horizontal_N, kSplitRelTol, one.fairlead_tension_N);
       EXPECT_REL_NEAR_SCALE(three.laid_length_m, one.laid_length_m, kSplitRelTol, kL);
       EXPECT_EIGEN_REL_NEAR(three.tangent_stiffness, one.tangent_stiffness, kSplitRelTol);
     }
@@ -288,8 +283,7 @@ TEST(CatenaryAnalytic, TouchdownAtClumpJoint) {
   EXPECT_REL_NEAR(sol.laid_length_m, 200.0, kRecoverRelTol);
   // Friction: mu times the clump's resting part (W_total - V_F - laid chain), then mu w L.
   const double rest = 2e5 - (V - 300.0 * 600.0);
-  EXPECT_REL_NEAR(sol.anchor_horizontal_N, std::max(H - 0.6 * rest - 0.6 * 1000.0 * 200.0, 0.0),
-                  kRecoverRelTol);
+  EXPECT_REL_NEAR(sol.anchor_horizontal_N, std::max(H - 0.6 * rest - 0.6 * 1000.0 * 200.0, 0.0), kRecoverRelTol);
   // Tangent stiffness against central differences.
   Eigen::Matrix2d fd;
   for (int j = 0; j < 2; ++j) {
@@ -313,8 +307,7 @@ TEST(CatenaryAnalytic, VerticalTautTendon) {
   EXPECT_REL_NEAR(sol.anchor_vertical_N, V_F - w * L, kRecoverRelTol);
   EXPECT_REL_NEAR(sol.tangent_stiffness(1, 1), EA / L, kRecoverRelTol);
   // Pendulum stiffness dH/dXF = 1 / integral (1/T + 1/EA) ds, with integral ds/T = ln(V_F/V_A)/w.
-  EXPECT_REL_NEAR(sol.tangent_stiffness(0, 0),
-                  1.0 / (std::log(V_F / (V_F - w * L)) / w + L / EA), kRecoverRelTol);
+  EXPECT_REL_NEAR(sol.tangent_stiffness(0, 0), 1.0 / (std::log(V_F / (V_F - w * L)) / w + L / EA), kRecoverRelTol);
 }
 
 TEST(CatenaryAnalytic, SlackVerticalHangingLine) {
@@ -337,9 +330,8 @@ TEST(CatenaryAnalytic, WarmStartTakesFewIterations) {
   constexpr int kMaxWarmIterations = 3;  // the brief's target for small geometry changes
   const CatenaryLine line = three_segment_line(0.5);
   const CatenarySolution cold = solve_catenary(line, {1000.0, 300.0, 0.0});
-  const CatenarySolution warm =
-      solve_catenary(line, {1000.1, 300.0, 0.0}, {},
-                     CatenaryGuess{cold.fairlead_horizontal_N, cold.fairlead_vertical_N});
+  const CatenarySolution warm = solve_catenary(line, {1000.1, 300.0, 0.0}, {},
+                                               CatenaryGuess{cold.fairlead_horizontal_N, cold.fairlead_vertical_N});
   EXPECT_LE(warm.iterations, kMaxWarmIterations);
 }
 

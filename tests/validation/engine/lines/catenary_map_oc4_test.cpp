@@ -51,9 +51,8 @@ std::vector<MapLine> read_map_sum(const std::string& path) {
 }
 
 TEST(CatenaryMapOC4, ThreeLinesMatchMapSummary) {
-  const auto map =
-      read_map_sum(std::string(SPIRAL_TEST_DATA_DIR) +
-                   "/validation/oc4/5MW_OC4Semi_WSt_WavesWN_simpler.macos-gnu.MAP.sum");
+  const auto map = read_map_sum(std::string(SPIRAL_TEST_DATA_DIR) +
+                                "/validation/oc4/5MW_OC4Semi_WSt_WavesWN_simpler.macos-gnu.MAP.sum");
   ASSERT_EQ(map.size(), 3u);
   // Wet weight: MAP++ results reproduce with g = 9.80665 (validation README).
   const double w = (113.35 - 1025.0 * std::numbers::pi / 4.0 * 0.0766 * 0.0766) * 9.80665;
@@ -63,9 +62,8 @@ TEST(CatenaryMapOC4, ThreeLinesMatchMapSummary) {
   // Anchor and fairlead (x, y) of each line as MAP++ placed them (node table of
   // the .sum; radius 837.6 m and 40.868 m, printed to 1 mm): line 1 and 3's
   // rounded coordinates give XF = 796.7319 m, line 2's 796.732 m.
-  const double nodes[3][4] = {{418.8, 725.383, 20.434, 35.393},
-                              {-837.6, 0.0, -40.868, 0.0},
-                              {418.8, -725.383, 20.434, -35.393}};
+  const double nodes[3][4] = {
+      {418.8, 725.383, 20.434, 35.393}, {-837.6, 0.0, -40.868, 0.0}, {418.8, -725.383, 20.434, -35.393}};
   double worst = 0.0;
   for (std::size_t i = 0; i < map.size(); ++i) {
     SCOPED_TRACE("MAP++ line " + std::to_string(i + 1));

@@ -38,8 +38,7 @@ struct MoorPyCase {
 };
 
 std::vector<MoorPyCase> read_cases() {
-  const std::string path =
-      std::string(SPIRAL_TEST_DATA_DIR) + "/validation/moorpy/test_catenary_cases.csv";
+  const std::string path = std::string(SPIRAL_TEST_DATA_DIR) + "/validation/moorpy/test_catenary_cases.csv";
   std::ifstream in(path);
   EXPECT_TRUE(in.good()) << "cannot open " << path;
   std::vector<MoorPyCase> cases;
@@ -58,8 +57,8 @@ std::vector<MoorPyCase> read_cases() {
     while (std::getline(ss, cell, ',')) v.push_back(std::stod(cell));
     EXPECT_EQ(v.size(), 14u) << row;
     if (v.size() != 14u) continue;
-    cases.push_back({static_cast<int>(v[0]), v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8], v[9],
-                     v[10], v[11], v[12], v[13]});
+    cases.push_back(
+        {static_cast<int>(v[0]), v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8], v[9], v[10], v[11], v[12], v[13]});
   }
   return cases;
 }
@@ -89,8 +88,7 @@ std::pair<double, double> closed_form_spans(const MoorPyCase& c, double H, doubl
   if (!seabed) {
     const double VA = V - w * L;
     const double x = H / w * (std::asinh(V / H) - std::asinh(VA / H)) + H * L / EA;
-    const double z = (std::sqrt(H * H + V * V) - std::sqrt(H * H + VA * VA)) / w +
-                     (V * L - 0.5 * w * L * L) / EA;
+    const double z = (std::sqrt(H * H + V * V) - std::sqrt(H * H + VA * VA)) / w + (V * L - 0.5 * w * L * L) / EA;
     return {x, z};
   }
   const double LB = L - V / w;
@@ -123,11 +121,7 @@ TEST(CatenaryMoorPy, TenCases) {
     EXPECT_REL_NEAR(fBH, c.fBH, kMoorPyRelTol);
     EXPECT_REL_NEAR(fBV, c.fBV, kMoorPyRelTol);
     EXPECT_REL_NEAR(r.laid_length_m, c.LBot, kMoorPyRelTol);
-    for (auto [a, e] : {std::pair{fAH, c.fAH},
-                        {fAV, c.fAV},
-                        {fBH, c.fBH},
-                        {fBV, c.fBV},
-                        {r.laid_length_m, c.LBot}}) {
+    for (auto [a, e] : {std::pair{fAH, c.fAH}, {fAV, c.fAV}, {fBH, c.fBH}, {fBV, c.fBV}, {r.laid_length_m, c.LBot}}) {
       if (e != 0.0) worst = std::max(worst, std::abs(a - e) / std::abs(e));
     }
   }

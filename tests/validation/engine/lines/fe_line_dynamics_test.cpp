@@ -24,16 +24,14 @@ using test::oc4_fe_line;
 using test::oc4_line_ends;
 
 FeStaticsResult oc4_static(int elements) {
-  return solve_fe_line_statics(oc4_fe_line(elements), oc4_dynamic_environment().statics,
-                               oc4_line_ends());
+  return solve_fe_line_statics(oc4_fe_line(elements), oc4_dynamic_environment().statics, oc4_line_ends());
 }
 
 // x(t) = A r(t) sin(ω t) with the smooth ramp r = 3τ² − 2τ³, τ = t/T_ramp ≤ 1
 // (OrcaFlex's build-up period idea): a motion that starts with a velocity
 // jump rings every mode of the line, and undamped axial modes then ring for
 // the whole run.
-EndMotionFn harmonic_surge(const Eigen::Vector3d& rest, double amplitude_m, double period_s,
-                           double ramp_s) {
+EndMotionFn harmonic_surge(const Eigen::Vector3d& rest, double amplitude_m, double period_s, double ramp_s) {
   const double w = 2.0 * std::numbers::pi / period_s;
   return [=](double t) {
     const double tau = std::min(t / ramp_s, 1.0);
@@ -44,8 +42,7 @@ EndMotionFn harmonic_surge(const Eigen::Vector3d& rest, double amplitude_m, doub
     EndKinematics k;
     k.position_m = rest + Eigen::Vector3d(amplitude_m * r * s, 0.0, 0.0);
     k.velocity_m_per_s = {amplitude_m * (dr * s + r * w * c), 0.0, 0.0};
-    k.acceleration_m_per_s2 = {amplitude_m * (ddr * s + 2.0 * dr * w * c - r * w * w * s), 0.0,
-                               0.0};
+    k.acceleration_m_per_s2 = {amplitude_m * (ddr * s + 2.0 * dr * w * c - r * w * w * s), 0.0, 0.0};
     return k;
   };
 }
@@ -66,8 +63,8 @@ TEST(FeLineDynamics, StaticSolutionStaysPutWithoutExcitation) {
   for (std::size_t i = 0; i < snap.node_position_m.size(); ++i) {
     max_move = std::max(max_move, (snap.node_position_m[i] - st.node_position_m[i]).norm());
   }
-  std::printf("static limit: tension drift %.3e, max node move %.3e m, steps %ld\n", drift,
-              max_move, dyn.statistics().steps);
+  std::printf("static limit: tension drift %.3e, max node move %.3e m, steps %ld\n", drift, max_move,
+              dyn.statistics().steps);
   EXPECT_LT(drift, 1e-6);
   EXPECT_LT(max_move, 1e-4);
 }
@@ -76,8 +73,7 @@ TEST(FeLineDynamics, StaticSolutionStaysPutWithoutExcitation) {
 std::vector<double> upward_crossings(const std::vector<double>& t, const std::vector<double>& x) {
   std::vector<double> c;
   for (std::size_t i = 1; i < x.size(); ++i) {
-    if (x[i - 1] < 0.0 && x[i] >= 0.0)
-      c.push_back(t[i - 1] + (t[i] - t[i - 1]) * (-x[i - 1]) / (x[i] - x[i - 1]));
+    if (x[i - 1] < 0.0 && x[i] >= 0.0) c.push_back(t[i - 1] + (t[i] - t[i - 1]) * (-x[i - 1]) / (x[i] - x[i - 1]));
   }
   return c;
 }
@@ -134,8 +130,7 @@ TEST(FeLineDynamics, TautLineAxialWaveSpeedIsSqrtEAOverM) {
 // pendulum modes are J0(2ω √(x/g)), x from the free end, with
 // ω_n = (α_n / 2) √(g/L), α_n the zeros of J0 (D. Bernoulli 1733; e.g.
 // Irvine, Cable Structures, §4.2).
-constexpr double kChainLength_m = 100.0, kChainMass_kg_per_m = 10.0, kChainEA_N = 1.0e9,
-                 kG = 9.80665;
+constexpr double kChainLength_m = 100.0, kChainMass_kg_per_m = 10.0, kChainEA_N = 1.0e9, kG = 9.80665;
 
 FeLineModel hanging_chain() {
   FeLineSection s;
@@ -153,8 +148,7 @@ FeLineModel hanging_chain() {
 FeStaticsResult hanging_chain_at_rest() {
   const double w = kChainMass_kg_per_m * kG;
   const double hang_m = kChainLength_m + w * kChainLength_m * kChainLength_m / (2.0 * kChainEA_N);
-  return solve_fe_line_statics(hanging_chain(), FeEnvironment{},
-                               {{0.0, 0.0, -hang_m}, {0.0, 0.0, 0.0}});
+  return solve_fe_line_statics(hanging_chain(), FeEnvironment{}, {{0.0, 0.0, -hang_m}, {0.0, 0.0, 0.0}});
 }
 
 TEST(FeLineDynamics, HangingChainPendulumPeriodsMatchBesselZeros) {
@@ -170,8 +164,7 @@ TEST(FeLineDynamics, HangingChainPendulumPeriodsMatchBesselZeros) {
     o.end_A = FeEndCondition::free;
     o.end_B = FeEndCondition::fixed;
     o.initial_velocity = [alpha](double arc) {
-      return Eigen::Vector3d(0.01 * std::cyl_bessel_j(0.0, alpha * std::sqrt(arc / kLength_m)), 0,
-                             0);
+      return Eigen::Vector3d(0.01 * std::cyl_bessel_j(0.0, alpha * std::sqrt(arc / kLength_m)), 0, 0);
     };
     o.relative_tolerance = 1e-8;
     o.position_tolerance_m = 1e-9;
@@ -188,8 +181,7 @@ TEST(FeLineDynamics, HangingChainPendulumPeriodsMatchBesselZeros) {
       x.push_back(dyn.snapshot().node_position_m.front().x());
     }
     const double measured = mean_period(upward_crossings(t, x));
-    std::printf("pendulum mode %d: T = %.4f s measured, %.4f s analytic\n", mode + 1, measured,
-                expected);
+    std::printf("pendulum mode %d: T = %.4f s measured, %.4f s analytic\n", mode + 1, measured, expected);
     // Discretisation (40 elements, mode 3 has 2.5 half-waves), BDF2 phase
     // error at period/200 (~1e-4) and the chain's stretch (wL/EA = 1e-6)
     // stay below 0.1 %.
@@ -212,9 +204,8 @@ double energy_drift(double relative_tolerance, double* input_J) {
   // metres the free end whips and feeds short modes that BDF2 damps).
   o.initial_velocity = [](double arc) {
     const double x = std::sqrt(arc / kChainLength_m);
-    return Eigen::Vector3d(
-        0.02 * std::cyl_bessel_j(0.0, 2.4048 * x) + 0.01 * std::cyl_bessel_j(0.0, 5.5201 * x),
-        0.005 * std::cyl_bessel_j(0.0, 2.4048 * x), 0.0);
+    return Eigen::Vector3d(0.02 * std::cyl_bessel_j(0.0, 2.4048 * x) + 0.01 * std::cyl_bessel_j(0.0, 5.5201 * x),
+                           0.005 * std::cyl_bessel_j(0.0, 2.4048 * x), 0.0);
   };
   o.relative_tolerance = relative_tolerance;
   o.position_tolerance_m = 1e-2 * relative_tolerance;
@@ -228,8 +219,8 @@ double energy_drift(double relative_tolerance, double* input_J) {
     dyn.advance_to(1.0 * k);
     worst = std::max(worst, std::abs(dyn.energy().total() - e0.total()));
   }
-  std::printf("energy: rtol %.0e: input %.4f J, worst |dE| %.3e J over 80 s, %ld steps\n",
-              relative_tolerance, e0.kinetic_J, worst, dyn.statistics().steps);
+  std::printf("energy: rtol %.0e: input %.4f J, worst |dE| %.3e J over 80 s, %ld steps\n", relative_tolerance,
+              e0.kinetic_J, worst, dyn.statistics().steps);
   return worst / e0.kinetic_J;
 }
 
@@ -276,8 +267,7 @@ TensionRecord harmonic_tension(int elements, double relative_tolerance, bool ref
 
 double max_difference_N(const TensionRecord& a, const TensionRecord& b) {
   double d = 0.0;
-  for (std::size_t i = 0; i < a.tension_N.size(); ++i)
-    d = std::max(d, std::abs(a.tension_N[i] - b.tension_N[i]));
+  for (std::size_t i = 0; i < a.tension_N.size(); ++i) d = std::max(d, std::abs(a.tension_N[i] - b.tension_N[i]));
   return d;
 }
 
@@ -290,8 +280,7 @@ TEST(FeLineDynamics, HarmonicFairleadMotionTensionConvergesWithMeshAndStep) {
   double previous = 1e30;
   for (int elements : {20, 40, 80}) {
     const double err = max_difference_N(harmonic_tension(elements, 1e-8, true), ref);
-    std::printf("mesh %3d el: max |T - Tref| %.0f N = %.3f %% of the range\n", elements, err,
-                100 * err / range_N);
+    std::printf("mesh %3d el: max |T - Tref| %.0f N = %.3f %% of the range\n", elements, err, 100 * err / range_N);
     EXPECT_LT(err, previous);
     previous = err;
   }
@@ -300,8 +289,7 @@ TEST(FeLineDynamics, HarmonicFairleadMotionTensionConvergesWithMeshAndStep) {
   previous = 1e30;
   for (double rtol : {1e-5, 1e-6, 1e-7}) {
     const double err = max_difference_N(harmonic_tension(80, rtol), ref);
-    std::printf("step rtol %.0e: max |T - Tref| %.0f N = %.3f %% of the range\n", rtol, err,
-                100 * err / range_N);
+    std::printf("step rtol %.0e: max |T - Tref| %.0f N = %.3f %% of the range\n", rtol, err, 100 * err / range_N);
     EXPECT_LT(err, previous);
     previous = err;
   }

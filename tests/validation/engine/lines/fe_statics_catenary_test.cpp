@@ -18,7 +18,7 @@ namespace {
 constexpr double kOc4Length_m = 835.35;
 constexpr double kOc4EA_N = 7.536e8;
 const double kOc4Weight_N_per_m = (113.35 - 1025.0 * M_PI / 4.0 * 0.0766 * 0.0766) * 9.80665;
-constexpr double kOc4Span_m = 796.732;      // anchor (−837.6, 0, −200) to fairlead (−40.868, 0, −14)
+constexpr double kOc4Span_m = 796.732;  // anchor (−837.6, 0, −200) to fairlead (−40.868, 0, −14)
 constexpr double kOc4Height_m = 186.0;
 constexpr double kDepth_m = 200.0;
 // Seabed penalty: stiff (penetration w/k = 0.1 mm) so the rigid-seabed
@@ -59,8 +59,8 @@ FeEnvironment oc4_environment() {
 const FeLineEnds kOc4Ends{{-837.6, 0.0, -200.0}, {-40.868, 0.0, -14.0}};
 
 double oc4_fairlead_error(int elements) {
-  const auto ref = test::solve_elastic_catenary(kOc4Length_m, kOc4Weight_N_per_m, kOc4EA_N, kOc4Span_m,
-                                                kOc4Height_m, true);
+  const auto ref =
+      test::solve_elastic_catenary(kOc4Length_m, kOc4Weight_N_per_m, kOc4EA_N, kOc4Span_m, kOc4Height_m, true);
   const auto r = solve_fe_line_statics(single_section(kOc4Length_m, kOc4Weight_N_per_m, kOc4EA_N, elements),
                                        oc4_environment(), kOc4Ends);
   return std::abs(r.end_B_force_N.norm() / ref.fairlead_tension_N - 1.0);
@@ -71,16 +71,16 @@ double oc4_fairlead_error(int elements) {
 const FeLineEnds kSuspendedEnds{{0.0, 0.0, 0.0}, {kOc4Span_m, 0.0, kOc4Height_m}};
 
 double suspended_fairlead_error(int elements) {
-  const auto ref = test::solve_elastic_catenary(kOc4Length_m, kOc4Weight_N_per_m, kOc4EA_N, kOc4Span_m,
-                                                kOc4Height_m, false);
+  const auto ref =
+      test::solve_elastic_catenary(kOc4Length_m, kOc4Weight_N_per_m, kOc4EA_N, kOc4Span_m, kOc4Height_m, false);
   const auto r = solve_fe_line_statics(single_section(kOc4Length_m, kOc4Weight_N_per_m, kOc4EA_N, elements),
                                        FeEnvironment{}, kSuspendedEnds);
   return std::abs(r.end_B_force_N.norm() / ref.fairlead_tension_N - 1.0);
 }
 
 TEST(FeStaticsCatenary, Oc4TwentyElementsMatchElasticCatenary) {
-  const auto ref = test::solve_elastic_catenary(kOc4Length_m, kOc4Weight_N_per_m, kOc4EA_N, kOc4Span_m,
-                                                kOc4Height_m, true);
+  const auto ref =
+      test::solve_elastic_catenary(kOc4Length_m, kOc4Weight_N_per_m, kOc4EA_N, kOc4Span_m, kOc4Height_m, true);
   const auto r = solve_fe_line_statics(single_section(kOc4Length_m, kOc4Weight_N_per_m, kOc4EA_N, 20),
                                        oc4_environment(), kOc4Ends);
   std::printf("OC4 20 el: T_F %.2f N (cat %.2f), T_A %.2f N (cat %.2f), H %.2f (cat %.2f), %d it, %d remeshes\n",
@@ -99,10 +99,10 @@ TEST(FeStaticsCatenary, Oc4TwentyElementsMatchElasticCatenary) {
 }
 
 TEST(FeStaticsCatenary, SuspendedLineMatchesElasticCatenary) {
-  const auto ref = test::solve_elastic_catenary(kOc4Length_m, kOc4Weight_N_per_m, kOc4EA_N, kOc4Span_m,
-                                                kOc4Height_m, false);
-  const auto r = solve_fe_line_statics(single_section(kOc4Length_m, kOc4Weight_N_per_m, kOc4EA_N, 20),
-                                       FeEnvironment{}, kSuspendedEnds);
+  const auto ref =
+      test::solve_elastic_catenary(kOc4Length_m, kOc4Weight_N_per_m, kOc4EA_N, kOc4Span_m, kOc4Height_m, false);
+  const auto r = solve_fe_line_statics(single_section(kOc4Length_m, kOc4Weight_N_per_m, kOc4EA_N, 20), FeEnvironment{},
+                                       kSuspendedEnds);
   EXPECT_NEAR(r.end_B_force_N.norm() / ref.fairlead_tension_N, 1.0, kTwentyElementTolerance);
   EXPECT_NEAR(r.end_A_force_N.norm() / ref.anchor_tension_N, 1.0, kTwentyElementTolerance);
   EXPECT_FALSE(r.touchdown.has_value());
@@ -127,8 +127,10 @@ TEST(FeStaticsCatenary, SuspendedLineConvergesAtTheElementOrder) {
   std::vector<double> e;
   for (int k : n) e.push_back(suspended_fairlead_error(k));
   const auto p = observed_orders(e);
-  std::printf("suspended line, fairlead tension error: 10 el %.2e, 20 el %.2e, 40 el %.2e, 80 el %.2e; "
-              "orders %.2f %.2f %.2f\n", e[0], e[1], e[2], e[3], p[0], p[1], p[2]);
+  std::printf(
+      "suspended line, fairlead tension error: 10 el %.2e, 20 el %.2e, 40 el %.2e, 80 el %.2e; "
+      "orders %.2f %.2f %.2f\n",
+      e[0], e[1], e[2], e[3], p[0], p[1], p[2]);
   EXPECT_GE(p[0], kExpectedOrder - kOrderMargin);
   EXPECT_GE(p[1], kExpectedOrder - kOrderMargin);
   EXPECT_LE(e[3], kRoundOffLevel);
@@ -145,8 +147,10 @@ TEST(FeStaticsCatenary, Oc4ConvergesWithMesh) {
   std::vector<double> e;
   for (int k : n) e.push_back(oc4_fairlead_error(k));
   const auto p = observed_orders(e);
-  std::printf("OC4 line, fairlead tension error: 10 el %.2e, 20 el %.2e, 40 el %.2e, 80 el %.2e; "
-              "orders %.2f %.2f %.2f\n", e[0], e[1], e[2], e[3], p[0], p[1], p[2]);
+  std::printf(
+      "OC4 line, fairlead tension error: 10 el %.2e, 20 el %.2e, 40 el %.2e, 80 el %.2e; "
+      "orders %.2f %.2f %.2f\n",
+      e[0], e[1], e[2], e[3], p[0], p[1], p[2]);
   for (double err : e) EXPECT_LE(err, kTwentyElementTolerance);
   EXPECT_LE(e[2], kFineMeshTolerance);
   EXPECT_LE(e[3], kFineMeshTolerance);
@@ -154,8 +158,8 @@ TEST(FeStaticsCatenary, Oc4ConvergesWithMesh) {
 
 TEST(FeStaticsCatenary, EveryNodeIsInEquilibrium) {
   for (int elements : {20, 80}) {
-    const auto r = solve_fe_line_statics(
-        single_section(kOc4Length_m, kOc4Weight_N_per_m, kOc4EA_N, elements), oc4_environment(), kOc4Ends);
+    const auto r = solve_fe_line_statics(single_section(kOc4Length_m, kOc4Weight_N_per_m, kOc4EA_N, elements),
+                                         oc4_environment(), kOc4Ends);
     double t_max = 0.0, f_max = 0.0;
     for (double t : r.node_tension_N) t_max = std::max(t_max, std::abs(t));
     for (std::size_t i = 1; i + 1 < r.node_force_residual_N.size(); ++i) {
@@ -197,10 +201,10 @@ TEST(FeStaticsCatenary, EndStiffnessMatchesFiniteDifferences) {
     }
     const double scale = fd.cwiseAbs().maxCoeff();
     const double diff = (base.end_B_stiffness_N_per_m - fd).cwiseAbs().maxCoeff() / scale;
-    std::printf("K_B vs FD (%s): max relative difference %.2e\n", snap ? "node follows touchdown" : "same mesh",
-                diff);
+    std::printf("K_B vs FD (%s): max relative difference %.2e\n", snap ? "node follows touchdown" : "same mesh", diff);
     EXPECT_LT(diff, snap ? kMovingNodeTolerance : kSameMeshTolerance) << "K_B:\n"
-        << base.end_B_stiffness_N_per_m << "\nFD:\n" << fd;
+                                                                      << base.end_B_stiffness_N_per_m << "\nFD:\n"
+                                                                      << fd;
   }
 }
 
@@ -245,10 +249,11 @@ TEST(FeStaticsCatenary, MultiSegmentLineAgreesWithCatenarySolver) {
     g.vertical_span_m = 1772.0;
     const auto c = solve_catenary(cat, g);
     const auto r = solve_fe_line_statics(fe, env, ends);
-    std::printf("anchor radius %.0f m: H %.2f N (catenary %.2f), V %.2f N (%.2f), laid %.2f m (%.2f), "
-                "%d elements\n", anchor_radius_m, -r.end_B_force_N.x(), c.fairlead_horizontal_N,
-                -r.end_B_force_N.z(), c.fairlead_vertical_N, r.touchdown ? r.touchdown->arc_length_m : 0.0,
-                c.laid_length_m, static_cast<int>(r.element_tension_N.size()));
+    std::printf(
+        "anchor radius %.0f m: H %.2f N (catenary %.2f), V %.2f N (%.2f), laid %.2f m (%.2f), "
+        "%d elements\n",
+        anchor_radius_m, -r.end_B_force_N.x(), c.fairlead_horizontal_N, -r.end_B_force_N.z(), c.fairlead_vertical_N,
+        r.touchdown ? r.touchdown->arc_length_m : 0.0, c.laid_length_m, static_cast<int>(r.element_tension_N.size()));
     EXPECT_NEAR(-r.end_B_force_N.x() / c.fairlead_horizontal_N, 1.0, kAgreement);
     EXPECT_NEAR(-r.end_B_force_N.z() / c.fairlead_vertical_N, 1.0, kAgreement);
     if (c.laid_length_m > 0.0) {

@@ -23,8 +23,7 @@ namespace {
 
 /// OrcaFlex column of the shared reference table, kN, keyed by quantity.
 std::map<std::string, double> read_orcaflex_column() {
-  const std::string path =
-      std::string(SPIRAL_TEST_DATA_DIR) + "/validation/lowe_langley_2006_hanging_riser_static.csv";
+  const std::string path = std::string(SPIRAL_TEST_DATA_DIR) + "/validation/lowe_langley_2006_hanging_riser_static.csv";
   std::ifstream in(path);
   EXPECT_TRUE(in.good()) << "cannot open " << path;
   std::map<std::string, double> values;
@@ -87,12 +86,12 @@ TEST(FeStaticsRiser, LowLangleyHangingRiserMatchesOrcaFlex) {
   const double top_horizontal_kN = -r.end_B_force_N.x() / 1e3;
   const double bottom_vertical_kN = -r.end_A_force_N.z() / 1e3;
   const double bottom_horizontal_kN = -r.end_A_force_N.x() / 1e3;
-  std::printf("L&L riser (kN): top T %.3f (OrcaFlex %.2f), bottom T %.3f (%.2f), top V %.3f (%.2f), "
-              "top H %.3f (%.2f), bottom V %.3f (%.2f), bottom H %.3f (%.2f)\n",
-              top_tension_kN, ref.at("top_tension"), bottom_tension_kN, ref.at("bottom_tension"),
-              top_vertical_kN, ref.at("top_vertical_reaction"), top_horizontal_kN,
-              ref.at("top_horizontal_reaction"), bottom_vertical_kN, ref.at("bottom_vertical_reaction"),
-              bottom_horizontal_kN, ref.at("bottom_horizontal_reaction"));
+  std::printf(
+      "L&L riser (kN): top T %.3f (OrcaFlex %.2f), bottom T %.3f (%.2f), top V %.3f (%.2f), "
+      "top H %.3f (%.2f), bottom V %.3f (%.2f), bottom H %.3f (%.2f)\n",
+      top_tension_kN, ref.at("top_tension"), bottom_tension_kN, ref.at("bottom_tension"), top_vertical_kN,
+      ref.at("top_vertical_reaction"), top_horizontal_kN, ref.at("top_horizontal_reaction"), bottom_vertical_kN,
+      ref.at("bottom_vertical_reaction"), bottom_horizontal_kN, ref.at("bottom_horizontal_reaction"));
   EXPECT_FALSE(r.touchdown.has_value());
   EXPECT_NEAR(top_tension_kN / ref.at("top_tension"), 1.0, kReactionTolerance);
   EXPECT_NEAR(bottom_tension_kN / ref.at("bottom_tension"), 1.0, kReactionTolerance);
@@ -167,8 +166,10 @@ TEST(FeStaticsRiser, VerticalRiserInCurrentMatchesTautString) {
     y_max = std::max(y_max, std::abs(y(zeta)));
     err_max = std::max(err_max, std::abs(p.x() - y(zeta)));
   }
-  std::printf("vertical riser: peak deflection %.4f m (string), max error %.2e m, top tension %.1f N "
-              "(given %.1f), %d iterations\n", y_max, err_max, r.end_B_force_N.norm(), T_top, r.iterations);
+  std::printf(
+      "vertical riser: peak deflection %.4f m (string), max error %.2e m, top tension %.1f N "
+      "(given %.1f), %d iterations\n",
+      y_max, err_max, r.end_B_force_N.norm(), T_top, r.iterations);
   EXPECT_GT(y_max, 1.0);  // the case deflects measurably
   EXPECT_LT(err_max, kDeflectionTolerance * y_max);
   EXPECT_NEAR(r.end_B_force_N.norm() / T_top, 1.0, kDeflectionTolerance);
@@ -265,12 +266,12 @@ TEST(FeStaticsRiser, ScrTouchdownCurvatureApproachesCatenaryValue) {
   const double kappa_cat = p.weight_N_per_m / H;
   const double top_angle_deg =
       std::atan2(std::abs(fine.end_B_force_N.x()), std::abs(fine.end_B_force_N.z())) * 180.0 / M_PI;
-  std::printf("SCR: w %.1f N/m, EI %.4g N m², H %.1f N, λ %.2f m, top angle %.2f°, w/H %.5e 1/m, "
-              "peak κ 1 m zone %.5e (%d el), 0.5 m zone %.5e (%d el); TDP at %.1f m\n",
-              p.weight_N_per_m, p.EI_Nm2, H, lambda, top_angle_deg, kappa_cat, peak(coarse),
-              static_cast<int>(coarse.element_tension_N.size()), peak(fine),
-              static_cast<int>(fine.element_tension_N.size()),
-              fine.touchdown ? fine.touchdown->arc_length_m : -1.0);
+  std::printf(
+      "SCR: w %.1f N/m, EI %.4g N m², H %.1f N, λ %.2f m, top angle %.2f°, w/H %.5e 1/m, "
+      "peak κ 1 m zone %.5e (%d el), 0.5 m zone %.5e (%d el); TDP at %.1f m\n",
+      p.weight_N_per_m, p.EI_Nm2, H, lambda, top_angle_deg, kappa_cat, peak(coarse),
+      static_cast<int>(coarse.element_tension_N.size()), peak(fine), static_cast<int>(fine.element_tension_N.size()),
+      fine.touchdown ? fine.touchdown->arc_length_m : -1.0);
   ASSERT_TRUE(fine.touchdown.has_value());
   EXPECT_NEAR(peak(fine) / kappa_cat, 1.0, kPeakCurvatureTolerance);
 

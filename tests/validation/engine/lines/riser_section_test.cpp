@@ -48,9 +48,7 @@ PipeSection export_scr() {
   return s;
 }
 
-double relative_error(double value, double reference) {
-  return std::abs(value - reference) / std::abs(reference);
-}
+double relative_error(double value, double reference) { return std::abs(value - reference) / std::abs(reference); }
 
 TEST(RiserSection, ProductionScrMatchesReferenceSheet) {
   const auto p = pipe_section_properties(production_scr(), kWater);
@@ -99,15 +97,12 @@ TEST(RiserSection, OpenEndedHangingPipeEffectiveTensionIsLinearWithZeroAtFreeEnd
   for (double z : {-L, -1500.0, -900.0, -1.0, 0.0}) {
     const double pe = external_pressure_Pa(z, kWater);
     const PipePressures pr{pe, pe};  // open to the sea: bore pressure equals the sea's
-    const double T_wall =
-        p.steel_mass_kg_per_m * g * (z + L) - external_pressure_Pa(-L, kWater) * p.steel_area_m2;
+    const double T_wall = p.steel_mass_kg_per_m * g * (z + L) - external_pressure_Pa(-L, kWater) * p.steel_area_m2;
     const double T_eff = effective_tension_N(T_wall, pr, p);
     const double expected = p.effective_weight_N_per_m * (z + L);
     // Absolute floor: at the free end both sides are zero; compare against the top value.
     EXPECT_NEAR(T_eff, expected, kIdentityRelTol * p.effective_weight_N_per_m * L) << "z = " << z;
-    EXPECT_NEAR(wall_tension_N(T_eff, pr, p), T_wall,
-                kIdentityRelTol * p.steel_mass_kg_per_m * g * L)
-        << "z = " << z;
+    EXPECT_NEAR(wall_tension_N(T_eff, pr, p), T_wall, kIdentityRelTol * p.steel_mass_kg_per_m * g * L) << "z = " << z;
   }
 }
 
@@ -121,11 +116,10 @@ TEST(RiserSection, ClosedEmptyHangingPipeEffectiveTensionIsLinearWithZeroAtFreeE
   const auto p = pipe_section_properties(s, kWater);
   const double L = 1000.0;
   for (double z : {-L, -400.0, 0.0}) {
-    const double T_wall = p.steel_mass_kg_per_m * kWater.gravity_m_per_s2 * (z + L) -
-                          external_pressure_Pa(-L, kWater) * p.outer_area_m2;
+    const double T_wall =
+        p.steel_mass_kg_per_m * kWater.gravity_m_per_s2 * (z + L) - external_pressure_Pa(-L, kWater) * p.outer_area_m2;
     const double T_eff = effective_tension_N(T_wall, {0.0, external_pressure_Pa(z, kWater)}, p);
-    EXPECT_NEAR(T_eff, p.effective_weight_N_per_m * (z + L),
-                kIdentityRelTol * std::abs(p.effective_weight_N_per_m) * L)
+    EXPECT_NEAR(T_eff, p.effective_weight_N_per_m * (z + L), kIdentityRelTol * std::abs(p.effective_weight_N_per_m) * L)
         << "z = " << z;
   }
 }
@@ -152,9 +146,7 @@ TEST(RiserSection, CoatingAndSmearedBuoyancyAddMassAndDisplacement) {
   EXPECT_LE(relative_error(p.coating_mass_kg_per_m, m_coat), kIdentityRelTol);
   EXPECT_LE(relative_error(p.buoyancy_mass_kg_per_m, m_buoy), kIdentityRelTol);
   EXPECT_DOUBLE_EQ(p.hydrodynamic_diameter_m, 1.0);
-  const double we =
-      (p.steel_mass_kg_per_m + m_coat + m_buoy + p.contents_mass_kg_per_m - 1025.0 * kPi / 4.0) *
-      9.80665;
+  const double we = (p.steel_mass_kg_per_m + m_coat + m_buoy + p.contents_mass_kg_per_m - 1025.0 * kPi / 4.0) * 9.80665;
   EXPECT_LE(relative_error(p.effective_weight_N_per_m, we), kIdentityRelTol);
   EXPECT_LT(p.effective_weight_N_per_m, 0.0);  // the buoyancy section floats: the "wave" rises
   // EA, EI stay those of the steel pipe.
@@ -196,8 +188,7 @@ TEST(RiserSection, FlexibleLayeredWallHasABoreButNoSteelWall) {
   // Sparks' identity needs only the bore and the outer area: T_w = T_e + p_i A_i - p_e A_o.
   const PipePressures pressures{12.0e6, 1.0e6};
   const double outer_m2 = kPi / 4.0 * 0.396 * 0.396;
-  EXPECT_LE(relative_error(wall_tension_N(5.0e5, pressures, p),
-                           5.0e5 + 12.0e6 * bore_m2 - 1.0e6 * outer_m2),
+  EXPECT_LE(relative_error(wall_tension_N(5.0e5, pressures, p), 5.0e5 + 12.0e6 * bore_m2 - 1.0e6 * outer_m2),
             kIdentityRelTol);
   try {
     check_pipe_stress(p, StressCheckInput{});
@@ -266,8 +257,7 @@ TEST(RiserSection, LameHoopTendsToThinWallWithSecondOrderError) {
     const double h_lame = check_pipe_stress(p, lame).inner_tension_fibre.hoop_Pa;
     const double h_thin = check_pipe_stress(p, thin).inner_tension_fibre.hoop_Pa;
     const double t_over_dm = wt / (0.2731 - wt);
-    EXPECT_LE(relative_error(h_lame / h_thin, 1.0 + t_over_dm * t_over_dm), kIdentityRelTol)
-        << "WT = " << wt;
+    EXPECT_LE(relative_error(h_lame / h_thin, 1.0 + t_over_dm * t_over_dm), kIdentityRelTol) << "WT = " << wt;
     // Lamé boundary conditions: sigma_r(r_i) = -p_i, sigma_r(r_o) = -p_e.
     EXPECT_DOUBLE_EQ(check_pipe_stress(p, lame).inner_tension_fibre.radial_Pa, -20.0e6);
   }
@@ -324,8 +314,7 @@ TEST(RiserSection, UtilizationScalesInverselyWithDesignFactor) {
     const auto r = check_pipe_stress(p, in);
     if (u_times_factor == 0.0) u_times_factor = r.utilization * in.design_factor;
     EXPECT_LE(relative_error(r.utilization * in.design_factor, u_times_factor), kIdentityRelTol);
-    EXPECT_LE(relative_error(r.utilization, r.max_von_mises_Pa / (in.design_factor * 448.0e6)),
-              kIdentityRelTol);
+    EXPECT_LE(relative_error(r.utilization, r.max_von_mises_Pa / (in.design_factor * 448.0e6)), kIdentityRelTol);
   }
 }
 
@@ -354,8 +343,7 @@ TEST(RiserSection, InvalidInputNamesTheField) {
   }
   StressCheckInput in;
   in.design_factor = 1.5;
-  EXPECT_THROW(check_pipe_stress(pipe_section_properties(production_scr(), kWater), in),
-               std::invalid_argument);
+  EXPECT_THROW(check_pipe_stress(pipe_section_properties(production_scr(), kWater), in), std::invalid_argument);
   EXPECT_THROW(check_bending_radius(0.1, 0.0), std::invalid_argument);
 }
 

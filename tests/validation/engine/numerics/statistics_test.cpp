@@ -74,14 +74,12 @@ TEST(Statistics, WelchSpectrumOfSumOfSinesIntegratesToTheVariance) {
 
 // One-sided Gaussian-shaped band spectrum around w0 (rad/s), variance sigma².
 double band_spectrum(double w, double sigma, double w0, double width) {
-  return sigma * sigma / (std::sqrt(2.0 * kPi) * width) *
-         std::exp(-0.5 * (w - w0) * (w - w0) / (width * width));
+  return sigma * sigma / (std::sqrt(2.0 * kPi) * width) * std::exp(-0.5 * (w - w0) * (w - w0) / (width * width));
 }
 
 // Gaussian process by FFT with independent normal coefficients (exactly
 // Gaussian, period = record length): x(t) = sum sqrt(S dw)(xi cos + eta sin).
-std::vector<double> gaussian_process(std::size_t n, double dt, unsigned seed, double sigma,
-                                     double w0, double width) {
+std::vector<double> gaussian_process(std::size_t n, double dt, unsigned seed, double sigma, double w0, double width) {
   std::mt19937_64 rng(seed);
   std::normal_distribution<double> normal;
   const double dw = 2.0 * kPi / (static_cast<double>(n) * dt);
@@ -196,8 +194,7 @@ TEST(Statistics, AnalyzeChannelReportsMinimaWithTheirSign) {
   const auto c = analyze_channel(x, 0.25, 4096);
   EXPECT_GT(c.maximum.mpm_rayleigh, c.moments.mean);
   EXPECT_LT(c.minimum.mpm_rayleigh, c.moments.mean);
-  EXPECT_NEAR(c.maximum.mpm_rayleigh - c.moments.mean, c.moments.mean - c.minimum.mpm_rayleigh,
-              1e-2);
+  EXPECT_NEAR(c.maximum.mpm_rayleigh - c.moments.mean, c.moments.mean - c.minimum.mpm_rayleigh, 1e-2);
 }
 
 TEST(Statistics, ShortOrInvalidRecordsThrow) {
