@@ -10,7 +10,7 @@ packages=(
   libeigen3-dev libsundials-dev libnlopt-cxx-dev libnlopt-dev libyaml-cpp-dev
   libosmesa6-dev libcli11-dev libfmt-dev libspdlog-dev libcairo2-dev libsqlite3-dev
   nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev libopenmpi-dev openmpi-bin
-  poppler-utils fonts-dejavu-core
+  poppler-utils fonts-dejavu-core clang-format
 )
 
 missing=()

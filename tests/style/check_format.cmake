@@ -1,0 +1,25 @@
+# Every C++ file of the project is formatted as .clang-format says (clang-format
+# 14, Debian's `clang-format`). Run: cmake -DROOT=<tree> -DCLANG_FORMAT=<exe> -P check_format.cmake
+# Fix: clang-format -i <file> (or scripts/format.sh for the whole tree).
+if(NOT ROOT OR NOT CLANG_FORMAT)
+  message(FATAL_ERROR "usage: cmake -DROOT=<source tree> -DCLANG_FORMAT=<clang-format> -P check_format.cmake")
+endif()
+set(files)
+foreach(folder engine design report app tests)
+  file(GLOB_RECURSE found ${ROOT}/${folder}/*.cpp ${ROOT}/${folder}/*.hpp)
+  list(APPEND files ${found})
+endforeach()
+list(FILTER files EXCLUDE REGEX "/tests/architecture/planted-")
+list(LENGTH files count)
+if(count EQUAL 0)
+  message(FATAL_ERROR "no C++ file found below ${ROOT}")
+endif()
+execute_process(COMMAND ${CLANG_FORMAT} --style=file --dry-run -Werror ${files}
+                WORKING_DIRECTORY ${ROOT} RESULT_VARIABLE result ERROR_VARIABLE errors)
+if(NOT result EQUAL 0)
+  string(REGEX MATCHALL "[^\n]*: error: code should be clang-formatted[^\n]*" lines "${errors}")
+  list(LENGTH lines n)
+  string(REPLACE ";" "\n  " text "${lines}")
+  message(FATAL_ERROR "${n} place(s) not formatted as .clang-format says (clang-format -i FILE, or bash scripts/format.sh):\n  ${text}")
+endif()
+message(STATUS "format: ${count} files as .clang-format says")
