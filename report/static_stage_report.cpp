@@ -1,3 +1,7 @@
+// The preliminary stage's report: one function per section, in report order.
+// Past ~600 lines because the stage has that many sections (pretensions,
+// cases, restoring curves, code check, riser criteria, SOZ, storm, verdict);
+// the shared pieces (SOZ, storm, scenes) are already in their own files.
 #include "report/static_stage_report.hpp"
 
 #include <fmt/format.h>

@@ -1,3 +1,9 @@
+// The riser offset evaluator and the zone search of soz.hpp. Past ~600 lines
+// on purpose: the search (march, bracket, regula falsi, symmetry sharing) and
+// the evaluator's warm-start and tolerance contract (march solves at 1e-5,
+// re-solved at 1e-10 near utilization 1) are one algorithm whose invariants
+// read best side by side; the offset check is in soz_check.cpp, the symmetry
+// in soz_symmetry.cpp.
 #include "design/project/command_line_reference.hpp"
 #include "design/soz/soz.hpp"
 
