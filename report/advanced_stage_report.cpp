@@ -37,9 +37,9 @@ Section critical_cases_section(const design::AdvancedStageResults& r) {
           {"Rank", "Case", "Condition", "S-C score", "Governs (S-C)", "Coupled run", "Wall (s)", "Final check"},
           {}};
   for (const auto& c : r.cases) {
-    t.rows.push_back({num(c.rank, 0), text(c.case_name), text(c.condition), num(c.intermediate_score, 3),
-                      text(c.intermediate_governing), text(c.coupled ? "finished" : "FAILED"), num(c.wall_s, 2),
-                      verdict(c.pass)});
+    t.rows.push_back({num(c.rank, 0), text(c.case_name), text(design::to_string(c.integrity)),
+                      num(c.intermediate_score, 3), text(c.intermediate_governing),
+                      text(c.coupled ? "finished" : "FAILED"), num(c.wall_s, 2), verdict(c.pass)});
   }
   s.blocks.emplace_back(t);
   for (const auto& c : r.cases)

@@ -192,7 +192,7 @@ Section dynamics_section(const design::StageDynamics& d, const std::string& code
       "step, seed {}, integrated from the stage's static equilibrium of the case. Wall-clock cost {:.2f} s "
       "(line reduction and damping {:.2f} s, forcing {:.2f} s, hull dynamics {:.2f} s, {} steps, fairlead "
       "tensions {:.2f} s; the static equilibrium was reused from the static cases).",
-      design::to_string(d.level), d.case_name, d.condition,
+      design::to_string(d.level), d.case_name, design::to_string(d.integrity),
       d.damaged_line ? fmt::format(", {} removed", *d.damaged_line) : std::string(), d.selection, d.duration_s,
       d.output_step_s, d.seed, d.wall_s, d.timing.reduction_s, d.timing.forcing_s,
       d.timing.dynamics_s + d.timing.wave_frequency_s, d.solver_steps, d.timing.tensions_s)});

@@ -36,10 +36,10 @@ Section ranking_section(const design::IntermediateStageResults& r) {
           {}};
   for (const auto& c : r.ranked) {
     const auto& sc = case_of(r, c);
-    t.rows.push_back({num(c.rank, 0), text(sc.case_name), text(sc.condition), num(c.tension_utilization, 3),
-                      text(c.storm.most_loaded_line), num(c.offset_ratio, 3), num(c.riser_utilization, 3),
-                      text(c.riser.empty() ? "–" : c.riser + " " + c.riser_criterion), num(c.score, 3),
-                      text(c.governing_measure), text(c.critical ? "yes" : "no"), verdict(c.pass)});
+    t.rows.push_back({num(c.rank, 0), text(sc.case_name), text(design::to_string(sc.integrity)),
+                      num(c.tension_utilization, 3), text(c.storm.most_loaded_line), num(c.offset_ratio, 3),
+                      num(c.riser_utilization, 3), text(c.riser.empty() ? "–" : c.riser + " " + c.riser_criterion),
+                      num(c.score, 3), text(c.governing_measure), text(c.critical ? "yes" : "no"), verdict(c.pass)});
   }
   s.blocks.emplace_back(t);
 

@@ -90,7 +90,7 @@ Figure plan_figure(const design::SozResult& z, const std::vector<design::OffsetC
   damaged.color = kDamagedColor, damaged.marker = Marker::triangle;
   for (std::size_t i = 0; i < z.offset_checks.size(); ++i) {
     const design::OffsetCheck& c = z.offset_checks[i];
-    Series& s = c.condition == "damaged" ? damaged : intact;
+    Series& s = c.integrity == design::LineIntegrity::damaged ? damaged : intact;
     const double x = c.offset_m * std::cos(c.direction_deg * kDegToRad),
                  y = c.offset_m * std::sin(c.direction_deg * kDegToRad);
     s.x.push_back(x);
@@ -189,7 +189,7 @@ Section soz_section(const design::SozResult& z, const std::vector<design::Offset
   std::vector<design::OffsetCheck> rows = z.offset_checks;
   rows.insert(rows.end(), extremes.begin(), extremes.end());
   for (const auto& c : rows) {
-    check.rows.push_back({text(c.case_name), text(c.condition), text(c.kind), num(c.offset_m, 2),
+    check.rows.push_back({text(c.case_name), text(design::to_string(c.integrity)), text(c.kind), num(c.offset_m, 2),
                           num(c.direction_deg, 1), num(c.allowable_m, 1), num(c.margin_m, 1), num(c.ratio, 3),
                           text(c.governing_riser), verdict(c.passes)});
   }

@@ -412,15 +412,16 @@ Section results_section(const design::ValidatedProject& vp, const design::Static
     const auto& c = r.cases[i];
     const auto& k = r.checks[i];
     const auto& o = c.offset_summary;
-    off.rows.push_back({text(c.case_name), text(c.condition), num(c.environment_force.head<2>().norm(), 1, kN),
-                        num(o.horizontal_m, 2), num(o.horizontal_pct_depth, 3), num(o.direction_deg, 1),
-                        num(o.heave_m, 3), num(o.roll_deg, 3), num(o.pitch_deg, 3), num(o.yaw_deg, 3),
+    off.rows.push_back({text(c.case_name), text(design::to_string(c.integrity)),
+                        num(c.environment_force.head<2>().norm(), 1, kN), num(o.horizontal_m, 2),
+                        num(o.horizontal_pct_depth, 3), num(o.direction_deg, 1), num(o.heave_m, 3), num(o.roll_deg, 3),
+                        num(o.pitch_deg, 3), num(o.yaw_deg, 3),
                         k.offset_limit_m ? num(*k.offset_limit_m, 1) : text("–"), verdict(k.offset_pass)});
     if (k.governing_line >= 0) {
       const auto& g = k.lines[static_cast<std::size_t>(k.governing_line)];
-      summary.rows.push_back({text(c.case_name), text(c.condition), num(k.safety_factor, 2), text(g.line),
-                              num(g.max_tension_N, 1, kN), num(g.utilization_mbl, 3), num(g.utilization, 3),
-                              verdict(k.lines_pass), verdict(k.pass)});
+      summary.rows.push_back({text(c.case_name), text(design::to_string(c.integrity)), num(k.safety_factor, 2),
+                              text(g.line), num(g.max_tension_N, 1, kN), num(g.utilization_mbl, 3),
+                              num(g.utilization, 3), verdict(k.lines_pass), verdict(k.pass)});
     }
   }
   s.blocks.emplace_back(off);
@@ -474,9 +475,9 @@ Section riser_section(const design::StaticStageResults& r) {
     const auto worst = std::max_element(c.risers.begin(), c.risers.end(),
                                         [](const auto& a, const auto& b) { return a.utilization < b.utilization; });
     const bool all_pass = std::all_of(c.risers.begin(), c.risers.end(), [](const auto& x) { return x.passes; });
-    summary.rows.push_back({text(c.case_name), text(c.condition), text(design::to_string(c.design_condition)),
-                            text(worst->name), text(worst->governing_criterion), num(worst->utilization, 3),
-                            verdict(all_pass)});
+    summary.rows.push_back({text(c.case_name), text(design::to_string(c.integrity)),
+                            text(design::to_string(c.design_condition)), text(worst->name),
+                            text(worst->governing_criterion), num(worst->utilization, 3), verdict(all_pass)});
   }
   s.blocks.emplace_back(summary);
   for (const auto& c : r.cases) {

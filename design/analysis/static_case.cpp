@@ -83,7 +83,7 @@ StaticCaseResult run_static_case(const ValidatedProject& validated, const Static
                              fmt::format("no mooring line named \"{}\" (defined: {})", *damaged, names));
   }
   result.damaged_line = damaged;
-  result.condition = damaged ? "damaged" : "intact";
+  result.integrity = damaged ? LineIntegrity::damaged : LineIntegrity::intact;
 
   engine::ExternalLoad environment_load;
   LineArrayOptions line_options;

@@ -47,7 +47,7 @@ struct NaturalMode {
 struct StaticCaseResult {
   std::string case_name;    ///< load case, or "still-water"
   std::string environment;  ///< environment name, or "none"
-  std::string condition;    ///< "intact" or "damaged"
+  LineIntegrity integrity = LineIntegrity::intact;
   std::optional<std::string> damaged_line;
 
   engine::Vector6d offset = engine::Vector6d::Zero();  ///< m, rad

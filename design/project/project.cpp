@@ -92,6 +92,8 @@ const char* to_string(LineModel model) {
   return "?";
 }
 
+const char* to_string(LineIntegrity integrity) { return integrity == LineIntegrity::damaged ? "damaged" : "intact"; }
+
 const char* to_string(DesignCondition condition) {
   switch (condition) {
     case DesignCondition::normal:

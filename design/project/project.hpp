@@ -285,6 +285,11 @@ struct RiserSection {
 /// damaged: survival.
 enum class DesignCondition { normal, extreme, survival };
 
+/// Whether a case has every mooring line (intact) or one removed (damaged):
+/// it selects the mooring code's factors (API RP 2SK, DNV-OS-E301). Not a
+/// design condition, which is the riser code's (above).
+enum class LineIntegrity { intact, damaged };
+
 /// API RP 2RD allowable-stress design factors: von Mises stress <= factor x
 /// yield stress, the factor being C_f C_a with C_a = 2/3 and C_f = 1.0, 1.2,
 /// 1.5. Each in (0, 1].
@@ -477,6 +482,7 @@ const char* to_string(WindSpectrum spectrum);
 const char* to_string(MooringCode code);
 const char* to_string(LineModel model);
 const char* to_string(DesignCondition condition);
+const char* to_string(LineIntegrity integrity);  ///< "intact" | "damaged"
 
 /// `base` with the values given in `overrides` replacing its own.
 RiserCriteria with_overrides(RiserCriteria base, const RiserCriteriaOverrides& overrides);

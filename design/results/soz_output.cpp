@@ -101,7 +101,7 @@ nlohmann::json soz_to_json(const SozResult& r) {
                  {"offset_mpm_3h_m", e.offset_mpm_m}};
     }
     checks.push_back({{"case", c.case_name},
-                      {"condition", c.condition},
+                      {"condition", to_string(c.integrity)},
                       {"damaged_line", c.damaged_line ? nlohmann::json(*c.damaged_line) : nlohmann::json(nullptr)},
                       {"kind", c.kind},
                       {"zone", c.zone},
@@ -289,8 +289,8 @@ std::string soz_table(const SozResult& r) {
                        "offset m", "dir°", "allowable m", "margin m", "ratio", "", "riser", "zone");
     for (const OffsetCheck& c : r.offset_checks) {
       out += fmt::format("{:<32} {:<8} {:<7} {:>9.2f} {:>7.1f} {:>11.2f} {:>9.2f} {:>7.3f} {:<5} {:<6} {}\n",
-                         c.case_name, c.condition, c.kind, c.offset_m, c.direction_deg, c.allowable_m, c.margin_m,
-                         c.ratio, c.passes ? "PASS" : "FAIL", c.governing_riser, c.zone);
+                         c.case_name, to_string(c.integrity), c.kind, c.offset_m, c.direction_deg, c.allowable_m,
+                         c.margin_m, c.ratio, c.passes ? "PASS" : "FAIL", c.governing_riser, c.zone);
     }
   }
   for (const std::string& note : r.notes) out += "Note: " + note + "\n";

@@ -54,8 +54,8 @@ nlohmann::json riser_profile_json(const std::vector<RiserProfilePoint>& profile)
 }
 
 std::string case_heading(const StaticCaseResult& r, const std::string& project_name) {
-  return fmt::format("{} — case '{}' (environment {}, {}{})\n", project_name, r.case_name, r.environment, r.condition,
-                     r.damaged_line ? fmt::format(": line {} removed", *r.damaged_line) : "");
+  return fmt::format("{} — case '{}' (environment {}, {}{})\n", project_name, r.case_name, r.environment,
+                     to_string(r.integrity), r.damaged_line ? fmt::format(": line {} removed", *r.damaged_line) : "");
 }
 
 }  // namespace
@@ -113,7 +113,7 @@ nlohmann::json static_case_to_json(const StaticCaseResult& r, const std::string&
       {"project", project_name},
       {"case", r.case_name},
       {"environment", r.environment},
-      {"condition", r.condition},
+      {"condition", to_string(r.integrity)},
       {"damaged_line", r.damaged_line ? nlohmann::json(*r.damaged_line) : nlohmann::json(nullptr)},
       {"offset_6dof", six(r.offset)},
       {"offset",

@@ -204,7 +204,7 @@ struct OffsetExtreme {
 /// One load case's offset (static mean, or extreme) against the platform SOZ.
 struct OffsetCheck {
   std::string case_name;
-  std::string condition;  ///< intact | damaged
+  LineIntegrity integrity = LineIntegrity::intact;
   std::optional<std::string> damaged_line;
   /// static: the mean (static equilibrium) offset. extreme: ratio = 3-h MPM
   /// of r(t) (OffsetExtreme), direction the one of the record's largest r(t),

@@ -96,7 +96,7 @@ class PlatformPolygon {
 OffsetCheck check_of(const StaticCaseResult& c, const std::string& zone) {
   OffsetCheck check;
   check.case_name = c.case_name;
-  check.condition = c.condition;
+  check.integrity = c.integrity;
   check.damaged_line = c.damaged_line;
   check.zone = zone;
   return check;

@@ -21,7 +21,7 @@ constexpr std::uint64_t kSeed = 1;
 /// tension_<name>_N (the coupled FE lines, summarize_channels).
 void final_checks(const ValidatedProject& vp, const LevelSummary& coupled, CriticalCaseVerification& v) {
   const Project& p = vp.project;
-  const bool damaged = v.condition == "damaged";
+  const bool damaged = v.integrity == LineIntegrity::damaged;
   for (const MooringLine& line : p.mooring.lines) {
     const ChannelSummary* c = find_channel(coupled, "tension_" + line.name + "_N");
     if (c == nullptr) continue;  // the damaged line is not in the coupled system
@@ -82,7 +82,7 @@ CriticalCaseVerification verify_case(const ValidatedProject& vp, const Intermedi
   CriticalCaseVerification v;
   v.rank = ranked.rank;
   v.case_name = statics.case_name;
-  v.condition = statics.condition;
+  v.integrity = statics.integrity;
   v.intermediate_score = ranked.score;
   v.intermediate_governing = ranked.governing_measure;
   // The riser criteria the coupled run does not give (stress, angles, …)

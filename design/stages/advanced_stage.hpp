@@ -68,7 +68,7 @@ struct FinalRiserCheck {
 struct CriticalCaseVerification {
   int rank = 0;  ///< in the intermediate ranking
   std::string case_name;
-  std::string condition;  ///< intact | damaged
+  LineIntegrity integrity = LineIntegrity::intact;
   double intermediate_score = 0.0;
   std::string intermediate_governing;  ///< tension | offset | riser
   /// sc-enhanced, its tension channel on the coupled run's most loaded line;

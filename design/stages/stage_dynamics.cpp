@@ -92,7 +92,7 @@ StageDynamics summarize_stage_dynamics(const ValidatedProject& vp, const StaticC
   const AnalysisLevel level = r.level;
   StageDynamics out;
   out.case_name = r.case_name;
-  out.condition = statics.condition;
+  out.integrity = statics.integrity;
   out.damaged_line = statics.damaged_line;
   out.selection = std::move(selection);
   out.level = level;
@@ -143,8 +143,9 @@ StageDynamics summarize_stage_dynamics(const ValidatedProject& vp, const StaticC
     out.channels.push_back(summarize_storm_channel("tension " + *loaded->line, "N", *loaded->tension_N, dt));
     const StormChannel& t = out.channels.back();
     out.fairlead_mbl_N = fairlead_segment_mbl(vp, *loaded->line);
-    const DynamicTensionCheck check = dynamic_tension_check(vp.project.criteria.mooring, statics.condition == "damaged",
-                                                            t.mean, t.mpm_max.value_or(t.maximum), out.fairlead_mbl_N);
+    const DynamicTensionCheck check =
+        dynamic_tension_check(vp.project.criteria.mooring, statics.integrity == LineIntegrity::damaged, t.mean,
+                              t.mpm_max.value_or(t.maximum), out.fairlead_mbl_N);
     out.dynamic_safety_factor = check.factor;
     out.tension_utilization = check.utilization;
     out.tension_pass = check.utilization <= 1.0;
@@ -153,7 +154,7 @@ StageDynamics summarize_stage_dynamics(const ValidatedProject& vp, const StaticC
   if (zone && !zone->risers.empty()) {
     StaticCaseResult extreme;  // names the case; the offset comes from the record
     extreme.case_name = out.case_name;
-    extreme.condition = out.condition;
+    extreme.integrity = out.integrity;
     extreme.damaged_line = out.damaged_line;
     std::string fit_note;
     OffsetCheck check = extreme_offset_check(*zone, extreme, r.total, r.times_s, "still-water", fit_note);

@@ -45,7 +45,7 @@ struct StormChannel {
 
 struct StageDynamics {
   std::string case_name;
-  std::string condition;  ///< intact | damaged
+  LineIntegrity integrity = LineIntegrity::intact;
   std::optional<std::string> damaged_line;
   std::string selection;  ///< why this case was analysed
   AnalysisLevel level = AnalysisLevel::semi_coupled_enhanced;

@@ -21,8 +21,8 @@ constexpr double kDegToRad = std::numbers::pi / 180.0;
 CaseCheck check_case(const Project& project, const StaticCaseResult& result) {
   CaseCheck check;
   check.case_name = result.case_name;
-  check.condition = result.condition;
-  check.safety_factor = mooring_safety_factor(project.criteria.mooring, result.condition == "damaged");
+  check.integrity = result.integrity;
+  check.safety_factor = mooring_safety_factor(project.criteria.mooring, result.integrity == LineIntegrity::damaged);
   double worst = -1.0;
   for (std::size_t i = 0; i < result.lines.size(); ++i) {
     const LineStaticsRow& row = result.lines[i];

@@ -52,7 +52,7 @@ struct LineCodeCheck {
 
 struct CaseCheck {
   std::string case_name;
-  std::string condition;  ///< "intact" or "damaged"
+  LineIntegrity integrity = LineIntegrity::intact;
   double safety_factor = 0.0;
   std::vector<LineCodeCheck> lines;      ///< same order as StaticCaseResult::lines
   double offset_m = 0.0;                 ///< horizontal offset of the equilibrium

@@ -23,7 +23,7 @@ TEST(StaticStage, DefaultScenarioCasesChecksAndCurves) {
   for (std::size_t i = 0; i < r.cases.size(); ++i) {
     const CaseCheck& check = r.checks[i];
     // API RP 2SK quasi-static factors of the scenario.
-    EXPECT_DOUBLE_EQ(check.safety_factor, r.cases[i].condition == "damaged" ? 1.43 : 2.0);
+    EXPECT_DOUBLE_EQ(check.safety_factor, r.cases[i].integrity == LineIntegrity::damaged ? 1.43 : 2.0);
     for (std::size_t l = 0; l < check.lines.size(); ++l) {
       EXPECT_DOUBLE_EQ(check.lines[l].utilization, r.cases[i].lines[l].utilization * check.safety_factor);
       EXPECT_EQ(check.lines[l].pass, check.lines[l].utilization <= 1.0);
@@ -74,7 +74,7 @@ TEST(StaticStage, DefaultScenarioCasesChecksAndCurves) {
     EXPECT_FALSE(c.spectrum_density.empty()) << c.name;
   }
   const StormChannel& t = d.channels[4];
-  const double sf_dynamic = d.condition == "damaged" ? 1.25 : 1.67;  // the scenario's API RP 2SK factors
+  const double sf_dynamic = d.integrity == LineIntegrity::damaged ? 1.25 : 1.67;  // the scenario's API RP 2SK factors
   EXPECT_NEAR(d.tension_utilization, *t.mpm_max * sf_dynamic / d.fairlead_mbl_N, 1e-12);
   ASSERT_TRUE(d.extreme_offset.has_value());
   EXPECT_EQ(d.extreme_offset->kind, "extreme");

@@ -61,7 +61,7 @@ TEST(SozCheck, ExtremeOffsetOfEveryCaseFromTheEnhancedScAnalysis) {
     const OffsetCheck& e = *extremes.at(lc.name);
     ASSERT_TRUE(e.extreme.has_value());
     EXPECT_FALSE(s.extreme.has_value());
-    EXPECT_EQ(e.condition, s.condition);
+    EXPECT_EQ(e.integrity, s.integrity);
     EXPECT_EQ(e.damaged_line, s.damaged_line);
     // The storm moves the hull about its mean position: the 3-h MPM of the
     // offset and of the zone utilization exceed the static (mean) values.
