@@ -161,6 +161,7 @@ StageDynamics summarize_stage_dynamics(const ValidatedProject& vp, const StaticC
     if (!fit_note.empty())
       out.notes.push_back("extreme offset: the record's largest offset/allowable (no extreme-value fit: " + fit_note +
                           ")");
+    check.extreme->seed = r.seed;  // the record's own sea, as soz --extreme records it
     out.extreme_offset = check;
   }
   return out;
