@@ -24,6 +24,8 @@ class Command {
  protected:
   Command(std::string name, std::string description);
   virtual void add_options(CLI::App& subcommand) = 0;
+  /// Positional arguments before PROJECT (e.g. the kind of a study).
+  virtual void add_leading_arguments(CLI::App& /*subcommand*/) {}
 
   std::string project_file_;
 
@@ -41,5 +43,7 @@ std::unique_ptr<Command> report_command();
 std::unique_ptr<Command> soz_command();
 std::unique_ptr<Command> analyze_command();
 std::unique_ptr<Command> compare_command();
+std::unique_ptr<Command> optimize_command();
+std::unique_ptr<Command> study_command();
 
 }  // namespace spiral::app

@@ -14,11 +14,14 @@
 #include "design/project/command_line_reference.hpp"
 #include "design/project/model_hash.hpp"
 #include "design/project/validated_project.hpp"
+#include "design/optimization/pretension_optimizer.hpp"
+#include "design/optimization/pretension_study.hpp"
 #include "design/stages/advanced_stage.hpp"
 #include "design/stages/intermediate_stage.hpp"
 #include "design/stages/static_stage.hpp"
 #include "report/advanced_stage_report.hpp"
 #include "report/intermediate_stage_report.hpp"
+#include "report/optimization_report.hpp"
 #include "report/report_writer.hpp"
 #include "report/static_stage_report.hpp"
 
@@ -53,7 +56,17 @@ class ReportCommand : public Command {
     bool pass = true;
     report::ReportDocument document;
     bool solver_failed = false;
-    if (stage_ == "advanced") {
+    if (stage_ == "optimization") {
+      // The project's optimization, and the study of all groups together
+      // (11 points) for the trade-off plot.
+      const design::OptimizationResult result = design::optimize_pretension(loaded, {});
+      design::PretensionStudyRequest study;
+      study.points = 11;
+      const design::PretensionStudyResult sweep = design::run_pretension_study(loaded, study);
+      pass = result.status == design::OptimizationStatus::optimal;
+      solver_failed = !pass;
+      document = report::optimization_report(loaded, result, sweep, info);
+    } else if (stage_ == "advanced") {
       const design::AdvancedStageResults results = design::run_advanced_stage(loaded);
       pass = results.pass;
       solver_failed = results.failed_runs > 0;
@@ -82,12 +95,13 @@ class ReportCommand : public Command {
  private:
   void add_options(CLI::App& sub) override {
     sub.add_option("--stage", stage_,
-                   "Stage: preliminary (default), intermediate or advanced (fully coupled verification of the "
-                   "critical cases)");
+                   "Stage: preliminary (default), intermediate, advanced (fully coupled verification of the "
+                   "critical cases) or optimization (pretension optimization and study)");
     sub.add_option("--out", out_, "Output folder (default: out/<project-stem>/<stage>)");
   }
 
   void check_stage(const design::ValidatedProject& loaded) const {
+    if (stage_ == "optimization") return;  // a study of the project, not one of its stages
     bool listed = loaded.project.stages.empty();
     for (const auto& s : loaded.project.stages) listed = listed || s.name == stage_;
     // The stages of DESIGN.md §2; a user-named stage has no analyses of its own.

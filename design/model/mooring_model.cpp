@@ -72,10 +72,7 @@ engine::FeLineModel fe_model_of(const Project& project, const MooringLine& line,
     // The zone is centred on the touchdown point of the at-rest line (hull at
     // its reference point), from the multi-segment catenary: its laid length
     // is the arc from the anchor to the TDP.
-    const Eigen::Vector3d fairlead_g = project.hull.reference_point_g + line.fairlead_b;
-    const engine::CatenaryGeometry at_rest{(fairlead_g - line.anchor_g).head<2>().norm(),
-                                           fairlead_g.z() - line.anchor_g.z(),
-                                           std::max(0.0, line.anchor_g.z() + project.site.depth_m)};
+    const engine::CatenaryGeometry at_rest = catenary_geometry_at_rest(project, line);
     try {
       model.refinement = touchdown_refinement_zone(line.fe, engine::solve_catenary(catenary, at_rest).laid_length_m);
     } catch (const engine::SolverError& error) {
@@ -95,6 +92,12 @@ void check_excluded_line(const Project& project, const std::string& excluded_lin
 }
 
 }  // namespace
+
+engine::CatenaryGeometry catenary_geometry_at_rest(const Project& project, const MooringLine& line) {
+  const Eigen::Vector3d fairlead_g = project.hull.reference_point_g + line.fairlead_b;
+  return {(fairlead_g - line.anchor_g).head<2>().norm(), fairlead_g.z() - line.anchor_g.z(),
+          std::max(0.0, line.anchor_g.z() + project.site.depth_m)};
+}
 
 LineArrayModel build_mooring_model(const Project& project, const std::string& excluded_line) {
   check_excluded_line(project, excluded_line);

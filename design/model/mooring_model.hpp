@@ -44,6 +44,11 @@ const LineTypeProperties& find_type(const std::vector<LineTypeProperties>& types
 /// Resolves every line type of the project (by name).
 std::vector<LineTypeProperties> resolve_line_types(const Project& project);
 
+/// Where a line's fairlead is relative to its anchor with the hull at its
+/// rest position, in the catenary's plane: the geometry pretension is
+/// defined at (hull fixed, still water).
+engine::CatenaryGeometry catenary_geometry_at_rest(const Project& project, const MooringLine& line);
+
 /// The engine catenary of one project line.
 engine::CatenaryLine catenary_of(const Project& project, const MooringLine& line,
                                  const std::vector<LineTypeProperties>& types);

@@ -94,6 +94,36 @@ const char* to_string(LineModel model) {
 
 const char* to_string(LineIntegrity integrity) { return integrity == LineIntegrity::damaged ? "damaged" : "intact"; }
 
+const char* to_string(OptimizationObjective objective) {
+  switch (objective) {
+    case OptimizationObjective::max_soz_margin:
+      return "max_soz_margin";
+    case OptimizationObjective::min_max_utilization:
+      return "min_max_utilization";
+    case OptimizationObjective::min_total_payout:
+      return "min_total_payout";
+    case OptimizationObjective::min_max_offset:
+      return "min_max_offset";
+  }
+  return "?";
+}
+
+const char* to_string(OptimizationAlgorithm algorithm) {
+  switch (algorithm) {
+    case OptimizationAlgorithm::slsqp:
+      return "slsqp";
+    case OptimizationAlgorithm::ccsaq:
+      return "ccsaq";
+    case OptimizationAlgorithm::cobyla:
+      return "cobyla";
+  }
+  return "?";
+}
+
+const char* to_string(DamagedConditions damaged) {
+  return damaged == DamagedConditions::every_line ? "every_line" : "load_cases";
+}
+
 const char* to_string(DesignCondition condition) {
   switch (condition) {
     case DesignCondition::normal:

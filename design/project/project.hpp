@@ -444,6 +444,59 @@ struct Stage {
   std::optional<double> duration_s;
 };
 
+/// What the pretension optimizer seeks (`optimization.objective`,
+/// design/optimization/pretension_optimizer.hpp).
+enum class OptimizationObjective {
+  max_soz_margin,       ///< the smallest offset margin to the platform SOZ over all cases, as large as possible
+  min_max_utilization,  ///< the largest line utilization over all cases, as small as possible
+  min_total_payout,     ///< the least winching, sum of |payout| over the groups, that meets every constraint
+  min_max_offset,       ///< the largest static offset over all cases, as small as possible
+};
+
+/// NLopt algorithm of the optimizer (`optimization.algorithm`): SLSQP and
+/// CCSAQ use the analytic gradients, COBYLA none.
+enum class OptimizationAlgorithm { slsqp, ccsaq, cobyla };
+
+/// The damaged conditions the constraints cover (`optimization.damaged`):
+/// the load cases as written (each with its own damaged line, if any), or
+/// also every intact case with each single mooring line removed in turn.
+enum class DamagedConditions { load_cases, every_line };
+
+/// The payout range of one group (`optimization.bounds[i]`), m: negative
+/// hauls in (shorter line, higher pretension), positive pays out.
+struct PayoutBound {
+  std::string group;
+  double min_m = 0.0;
+  double max_m = 0.0;
+};
+
+/// Target-pretension mode (`optimization.target_pretension[i]`): every line
+/// of the group gets the payout that gives it this fairlead tension with the
+/// hull at its rest position.
+struct PretensionTarget {
+  std::string group;
+  double tension_N = 0.0;  ///< > 0
+};
+
+/// The pretension optimization study (`optimization`, docs/project-format.md).
+struct Optimization {
+  /// The design variables: one payout per group. Empty: the project's groups
+  /// in order, skipping a group that shares a line with an earlier one; a
+  /// line in no group is its own group.
+  std::vector<std::string> groups;
+  std::vector<PayoutBound> bounds;  ///< groups without one: ± payout_limit_pct of their shortest line
+  double payout_limit_pct = 2.0;    ///< %, of the line's total unstretched length, > 0
+  OptimizationObjective objective = OptimizationObjective::max_soz_margin;
+  OptimizationAlgorithm algorithm = OptimizationAlgorithm::slsqp;
+  std::vector<std::string> cases;  ///< load cases constrained; empty: every load case
+  DamagedConditions damaged = DamagedConditions::load_cases;
+  std::optional<double> min_laid_length_m;  ///< every line keeps at least this on the seabed, >= 0
+  std::optional<double> min_tension_N;      ///< every fairlead tension at least this (no slack), > 0
+  double payout_tolerance_m = 0.05;         ///< stop when no payout moves more than this, > 0
+  int max_evaluations = 200;                ///< NLopt evaluation cap, >= 1
+  std::vector<PretensionTarget> target_pretension;
+};
+
 /// Position of a YAML node in its file (1-based).
 struct SourcePosition {
   int line = 1;
@@ -467,6 +520,7 @@ struct Project {
   std::vector<LoadCase> load_cases;
   Criteria criteria;
   std::vector<Stage> stages;  ///< absent in YAML: preliminary, intermediate, advanced
+  std::optional<Optimization> optimization;
   /// Where each field came from, so later passes report file:line:col.
   /// Empty for projects built in code.
   SourceMap source_map;
@@ -483,6 +537,9 @@ const char* to_string(MooringCode code);
 const char* to_string(LineModel model);
 const char* to_string(DesignCondition condition);
 const char* to_string(LineIntegrity integrity);  ///< "intact" | "damaged"
+const char* to_string(OptimizationObjective objective);
+const char* to_string(OptimizationAlgorithm algorithm);
+const char* to_string(DamagedConditions damaged);
 
 /// `base` with the values given in `overrides` replacing its own.
 RiserCriteria with_overrides(RiserCriteria base, const RiserCriteriaOverrides& overrides);

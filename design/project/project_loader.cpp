@@ -54,6 +54,7 @@ void read_project(MapReader& r, Project& p, const std::filesystem::path& base_fo
     r.child("stages", kOptional);  // known key, for suggestions
     p.stages = {{"preliminary", {}, {}}, {"intermediate", {}, {}}, {"advanced", {}, {}}};
   }
+  r.map("optimization", kOptional, [&](MapReader& o) { p.optimization = read_optimization(o); });
 }
 
 [[noreturn]] void throw_issues(std::vector<InputIssue> issues) {

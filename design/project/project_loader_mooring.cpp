@@ -50,11 +50,11 @@ MooringLine read_mooring_line(MapReader& r, std::optional<double> seabed_z) {
   return line;
 }
 
+}  // namespace
+
 void read_name(Context& ctx, const YAML::Node& node, const std::string& path, std::vector<std::string>& out) {
   if (auto name = to_string_value(ctx, node, path)) out.push_back(*name);
 }
-
-}  // namespace
 
 Site read_site(MapReader& r) {
   Site site;

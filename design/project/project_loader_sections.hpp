@@ -8,6 +8,7 @@
 //                                drift, hydrodynamics, geometry)
 //   project_loader_risers.cpp    risers and the riser criteria
 //   project_loader_cases.cpp     environments, load_cases, criteria, stages
+//   project_loader_optimization.cpp  optimization
 // and project_loader.cpp reads the top level in file order.
 
 #include <filesystem>
@@ -17,6 +18,9 @@
 #include "design/project/yaml_map_reader.hpp"
 
 namespace spiral::design::loader_detail {
+
+/// A name in a list of names (`mooring.groups[i].lines`, `optimization.cases`).
+void read_name(Context& ctx, const YAML::Node& node, const std::string& path, std::vector<std::string>& out);
 
 Site read_site(MapReader& r);
 LineTypeInput read_line_type(MapReader& r);
@@ -39,5 +43,6 @@ Environment read_environment(MapReader& r);
 LoadCase read_load_case(MapReader& r);
 Criteria read_criteria(MapReader& r);
 Stage read_stage(MapReader& r);
+Optimization read_optimization(MapReader& r);
 
 }  // namespace spiral::design::loader_detail

@@ -44,6 +44,7 @@ std::vector<InputIssue> check_project(const Project& project, const LineCheckTab
   check_load_cases(project, r);
   check_criteria(project, r);
   check_stages(project, r);
+  check_optimization(project, line_types, r);
   sort_in_file_order(issues);
   return issues;
 }

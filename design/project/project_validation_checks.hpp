@@ -8,6 +8,7 @@
 //   project_validation_hull.cpp      hull (tables, hydrodynamics, geometry)
 //   project_validation_risers.cpp    risers and the riser criteria
 //   project_validation_cases.cpp     environments, load_cases, criteria, stages
+//   project_validation_optimization.cpp  optimization
 // and project_validation.cpp runs them in that order. Each check reports each
 // violated condition under its name; the condition names and messages are
 // listed in docs/project-format.md. (Layout after Drake's
@@ -86,6 +87,9 @@ std::string defined_list(const std::vector<T>& items) {
 
 // -------------------------------------------------------------- sections ----
 
+/// The EA/MBL/weight of a line type: the resolved table first, explicit input second.
+LineCheckProperties check_properties(const Project& p, const LineCheckTable& table, const std::string& type);
+
 /// FE discretization of a line or riser at `at` (its `fe` map).
 void check_fe_mesh(Reporter& r, const std::string& at, const FeMesh& mesh);
 /// A file the project refers to exists (file_exists).
@@ -105,5 +109,7 @@ void check_environments(const Project& p, Reporter& r);
 void check_load_cases(const Project& p, Reporter& r);
 void check_criteria(const Project& p, Reporter& r);
 void check_stages(const Project& p, Reporter& r);
+/// Groups, bounds (ordered, no line left too short), cases and limits of `optimization`.
+void check_optimization(const Project& p, const LineCheckTable& table, Reporter& r);
 
 }  // namespace spiral::design::validation_detail

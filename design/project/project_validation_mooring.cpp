@@ -7,9 +7,7 @@
 #include "design/project/project_validation_checks.hpp"
 
 namespace spiral::design::validation_detail {
-namespace {
 
-/// The EA/MBL/weight of a type: resolved table first, explicit input second.
 LineCheckProperties check_properties(const Project& p, const LineCheckTable& table, const std::string& type) {
   if (const auto it = table.find(type); it != table.end()) return it->second;
   LineCheckProperties props;
@@ -21,6 +19,8 @@ LineCheckProperties check_properties(const Project& p, const LineCheckTable& tab
   }
   return props;
 }
+
+namespace {
 
 /// Length against the at-rest anchor-fairlead geometry (lines too short to
 /// reach without breaking, or so long that they lie slack).

@@ -57,6 +57,7 @@ LineEndResponse CatenaryStaticLine::solve_in_plane(const Plane& plane, double ve
     throw SolverError(fmt::format("line '{}': {}", name_, error.what()), error.diagnostics());
   }
   warm_start_ = CatenaryGuess{last_.fairlead_horizontal_N, last_.fairlead_vertical_N};
+  last_direction_g_ = plane.direction_g;
 
   const Eigen::Vector3d& e = plane.direction_g;
   LineEndResponse response;

@@ -79,6 +79,13 @@ class CatenaryStaticLine final : public StaticLine {
   LineState state(const Eigen::Vector3d& attachment_g, int points_per_segment) override;
   void reset() override { warm_start_.reset(); }
 
+  /// The line, its last solution and the horizontal direction (anchor ->
+  /// fairlead) of the plane it was solved in: what the payout sensitivities
+  /// of engine/lines/catenary_payout.hpp need.
+  const CatenaryLine& line() const { return line_; }
+  const CatenarySolution& last_solution() const { return last_; }
+  const Eigen::Vector3d& last_direction_g() const { return last_direction_g_; }
+
  private:
   std::string name_;
   Eigen::Vector3d anchor_g_;
@@ -88,6 +95,7 @@ class CatenaryStaticLine final : public StaticLine {
   CatenaryOptions options_;
   std::optional<CatenaryGuess> warm_start_;
   CatenarySolution last_;
+  Eigen::Vector3d last_direction_g_ = Eigen::Vector3d::UnitX();
 
   struct Plane {
     double span_m;

@@ -1,0 +1,94 @@
+#pragma once
+// The pretension optimization problem of a project, shared by the optimizer
+// and the pretension study: the variables (groups and bounds), the scenarios
+// (load cases × line integrity), the platform zones they are checked
+// against, and the constraints and objective measures at a payout vector,
+// with gradients (pretension_optimizer.hpp for their definitions).
+
+#include <Eigen/Core>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "design/model/hull_model.hpp"
+#include "design/optimization/pretension_optimizer.hpp"
+#include "design/optimization/smooth_zone.hpp"
+
+namespace spiral::design {
+
+/// A function of the payouts with its gradient (per group, 1/m).
+struct Measure {
+  ConstraintValue value;
+  Eigen::VectorXd gradient;
+};
+
+struct ProblemEvaluation {
+  std::vector<ScenarioResponse> responses;  ///< per scenario
+  std::vector<Measure> constraints;         ///< g ≤ 0
+  /// The quantities the minimax objective bounds (empty for min_total_payout).
+  std::vector<Measure> objective_measures;
+};
+
+class PretensionProblem {
+ public:
+  PretensionProblem(const ValidatedProject& project, const OptimizationRequest& request);
+  ~PretensionProblem();
+
+  const Project& project() const { return project_; }
+  const Optimization& settings() const { return settings_; }
+  const std::vector<GroupVariable>& groups() const { return groups_; }
+  const std::vector<Scenario>& scenarios() const { return scenarios_; }
+  const std::vector<std::string>& findings() const { return findings_; }
+  const std::vector<std::string>& notes() const { return notes_; }
+  double zone_conservatism_m() const { return zone_conservatism_m_; }
+  double zone_wall_s() const { return zone_wall_s_; }
+  /// What the objective measures are in (the history's objective column).
+  std::string objective_unit() const;
+
+  /// Every scenario at `payouts_m` (in parallel), with the constraints and
+  /// measures. Gradients when asked. Throws engine::SolverError naming the
+  /// scenario.
+  ProblemEvaluation evaluate(const Eigen::VectorXd& payouts_m, bool with_gradient);
+
+  /// The objective at an evaluation (for minimax: the largest measure).
+  double objective_of(const ProblemEvaluation& evaluation, const Eigen::VectorXd& payouts_m) const;
+
+  ScenarioSummary summarize(std::size_t scenario, const ScenarioResponse& response) const;
+
+  /// Every distinct zone, sampled every 2°.
+  std::vector<ZoneOutline> zone_outlines() const;
+
+  /// The same problem with every scenario model built afresh (re-verification).
+  void rebuild_models();
+
+  /// Whether any scenario has expensive lines that are not variables (FE risers).
+  bool has_expensive_lines() const;
+  /// ScenarioModel::linearize_expensive_lines / restore_expensive_lines of every scenario.
+  void linearize_expensive_lines();
+  void restore_expensive_lines();
+
+ private:
+  struct ZoneOfScenario {
+    std::string name;
+    std::shared_ptr<const SmoothZone> zone;  ///< none: no risers, or the zone was dropped (findings)
+    std::vector<double> directions_deg;
+    std::vector<std::string> governing_riser;
+  };
+  const Project& project_;
+  Optimization settings_;
+  std::vector<PayoutGroup> payout_groups_;
+  std::vector<GroupVariable> groups_;
+  std::vector<Scenario> scenarios_;
+  std::vector<ZoneOfScenario> zones_;
+  std::vector<ScenarioModel> models_;
+  HullModel hull_;
+  std::vector<std::string> findings_, notes_;
+  double zone_conservatism_m_ = 0.0;
+  double zone_wall_s_ = 0.0;
+  int threads_ = 1;
+
+  void add_scenario_constraints(std::size_t s, const ScenarioResponse& r, bool with_gradient,
+                                ProblemEvaluation& out) const;
+};
+
+}  // namespace spiral::design

@@ -1,0 +1,323 @@
+#include "design/optimization/scenario_model.hpp"
+
+#include <fmt/format.h>
+
+#include <Eigen/LU>
+#include <algorithm>
+#include <cmath>
+
+#include "design/criteria/mooring_checks.hpp"
+#include "design/model/environment_loads.hpp"
+#include "design/model/riser_model.hpp"
+#include "engine/analysis/fe_static_line.hpp"
+#include "engine/analysis/linearized_line.hpp"
+#include "engine/analysis/static_line.hpp"
+#include "engine/lines/catenary_payout.hpp"
+
+namespace spiral::design {
+
+std::string Scenario::label() const {
+  if (!damaged_line || !removed_by_study) return case_name;
+  return fmt::format("{} without {}", case_name, *damaged_line);
+}
+
+namespace {
+
+Eigen::Matrix3d skew(const Eigen::Vector3d& a) {
+  Eigen::Matrix3d s;
+  s << 0.0, -a.z(), a.y(), a.z(), 0.0, -a.x(), -a.y(), a.x(), 0.0;
+  return s;
+}
+
+/// ω = T d(roll, pitch, yaw) for R = Rz(yaw) Ry(pitch) Rx(roll): the global
+/// angular displacement of Euler-angle increments.
+Eigen::Matrix3d euler_rate_to_global(const Eigen::Vector3d& roll_pitch_yaw) {
+  const double cp = std::cos(roll_pitch_yaw(1)), sp = std::sin(roll_pitch_yaw(1));
+  const double cy = std::cos(roll_pitch_yaw(2)), sy = std::sin(roll_pitch_yaw(2));
+  Eigen::Matrix3d t;
+  t << cy * cp, -sy, 0.0, sy * cp, cy, 0.0, -sp, 0.0, 1.0;
+  return t;
+}
+
+/// A mooring line of the scenario and how to rebuild it at a payout.
+struct PaidLine {
+  std::size_t project_index = 0;
+  int group = -1;  ///< index into the groups, or −1 (not a variable)
+  double anchor_height_m = 0.0;
+  std::optional<engine::CatenaryLine> catenary;  ///< at zero payout; none for an FE line
+  double installed_payout_m = 0.0;
+};
+
+/// Where along a line its utilization is set.
+struct GoverningPoint {
+  double utilization = 0.0;
+  std::string segment_type;
+  std::size_t point = 0;  ///< index into the catenary profile
+};
+
+}  // namespace
+
+struct ScenarioModel::Impl {
+  const Project& project;
+  const HullModel& hull;
+  const std::vector<PayoutGroup>& groups;
+  std::vector<LineTypeProperties> types;
+  engine::ExternalLoad environment_load;
+  std::optional<engine::CurrentProfile> current;
+  LineArrayModel array;
+  std::vector<PaidLine> paid;  ///< one per mooring line of `array`
+  double safety_factor = 1.0;
+  engine::Vector6d last_offset = engine::Vector6d::Zero();
+  std::optional<engine::HullPose> last_pose;
+  /// The full lines while their linearizations stand in (by array index).
+  std::vector<std::unique_ptr<engine::StaticLine>> stashed;
+
+  Impl(const Project& p, const HullModel& h, const std::vector<PayoutGroup>& g, const Scenario& scenario)
+      : project(p), hull(h), groups(g), types(resolve_line_types(p)) {
+    const LoadCase& load_case = *std::find_if(p.load_cases.begin(), p.load_cases.end(),
+                                              [&](const LoadCase& c) { return c.name == scenario.case_name; });
+    const Environment& environment = environment_of(p, load_case);
+    environment_load = mean_environment_load(p, environment).load;
+    current = current_profile_of(environment);
+    LineArrayOptions options;
+    options.excluded_line = scenario.damaged_line.value_or("");
+    options.current = current;
+    array = build_line_array(p, options);
+    safety_factor = mooring_safety_factor(p.criteria.mooring, scenario.damaged_line.has_value());
+    for (const MooringLineDesign& design : array.designs) {
+      PaidLine line;
+      for (std::size_t i = 0; i < p.mooring.lines.size(); ++i)
+        if (p.mooring.lines[i].name == design.name) line.project_index = i;
+      for (std::size_t k = 0; k < g.size(); ++k) {
+        if (std::find(g[k].lines.begin(), g[k].lines.end(), line.project_index) != g[k].lines.end())
+          line.group = static_cast<int>(k);
+      }
+      const MooringLine& source = p.mooring.lines[line.project_index];
+      line.anchor_height_m = std::max(0.0, source.anchor_g.z() + p.site.depth_m);
+      if (source.model == LineModel::catenary) line.catenary = catenary_of(p, source, types);
+      paid.push_back(std::move(line));
+    }
+  }
+
+  bool all_catenary() const {
+    return std::all_of(paid.begin(), paid.end(), [](const PaidLine& l) { return l.catenary.has_value(); });
+  }
+
+  /// Rebuilds the mooring lines whose payout changed.
+  void install(const Eigen::VectorXd& payouts_m) {
+    for (std::size_t k = 0; k < paid.size(); ++k) {
+      PaidLine& line = paid[k];
+      const double payout = line.group >= 0 ? payouts_m(line.group) : 0.0;
+      if (payout == line.installed_payout_m) continue;
+      const MooringLine& source = project.mooring.lines[line.project_index];
+      if (line.catenary) {
+        array.lines[k] = std::make_unique<engine::CatenaryStaticLine>(source.name, source.anchor_g, source.fairlead_b,
+                                                                      line.anchor_height_m,
+                                                                      engine::with_payout(*line.catenary, payout));
+      } else {
+        MooringLine paid_out = source;
+        paid_out.segments.back().length_m += payout;
+        const engine::FeLineModel fe = fe_line_model(project, paid_out, types);
+        array.lines[k] = std::make_unique<engine::FeStaticLine>(
+            source.name, source.anchor_g, source.fairlead_b, fe,
+            fe_environment(project, current, fe.sections.front().hydro_diameter_m));
+      }
+      line.installed_payout_m = payout;
+    }
+  }
+
+  engine::Matrix6d environment_stiffness(const engine::Vector6d& offset) const {
+    // Central differences of a function evaluation; steps as for the
+    // line-array check (line_array.hpp: FiniteDifferenceSteps).
+    engine::Matrix6d k = engine::Matrix6d::Zero();
+    for (int j = 0; j < 6; ++j) {
+      const double h = j < 3 ? 1e-2 : 1e-4;
+      engine::Vector6d plus = offset, minus = offset;
+      plus(j) += h;
+      minus(j) -= h;
+      k.col(j) = -(environment_load(plus) - environment_load(minus)) / (2.0 * h);
+    }
+    return k;
+  }
+
+  GoverningPoint governing_point(std::size_t k, const std::vector<engine::LineProfilePoint>& profile) const {
+    GoverningPoint out;
+    const MooringLineDesign& design = array.designs[k];
+    for (std::size_t p = 0; p < profile.size(); ++p) {
+      const auto segment = static_cast<std::size_t>(profile[p].segment);
+      if (segment >= design.segment_types.size()) continue;
+      const double u = safety_factor * profile[p].tension_N / design.segment_types[segment].breaking_load_N;
+      if (u >= out.utilization) out = {u, design.segment_types[segment].name, p};
+    }
+    return out;
+  }
+};
+
+ScenarioModel::ScenarioModel(const Project& project, const HullModel& hull, const std::vector<PayoutGroup>& groups,
+                             Scenario scenario)
+    : impl_(std::make_unique<Impl>(project, hull, groups, scenario)), scenario_(std::move(scenario)) {}
+ScenarioModel::ScenarioModel(ScenarioModel&&) noexcept = default;
+ScenarioModel::~ScenarioModel() = default;
+
+ScenarioResponse ScenarioModel::evaluate(const Eigen::VectorXd& payouts_m, bool with_gradient) {
+  Impl& m = *impl_;
+  if (with_gradient && !m.all_catenary()) return evaluate_by_differences(payouts_m);
+  m.install(payouts_m);
+  engine::EquilibriumResult eq;
+  try {
+    eq = engine::solve_static_equilibrium(m.hull.statics, m.array.lines, m.environment_load, m.last_offset);
+  } catch (const engine::SolverError& error) {
+    throw engine::SolverError(fmt::format("{}: {}", scenario_.label(), error.what()), error.diagnostics());
+  }
+  m.last_offset = eq.offset;
+  m.last_pose = eq.pose;
+  ScenarioResponse out;
+  out.offset = eq.offset;
+  out.equilibrium_iterations = eq.iterations;
+
+  const auto group_count = static_cast<Eigen::Index>(m.groups.size());
+  Eigen::Matrix<double, 6, Eigen::Dynamic> dq;
+  if (with_gradient) {
+    // ∂F/∂ΔL per group, from each catenary's payout tangent at the solution.
+    Eigen::Matrix<double, 6, Eigen::Dynamic> rhs = Eigen::Matrix<double, 6, Eigen::Dynamic>::Zero(6, group_count);
+    for (std::size_t k = 0; k < m.paid.size(); ++k) {
+      if (m.paid[k].group < 0) continue;
+      const auto& line = static_cast<const engine::CatenaryStaticLine&>(*m.array.lines[k]);
+      const Eigen::Vector2d s = engine::catenary_payout_sensitivity(line.line(), line.last_solution());
+      const Eigen::Vector3d df = -s.x() * line.last_direction_g() - s.y() * Eigen::Vector3d::UnitZ();
+      const Eigen::Vector3d arm = eq.pose.rotation * line.attachment_b();
+      rhs.col(m.paid[k].group).head<3>() += df;
+      rhs.col(m.paid[k].group).tail<3>() += arm.cross(df);
+    }
+    // The equilibrium's unknowns are the offset with roll, pitch, yaw
+    // (hydrostatics and environment are functions of them); the line-array K
+    // is per small global rotation ω = T(angles) d(roll, pitch, yaw).
+    engine::Matrix6d to_global = engine::Matrix6d::Identity();
+    to_global.bottomRightCorner<3, 3>() = euler_rate_to_global(eq.offset.tail<3>());
+    const engine::Matrix6d k_total =
+        m.hull.statics.hydrostatic_stiffness + eq.lines.stiffness * to_global + m.environment_stiffness(eq.offset);
+    const Eigen::Matrix<double, 6, Eigen::Dynamic> d_offset = k_total.partialPivLu().solve(rhs);
+    out.d_horizontal_offset = d_offset.topRows<2>();
+    dq = to_global * d_offset;  // translations and small global rotations
+  }
+
+  for (std::size_t k = 0; k < m.paid.size(); ++k) {
+    engine::StaticLine& line = *m.array.lines[k];
+    const Eigen::Vector3d arm = eq.pose.rotation * line.attachment_b();
+    // One profile point per segment end: a segment's largest tension is at
+    // one of its ends (statics_study.cpp).
+    const engine::LineState state = line.state(eq.pose.reference_point_g + arm, 1);
+    LineResponse r;
+    r.name = m.array.designs[k].name;
+    r.fairlead_tension_N = state.top.force_g.norm();
+    r.laid_length_m = state.laid_length_m;
+    const GoverningPoint governing = m.governing_point(k, state.profile);
+    r.utilization = governing.utilization;
+    r.governing_segment_type = governing.segment_type;
+    if (with_gradient) {
+      const auto& catenary = static_cast<const engine::CatenaryStaticLine&>(line);
+      const engine::CatenarySolution& sol = catenary.last_solution();
+      const engine::CatenarySegment& top = catenary.line().segments.back();
+      const Eigen::Vector3d& e = catenary.last_direction_g();
+      // Fairlead displacement per group, then the in-plane spans.
+      const Eigen::Matrix<double, 3, Eigen::Dynamic> dp = dq.topRows<3>() - skew(arm) * dq.bottomRows<3>();
+      Eigen::Matrix<double, 2, Eigen::Dynamic> dspan(2, group_count);
+      dspan.row(0) = e.transpose() * dp;
+      dspan.row(1) = dp.row(2);
+      Eigen::Matrix<double, 2, Eigen::Dynamic> dhv = sol.tangent_stiffness * dspan;
+      Eigen::VectorXd own = Eigen::VectorXd::Zero(group_count);  // ∂/∂ΔL of this line's own payout
+      if (m.paid[k].group >= 0) {
+        own(m.paid[k].group) = 1.0;
+        dhv += engine::catenary_payout_sensitivity(catenary.line(), sol) * own.transpose();
+      }
+      const double h = sol.fairlead_horizontal_N, v = sol.fairlead_vertical_N;
+      const Eigen::VectorXd dH = dhv.row(0).transpose(), dV = dhv.row(1).transpose();
+      r.d_fairlead_tension_N = (h * dH + v * dV) / sol.fairlead_tension_N;
+      // The governing point: T² = H² + V_p², V_p = V_F − (weight above it);
+      // below the fairlead the added top length adds w_top ΔL above it.
+      const engine::CatenaryProfilePoint& point = sol.profile[governing.point];
+      const bool at_fairlead = governing.point + 1 == sol.profile.size();
+      const MooringLineDesign& design = m.array.designs[k];
+      const double mbl = design.segment_types[static_cast<std::size_t>(point.segment)].breaking_load_N;
+      Eigen::VectorXd dT_point;
+      if (point.on_seabed || point.tension_N <= 0.0) {
+        dT_point = dH;
+      } else {
+        const Eigen::VectorXd dVp = at_fairlead ? dV : Eigen::VectorXd(dV - top.weight_N_per_m * own);
+        dT_point = (point.horizontal_N * dH + point.vertical_N * dVp) / point.tension_N;
+      }
+      r.d_utilization = m.safety_factor / mbl * dT_point;
+      // Laid length: the suspended part weighs V_F; the added top length
+      // takes w_top ΔL of it, the touchdown point moves by the rest over the
+      // weight per metre of the segment it lies in.
+      r.d_laid_length_m = Eigen::VectorXd::Zero(group_count);
+      if (sol.regime == engine::CatenaryRegime::touchdown && sol.laid_length_m > 0.0) {
+        double arc = 0.0;
+        const engine::CatenarySegment* at_touchdown = &catenary.line().segments.back();
+        for (const engine::CatenarySegment& s : catenary.line().segments) {
+          arc += s.length_m;
+          if (arc >= sol.laid_length_m) {
+            at_touchdown = &s;
+            break;
+          }
+        }
+        if (at_touchdown->weight_N_per_m > 0.0)
+          r.d_laid_length_m = -(dV - top.weight_N_per_m * own) / at_touchdown->weight_N_per_m;
+      }
+    }
+    out.lines.push_back(std::move(r));
+  }
+  return out;
+}
+
+void ScenarioModel::linearize_expensive_lines() {
+  Impl& m = *impl_;
+  if (!m.last_pose) evaluate(Eigen::VectorXd::Zero(static_cast<Eigen::Index>(m.groups.size())), false);
+  m.stashed.resize(m.array.lines.size());
+  for (std::size_t k = m.paid.size(); k < m.array.lines.size(); ++k) {
+    std::unique_ptr<engine::StaticLine>& line = m.array.lines[k];
+    if (m.stashed[k] || !line->expensive()) continue;
+    const Eigen::Vector3d at = m.last_pose->reference_point_g + m.last_pose->rotation * line->attachment_b();
+    const engine::LineEndResponse response = line->solve(at);  // the stored solution: no new solve
+    auto linear = std::make_unique<engine::LinearizedStaticLine>(line->name(), line->attachment_b(), at, response);
+    m.stashed[k] = std::move(line);
+    line = std::move(linear);
+  }
+}
+
+void ScenarioModel::restore_expensive_lines() {
+  Impl& m = *impl_;
+  for (std::size_t k = 0; k < m.stashed.size(); ++k)
+    if (m.stashed[k]) m.array.lines[k] = std::move(m.stashed[k]);
+  m.stashed.clear();
+}
+
+ScenarioResponse ScenarioModel::evaluate_by_differences(const Eigen::VectorXd& payouts_m, double step_m) {
+  ScenarioResponse out = evaluate(payouts_m, false);
+  const Eigen::Index n = payouts_m.size();
+  out.d_horizontal_offset.setZero(2, n);
+  for (LineResponse& line : out.lines) {
+    line.d_fairlead_tension_N.setZero(n);
+    line.d_utilization.setZero(n);
+    line.d_laid_length_m.setZero(n);
+  }
+  for (Eigen::Index g = 0; g < n; ++g) {
+    Eigen::VectorXd plus = payouts_m, minus = payouts_m;
+    plus(g) += step_m;
+    minus(g) -= step_m;
+    const ScenarioResponse a = evaluate(plus, false);
+    const ScenarioResponse b = evaluate(minus, false);
+    out.d_horizontal_offset.col(g) = (a.offset.head<2>() - b.offset.head<2>()) / (2.0 * step_m);
+    for (std::size_t k = 0; k < out.lines.size(); ++k) {
+      out.lines[k].d_fairlead_tension_N(g) =
+          (a.lines[k].fairlead_tension_N - b.lines[k].fairlead_tension_N) / (2.0 * step_m);
+      out.lines[k].d_utilization(g) = (a.lines[k].utilization - b.lines[k].utilization) / (2.0 * step_m);
+      out.lines[k].d_laid_length_m(g) = (a.lines[k].laid_length_m - b.lines[k].laid_length_m) / (2.0 * step_m);
+    }
+  }
+  // Leave the warm start at the centre point.
+  evaluate(payouts_m, false);
+  return out;
+}
+
+}  // namespace spiral::design

@@ -1,0 +1,86 @@
+#include "design/results/pretension_study_output.hpp"
+
+#include <fmt/format.h>
+
+namespace spiral::design {
+
+namespace {
+
+nlohmann::json optional_number(const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(); }
+std::string cell(const std::optional<double>& v) { return v ? fmt::format("{:.4f}", *v) : ""; }
+
+}  // namespace
+
+nlohmann::json pretension_study_to_json(const PretensionStudyResult& r) {
+  nlohmann::json sweeps = nlohmann::json::array();
+  for (const PretensionSweep& s : r.sweeps) {
+    nlohmann::json points = nlohmann::json::array();
+    for (const PretensionStudyPoint& p : s.points) {
+      points.push_back({{"payout_m", p.payout_m},
+                        {"pretension_N", p.pretension_N},
+                        {"max_offset_m", p.max_offset_m},
+                        {"max_soz_ratio_intact", optional_number(p.max_soz_ratio_intact)},
+                        {"max_soz_ratio_damaged", optional_number(p.max_soz_ratio_damaged)},
+                        {"max_utilization_intact", p.max_utilization_intact},
+                        {"max_utilization_damaged", p.max_utilization_damaged},
+                        {"worst_constraint", p.worst_constraint},
+                        {"worst_constraint_name", p.worst_constraint_name},
+                        {"feasible", p.feasible}});
+    }
+    nlohmann::json band;
+    if (s.feasible_m) band = {{"from_m", s.feasible_m->first}, {"to_m", s.feasible_m->second}};
+    sweeps.push_back({{"name", s.name}, {"lines", s.lines}, {"feasible_band", band}, {"points", points}});
+  }
+  nlohmann::json j = {{"format", "spiral.pretension_study"},
+                      {"format_version", 1},
+                      {"project", r.project},
+                      {"scenarios", r.scenarios},
+                      {"sweeps", sweeps},
+                      {"notes", r.notes},
+                      {"evaluations", r.evaluations},
+                      {"wall_s", r.wall_s}};
+  if (r.optimum_payouts_m) j["optimum"] = {{"payouts_m", *r.optimum_payouts_m}, {"status", r.optimum_status}};
+  return j;
+}
+
+std::string pretension_study_csv(const PretensionStudyResult& r) {
+  std::string out =
+      "sweep,payout_m,pretension_kN,max_offset_m,max_soz_ratio_intact,max_soz_ratio_damaged,"
+      "max_utilization_intact,max_utilization_damaged,feasible,worst_constraint\n";
+  for (const PretensionSweep& s : r.sweeps) {
+    for (const PretensionStudyPoint& p : s.points) {
+      out +=
+          fmt::format("{},{:.4f},{:.3f},{:.4f},{},{},{:.5f},{:.5f},{},\"{}\"\n", s.name, p.payout_m,
+                      p.pretension_N / 1e3, p.max_offset_m, cell(p.max_soz_ratio_intact), cell(p.max_soz_ratio_damaged),
+                      p.max_utilization_intact, p.max_utilization_damaged, p.feasible ? 1 : 0, p.worst_constraint_name);
+    }
+  }
+  return out;
+}
+
+std::string pretension_study_table(const PretensionStudyResult& r) {
+  std::string out = fmt::format("Pretension study of {}: {} scenarios, {} evaluations, {:.2f} s\n", r.project,
+                                r.scenarios.size(), r.evaluations, r.wall_s);
+  for (const PretensionSweep& s : r.sweeps) {
+    out += fmt::format("\nsweep {} ({} lines); feasible band: {}\n", s.name, s.lines.size(),
+                       s.feasible_m ? fmt::format("{:.3f} to {:.3f} m", s.feasible_m->first, s.feasible_m->second)
+                                    : std::string("none"));
+    out += fmt::format("{:>10} {:>14} {:>10} {:>10} {:>10} {:>10} {:>10}  {}\n", "payout m", "pretension kN",
+                       "offset m", "SOZ int", "SOZ dam", "util int", "util dam", "");
+    for (const PretensionStudyPoint& p : s.points) {
+      out += fmt::format("{:>10.3f} {:>14.1f} {:>10.2f} {:>10} {:>10} {:>10.3f} {:>10.3f}  {}\n", p.payout_m,
+                         p.pretension_N / 1e3, p.max_offset_m, cell(p.max_soz_ratio_intact),
+                         cell(p.max_soz_ratio_damaged), p.max_utilization_intact, p.max_utilization_damaged,
+                         p.feasible ? "feasible" : "x " + p.worst_constraint_name);
+    }
+  }
+  if (r.optimum_payouts_m) {
+    out += fmt::format("\noptimizer ({}): payouts", r.optimum_status);
+    for (const double p : *r.optimum_payouts_m) out += fmt::format(" {:+.3f}", p);
+    out += " m\n";
+  }
+  for (const std::string& n : r.notes) out += "note: " + n + "\n";
+  return out;
+}
+
+}  // namespace spiral::design

@@ -1,0 +1,126 @@
+// The pretension optimizer on problems whose answer is known: a symmetric
+// spread (equal payouts by symmetry), a one-variable problem whose optimum a
+// bisection on the active constraint finds, and an infeasible set-up.
+
+#include "design/optimization/pretension_optimizer.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "design/optimization/pretension_problem.hpp"
+#include "tests/unit/design/optimization/optimization_fixture.hpp"
+
+namespace spiral::design {
+namespace {
+
+// Still water, three equal lines 120° apart: the least winching that lifts
+// every fairlead tension to a minimum above the pretension hauls each line in
+// by the same length (the problem is symmetric under the 120° turn), and the
+// minimum-tension constraint is active on all three.
+TEST(PretensionOptimizer, SymmetricSpreadGivesEqualPayouts) {
+  ValidatedProject p = testing::oc4_optimization_project(0.0, 0.0, true);
+  p.project.optimization->objective = OptimizationObjective::min_total_payout;
+  p.project.optimization->cases = {"still"};
+  p.project.optimization->min_tension_N = 1.30e6;  // OC4 pretension ≈ 1.13 MN
+  p.project.criteria.max_offset_pct_depth.reset();
+  const OptimizationResult r = optimize_pretension(p, {});
+  ASSERT_EQ(r.status, OptimizationStatus::optimal) << r.stop_reason;
+  ASSERT_EQ(r.payouts_m.size(), 3u);
+  EXPECT_LT(r.payouts_m[0], -0.5);
+  // Payout tolerance 0.05 m (the stopping rule); symmetry holds far tighter
+  // since every line sees the same constraint.
+  EXPECT_NEAR(r.payouts_m[1], r.payouts_m[0], 1e-3);
+  EXPECT_NEAR(r.payouts_m[2], r.payouts_m[0], 1e-3);
+  for (const ScenarioSummary& s : r.after) EXPECT_NEAR(s.min_fairlead_tension_N, 1.30e6, 1e-4 * 1.30e6);
+  EXPECT_GT(r.evaluations, 1);
+}
+
+// One variable (all three lines together) against a current along +x:
+// hauling in stiffens the spread (the offset falls) and loads the windward
+// line (its utilization rises). Minimizing the offset subject to
+// utilization ≤ 1 puts the optimum where the windward line's utilization
+// reaches 1; the safety factor is set so that this happens at −5 m. A
+// bisection on the utilization finds it independently.
+TEST(PretensionOptimizer, OneVariableOptimumMatchesBisectionOnTheActiveConstraint) {
+  ValidatedProject p = testing::oc4_optimization_project(1.5, 0.0);
+  p.project.mooring.groups = {{"all", {"L1", "L2", "L3"}}};
+  p.project.optimization->groups = {"all"};
+  p.project.optimization->objective = OptimizationObjective::min_max_offset;
+  p.project.optimization->cases = {"current"};
+  p.project.optimization->bounds = {{"all", -12.0, 12.0}};
+  p.project.criteria.max_offset_pct_depth.reset();
+
+  // Scale the safety factor so that the worst utilization is 1 at −5 m.
+  {
+    PretensionProblem problem(p, {});
+    const ProblemEvaluation e = problem.evaluate(Eigen::VectorXd::Constant(1, -5.0), false);
+    const ScenarioSummary s = problem.summarize(0, e.responses[0]);
+    p.project.criteria.mooring.api_rp_2sk->intact_quasi_static /= s.worst_utilization;
+  }
+  // Reference: bisection of worst utilization − 1 over the payout.
+  PretensionProblem reference(p, {});
+  const auto excess = [&](double payout) {
+    const ProblemEvaluation e = reference.evaluate(Eigen::VectorXd::Constant(1, payout), false);
+    return reference.summarize(0, e.responses[0]).worst_utilization - 1.0;
+  };
+  double lo = -12.0, hi = 0.0;  // utilization above 1 at lo, below at hi
+  ASSERT_GT(excess(lo), 0.0);
+  ASSERT_LT(excess(hi), 0.0);
+  while (hi - lo > 1e-5) {
+    const double mid = 0.5 * (lo + hi);
+    (excess(mid) > 0.0 ? lo : hi) = mid;
+  }
+  const double expected = 0.5 * (lo + hi);
+  EXPECT_NEAR(expected, -5.0, 1e-3);
+
+  for (const OptimizationAlgorithm algorithm : {OptimizationAlgorithm::slsqp, OptimizationAlgorithm::ccsaq}) {
+    OptimizationRequest request;
+    request.algorithm = algorithm;
+    const OptimizationResult r = optimize_pretension(p, request);
+    SCOPED_TRACE(to_string(algorithm));
+    ASSERT_EQ(r.status, OptimizationStatus::optimal) << r.stop_reason;
+    EXPECT_NEAR(r.payouts_m[0], expected, 1e-3);
+    EXPECT_LT(r.objective_best, r.objective_start);
+    // The active constraint is the windward line's utilization, with a
+    // positive multiplier (relaxing it would let the offset fall further).
+    const auto active = std::find_if(r.active.begin(), r.active.end(), [](const ActiveConstraint& a) {
+      return a.name.find("utilization of L2") != std::string::npos;
+    });
+    ASSERT_NE(active, r.active.end());
+    EXPECT_GT(active->multiplier, 0.0);
+  }
+  // Gradient-free: coarser, same optimum to its stopping tolerance.
+  OptimizationRequest cobyla;
+  cobyla.algorithm = OptimizationAlgorithm::cobyla;
+  const OptimizationResult r = optimize_pretension(p, cobyla);
+  ASSERT_EQ(r.status, OptimizationStatus::optimal) << r.stop_reason;
+  EXPECT_NEAR(r.payouts_m[0], expected, 0.05);
+}
+
+TEST(PretensionOptimizer, InfeasibleProblemNamesTheMostViolatedConstraint) {
+  ValidatedProject p = testing::oc4_optimization_project(1.5, 0.0);
+  p.project.optimization->objective = OptimizationObjective::min_max_utilization;
+  p.project.optimization->cases = {"current"};
+  p.project.criteria.max_offset_pct_depth = 0.05;  // 10 cm at 200 m: no payout holds a 1.5 m/s current that close
+  const OptimizationResult r = optimize_pretension(p, {});
+  EXPECT_EQ(r.status, OptimizationStatus::infeasible);
+  ASSERT_TRUE(r.most_violated.has_value());
+  EXPECT_EQ(r.most_violated->kind, "offset_limit");
+  EXPECT_GT(r.most_violated->value, 0.0);
+}
+
+TEST(PretensionOptimizer, DamagedConditionsOfEveryLineAreScenarios) {
+  ValidatedProject p = testing::oc4_optimization_project(1.0, 0.0);
+  p.project.optimization->cases = {"current"};
+  p.project.optimization->damaged = DamagedConditions::every_line;
+  p.project.optimization->objective = OptimizationObjective::min_max_utilization;
+  p.project.optimization->max_evaluations = 3;
+  const OptimizationResult r = optimize_pretension(p, {});
+  ASSERT_EQ(r.scenarios.size(), 4u);
+  EXPECT_EQ(r.scenarios[1], "current without L1");
+  EXPECT_LE(r.evaluations, 4);  // the start and the cap
+}
+
+}  // namespace
+}  // namespace spiral::design

@@ -1,0 +1,89 @@
+// The scenario model's analytic payout sensitivities against central
+// differences of whole equilibria, at random payout vectors, intact and with
+// a line removed.
+
+#include "design/optimization/scenario_model.hpp"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "design/model/hull_model.hpp"
+#include "tests/unit/design/optimization/optimization_fixture.hpp"
+
+namespace spiral::design {
+namespace {
+
+// The reference is central differences of equilibria solved to 1e-9 of the
+// force scale (a few mN on OC4), with a 5 cm payout step: the equilibrium's
+// round-off then moves a tension slope by ~1e-4 N/m, while the O(h²)
+// truncation, measured on OC4 between 3 cm and 10 cm steps, stays below 3e-6
+// of the slope (a 1 cm step is already round-off limited: 5e-5). The
+// analytic side is exact to the solver tolerances. Hence 2e-5 of the
+// quantity's gradient norm; a missed term (a line's own weight, the
+// environment's yaw stiffness, the Euler-rate map of the rotations) is
+// 1e-4 to 1.
+constexpr double kRelative = 2e-5;
+
+void expect_close(const Eigen::VectorXd& analytic, const Eigen::VectorXd& numeric, const std::string& what) {
+  const double scale = std::max(numeric.norm(), 1e-12);
+  EXPECT_LE((analytic - numeric).norm(), kRelative * scale)
+      << what << "\n analytic " << analytic.transpose() << "\n numeric  " << numeric.transpose();
+}
+
+void check_scenario(const ValidatedProject& p, const Scenario& scenario, int points) {
+  const std::vector<PayoutGroup> groups = payout_groups(p.project);
+  ASSERT_EQ(groups.size(), 3u);
+  const HullModel hull = build_hull_model(p.project);
+  ScenarioModel model(p.project, hull, groups, scenario);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> payout(-10.0, 10.0);
+  for (int k = 0; k < points; ++k) {
+    Eigen::VectorXd x(3);
+    for (int g = 0; g < 3; ++g) x(g) = payout(rng);
+    const ScenarioResponse analytic = model.evaluate(x, true);
+    const ScenarioResponse numeric = model.evaluate_by_differences(x, 0.05);
+    SCOPED_TRACE(scenario.label() + " at payouts " + std::to_string(x(0)) + ", " + std::to_string(x(1)) + ", " +
+                 std::to_string(x(2)));
+    expect_close(analytic.d_horizontal_offset.row(0).transpose(), numeric.d_horizontal_offset.row(0).transpose(),
+                 "d surge");
+    expect_close(analytic.d_horizontal_offset.row(1).transpose(), numeric.d_horizontal_offset.row(1).transpose(),
+                 "d sway");
+    ASSERT_EQ(analytic.lines.size(), numeric.lines.size());
+    for (std::size_t i = 0; i < analytic.lines.size(); ++i) {
+      const LineResponse& a = analytic.lines[i];
+      const LineResponse& n = numeric.lines[i];
+      expect_close(a.d_fairlead_tension_N, n.d_fairlead_tension_N, a.name + " d tension");
+      expect_close(a.d_utilization, n.d_utilization, a.name + " d utilization");
+      expect_close(a.d_laid_length_m, n.d_laid_length_m, a.name + " d laid length");
+    }
+  }
+}
+
+TEST(ScenarioModel, AnalyticPayoutGradientsMatchDifferencesIntact) {
+  const ValidatedProject p = testing::oc4_optimization_project(1.5, 30.0);
+  check_scenario(p, {"current", std::nullopt, DesignCondition::extreme}, 3);
+}
+
+TEST(ScenarioModel, AnalyticPayoutGradientsMatchDifferencesDamaged) {
+  const ValidatedProject p = testing::oc4_optimization_project(0.6, 30.0);
+  // Without L1 (anchor at 60°) L2 and L3 hold a current towards 30°.
+  check_scenario(p, {"current", std::string("L1"), DesignCondition::survival}, 2);
+}
+
+TEST(ScenarioModel, PayingOutSlackensTheLineAndMovesTheHullAway) {
+  const ValidatedProject p = testing::oc4_optimization_project(0.0, 0.0, true);
+  const std::vector<PayoutGroup> groups = payout_groups(p.project);
+  const HullModel hull = build_hull_model(p.project);
+  ScenarioModel model(p.project, hull, groups, {"still", std::nullopt, DesignCondition::extreme});
+  const ScenarioResponse at_rest = model.evaluate(Eigen::VectorXd::Zero(3), true);
+  // L2 (anchor at 180°) paid out: its tension falls, and the hull drifts
+  // towards +x, away from L2's anchor.
+  EXPECT_LT(at_rest.lines[1].d_fairlead_tension_N(1), 0.0) << at_rest.lines[1].d_fairlead_tension_N.transpose();
+  EXPECT_GT(at_rest.d_horizontal_offset(0, 1), 0.0) << at_rest.d_horizontal_offset;
+  // By symmetry the three equal lines hold the hull at zero horizontal offset.
+  EXPECT_NEAR(std::hypot(at_rest.offset(0), at_rest.offset(1)), 0.0, 1e-7) << at_rest.offset.transpose();
+}
+
+}  // namespace
+}  // namespace spiral::design
