@@ -124,3 +124,28 @@ TEST(PretensionOptimizer, DamagedConditionsOfEveryLineAreScenarios) {
 
 }  // namespace
 }  // namespace spiral::design
+
+namespace spiral::design {
+namespace {
+
+// A riser that fails its criteria with the hull at rest has no zone: no
+// pretension can help, and the optimizer says so, naming the riser and the
+// criterion (a finding for the riser team), instead of optimizing against an
+// empty zone.
+TEST(PretensionOptimizer, RiserWithoutZoneIsAFindingNamingTheRiserAndCriterion) {
+  ValidatedProject p = load_validated_project(std::string(SPIRAL_SOURCE_DIR) + "/scenarios/deepwater-fps.yaml");
+  p.project.criteria.risers.max_top_tension_N = 1.0e6;  // at-rest top tensions are 2.8 to 3.0 MN
+  p.project.optimization = Optimization{};
+  p.project.optimization->cases = {"lc5-operating-45deg"};
+  p.project.optimization->max_evaluations = 2;
+  const OptimizationResult r = optimize_pretension(p, {});
+  EXPECT_EQ(r.status, OptimizationStatus::infeasible);
+  ASSERT_FALSE(r.findings.empty());
+  EXPECT_NE(r.findings.front().find("fails max_top_tension already at zero offset"), std::string::npos)
+      << r.findings.front();
+  EXPECT_NE(r.findings.front().find("riser P"), std::string::npos) << r.findings.front();
+  EXPECT_EQ(r.objective, OptimizationObjective::min_max_offset);  // no zone: the offset is the measure
+}
+
+}  // namespace
+}  // namespace spiral::design
