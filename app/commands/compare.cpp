@@ -15,7 +15,7 @@
 #include "app/exit_codes.hpp"
 #include "app/output_folder.hpp"
 #include "design/analysis/level_comparison.hpp"
-#include "design/project/command_line_reference.hpp"
+#include "design/project/request_error.hpp"
 #include "design/project/validated_project.hpp"
 #include "design/results/level_comparison_output.hpp"
 

@@ -40,7 +40,7 @@
 #include <limits>
 #include <numbers>
 
-#include "design/project/command_line_reference.hpp"
+#include "design/project/request_error.hpp"
 #include "design/model/environment_loads.hpp"
 #include "design/analysis/dynamic_analysis.hpp"
 #include "design/soz/soz.hpp"
@@ -200,20 +200,20 @@ OffsetCheck extreme_offset_of(const StaticCaseResult& c, const Eigen::Matrix<dou
 OffsetCheck extreme_check(const Project& project, const StaticCaseResult& c, const DynamicAnalysisResult& run,
                           const PlatformPolygon& zone, const std::string& zone_name, const SozExtremeOptions& options) {
   if (run.total.cols() < 2) {
-    throw command_line_error(project, "--duration",
-                             fmt::format("load case '{}': the record has {} samples; a longer "
-                                         "--duration is needed for the extreme offset",
-                                         c.case_name, run.total.cols()),
-                             "soz_extreme_record");
+    throw request_error(project, "duration_s",
+                        fmt::format("load case '{}': the record has {} samples; a longer "
+                                    "duration is needed for the extreme offset",
+                                    c.case_name, run.total.cols()),
+                        "soz_extreme_record");
   }
   std::string fit_note;
   OffsetCheck check = extreme_offset_of(c, run.total, run.times_s, zone, zone_name, fit_note);
   if (!fit_note.empty()) {
-    throw command_line_error(project, "--duration",
-                             fmt::format("load case '{}': no extreme-value fit on a {:g} s record ({}); "
-                                         "simulate longer (3 h = 10800 s is the design sea state)",
-                                         c.case_name, options.duration_s, fit_note),
-                             "soz_extreme_record");
+    throw request_error(project, "duration_s",
+                        fmt::format("load case '{}': no extreme-value fit on a {:g} s record ({}); "
+                                    "simulate longer (3 h = 10800 s is the design sea state)",
+                                    c.case_name, options.duration_s, fit_note),
+                        "soz_extreme_record");
   }
   check.extreme->duration_s = options.duration_s;
   check.extreme->seed = options.seed;
