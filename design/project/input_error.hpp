@@ -29,9 +29,9 @@ struct InputIssue {
   std::string path;           ///< field path or request argument (`origin`); may be empty
   InputOrigin origin = InputOrigin::file;
   std::string message;  ///< the problem, with the value and unit that were found
-  /// Machine-readable name of the violated condition (`unknown_key`, `wrong_type`,
+  /// Machine-readable name of the problem (`unknown_key`, `wrong_type`,
   /// `segment_length_positive`, ...); tests and tools key on it, users read `message`.
-  std::string condition;
+  std::string problem;
 };
 
 /// `file:line:col: path: message` (parts that are unknown are left out).

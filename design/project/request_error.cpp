@@ -13,7 +13,7 @@ InputError request_error(const Project& project, const std::string& argument, co
   issue.path = argument;
   issue.origin = InputOrigin::request;
   issue.message = message;
-  issue.condition = problem;
+  issue.problem = problem;
   return InputError({issue});
 }
 

@@ -435,7 +435,7 @@ TEST(Soz, DirectionStepMustDivide360) {
       compute_soz(p, designs(p), {}, options(step));
       ADD_FAILURE() << "step " << step << " accepted";
     } catch (const InputError& e) {
-      EXPECT_EQ(e.issues().front().condition, "soz_step_divides_360");
+      EXPECT_EQ(e.issues().front().problem, "soz_step_divides_360");
       EXPECT_EQ(e.issues().front().origin, InputOrigin::request);
       EXPECT_EQ(e.issues().front().path, "step_deg");  // the request's argument, not a command-line flag
     }
