@@ -38,7 +38,7 @@ Section critical_cases_section(const design::AdvancedStageResults& r) {
           {}};
   for (const auto& c : r.cases) {
     t.rows.push_back({num(c.rank, 0), text(c.case_name), text(design::to_string(c.integrity)),
-                      num(c.intermediate_score, 3), text(c.intermediate_governing),
+                      num(c.intermediate_score, 3), text(design::to_string(c.intermediate_governing)),
                       text(c.coupled ? "finished" : "FAILED"), num(c.wall_s, 2), verdict(c.pass)});
   }
   s.blocks.emplace_back(t);
@@ -166,7 +166,8 @@ Figure overlay_figure(const design::CriticalCaseVerification& c, const std::stri
       const double scale = ch.unit == "N" ? kN : 1.0;
       Series s = time_envelope((*d)->times_s, ch.values, scale);
       s.label = design::to_string((*d)->level);
-      if (ch.unit == "N") s.label += (*d)->tension_source == "coupled" ? " (FE line)" : " (quasi-static)";
+      if (ch.unit == "N")
+        s.label += (*d)->tension_source == design::TensionSource::coupled ? " (FE line)" : " (quasi-static)";
       s.color = palette(d == &c.sc ? kScColor : kCoupledColor);
       s.line_width = 0.6;
       Series z;

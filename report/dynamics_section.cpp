@@ -156,7 +156,7 @@ std::vector<Block> storm_blocks(const design::StageDynamics& d, const std::strin
   if (d.channels.size() > 4) {
     const design::StormChannel& t = d.channels[4];
     Plot series = time_plot(d, t, 4);  // not red: the MPM line is
-    const bool coupled = d.tension_source == "coupled";
+    const bool coupled = d.tension_source == design::TensionSource::coupled;
     series.title = fmt::format("{} fairlead tension, {}", coupled ? "Coupled" : "Quasi-static", d.most_loaded_line);
     Plot spectrum = spectrum_plot(t, 4);
     out.emplace_back(plot_panels(

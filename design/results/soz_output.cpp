@@ -40,7 +40,7 @@ nlohmann::json soz_to_json(const SozResult& r) {
         messages.push_back({{"direction_deg", d.direction_deg}, {"message", d.solver_message}});
     }
     risers.push_back({{"name", z.name},
-                      {"kind", z.kind},
+                      {"kind", to_string(z.kind)},
                       {"azimuth_deg", z.azimuth_deg},
                       {"fails_at_zero_offset", z.fails_at_zero_offset},
                       {"zero_offset_governing_criterion", z.zero_offset_governing_criterion},
@@ -89,7 +89,7 @@ nlohmann::json soz_to_json(const SozResult& r) {
     checks.push_back({{"case", c.case_name},
                       {"condition", to_string(c.integrity)},
                       {"damaged_line", c.damaged_line ? nlohmann::json(*c.damaged_line) : nlohmann::json(nullptr)},
-                      {"kind", c.kind},
+                      {"kind", to_string(c.kind)},
                       {"zone", c.zone},
                       {"offset_m", number(c.offset_m)},
                       {"offset_pct_depth", number(pct(c.offset_m, r.depth_m))},

@@ -75,7 +75,7 @@ nlohmann::json static_case_to_json(const StaticCaseResult& r, const std::string&
                         {"passes", c.passes}});
     }
     risers.push_back({{"name", row.name},
-                      {"kind", row.kind},
+                      {"kind", to_string(row.kind)},
                       {"top_tension_N", row.top_tension_N},
                       {"top_angle_deg", row.top_angle_deg},
                       {"flex_joint_rotation_deg", row.flex_joint_rotation_deg},

@@ -26,7 +26,7 @@ nlohmann::json statics_to_json(const StaticsResult& result, const std::string& p
         {"max_tension_N", row.max_tension_N},
         {"utilization", row.utilization},
         {"governing_segment_type", row.governing_segment_type},
-        {"regime", row.regime},
+        {"regime", engine::to_string(row.regime)},
         {"iterations", row.iterations},
     });
   }

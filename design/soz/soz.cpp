@@ -80,6 +80,8 @@ double normalize_deg(double deg) {
 
 const char* to_string(SozModel model) { return model == SozModel::fe ? "fe" : "catenary"; }
 
+const char* to_string(OffsetCheckKind kind) { return kind == OffsetCheckKind::static_mean ? "static" : "extreme"; }
+
 // ---------------------------------------------------------------------------
 // Riser statics at an offset.
 
@@ -140,7 +142,7 @@ RiserOffsetEvaluator::Evaluation RiserOffsetEvaluator::failed(std::string messag
   Evaluation e;
   e.error = std::move(message);
   e.row.name = design_.name;
-  e.row.kind = to_string(design_.kind);
+  e.row.kind = design_.kind;
   e.row.governing_criterion = "no_static_solution";
   e.row.utilization = std::numeric_limits<double>::infinity();
   e.row.passes = false;
@@ -517,7 +519,7 @@ SozResult compute_soz(const Project& project, const std::vector<RiserDesign>& ri
   for (std::size_t r = 0; r < risers.size(); ++r) {
     RiserSoz& z = result.risers[r];
     z.name = risers[r].name;
-    z.kind = to_string(risers[r].kind);
+    z.kind = risers[r].kind;
     z.azimuth_deg = normalize_deg(risers[r].azimuth_rad * kRadToDeg);
     if (maps[r].source >= 0) continue;  // filled from its source below
     const RiserStaticsRow& zero = evaluators[r]->zero_offset().row;

@@ -105,7 +105,7 @@ OffsetCheck check_of(const StaticCaseResult& c, const std::string& zone) {
 /// Margin, ratio and verdict from offset_m and allowable_m.
 void finish(OffsetCheck& check) {
   check.margin_m = check.allowable_m - check.offset_m;
-  if (check.kind == "static") {
+  if (check.kind == OffsetCheckKind::static_mean) {
     check.ratio =
         check.allowable_m > 0.0 ? check.offset_m / check.allowable_m : std::numeric_limits<double>::infinity();
   }
@@ -135,7 +135,7 @@ OffsetCheck extreme_offset_of(const StaticCaseResult& c, const Eigen::Matrix<dou
                               const Eigen::VectorXd& times_s, const PlatformPolygon& zone, const std::string& zone_name,
                               std::string& fit_note) {
   OffsetCheck check = check_of(c, zone_name);
-  check.kind = "extreme";
+  check.kind = OffsetCheckKind::extreme;
   OffsetExtreme e;
   const Eigen::Index n = motion.cols();
   if (n < 2 || times_s.size() != n)

@@ -122,7 +122,7 @@ StageDynamics summarize_stage_dynamics(const ValidatedProject& vp, const StaticC
   };
   std::vector<Record> records;
   if (level == AnalysisLevel::coupled) {
-    out.tension_source = "coupled";
+    out.tension_source = TensionSource::coupled;
     for (const LineDynamicsSeries& t : r.dynamic_tensions) {
       const bool mooring = std::any_of(vp.project.mooring.lines.begin(), vp.project.mooring.lines.end(),
                                        [&](const MooringLine& l) { return l.name == t.line; });

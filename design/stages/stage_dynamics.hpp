@@ -27,6 +27,12 @@
 
 namespace spiral::design {
 
+/// Where a storm's tension channel comes from.
+enum class TensionSource {
+  quasi_static,  ///< the catenary at the instantaneous fairlead (the S-C levels)
+  coupled,       ///< the dynamic FE line of the coupled run
+};
+
 /// One channel of a stage's dynamic analysis and its statistics.
 struct StormChannel {
   std::string name;            ///< surge, sway, yaw, offset, or "tension <line>"
@@ -56,15 +62,12 @@ struct StageDynamics {
   /// surge (m), sway (m), yaw (deg), offset (m, horizontal), tension of the most loaded line (N).
   std::vector<StormChannel> channels;
   std::string most_loaded_line;  ///< by its largest sampled fairlead tension
-  /// Where the tension channel comes from: "quasi-static" (catenary at the
-  /// instantaneous fairlead, the S-C levels) or "coupled" (the dynamic FE line
-  /// of the coupled run).
-  std::string tension_source = "quasi-static";
+  TensionSource tension_source = TensionSource::quasi_static;
   double fairlead_mbl_N = 0.0;         ///< MBL of that line's fairlead segment
   double dynamic_safety_factor = 0.0;  ///< API SF_dyn, or γ_dyn for DNV
   double tension_utilization = 0.0;    ///< see the file comment; pass when <= 1
   bool tension_pass = true;
-  std::optional<OffsetCheck> extreme_offset;  ///< kind "extreme", with a zone
+  std::optional<OffsetCheck> extreme_offset;  ///< kind extreme, with a zone
   std::vector<std::string> notes;
   AnalysisTimings timing;  ///< of the analysis (equilibrium 0 when the stage's static case was reused)
   double wall_s = 0.0;     ///< the whole analysis and its statistics

@@ -60,7 +60,7 @@ std::string soz_table(const SozResult& r) {
         "{:<6} {:<9} {:>6.1f} {:>24} {:>7.1f} ({:>4.1f}) {:<22} {:>7.1f} ({:>4.1f}) {:<22} "
         "{:>8.1f} {:>8.1f} {:>5} "
         "{:>6}\n",
-        z.name, z.kind, z.azimuth_deg,
+        z.name, to_string(z.kind), z.azimuth_deg,
         fmt::format("{:.3f} {}{}", z.zero_offset_utilization, z.zero_offset_governing_criterion,
                     z.fails_at_zero_offset ? " FAIL" : ""),
         z.near_m, pct(z.near_m, r.depth_m), z.near_governing, z.far_m, pct(z.far_m, r.depth_m), z.far_governing,
@@ -115,8 +115,8 @@ std::string soz_table(const SozResult& r) {
                        "offset m", "dir°", "allowable m", "margin m", "ratio", "", "riser", "zone");
     for (const OffsetCheck& c : r.offset_checks) {
       out += fmt::format("{:<32} {:<8} {:<7} {:>9.2f} {:>7.1f} {:>11.2f} {:>9.2f} {:>7.3f} {:<5} {:<6} {}\n",
-                         c.case_name, to_string(c.integrity), c.kind, c.offset_m, c.direction_deg, c.allowable_m,
-                         c.margin_m, c.ratio, c.passes ? "PASS" : "FAIL", c.governing_riser, c.zone);
+                         c.case_name, to_string(c.integrity), to_string(c.kind), c.offset_m, c.direction_deg,
+                         c.allowable_m, c.margin_m, c.ratio, c.passes ? "PASS" : "FAIL", c.governing_riser, c.zone);
     }
   }
   for (const std::string& note : r.notes) out += "Note: " + note + "\n";

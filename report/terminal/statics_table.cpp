@@ -28,7 +28,7 @@ std::string statics_table(const StaticsResult& result, const std::string& projec
     out += fmt::format("{:<10} {:>11.1f} {:>11.1f} {:>11.1f} {:>7.2f} {:>11.1f} {:>8.2f} {:>9.1f} {:>7.3f} {:<9}\n",
                        row.name, row.fairlead_tension_N / 1e3, row.fairlead_horizontal_N / 1e3,
                        row.fairlead_vertical_N / 1e3, row.fairlead_angle_deg, row.anchor_tension_N / 1e3,
-                       row.anchor_uplift_angle_deg, row.laid_length_m, row.utilization, row.regime);
+                       row.anchor_uplift_angle_deg, row.laid_length_m, row.utilization, engine::to_string(row.regime));
   }
   const engine::Vector6d& f = result.hull_force;
   out += fmt::format(

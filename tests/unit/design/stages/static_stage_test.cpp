@@ -77,7 +77,7 @@ TEST(StaticStage, DefaultScenarioCasesChecksAndCurves) {
   const double sf_dynamic = d.integrity == LineIntegrity::damaged ? 1.25 : 1.67;  // the scenario's API RP 2SK factors
   EXPECT_NEAR(d.tension_utilization, *t.mpm_max * sf_dynamic / d.fairlead_mbl_N, 1e-12);
   ASSERT_TRUE(d.extreme_offset.has_value());
-  EXPECT_EQ(d.extreme_offset->kind, "extreme");
+  EXPECT_EQ(d.extreme_offset->kind, OffsetCheckKind::extreme);
   // The one extreme-offset rule (soz.hpp), the same as `spiral soz --extreme`
   // applies: the Weibull 3-h MPM of offset/allowable, shown as an offset.
   ASSERT_TRUE(d.extreme_offset->extreme.has_value());

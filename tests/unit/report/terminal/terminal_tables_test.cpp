@@ -15,7 +15,7 @@ TEST(TerminalTables, StaticsTableHasOneRowPerLineInKilonewtons) {
   row.name = "L1";
   row.fairlead_tension_N = 1234.5e3;
   row.utilization = 0.4321;
-  row.regime = "touchdown";
+  row.regime = engine::LineRegime::touchdown;
   result.lines.push_back(row);
   result.hull_force(0) = -2000.0e3;
   const std::string table = statics_table(result, "demo");
