@@ -124,10 +124,11 @@ void comparison_rows(Table& t, const design::LevelComparison& cmp, const std::st
     auto diff = [&](double v, double r) {
       return level != &coupled && ref ? num(design::percent_difference(v, r), 1) : text("–");
     };
-    t.rows.push_back({text(label), text(design::to_string(level->level)), num(c->mean, decimals, scale),
-                      num(c->std_dev, decimals, scale), num(c->maximum, decimals, scale), num(c->mpm, decimals, scale),
-                      diff(c->mean, ref ? ref->mean : 0.0), diff(c->std_dev, ref ? ref->std_dev : 0.0),
-                      diff(c->maximum, ref ? ref->maximum : 0.0), diff(c->mpm, ref ? ref->mpm : 0.0)});
+    t.rows.push_back({text(label), text(design::to_string(level->level)), num(c->moments.mean, decimals, scale),
+                      num(c->moments.std_dev, decimals, scale), num(c->moments.maximum, decimals, scale),
+                      num(c->mpm, decimals, scale), diff(c->moments.mean, ref ? ref->moments.mean : 0.0),
+                      diff(c->moments.std_dev, ref ? ref->moments.std_dev : 0.0),
+                      diff(c->moments.maximum, ref ? ref->moments.maximum : 0.0), diff(c->mpm, ref ? ref->mpm : 0.0)});
   }
 }
 

@@ -68,9 +68,11 @@ Section ranking_section(const design::IntermediateStageResults& r) {
     const auto& d = c.storm;
     const auto& o = d.channels[3];
     const auto& tt = d.channels.back();
-    stats.rows.push_back({text(d.case_name), text(d.most_loaded_line), num(tt.mean, 1, kN), num(tt.std_dev, 1, kN),
-                          num(tt.maximum, 1, kN), num(tt.mpm_max.value_or(tt.maximum), 1, kN), num(o.mean, 2),
-                          num(o.maximum, 2), num(o.mpm_max.value_or(o.maximum), 2), num(d.wall_s, 2)});
+    stats.rows.push_back({text(d.case_name), text(d.most_loaded_line), num(tt.moments().mean, 1, kN),
+                          num(tt.moments().std_dev, 1, kN), num(tt.moments().maximum, 1, kN),
+                          num(tt.mpm_max().value_or(tt.moments().maximum), 1, kN), num(o.moments().mean, 2),
+                          num(o.moments().maximum, 2), num(o.mpm_max().value_or(o.moments().maximum), 2),
+                          num(d.wall_s, 2)});
   }
   s.blocks.emplace_back(stats);
   return s;

@@ -29,20 +29,20 @@ nlohmann::json comparison_to_json(const LevelComparison& c) {
         lj["speedup_with_line_dynamics_vs_coupled"] = coupled->wall_s / (l.wall_s + l.line_dynamics_wall_s);
     }
     if (const ChannelSummary* o = find_channel(l, "offset_m")) {
-      lj["max_offset_m"] = o->maximum;
+      lj["max_offset_m"] = o->moments.maximum;
       lj["mpm_offset_m"] = o->mpm;
     }
     nlohmann::json channels;
     for (const ChannelSummary& ch : l.channels) {
-      nlohmann::json cj = {{"unit", ch.unit},   {"mean", ch.mean}, {"std", ch.std_dev},
-                           {"max", ch.maximum}, {"mpm", ch.mpm},   {"mpm_fitted", ch.mpm_fitted}};
+      nlohmann::json cj = {{"unit", ch.unit},           {"mean", ch.moments.mean}, {"std", ch.moments.std_dev},
+                           {"max", ch.moments.maximum}, {"mpm", ch.mpm},           {"mpm_fitted", ch.mpm_fitted}};
       const ChannelSummary* ref = coupled != nullptr ? find_channel(*coupled, ch.name) : nullptr;
       if (ref == nullptr && coupled != nullptr && ch.name.rfind("qs_", 0) == 0)
         ref = find_channel(*coupled, ch.name.substr(3));  // quasi-static against coupled tension
       if (ref != nullptr && l.level != AnalysisLevel::coupled) {
-        cj["diff_pct_vs_coupled"] = {{"mean", percent_difference(ch.mean, ref->mean)},
-                                     {"std", percent_difference(ch.std_dev, ref->std_dev)},
-                                     {"max", percent_difference(ch.maximum, ref->maximum)},
+        cj["diff_pct_vs_coupled"] = {{"mean", percent_difference(ch.moments.mean, ref->moments.mean)},
+                                     {"std", percent_difference(ch.moments.std_dev, ref->moments.std_dev)},
+                                     {"max", percent_difference(ch.moments.maximum, ref->moments.maximum)},
                                      {"mpm", percent_difference(ch.mpm, ref->mpm)}};
       }
       channels[ch.name] = cj;

@@ -24,6 +24,7 @@
 #include "design/soz/soz.hpp"
 #include "design/analysis/static_case.hpp"
 #include "design/project/validated_project.hpp"
+#include "engine/numerics/statistics.hpp"
 
 namespace spiral::design {
 
@@ -38,15 +39,23 @@ struct StormChannel {
   std::string name;            ///< surge, sway, yaw, offset, or "tension <line>"
   std::string unit;            ///< m, deg or N (the values below are in it)
   std::vector<double> values;  ///< per output time
-  double mean = 0.0, std_dev = 0.0, minimum = 0.0, maximum = 0.0;
+  /// Its statistics (engine::analyze_channel): the moments always; the
+  /// one-sided Welch spectrum (up to its last significant bin), the periods
+  /// and the extremes only when `extremes_note` is empty.
+  engine::ChannelStatistics statistics;
+  std::string extremes_note;  ///< why the extremes are missing (constant or short channel)
+
+  const engine::ChannelMoments& moments() const { return statistics.moments; }
   /// MPM of the 3-h maximum and minimum (Gumbel); absent with `extremes_note`.
-  std::optional<double> mpm_max, mpm_min;
-  std::optional<double> mpm_max_weibull;  ///< second estimate, for comparison
-  std::string extremes_note;              ///< why the extremes are missing (constant or short channel)
-  /// One-sided Welch spectrum up to its last significant bin (rad/s, unit²·s/rad).
-  std::vector<double> spectrum_frequency_rad_per_s, spectrum_density;
-  std::size_t welch_segments = 0;
-  double spectral_peak_period_s = 0.0;  ///< 0 when no spectrum
+  std::optional<double> mpm_max() const { return extreme(statistics.maximum.mpm_gumbel); }
+  std::optional<double> mpm_min() const { return extreme(statistics.minimum.mpm_gumbel); }
+  /// The Weibull MPM of the maximum, a second estimate for comparison.
+  std::optional<double> mpm_max_weibull() const { return extreme(statistics.maximum.mpm_weibull); }
+
+ private:
+  std::optional<double> extreme(double value) const {
+    return extremes_note.empty() ? std::optional<double>(value) : std::nullopt;
+  }
 };
 
 struct StageDynamics {

@@ -20,10 +20,10 @@ std::string comparison_table(const LevelComparison& c) {
       if (ch == nullptr) {
         line += fmt::format(" | {:>24}", "-");
       } else if (ref != nullptr && l.level != AnalysisLevel::coupled) {
-        line += fmt::format(" | {:>9.4g} {:>7.4g} {:>+5.0f}%", ch->maximum * scale, ch->mpm * scale,
+        line += fmt::format(" | {:>9.4g} {:>7.4g} {:>+5.0f}%", ch->moments.maximum * scale, ch->mpm * scale,
                             percent_difference(ch->mpm, ref->mpm));
       } else {
-        line += fmt::format(" | {:>9.4g} {:>7.4g}      ", ch->maximum * scale, ch->mpm * scale);
+        line += fmt::format(" | {:>9.4g} {:>7.4g}      ", ch->moments.maximum * scale, ch->mpm * scale);
       }
     }
     out += line + "\n";

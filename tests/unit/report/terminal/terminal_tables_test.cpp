@@ -36,7 +36,7 @@ TEST(TerminalTables, ComparisonTableGivesMpmDifferenceAgainstCoupled) {
     design::ChannelSummary offset;
     offset.name = "offset_m";
     offset.unit = "m";
-    offset.maximum = mpm;
+    offset.moments.maximum = mpm;
     offset.mpm = mpm;
     s.channels.push_back(offset);
     return s;
