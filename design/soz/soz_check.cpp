@@ -177,11 +177,13 @@ OffsetCheck extreme_offset_of(const StaticCaseResult& c, const Eigen::Matrix<dou
     } else {
       try {
         const engine::ExtremeEstimate r = engine::most_probable_maximum(ratio, dt_s);
-        const engine::ExtremeEstimate d = engine::most_probable_maximum(offset, dt_s);
+        // |d(t)| by the offset limit's rule; a record it cannot fit is too short for this one too.
+        const OffsetMpm d = horizontal_offset_mpm(offset, dt_s);
+        if (!d.fitted) throw std::invalid_argument(d.note.empty() ? "constant horizontal offset" : d.note);
         e.ratio_mpm_gumbel = r.mpm_gumbel;
         e.ratio_mpm_weibull = r.mpm_weibull;
         e.ratio_mpm_rayleigh = r.mpm_rayleigh;
-        e.offset_mpm_m = d.mpm_weibull;
+        e.offset_mpm_m = d.offset_m;
       } catch (const std::invalid_argument& error) {
         fit_note = error.what();
         keep_record_maximum();
