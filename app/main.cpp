@@ -9,6 +9,7 @@
 
 #include "app/commands/command.hpp"
 #include "app/exit_codes.hpp"
+#include "app/request_arguments.hpp"
 #include "app/version.hpp"
 #include "design/project/input_error.hpp"
 #include "engine/common/file_format_error.hpp"
@@ -39,8 +40,8 @@ int main(int argc, char** argv) {
     for (const auto& command : commands)
       if (command->chosen()) return command->run();
   } catch (const design::InputError& error) {
-    // The project file or an option referring into it; the message names the file and the field.
-    fmt::print(stderr, "{}\n", error.what());
+    // The project file or an option referring into it; the message names the file and the field (or flag).
+    fmt::print(stderr, "{}\n", app::describe(error));
     return app::kExitBadInput;
   } catch (const engine::FileFormatError& error) {
     // A data file the project names (hydrodynamic database, panel mesh) is malformed.

@@ -38,7 +38,7 @@ Section critical_cases_section(const design::AdvancedStageResults& r) {
           {}};
   for (const auto& c : r.cases) {
     t.rows.push_back({num(c.rank, 0), text(c.case_name), text(design::to_string(c.integrity)),
-                      num(c.intermediate_score, 3), text(c.intermediate_governing),
+                      num(c.intermediate_score, 3), text(design::to_string(c.intermediate_governing)),
                       text(c.coupled ? "finished" : "FAILED"), num(c.wall_s, 2), verdict(c.pass)});
   }
   s.blocks.emplace_back(t);
@@ -124,10 +124,11 @@ void comparison_rows(Table& t, const design::LevelComparison& cmp, const std::st
     auto diff = [&](double v, double r) {
       return level != &coupled && ref ? num(design::percent_difference(v, r), 1) : text("–");
     };
-    t.rows.push_back({text(label), text(design::to_string(level->level)), num(c->mean, decimals, scale),
-                      num(c->std_dev, decimals, scale), num(c->maximum, decimals, scale), num(c->mpm, decimals, scale),
-                      diff(c->mean, ref ? ref->mean : 0.0), diff(c->std_dev, ref ? ref->std_dev : 0.0),
-                      diff(c->maximum, ref ? ref->maximum : 0.0), diff(c->mpm, ref ? ref->mpm : 0.0)});
+    t.rows.push_back({text(label), text(design::to_string(level->level)), num(c->moments.mean, decimals, scale),
+                      num(c->moments.std_dev, decimals, scale), num(c->moments.maximum, decimals, scale),
+                      num(c->mpm, decimals, scale), diff(c->moments.mean, ref ? ref->moments.mean : 0.0),
+                      diff(c->moments.std_dev, ref ? ref->moments.std_dev : 0.0),
+                      diff(c->moments.maximum, ref ? ref->moments.maximum : 0.0), diff(c->mpm, ref ? ref->mpm : 0.0)});
   }
 }
 
@@ -166,7 +167,8 @@ Figure overlay_figure(const design::CriticalCaseVerification& c, const std::stri
       const double scale = ch.unit == "N" ? kN : 1.0;
       Series s = time_envelope((*d)->times_s, ch.values, scale);
       s.label = design::to_string((*d)->level);
-      if (ch.unit == "N") s.label += (*d)->tension_source == "coupled" ? " (FE line)" : " (quasi-static)";
+      if (ch.unit == "N")
+        s.label += (*d)->tension_source == design::TensionSource::coupled ? " (FE line)" : " (quasi-static)";
       s.color = palette(d == &c.sc ? kScColor : kCoupledColor);
       s.line_width = 0.6;
       Series z;

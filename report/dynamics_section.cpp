@@ -33,14 +33,19 @@ Plot time_plot(const design::StageDynamics& d, const design::StormChannel& c, st
   s.color = palette(color);
   p.series.push_back(std::move(s));
   const double k = display_scale(c);
-  Series mean{
-      "mean", {d.times_s.front(), d.times_s.back()}, {c.mean * k, c.mean * k}, {0.2, 0.2, 0.2}, 0.8, true, false,
-      false};
+  Series mean{"mean",
+              {d.times_s.front(), d.times_s.back()},
+              {c.moments().mean * k, c.moments().mean * k},
+              {0.2, 0.2, 0.2},
+              0.8,
+              true,
+              false,
+              false};
   p.series.push_back(mean);
-  if (c.mpm_max) {
+  if (const std::optional<double> mpm = c.mpm_max()) {
     p.series.push_back({"MPM max (3 h)",
                         {d.times_s.front(), d.times_s.back()},
-                        {*c.mpm_max * k, *c.mpm_max * k},
+                        {*mpm * k, *mpm * k},
                         {0.84, 0.15, 0.16},
                         0.8,
                         true,
@@ -58,11 +63,15 @@ Plot spectrum_plot(const design::StormChannel& c, std::size_t color) {
   p.x_label = "Angular frequency ω (rad/s)";
   const double k = display_scale(c);
   p.y_label = fmt::format("S(ω) ({}²·s/rad)", display_unit(c));
+  const engine::Spectrum& spectrum = c.statistics.spectrum;
+  const std::vector<double> frequency(spectrum.frequency_rad_s.data(),
+                                      spectrum.frequency_rad_s.data() + spectrum.frequency_rad_s.size());
+  const std::vector<double> density(spectrum.density.data(), spectrum.density.data() + spectrum.density.size());
   Series s;
-  s.x = c.spectrum_frequency_rad_per_s;
-  for (const double v : c.spectrum_density) s.y.push_back(v * k * k);
-  s.label = c.spectral_peak_period_s > 0
-                ? fmt::format("Welch, {} segments; Tp {:.1f} s", c.welch_segments, c.spectral_peak_period_s)
+  s.x = frequency;
+  for (const double v : density) s.y.push_back(v * k * k);
+  s.label = c.statistics.spectral_peak_period_s > 0
+                ? fmt::format("Welch, {} segments; Tp {:.1f} s", spectrum.segments, c.statistics.spectral_peak_period_s)
                 : "Welch";
   s.color = palette(color);
   s.line_width = 1.1;
@@ -73,12 +82,11 @@ Plot spectrum_plot(const design::StormChannel& c, std::size_t color) {
   // Frequency axis to twice the frequency below which 99.9 % of the variance
   // lies: slow-drift spectra sit far below the record's last significant bin.
   double total = 0, cumulative = 0;
-  for (const double v : c.spectrum_density) total += v;
-  for (std::size_t i = 0; i < c.spectrum_density.size(); ++i) {
-    cumulative += c.spectrum_density[i];
+  for (const double v : density) total += v;
+  for (std::size_t i = 0; i < density.size(); ++i) {
+    cumulative += density[i];
     if (cumulative >= kShownVarianceFraction * total) {
-      p.x_range =
-          std::pair{0.0, std::min(c.spectrum_frequency_rad_per_s.back(), 2.0 * c.spectrum_frequency_rad_per_s[i])};
+      p.x_range = std::pair{0.0, std::min(frequency.back(), 2.0 * frequency[i])};
       break;
     }
   }
@@ -156,7 +164,7 @@ std::vector<Block> storm_blocks(const design::StageDynamics& d, const std::strin
   if (d.channels.size() > 4) {
     const design::StormChannel& t = d.channels[4];
     Plot series = time_plot(d, t, 4);  // not red: the MPM line is
-    const bool coupled = d.tension_source == "coupled";
+    const bool coupled = d.tension_source == design::TensionSource::coupled;
     series.title = fmt::format("{} fairlead tension, {}", coupled ? "Coupled" : "Quasi-static", d.most_loaded_line);
     Plot spectrum = spectrum_plot(t, 4);
     out.emplace_back(plot_panels(
@@ -176,10 +184,11 @@ std::vector<Block> storm_blocks(const design::StageDynamics& d, const std::strin
   for (const auto& c : d.channels) {
     const double k = display_scale(c);
     const int dec = c.unit == "N" ? 1 : 3;
-    stats.rows.push_back({text(c.name), text(display_unit(c)), num(c.mean, dec, k), num(c.std_dev, dec, k),
-                          num(c.minimum, dec, k), num(c.maximum, dec, k), opt(c.mpm_max, dec, k),
-                          opt(c.mpm_max_weibull, dec, k), opt(c.mpm_min, dec, k),
-                          c.spectral_peak_period_s > 0 ? num(c.spectral_peak_period_s, 1) : text("–")});
+    stats.rows.push_back(
+        {text(c.name), text(display_unit(c)), num(c.moments().mean, dec, k), num(c.moments().std_dev, dec, k),
+         num(c.moments().minimum, dec, k), num(c.moments().maximum, dec, k), opt(c.mpm_max(), dec, k),
+         opt(c.mpm_max_weibull(), dec, k), opt(c.mpm_min(), dec, k),
+         c.statistics.spectral_peak_period_s > 0 ? num(c.statistics.spectral_peak_period_s, 1) : text("–")});
   }
   out.emplace_back(stats);
   return out;
@@ -208,7 +217,7 @@ Section dynamics_section(const design::StageDynamics& d, const std::string& code
   if (!d.most_loaded_line.empty()) {
     const auto& t = d.channels.back();
     checks.rows.push_back({text("dynamic tension"), text(d.most_loaded_line),
-                           text(fmt::format("MPM {:.1f} kN", t.mpm_max.value_or(t.maximum) * 1e-3)),
+                           text(fmt::format("MPM {:.1f} kN", t.mpm_max().value_or(t.moments().maximum) * 1e-3)),
                            text(fmt::format("MBL {:.0f} kN", d.fairlead_mbl_N * 1e-3)), num(d.tension_utilization, 3),
                            verdict(d.tension_pass)});
   }

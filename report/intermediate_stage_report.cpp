@@ -39,7 +39,8 @@ Section ranking_section(const design::IntermediateStageResults& r) {
     t.rows.push_back({num(c.rank, 0), text(sc.case_name), text(design::to_string(sc.integrity)),
                       num(c.tension_utilization, 3), text(c.storm.most_loaded_line), num(c.offset_ratio, 3),
                       num(c.riser_utilization, 3), text(c.riser.empty() ? "–" : c.riser + " " + c.riser_criterion),
-                      num(c.score, 3), text(c.governing_measure), text(c.critical ? "yes" : "no"), verdict(c.pass)});
+                      num(c.score, 3), text(design::to_string(c.governing_measure)), text(c.critical ? "yes" : "no"),
+                      verdict(c.pass)});
   }
   s.blocks.emplace_back(t);
 
@@ -50,7 +51,7 @@ Section ranking_section(const design::IntermediateStageResults& r) {
   chart.limit_label = "limit 1.0";
   for (const auto& c : r.ranked)
     chart.bars.push_back({fmt::format("#{}", c.rank), c.score, utilization_color(c.score),
-                          fmt::format("{:.2f} {}", c.score, c.governing_measure)});
+                          fmt::format("{:.2f} {}", c.score, design::to_string(c.governing_measure))});
   std::string key;
   for (const auto& c : r.ranked)
     key += fmt::format("{}#{} {}", key.empty() ? "" : "; ", c.rank, case_of(r, c).case_name);
@@ -67,9 +68,11 @@ Section ranking_section(const design::IntermediateStageResults& r) {
     const auto& d = c.storm;
     const auto& o = d.channels[3];
     const auto& tt = d.channels.back();
-    stats.rows.push_back({text(d.case_name), text(d.most_loaded_line), num(tt.mean, 1, kN), num(tt.std_dev, 1, kN),
-                          num(tt.maximum, 1, kN), num(tt.mpm_max.value_or(tt.maximum), 1, kN), num(o.mean, 2),
-                          num(o.maximum, 2), num(o.mpm_max.value_or(o.maximum), 2), num(d.wall_s, 2)});
+    stats.rows.push_back({text(d.case_name), text(d.most_loaded_line), num(tt.moments().mean, 1, kN),
+                          num(tt.moments().std_dev, 1, kN), num(tt.moments().maximum, 1, kN),
+                          num(tt.mpm_max().value_or(tt.moments().maximum), 1, kN), num(o.moments().mean, 2),
+                          num(o.moments().maximum, 2), num(o.mpm_max().value_or(o.moments().maximum), 2),
+                          num(d.wall_s, 2)});
   }
   s.blocks.emplace_back(stats);
   return s;
@@ -95,8 +98,9 @@ ReportDocument intermediate_stage_report(const design::ValidatedProject& vp, con
                                            r.ranked.size(), design::kCriticalCases));
   doc.title.pass = r.pass;
   const design::RankedCase* top = r.ranked.empty() ? nullptr : &r.ranked.front();
-  const std::string governing =
-      top ? fmt::format("{} ({} {:.3f})", case_of(r, *top).case_name, top->governing_measure, top->score) : "–";
+  const std::string governing = top ? fmt::format("{} ({} {:.3f})", case_of(r, *top).case_name,
+                                                  design::to_string(top->governing_measure), top->score)
+                                    : "–";
   doc.title.verdict =
       r.pass ? fmt::format(
                    "PASS — all {} load cases pass the dynamic tension, extreme offset and riser measures "
@@ -117,9 +121,10 @@ ReportDocument intermediate_stage_report(const design::ValidatedProject& vp, con
   for (const auto& c : r.ranked) {
     if (!c.critical) continue;
     Section s{fmt::format("Critical case #{}: {}", c.rank, c.storm.case_name), {}, true};
-    s.blocks.emplace_back(Paragraph{
-        fmt::format("Score {:.3f} ({}); {} storm, {:.2f} s wall clock, {} integrator steps.", c.score,
-                    c.governing_measure, design::to_string(c.storm.level), c.storm.wall_s, c.storm.solver_steps)});
+    s.blocks.emplace_back(
+        Paragraph{fmt::format("Score {:.3f} ({}); {} storm, {:.2f} s wall clock, {} integrator steps.", c.score,
+                              design::to_string(c.governing_measure), design::to_string(c.storm.level), c.storm.wall_s,
+                              c.storm.solver_steps)});
     for (Block& b : storm_blocks(c.storm, "storm-" + slug(c.storm.case_name))) s.blocks.push_back(std::move(b));
     for (const std::string& note : c.storm.notes) s.blocks.emplace_back(Paragraph{"Note: " + note + "."});
     doc.sections.push_back(std::move(s));

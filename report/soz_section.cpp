@@ -189,9 +189,9 @@ Section soz_section(const design::SozResult& z, const std::vector<design::Offset
   std::vector<design::OffsetCheck> rows = z.offset_checks;
   rows.insert(rows.end(), extremes.begin(), extremes.end());
   for (const auto& c : rows) {
-    check.rows.push_back({text(c.case_name), text(design::to_string(c.integrity)), text(c.kind), num(c.offset_m, 2),
-                          num(c.direction_deg, 1), num(c.allowable_m, 1), num(c.margin_m, 1), num(c.ratio, 3),
-                          text(c.governing_riser), verdict(c.passes)});
+    check.rows.push_back({text(c.case_name), text(design::to_string(c.integrity)), text(design::to_string(c.kind)),
+                          num(c.offset_m, 2), num(c.direction_deg, 1), num(c.allowable_m, 1), num(c.margin_m, 1),
+                          num(c.ratio, 3), text(c.governing_riser), verdict(c.passes)});
   }
   s.blocks.emplace_back(check);
   for (const std::string& note : z.notes) s.blocks.emplace_back(Paragraph{"Note: " + note + "."});

@@ -14,7 +14,7 @@
 namespace spiral::report {
 
 /// `zone` with its static offset checks; `extremes`: MPM offsets of storms
-/// (kind "extreme"); `offset_limit_m`: the project's offset limit circle, if any.
+/// (kind extreme); `offset_limit_m`: the project's offset limit circle, if any.
 Section soz_section(const design::SozResult& zone, const std::vector<design::OffsetCheck>& extremes,
                     std::optional<double> offset_limit_m);
 

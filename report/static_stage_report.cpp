@@ -375,7 +375,7 @@ Section pretension_section(const design::ValidatedProject& vp, const design::Sta
     t.rows.push_back({text(l.name), num(l.fairlead_tension_N, 1, kN), num(l.fairlead_horizontal_N, 1, kN),
                       num(l.fairlead_vertical_N, 1, kN), num(l.fairlead_angle_deg, 2), num(l.anchor_tension_N, 1, kN),
                       num(l.anchor_uplift_angle_deg, 2), num(l.laid_length_m, 1), num(l.utilization, 3),
-                      text(l.regime)});
+                      text(engine::to_string(l.regime))});
   }
   s.blocks.emplace_back(t);
   s.blocks.emplace_back(profile_figure(r.pretension, r, vp.project));

@@ -15,9 +15,10 @@
 #include "app/exit_codes.hpp"
 #include "app/output_folder.hpp"
 #include "design/analysis/level_comparison.hpp"
-#include "design/project/command_line_reference.hpp"
+#include "design/project/request_error.hpp"
 #include "design/project/validated_project.hpp"
 #include "design/results/level_comparison_output.hpp"
+#include "report/terminal/comparison_table.hpp"
 
 namespace spiral::app {
 namespace {
@@ -45,7 +46,7 @@ class CompareCommand : public Command {
     const design::LevelComparison comparison = design::compare_levels(loaded, request);
     const std::filesystem::path folder = output_folder(
         out_, project_file_, std::filesystem::path("compare") / fmt::format("{}-seed{}", case_name_, seed_));
-    const std::string table = design::comparison_table(comparison);
+    const std::string table = report::comparison_table(comparison);
     try {
       std::filesystem::create_directories(folder);
       write_file_atomically(folder / "comparison.json", design::comparison_to_json(comparison).dump(2) + "\n");

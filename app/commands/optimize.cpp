@@ -19,6 +19,7 @@
 #include "design/project/project_edit.hpp"
 #include "design/project/validated_project.hpp"
 #include "design/results/optimization_output.hpp"
+#include "report/terminal/optimization_tables.hpp"
 
 namespace spiral::app {
 namespace {
@@ -62,7 +63,7 @@ class OptimizeCommand : public Command {
 
     const std::string json = design::optimization_to_json(result).dump(2);
     write_file_atomically(folder / "optimization.json", json + "\n");
-    fmt::print("{}", json_ ? json + "\n" : design::optimization_table(result));
+    fmt::print("{}", json_ ? json + "\n" : report::optimization_table(result));
     std::fflush(stdout);  // the table before the messages below on a terminal
     if (!result.most_violated) {
       std::map<std::string, double> payouts;
@@ -87,7 +88,7 @@ class OptimizeCommand : public Command {
     const design::TargetPretensionResult result = design::solve_target_pretensions(loaded.project);
     const std::string json = design::target_pretension_to_json(result).dump(2);
     write_file_atomically(folder / "target_pretension.json", json + "\n");
-    fmt::print("{}", json_ ? json + "\n" : design::target_pretension_table(result));
+    fmt::print("{}", json_ ? json + "\n" : report::target_pretension_table(result));
     std::fflush(stdout);
     std::map<std::string, double> payouts;
     for (const design::TargetPretensionRow& l : result.lines) payouts[l.line] = l.payout_m;

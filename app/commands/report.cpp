@@ -11,7 +11,7 @@
 #include "app/exit_codes.hpp"
 #include "app/output_folder.hpp"
 #include "app/version.hpp"
-#include "design/project/command_line_reference.hpp"
+#include "design/project/request_error.hpp"
 #include "design/project/model_hash.hpp"
 #include "design/project/validated_project.hpp"
 #include "design/optimization/pretension_optimizer.hpp"
@@ -107,12 +107,12 @@ class ReportCommand : public Command {
     // The stages of DESIGN.md §2; a user-named stage has no analyses of its own.
     const bool available = stage_ == "preliminary" || stage_ == "intermediate" || stage_ == "advanced";
     if (!listed) {
-      throw design::command_line_error(loaded.project, "--stage",
-                                       fmt::format("stage '{}' is not among the project's stages", stage_));
+      throw design::request_error(loaded.project, "stage",
+                                  fmt::format("stage '{}' is not among the project's stages", stage_));
     }
     if (!available) {
-      throw design::command_line_error(
-          loaded.project, "--stage",
+      throw design::request_error(
+          loaded.project, "stage",
           fmt::format("no analyses are defined for stage '{}'; available: preliminary, intermediate, advanced",
                       stage_));
     }

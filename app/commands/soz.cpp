@@ -9,6 +9,7 @@
 #include "design/project/validated_project.hpp"
 #include "design/results/soz_output.hpp"
 #include "design/soz/soz.hpp"
+#include "report/terminal/soz_table.hpp"
 
 namespace spiral::app {
 namespace {
@@ -35,7 +36,7 @@ class SozCommand : public Command {
     } else if (csv_) {
       fmt::print("{}", design::soz_to_csv(result));
     } else {
-      fmt::print("{}", design::soz_table(result));
+      fmt::print("{}", report::soz_table(result));
     }
     // A riser that fails its criteria with the hull at rest has no zone: the
     // riser or its criteria are wrong, which is an input problem.

@@ -12,6 +12,7 @@
 #include "design/analysis/static_case.hpp"
 #include "design/project/validated_project.hpp"
 #include "design/results/static_case_output.hpp"
+#include "report/terminal/static_case_tables.hpp"
 
 namespace spiral::app {
 namespace {
@@ -33,9 +34,9 @@ class StaticCaseCommand : public Command {
     if (json_) {
       fmt::print("{}\n", design::static_case_to_json(result, loaded.project.name).dump(2));
     } else if (view_ == StaticCaseView::equilibrium) {
-      fmt::print("{}", design::equilibrium_table(result, loaded.project.name));
+      fmt::print("{}", report::equilibrium_table(result, loaded.project.name));
     } else {
-      fmt::print("{}", design::stiffness_table(result, loaded.project.name));
+      fmt::print("{}", report::stiffness_table(result, loaded.project.name));
     }
     return kExitOk;
   }

@@ -10,6 +10,7 @@
 #include "design/model/mooring_model.hpp"
 #include "design/project/validated_project.hpp"
 #include "design/results/statics_output.hpp"
+#include "report/terminal/statics_table.hpp"
 
 namespace spiral::app {
 namespace {
@@ -30,7 +31,7 @@ class StaticsCommand : public Command {
     if (json_) {
       fmt::print("{}\n", design::statics_to_json(result, loaded.project.name).dump(2));
     } else {
-      fmt::print("{}", design::statics_table(result, loaded.project.name));
+      fmt::print("{}", report::statics_table(result, loaded.project.name));
     }
     return kExitOk;
   }

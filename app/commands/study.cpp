@@ -13,6 +13,7 @@
 #include "design/optimization/pretension_study.hpp"
 #include "design/project/validated_project.hpp"
 #include "design/results/pretension_study_output.hpp"
+#include "report/terminal/optimization_tables.hpp"
 
 namespace spiral::app {
 namespace {
@@ -46,7 +47,7 @@ class StudyCommand : public Command {
     } else if (csv_) {
       fmt::print("{}", design::pretension_study_csv(result));
     } else {
-      fmt::print("{}", design::pretension_study_table(result));
+      fmt::print("{}", report::pretension_study_table(result));
     }
     std::fflush(stdout);
     fmt::print(stderr, "results: {}\n", folder.string());

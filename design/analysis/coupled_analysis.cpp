@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "design/project/command_line_reference.hpp"
+#include "design/project/request_error.hpp"
 #include "design/model/environment_loads.hpp"
 #include "design/model/hull_model.hpp"
 #include "design/analysis/line_dynamics.hpp"

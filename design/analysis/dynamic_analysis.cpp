@@ -10,7 +10,7 @@
 #include <memory>
 #include <numbers>
 
-#include "design/project/command_line_reference.hpp"
+#include "design/project/request_error.hpp"
 #include "design/model/environment_loads.hpp"
 #include "design/model/hull_model.hpp"
 #include "design/analysis/coupled_analysis.hpp"
@@ -183,17 +183,17 @@ AnalysisLevel parse_analysis_level(const std::string& name, const Project& proje
                               AnalysisLevel::semi_coupled_enhanced, AnalysisLevel::coupled}) {
     if (name == to_string(level)) return level;
   }
-  throw command_line_error(
-      project, "--level",
+  throw request_error(
+      project, "level",
       fmt::format("unknown analysis level \"{}\"; allowed: uncoupled | sc | sc-enhanced | coupled", name));
 }
 
 DynamicModel build_dynamic_model(const ValidatedProject& validated, const DynamicAnalysisRequest& request) {
   const Project& project = validated.project;
   if (!(request.duration_s > 0.0) || !(request.output_step_s > 0.0) || request.output_step_s > request.duration_s) {
-    throw command_line_error(project, "--duration",
-                             fmt::format("need duration > 0 s and 0 < output step <= duration, got {} s and {} s",
-                                         request.duration_s, request.output_step_s));
+    throw request_error(project, "duration_s",
+                        fmt::format("need duration > 0 s and 0 < output step <= duration, got {} s and {} s",
+                                    request.duration_s, request.output_step_s));
   }
   const LoadCase& load_case = find_load_case(project, request.load_case);
   const Environment& environment = environment_of(project, load_case);

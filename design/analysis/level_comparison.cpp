@@ -14,10 +14,8 @@ ChannelSummary summarize(const std::string& name, const std::string& unit, const
   ChannelSummary c;
   c.name = name;
   c.unit = unit;
-  const engine::ChannelMoments m = engine::channel_moments(x);
-  c.mean = m.mean;
-  c.std_dev = m.std_dev;
-  c.maximum = m.maximum;
+  c.moments = engine::channel_moments(x);
+  const engine::ChannelMoments& m = c.moments;
   c.mpm = m.maximum;
   if (m.std_dev > 1e-12 * std::max(1.0, std::abs(m.mean))) {
     try {

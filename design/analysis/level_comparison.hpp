@@ -27,13 +27,14 @@
 #include <vector>
 
 #include "design/analysis/dynamic_analysis.hpp"
+#include "engine/numerics/statistics.hpp"
 
 namespace spiral::design {
 
 struct ChannelSummary {
   std::string name;  ///< offset_m, surge_m, …, tension_<line>_N, qs_tension_<line>_N
   std::string unit;
-  double mean = 0.0, std_dev = 0.0, maximum = 0.0;
+  engine::ChannelMoments moments;
   double mpm = 0.0;         ///< most-probable 3-h maximum (Gumbel), or the sample maximum
   bool mpm_fitted = false;  ///< false: mpm is the sample maximum
 };

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "design/project/command_line_reference.hpp"
+#include "design/project/request_error.hpp"
 #include "design/model/environment_loads.hpp"
 #include "design/model/hull_model.hpp"
 #include "design/model/mooring_model.hpp"
@@ -79,8 +79,8 @@ StaticCaseResult run_static_case(const ValidatedProject& validated, const Static
                               [&](const MooringLine& l) { return l.name == *damaged; })) {
     std::string names;
     for (const MooringLine& l : project.mooring.lines) names += (names.empty() ? "" : ", ") + l.name;
-    throw command_line_error(project, "--damaged",
-                             fmt::format("no mooring line named \"{}\" (defined: {})", *damaged, names));
+    throw request_error(project, "damaged_line",
+                        fmt::format("no mooring line named \"{}\" (defined: {})", *damaged, names));
   }
   result.damaged_line = damaged;
   result.integrity = damaged ? LineIntegrity::damaged : LineIntegrity::intact;

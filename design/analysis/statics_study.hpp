@@ -28,7 +28,7 @@ struct LineStaticsRow {
   double max_tension_N = 0.0;          ///< largest along the line
   double utilization = 0.0;            ///< max over segments of (max tension in segment / segment MBL)
   std::string governing_segment_type;  ///< line type of the segment that sets the utilization
-  std::string regime;                  ///< suspended | touchdown | slack
+  engine::LineRegime regime = engine::LineRegime::suspended;
   int iterations = 0;
   /// Points along the line, anchor to fairlead: positions and effective
   /// tension (for profile plots, 3D views and tension-along-line plots).

@@ -30,7 +30,7 @@ RiserStaticsRow riser_statics_row(const Project& project, const RiserDesign& des
   const engine::Seawater water{project.site.water_density_kg_per_m3, project.site.gravity_m_per_s2};
   RiserStaticsRow row;
   row.name = design.name;
-  row.kind = to_string(design.kind);
+  row.kind = design.kind;
   const Eigen::Vector3d& top = solution.end_B_force_N;  // on the hull: outwards and down
   row.top_tension_N = top.norm();
   row.top_angle_deg = std::atan2(top.head<2>().norm(), -top.z()) * kRadToDeg;

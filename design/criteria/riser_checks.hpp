@@ -49,7 +49,7 @@ struct RiserProfilePoint {
 
 struct RiserStaticsRow {
   std::string name;
-  std::string kind;
+  RiserKind kind = RiserKind::scr;
   double top_tension_N = 0.0;
   double top_angle_deg = 0.0;  ///< from vertical
   /// Angle between the top tangent and the flex-joint axis (the at-rest top

@@ -8,6 +8,7 @@
 #include <map>
 #include <numbers>
 
+#include "design/project/request_error.hpp"
 #include "design/soz/soz.hpp"
 #include "engine/common/parallel_for.hpp"
 #include "engine/common/stopwatch.hpp"
@@ -44,21 +45,21 @@ Optimization settings_of(const Project& project, const OptimizationRequest& requ
 
 void check_request(const Project& project, const OptimizationRequest& request) {
   std::vector<InputIssue> issues;
+  const auto add = [&](const std::string& argument, const std::string& message, const std::string& problem) {
+    const InputError error = request_error(project, argument, message, problem);
+    issues.insert(issues.end(), error.issues().begin(), error.issues().end());
+  };
   for (const std::string& name : request.cases) {
     if (std::none_of(project.load_cases.begin(), project.load_cases.end(),
                      [&](const LoadCase& c) { return c.name == name; })) {
-      issues.push_back({project.source_file, std::nullopt, std::nullopt, "cases",
-                        fmt::format("no load case named \"{}\"", name), "load_case_defined"});
+      add("cases", fmt::format("no load case named \"{}\"", name), "load_case_defined");
     }
   }
-  if (request.max_evaluations && *request.max_evaluations < 1) {
-    issues.push_back({project.source_file, std::nullopt, std::nullopt, "max_evaluations",
-                      fmt::format("must be >= 1, got {}", *request.max_evaluations), "max_evaluations_positive"});
-  }
+  if (request.max_evaluations && *request.max_evaluations < 1)
+    add("max_evaluations", fmt::format("must be >= 1, got {}", *request.max_evaluations), "max_evaluations_positive");
   if (request.objective == OptimizationObjective::max_soz_margin && project.risers.empty()) {
-    issues.push_back({project.source_file, std::nullopt, std::nullopt, "objective",
-                      "max_soz_margin needs risers (their safe operational zone); the project has none",
-                      "objective_needs_risers"});
+    add("objective", "max_soz_margin needs risers (their safe operational zone); the project has none",
+        "objective_needs_risers");
   }
   if (!issues.empty()) throw InputError(std::move(issues));
 }

@@ -7,6 +7,7 @@
 
 #include "design/model/mooring_model.hpp"
 #include "design/optimization/pretension_problem.hpp"
+#include "design/project/request_error.hpp"
 #include "engine/common/stopwatch.hpp"
 #include "engine/lines/catenary_payout.hpp"
 
@@ -61,8 +62,8 @@ PretensionStudyPoint point_of(PretensionProblem& problem, const Eigen::VectorXd&
 PretensionStudyResult run_pretension_study(const ValidatedProject& validated, const PretensionStudyRequest& request) {
   engine::Stopwatch start;
   if (request.points < 2) {
-    throw InputError({{validated.project.source_file, std::nullopt, std::nullopt, "points",
-                       fmt::format("a sweep needs at least 2 points, got {}", request.points), "points_at_least_two"}});
+    throw request_error(validated.project, "points",
+                        fmt::format("a sweep needs at least 2 points, got {}", request.points), "points_at_least_two");
   }
   PretensionProblem problem(validated, request.problem);
   const std::vector<GroupVariable>& groups = problem.groups();
@@ -70,9 +71,9 @@ PretensionStudyResult run_pretension_study(const ValidatedProject& validated, co
     if (std::none_of(groups.begin(), groups.end(), [&](const GroupVariable& g) { return g.name == name; })) {
       std::vector<std::string> names;
       for (const GroupVariable& g : groups) names.push_back(g.name);
-      throw InputError(
-          {{validated.project.source_file, std::nullopt, std::nullopt, "groups",
-            fmt::format("no optimization group \"{}\" (groups: {})", name, fmt::join(names, ", ")), "group_defined"}});
+      throw request_error(validated.project, "groups",
+                          fmt::format("no optimization group \"{}\" (groups: {})", name, fmt::join(names, ", ")),
+                          "group_defined");
     }
   }
   PretensionStudyResult result;

@@ -13,9 +13,12 @@ namespace spiral::design {
 TargetPretensionResult solve_target_pretensions(const Project& project) {
   engine::Stopwatch start;
   if (!project.optimization || project.optimization->target_pretension.empty()) {
-    throw InputError({{project.source_file, std::nullopt, std::nullopt, "optimization.target_pretension",
-                       "the project gives no target pretensions (optimization.target_pretension: [{group, tension}])",
-                       "target_pretension_given"}});
+    InputIssue issue;
+    issue.file = project.source_file;
+    issue.path = "optimization.target_pretension";
+    issue.message = "the project gives no target pretensions (optimization.target_pretension: [{group, tension}])";
+    issue.problem = "target_pretension_given";
+    throw InputError({issue});
   }
   const std::vector<LineTypeProperties> types = resolve_line_types(project);
   const std::vector<GroupVariable> groups = group_variables(project);

@@ -14,16 +14,24 @@
 
 namespace spiral::design {
 
+/// What an issue's `path` names.
+enum class InputOrigin {
+  file,     ///< a field of the file, e.g. `mooring.lines[3].segments[1].length`
+  request,  ///< an argument of a request made of the project, by its neutral name (`load_case`,
+            ///< `duration_s`; design/project/request_error.hpp); the caller says it in its own words
+};
+
 /// One problem in the input.
 struct InputIssue {
   std::string file;           ///< the file as the user named it
   std::optional<int> line;    ///< 1-based; absent when the issue has no position (missing file)
   std::optional<int> column;  ///< 1-based; absent together with `line`
-  std::string path;           ///< field path, e.g. `mooring.lines[3].segments[1].length`; may be empty
-  std::string message;        ///< the problem, with the value and unit that were found
-  /// Machine-readable name of the violated condition (`unknown_key`, `wrong_type`,
+  std::string path;           ///< field path or request argument (`origin`); may be empty
+  InputOrigin origin = InputOrigin::file;
+  std::string message;  ///< the problem, with the value and unit that were found
+  /// Machine-readable name of the problem (`unknown_key`, `wrong_type`,
   /// `segment_length_positive`, ...); tests and tools key on it, users read `message`.
-  std::string condition;
+  std::string problem;
 };
 
 /// `file:line:col: path: message` (parts that are unknown are left out).

@@ -96,7 +96,7 @@ Project load_project(const std::filesystem::path& file) {
     InputIssue issue;
     issue.file = file.string();
     issue.message = std::filesystem::exists(file) ? "cannot read the project file" : "project file not found";
-    issue.condition = "missing_file";
+    issue.problem = "missing_file";
     throw InputError({issue});
   }
   std::ostringstream text;

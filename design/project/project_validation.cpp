@@ -10,7 +10,7 @@
 
 namespace spiral::design {
 
-InputIssue make_issue(const Project& project, const std::string& path, std::string condition, std::string message) {
+InputIssue make_issue(const Project& project, const std::string& path, std::string problem, std::string message) {
   InputIssue issue;
   issue.file = project.source_file;
   // A value that was defaulted has no node: use its closest written parent.
@@ -27,7 +27,7 @@ InputIssue make_issue(const Project& project, const std::string& path, std::stri
   }
   issue.path = path;
   issue.message = std::move(message);
-  issue.condition = std::move(condition);
+  issue.problem = std::move(problem);
   return issue;
 }
 

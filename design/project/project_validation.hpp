@@ -1,7 +1,7 @@
 #pragma once
 // The semantic validation pass over a parsed project (format v1): physical
 // ranges, references between sections, unique names and the at-rest geometry
-// of the mooring lines. Every check is a named condition (the `condition` of
+// of the mooring lines. Every check reports a named problem (the `problem` of
 // each InputIssue; the list is in docs/project-format.md, "Validation"), and
 // every issue found is reported, with the position of the offending node
 // taken from Project::source_map.
@@ -41,7 +41,7 @@ inline constexpr double kSeabedTolerance_m = 1e-6;
 
 /// An issue at `path` of `project`, placed at the nearest recorded node of the
 /// path (a defaulted value has no node of its own: its parent's is used).
-InputIssue make_issue(const Project& project, const std::string& path, std::string condition, std::string message);
+InputIssue make_issue(const Project& project, const std::string& path, std::string problem, std::string message);
 
 /// Every issue of `project`, in file order; empty when the project is valid.
 std::vector<InputIssue> check_project(const Project& project, const LineCheckTable& line_types = {});

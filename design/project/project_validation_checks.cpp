@@ -10,28 +10,28 @@ std::string unit_suffix(std::string_view unit) { return unit.empty() ? std::stri
 
 }  // namespace
 
-void positive(Reporter& r, const std::string& path, double value, std::string_view unit, const char* condition) {
+void positive(Reporter& r, const std::string& path, double value, std::string_view unit, const char* problem) {
   if (!(value > 0.0)) {
-    r.fail(path, condition, fmt::format("must be > 0{}, got {}{}", unit_suffix(unit), value, unit_suffix(unit)));
+    r.fail(path, problem, fmt::format("must be > 0{}, got {}{}", unit_suffix(unit), value, unit_suffix(unit)));
   }
 }
 
 void positive(Reporter& r, const std::string& path, const std::optional<double>& value, std::string_view unit,
-              const char* condition) {
-  if (value) positive(r, path, *value, unit, condition);
+              const char* problem) {
+  if (value) positive(r, path, *value, unit, problem);
 }
 
 void at_least(Reporter& r, const std::string& path, double value, double minimum, std::string_view unit,
-              const char* condition) {
+              const char* problem) {
   if (!(value >= minimum)) {
-    r.fail(path, condition,
+    r.fail(path, problem,
            fmt::format("must be >= {}{}, got {}{}", minimum, unit_suffix(unit), value, unit_suffix(unit)));
   }
 }
 
 void at_least(Reporter& r, const std::string& path, const std::optional<double>& value, double minimum,
-              std::string_view unit, const char* condition) {
-  if (value) at_least(r, path, *value, minimum, unit, condition);
+              std::string_view unit, const char* problem) {
+  if (value) at_least(r, path, *value, minimum, unit, problem);
 }
 
 void check_fe_mesh(Reporter& r, const std::string& at, const FeMesh& mesh) {

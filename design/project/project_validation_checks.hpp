@@ -10,7 +10,7 @@
 //   project_validation_cases.cpp     environments, load_cases, criteria, stages
 //   project_validation_optimization.cpp  optimization
 // and project_validation.cpp runs them in that order. Each check reports each
-// violated condition under its name; the condition names and messages are
+// problem under its name; the problem names and messages are
 // listed in docs/project-format.md. (Layout after Drake's
 // geometry/scene_graph_config.cc ValidateOrThrow.)
 
@@ -36,8 +36,8 @@ class Reporter {
  public:
   Reporter(const Project& project, std::vector<InputIssue>& out) : project_(project), out_(out) {}
 
-  void fail(const std::string& path, std::string condition, std::string message) {
-    out_.push_back(make_issue(project_, path, std::move(condition), std::move(message)));
+  void fail(const std::string& path, std::string problem, std::string message) {
+    out_.push_back(make_issue(project_, path, std::move(problem), std::move(message)));
   }
 
  private:
@@ -46,25 +46,25 @@ class Reporter {
 };
 
 // ---------------------------------------------------------------- values ----
-// Each reports `condition` at `path` when the value breaks the rule; an
+// Each reports `problem` at `path` when the value breaks the rule; an
 // absent optional value is not checked.
 
-void positive(Reporter& r, const std::string& path, double value, std::string_view unit, const char* condition);
+void positive(Reporter& r, const std::string& path, double value, std::string_view unit, const char* problem);
 void positive(Reporter& r, const std::string& path, const std::optional<double>& value, std::string_view unit,
-              const char* condition);
+              const char* problem);
 void at_least(Reporter& r, const std::string& path, double value, double minimum, std::string_view unit,
-              const char* condition);
+              const char* problem);
 void at_least(Reporter& r, const std::string& path, const std::optional<double>& value, double minimum,
-              std::string_view unit, const char* condition);
+              std::string_view unit, const char* problem);
 
 /// Reports the second and later uses of a name in a list.
 template <typename T>
 void unique_names(Reporter& r, const std::vector<T>& items, const std::string& list_path, const char* what,
-                  const char* condition) {
+                  const char* problem) {
   for (std::size_t i = 0; i < items.size(); ++i) {
     for (std::size_t j = 0; j < i; ++j) {
       if (items[i].name == items[j].name) {
-        r.fail(fmt::format("{}[{}].name", list_path, i), condition,
+        r.fail(fmt::format("{}[{}].name", list_path, i), problem,
                fmt::format("duplicate {} name \"{}\", first used by {}[{}]", what, items[i].name, list_path, j));
         break;
       }

@@ -8,7 +8,7 @@
 
 namespace spiral::design::loader_detail {
 
-void Context::add(const YAML::Mark& mark, std::string path, std::string message, std::string condition) {
+void Context::add(const YAML::Mark& mark, std::string path, std::string message, std::string problem) {
   InputIssue issue;
   issue.file = file;
   if (!mark.is_null()) {
@@ -17,7 +17,7 @@ void Context::add(const YAML::Mark& mark, std::string path, std::string message,
   }
   issue.path = std::move(path);
   issue.message = std::move(message);
-  issue.condition = std::move(condition);
+  issue.problem = std::move(problem);
   issues.push_back(std::move(issue));
 }
 

@@ -41,7 +41,7 @@ struct Context {
   std::vector<InputIssue> issues;
   SourceMap positions;
 
-  void add(const YAML::Mark& mark, std::string path, std::string message, std::string condition);
+  void add(const YAML::Mark& mark, std::string path, std::string message, std::string problem);
   void record(const std::string& path, const YAML::Mark& mark);
 };
 

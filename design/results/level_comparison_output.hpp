@@ -1,6 +1,7 @@
 #pragma once
 // Output of `spiral compare`: the JSON document (comparison.json,
-// docs/output-format.md) and the terminal table of a level comparison.
+// docs/output-format.md) of a level comparison; its terminal table is in
+// report/terminal.
 
 #include <string>
 
@@ -14,8 +15,5 @@ namespace spiral::design {
 /// "speedup_vs_coupled", "max_offset_m", "channels": {name: {mean, std, max,
 /// mpm, "diff_pct_vs_coupled": {…}}}}, …}} (docs/output-format.md).
 nlohmann::json comparison_to_json(const LevelComparison& comparison);
-
-/// A compact side-by-side table (max and MPM per level, % against coupled).
-std::string comparison_table(const LevelComparison& comparison);
 
 }  // namespace spiral::design

@@ -1,7 +1,7 @@
 #pragma once
-// Output of `spiral optimize`: the JSON document (optimization.json,
-// docs/output-format.md) and the terminal tables of a pretension
-// optimization and of the target-pretension mode.
+// Output of `spiral optimize`: the JSON documents (optimization.json,
+// target_pretension.json, docs/output-format.md) and the comment header of
+// the project file it writes. Its terminal tables: report/terminal.
 
 #include <string>
 
@@ -17,13 +17,8 @@ namespace spiral::design {
 /// "active_constraints", ...} (docs/output-format.md).
 nlohmann::json optimization_to_json(const OptimizationResult& result);
 
-/// The history, the payout table per group and line, and the scenarios
-/// before/after, for the terminal.
-std::string optimization_table(const OptimizationResult& result);
-
 /// {"format": "spiral.target_pretension", "lines": [...]}.
 nlohmann::json target_pretension_to_json(const TargetPretensionResult& result);
-std::string target_pretension_table(const TargetPretensionResult& result);
 
 /// The comment header of the optimized project file: how it was made.
 std::string optimized_project_header(const OptimizationResult& result, const std::string& source_file);

@@ -58,29 +58,4 @@ std::string pretension_study_csv(const PretensionStudyResult& r) {
   return out;
 }
 
-std::string pretension_study_table(const PretensionStudyResult& r) {
-  std::string out = fmt::format("Pretension study of {}: {} scenarios, {} evaluations, {:.2f} s\n", r.project,
-                                r.scenarios.size(), r.evaluations, r.wall_s);
-  for (const PretensionSweep& s : r.sweeps) {
-    out += fmt::format("\nsweep {} ({} lines); feasible band: {}\n", s.name, s.lines.size(),
-                       s.feasible_m ? fmt::format("{:.3f} to {:.3f} m", s.feasible_m->first, s.feasible_m->second)
-                                    : std::string("none"));
-    out += fmt::format("{:>10} {:>14} {:>10} {:>10} {:>10} {:>10} {:>10}  {}\n", "payout m", "pretension kN",
-                       "offset m", "SOZ int", "SOZ dam", "util int", "util dam", "");
-    for (const PretensionStudyPoint& p : s.points) {
-      out += fmt::format("{:>10.3f} {:>14.1f} {:>10.2f} {:>10} {:>10} {:>10.3f} {:>10.3f}  {}\n", p.payout_m,
-                         p.pretension_N / 1e3, p.max_offset_m, cell(p.max_soz_ratio_intact),
-                         cell(p.max_soz_ratio_damaged), p.max_utilization_intact, p.max_utilization_damaged,
-                         p.feasible ? "feasible" : "x " + p.worst_constraint_name);
-    }
-  }
-  if (r.optimum_payouts_m) {
-    out += fmt::format("\noptimizer ({}): payouts", r.optimum_status);
-    for (const double p : *r.optimum_payouts_m) out += fmt::format(" {:+.3f}", p);
-    out += " m\n";
-  }
-  for (const std::string& n : r.notes) out += "note: " + n + "\n";
-  return out;
-}
-
 }  // namespace spiral::design

@@ -12,6 +12,5 @@ namespace spiral::design {
 
 nlohmann::json pretension_study_to_json(const PretensionStudyResult& result);
 std::string pretension_study_csv(const PretensionStudyResult& result);
-std::string pretension_study_table(const PretensionStudyResult& result);
 
 }  // namespace spiral::design

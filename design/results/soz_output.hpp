@@ -1,6 +1,6 @@
 #pragma once
-// Output of `spiral soz`: the terminal table, the JSON document `spiral.soz`
-// v1 and the CSV table (docs/output-format.md).
+// Output of `spiral soz`: the JSON document `spiral.soz` v1 and the CSV
+// table (docs/output-format.md); the terminal table is in report/terminal.
 
 #include <nlohmann/json.hpp>
 #include <string>
@@ -17,9 +17,7 @@ nlohmann::json soz_to_json(const SozResult& result);
 /// (riser = "platform").
 std::string soz_to_csv(const SozResult& result);
 
-/// Compact terminal table: riser summary (near/far/cross), allowable offset
-/// per direction and riser with a one-letter governing criterion, the
-/// platform zone, the offset check, solve statistics.
-std::string soz_table(const SozResult& result);
+/// Riser static solve time per solve and thread, s (0 without solves).
+double time_per_solve_s(const SozResult& result);
 
 }  // namespace spiral::design

@@ -4,7 +4,7 @@
 // re-solved at 1e-10 near utilization 1) are one algorithm whose invariants
 // read best side by side; the offset check is in soz_check.cpp, the symmetry
 // in soz_symmetry.cpp.
-#include "design/project/command_line_reference.hpp"
+#include "design/project/request_error.hpp"
 #include "design/soz/soz.hpp"
 
 #include <fmt/format.h>
@@ -80,6 +80,8 @@ double normalize_deg(double deg) {
 
 const char* to_string(SozModel model) { return model == SozModel::fe ? "fe" : "catenary"; }
 
+const char* to_string(OffsetCheckKind kind) { return kind == OffsetCheckKind::static_mean ? "static" : "extreme"; }
+
 // ---------------------------------------------------------------------------
 // Riser statics at an offset.
 
@@ -140,7 +142,7 @@ RiserOffsetEvaluator::Evaluation RiserOffsetEvaluator::failed(std::string messag
   Evaluation e;
   e.error = std::move(message);
   e.row.name = design_.name;
-  e.row.kind = to_string(design_.kind);
+  e.row.kind = design_.kind;
   e.row.governing_criterion = "no_static_solution";
   e.row.utilization = std::numeric_limits<double>::infinity();
   e.row.passes = false;
@@ -451,35 +453,35 @@ void validate_soz_options(const Project& project, const SozOptions& o) {
   const double count = 360.0 / o.step_deg;
   if (!(o.step_deg > 0.0) || o.step_deg > 360.0 ||
       std::abs(count - std::round(count)) > kStepDivisionTolerance * count) {
-    throw command_line_error(project, "--step-deg",
-                             fmt::format("the direction step must divide 360 deg, got {} deg", o.step_deg),
-                             "soz_step_divides_360");
+    throw request_error(project, "step_deg",
+                        fmt::format("the direction step must divide 360 deg, got {} deg", o.step_deg),
+                        "soz_step_divides_360");
   }
   if (!(o.tolerance_m > 0.0)) {
-    throw command_line_error(project, "--tolerance", fmt::format("must be > 0, got {} m", o.tolerance_m),
-                             "soz_tolerance_positive");
+    throw request_error(project, "tolerance_m", fmt::format("must be > 0, got {} m", o.tolerance_m),
+                        "soz_tolerance_positive");
   }
   if (!(o.march_step_pct_depth > 0.0) || !(o.search_limit_pct_depth >= o.march_step_pct_depth)) {
-    throw command_line_error(project, "--search-limit",
-                             fmt::format("need 0 < march step ({} %) <= search limit ({} %) of depth",
-                                         o.march_step_pct_depth, o.search_limit_pct_depth),
-                             "soz_search_range");
+    throw request_error(project, "search_limit_pct_depth",
+                        fmt::format("need 0 < march step ({} %) <= search limit ({} %) of depth",
+                                    o.march_step_pct_depth, o.search_limit_pct_depth),
+                        "soz_search_range");
   }
   for (const std::string& name : o.exclude_risers) {
     if (std::none_of(project.risers.begin(), project.risers.end(), [&](const Riser& r) { return r.name == name; })) {
-      throw command_line_error(project, "--exclude", fmt::format("no riser named \"{}\"", name));
+      throw request_error(project, "exclude_risers", fmt::format("no riser named \"{}\"", name));
     }
   }
   if (o.load_case) find_load_case(project, *o.load_case);
   if (o.extreme) {
     if (!(o.extreme->duration_s > 0.0)) {
-      throw command_line_error(project, "--duration", fmt::format("must be > 0 s, got {} s", o.extreme->duration_s),
-                               "soz_duration_positive");
+      throw request_error(project, "duration_s", fmt::format("must be > 0 s, got {} s", o.extreme->duration_s),
+                          "soz_duration_positive");
     }
     if (!o.offset_check && !o.load_case) {
-      throw command_line_error(project, "--extreme",
-                               "the extreme offsets are part of the offset check: drop --no-check",
-                               "soz_extreme_needs_check");
+      throw request_error(project, "extreme",
+                          "the extreme offsets are part of the offset check, which this request turns off",
+                          "soz_extreme_needs_check");
     }
   }
 }
@@ -517,7 +519,7 @@ SozResult compute_soz(const Project& project, const std::vector<RiserDesign>& ri
   for (std::size_t r = 0; r < risers.size(); ++r) {
     RiserSoz& z = result.risers[r];
     z.name = risers[r].name;
-    z.kind = to_string(risers[r].kind);
+    z.kind = risers[r].kind;
     z.azimuth_deg = normalize_deg(risers[r].azimuth_rad * kRadToDeg);
     if (maps[r].source >= 0) continue;  // filled from its source below
     const RiserStaticsRow& zero = evaluators[r]->zero_offset().row;

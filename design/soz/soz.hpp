@@ -156,7 +156,7 @@ struct SozDirection {
 
 struct RiserSoz {
   std::string name;
-  std::string kind;
+  RiserKind kind = RiserKind::scr;
   double azimuth_deg = 0.0;
   /// At zero offset: the governing criterion and its utilization.
   std::string zero_offset_governing_criterion;
@@ -187,7 +187,15 @@ struct PlatformSoz {
   std::vector<std::string> governing_criterion;  ///< that riser's criterion there
 };
 
-/// How the extreme offset of a check was found (kind "extreme").
+/// What an offset check compares with the zone.
+enum class OffsetCheckKind {
+  static_mean,  ///< the mean offset of the case's static equilibrium
+  extreme,      ///< the 3-h extreme offset of its time-domain storm (OffsetExtreme)
+};
+
+const char* to_string(OffsetCheckKind kind);  ///< "static" | "extreme"
+
+/// How the extreme offset of a check was found (kind extreme).
 struct OffsetExtreme {
   double duration_s = 0.0;  ///< simulated record
   std::uint64_t seed = 1;
@@ -209,7 +217,7 @@ struct OffsetCheck {
   /// static: the mean (static equilibrium) offset. extreme: ratio = 3-h MPM
   /// of r(t) (OffsetExtreme), direction the one of the record's largest r(t),
   /// offset_m = ratio × allowable_m there.
-  std::string kind = "static";
+  OffsetCheckKind kind = OffsetCheckKind::static_mean;
   double offset_m = 0.0;  ///< horizontal offset of the reference point
   double direction_deg = 0.0;
   double allowable_m = 0.0;  ///< platform SOZ in that direction (interpolated)

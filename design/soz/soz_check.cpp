@@ -40,7 +40,7 @@
 #include <limits>
 #include <numbers>
 
-#include "design/project/command_line_reference.hpp"
+#include "design/project/request_error.hpp"
 #include "design/model/environment_loads.hpp"
 #include "design/analysis/dynamic_analysis.hpp"
 #include "design/soz/soz.hpp"
@@ -105,7 +105,7 @@ OffsetCheck check_of(const StaticCaseResult& c, const std::string& zone) {
 /// Margin, ratio and verdict from offset_m and allowable_m.
 void finish(OffsetCheck& check) {
   check.margin_m = check.allowable_m - check.offset_m;
-  if (check.kind == "static") {
+  if (check.kind == OffsetCheckKind::static_mean) {
     check.ratio =
         check.allowable_m > 0.0 ? check.offset_m / check.allowable_m : std::numeric_limits<double>::infinity();
   }
@@ -135,7 +135,7 @@ OffsetCheck extreme_offset_of(const StaticCaseResult& c, const Eigen::Matrix<dou
                               const Eigen::VectorXd& times_s, const PlatformPolygon& zone, const std::string& zone_name,
                               std::string& fit_note) {
   OffsetCheck check = check_of(c, zone_name);
-  check.kind = "extreme";
+  check.kind = OffsetCheckKind::extreme;
   OffsetExtreme e;
   const Eigen::Index n = motion.cols();
   if (n < 2 || times_s.size() != n)
@@ -177,11 +177,13 @@ OffsetCheck extreme_offset_of(const StaticCaseResult& c, const Eigen::Matrix<dou
     } else {
       try {
         const engine::ExtremeEstimate r = engine::most_probable_maximum(ratio, dt_s);
-        const engine::ExtremeEstimate d = engine::most_probable_maximum(offset, dt_s);
+        // |d(t)| by the offset limit's rule; a record it cannot fit is too short for this one too.
+        const OffsetMpm d = horizontal_offset_mpm(offset, dt_s);
+        if (!d.fitted) throw std::invalid_argument(d.note.empty() ? "constant horizontal offset" : d.note);
         e.ratio_mpm_gumbel = r.mpm_gumbel;
         e.ratio_mpm_weibull = r.mpm_weibull;
         e.ratio_mpm_rayleigh = r.mpm_rayleigh;
-        e.offset_mpm_m = d.mpm_weibull;
+        e.offset_mpm_m = d.offset_m;
       } catch (const std::invalid_argument& error) {
         fit_note = error.what();
         keep_record_maximum();
@@ -200,20 +202,20 @@ OffsetCheck extreme_offset_of(const StaticCaseResult& c, const Eigen::Matrix<dou
 OffsetCheck extreme_check(const Project& project, const StaticCaseResult& c, const DynamicAnalysisResult& run,
                           const PlatformPolygon& zone, const std::string& zone_name, const SozExtremeOptions& options) {
   if (run.total.cols() < 2) {
-    throw command_line_error(project, "--duration",
-                             fmt::format("load case '{}': the record has {} samples; a longer "
-                                         "--duration is needed for the extreme offset",
-                                         c.case_name, run.total.cols()),
-                             "soz_extreme_record");
+    throw request_error(project, "duration_s",
+                        fmt::format("load case '{}': the record has {} samples; a longer "
+                                    "duration is needed for the extreme offset",
+                                    c.case_name, run.total.cols()),
+                        "soz_extreme_record");
   }
   std::string fit_note;
   OffsetCheck check = extreme_offset_of(c, run.total, run.times_s, zone, zone_name, fit_note);
   if (!fit_note.empty()) {
-    throw command_line_error(project, "--duration",
-                             fmt::format("load case '{}': no extreme-value fit on a {:g} s record ({}); "
-                                         "simulate longer (3 h = 10800 s is the design sea state)",
-                                         c.case_name, options.duration_s, fit_note),
-                             "soz_extreme_record");
+    throw request_error(project, "duration_s",
+                        fmt::format("load case '{}': no extreme-value fit on a {:g} s record ({}); "
+                                    "simulate longer (3 h = 10800 s is the design sea state)",
+                                    c.case_name, options.duration_s, fit_note),
+                        "soz_extreme_record");
   }
   check.extreme->duration_s = options.duration_s;
   check.extreme->seed = options.seed;

@@ -27,12 +27,13 @@ void final_checks(const ValidatedProject& vp, const LevelSummary& coupled, Criti
     if (c == nullptr) continue;  // the damaged line is not in the coupled system
     FinalLineCheck check;
     check.line = line.name;
-    check.mean_N = c->mean;
-    check.max_N = c->maximum;
+    check.mean_N = c->moments.mean;
+    check.max_N = c->moments.maximum;
     check.mpm_N = c->mpm;
     check.mpm_fitted = c->mpm_fitted;
     check.mbl_N = fairlead_segment_mbl(vp, line.name);
-    const DynamicTensionCheck d = dynamic_tension_check(p.criteria.mooring, damaged, c->mean, c->mpm, check.mbl_N);
+    const DynamicTensionCheck d =
+        dynamic_tension_check(p.criteria.mooring, damaged, c->moments.mean, c->mpm, check.mbl_N);
     check.dynamic_factor = d.factor;
     check.utilization = d.utilization;
     check.pass = d.utilization <= 1.0;
@@ -57,8 +58,8 @@ void final_checks(const ValidatedProject& vp, const LevelSummary& coupled, Criti
     if (c == nullptr) continue;
     FinalRiserCheck check;
     check.riser = riser.name;
-    check.mean_N = c->mean;
-    check.max_N = c->maximum;
+    check.mean_N = c->moments.mean;
+    check.max_N = c->moments.maximum;
     check.mpm_N = c->mpm;
     check.limit_N = riser_criteria(p.criteria, riser).max_top_tension_N;
     if (check.limit_N) {

@@ -70,7 +70,7 @@ struct CriticalCaseVerification {
   std::string case_name;
   LineIntegrity integrity = LineIntegrity::intact;
   double intermediate_score = 0.0;
-  std::string intermediate_governing;  ///< tension | offset | riser
+  RankingMeasure intermediate_governing = RankingMeasure::tension;
   /// sc-enhanced, its tension channel on the coupled run's most loaded line;
   /// absent when it failed.
   std::optional<StageDynamics> sc;

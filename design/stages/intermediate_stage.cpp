@@ -8,6 +8,18 @@
 
 namespace spiral::design {
 
+const char* to_string(RankingMeasure measure) {
+  switch (measure) {
+    case RankingMeasure::tension:
+      return "tension";
+    case RankingMeasure::offset:
+      return "offset";
+    case RankingMeasure::riser:
+      return "riser";
+  }
+  return "?";
+}
+
 IntermediateStageResults run_intermediate_stage(const ValidatedProject& vp) {
   engine::Stopwatch start;
   IntermediateStageResults out;
@@ -38,9 +50,9 @@ IntermediateStageResults run_intermediate_stage(const ValidatedProject& vp) {
         c.riser_criterion = r.governing_criterion;
       }
     }
-    c.score = c.tension_utilization, c.governing_measure = "tension";
-    if (c.offset_ratio > c.score) c.score = c.offset_ratio, c.governing_measure = "offset";
-    if (c.riser_utilization > c.score) c.score = c.riser_utilization, c.governing_measure = "riser";
+    c.score = c.tension_utilization, c.governing_measure = RankingMeasure::tension;
+    if (c.offset_ratio > c.score) c.score = c.offset_ratio, c.governing_measure = RankingMeasure::offset;
+    if (c.riser_utilization > c.score) c.score = c.riser_utilization, c.governing_measure = RankingMeasure::riser;
     // The static checks of the case (code, offset limit, risers, SOZ) count too.
     c.pass = c.score <= 1.0 && out.statics.checks[c.case_index].pass;
     out.pass = out.pass && c.pass;

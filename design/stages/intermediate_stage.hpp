@@ -30,6 +30,11 @@ namespace spiral::design {
 /// How many top-ranked cases go to the advanced stage (failing cases go too).
 inline constexpr std::size_t kCriticalCases = 3;
 
+/// The ranking measures (the file comment).
+enum class RankingMeasure { tension, offset, riser };
+
+const char* to_string(RankingMeasure measure);  ///< "tension" | "offset" | "riser"
+
 struct RankedCase {
   std::size_t case_index = 0;  ///< into IntermediateStageResults::statics.cases (0 is still water)
   StageDynamics storm;
@@ -39,7 +44,7 @@ struct RankedCase {
   std::string riser;            ///< the riser that sets riser_utilization
   std::string riser_criterion;  ///< its governing criterion
   double score = 0.0;
-  std::string governing_measure;  ///< tension | offset | riser
+  RankingMeasure governing_measure = RankingMeasure::tension;  ///< the measure that sets the score
   bool pass = true;
   bool critical = false;
   int rank = 0;  ///< 1 = most severe

@@ -40,27 +40,17 @@ StormChannel summarize_storm_channel(std::string name, std::string unit, std::ve
   StormChannel c;
   c.name = std::move(name);
   c.unit = std::move(unit);
-  const engine::ChannelMoments m = engine::channel_moments(values);
-  c.mean = m.mean;
-  c.std_dev = m.std_dev;
-  c.minimum = m.minimum;
-  c.maximum = m.maximum;
+  c.statistics.moments = engine::channel_moments(values);
+  const engine::ChannelMoments m = c.statistics.moments;
   if (m.std_dev <= 1e-12 * std::max(1.0, std::abs(m.mean))) {
     c.extremes_note = "constant channel";
   } else {
     try {
-      const engine::ChannelStatistics s =
-          engine::analyze_channel(values, dt_s, engine::welch_segment_length(values.size()));
-      c.mpm_max = s.maximum.mpm_gumbel;
-      c.mpm_min = s.minimum.mpm_gumbel;
-      c.mpm_max_weibull = s.maximum.mpm_weibull;
-      c.spectral_peak_period_s = s.spectral_peak_period_s;
-      c.welch_segments = s.spectrum.segments;
-      const Eigen::Index last = engine::spectrum_last_significant_bin(s.spectrum);
-      for (Eigen::Index k = 0; k <= last; ++k) {
-        c.spectrum_frequency_rad_per_s.push_back(s.spectrum.frequency_rad_s(k));
-        c.spectrum_density.push_back(s.spectrum.density(k));
-      }
+      c.statistics = engine::analyze_channel(values, dt_s, engine::welch_segment_length(values.size()));
+      engine::Spectrum& spectrum = c.statistics.spectrum;
+      const Eigen::Index bins = engine::spectrum_last_significant_bin(spectrum) + 1;
+      spectrum.frequency_rad_s.conservativeResize(bins);
+      spectrum.density.conservativeResize(bins);
     } catch (const std::invalid_argument& e) {
       // Too short a record for the fits: the moments stand, the reason is shown.
       c.extremes_note = e.what();
@@ -122,7 +112,7 @@ StageDynamics summarize_stage_dynamics(const ValidatedProject& vp, const StaticC
   };
   std::vector<Record> records;
   if (level == AnalysisLevel::coupled) {
-    out.tension_source = "coupled";
+    out.tension_source = TensionSource::coupled;
     for (const LineDynamicsSeries& t : r.dynamic_tensions) {
       const bool mooring = std::any_of(vp.project.mooring.lines.begin(), vp.project.mooring.lines.end(),
                                        [&](const MooringLine& l) { return l.name == t.line; });
@@ -144,8 +134,8 @@ StageDynamics summarize_stage_dynamics(const ValidatedProject& vp, const StaticC
     const StormChannel& t = out.channels.back();
     out.fairlead_mbl_N = fairlead_segment_mbl(vp, *loaded->line);
     const DynamicTensionCheck check =
-        dynamic_tension_check(vp.project.criteria.mooring, statics.integrity == LineIntegrity::damaged, t.mean,
-                              t.mpm_max.value_or(t.maximum), out.fairlead_mbl_N);
+        dynamic_tension_check(vp.project.criteria.mooring, statics.integrity == LineIntegrity::damaged,
+                              t.moments().mean, t.mpm_max().value_or(t.moments().maximum), out.fairlead_mbl_N);
     out.dynamic_safety_factor = check.factor;
     out.tension_utilization = check.utilization;
     out.tension_pass = check.utilization <= 1.0;

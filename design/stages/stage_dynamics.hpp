@@ -24,23 +24,38 @@
 #include "design/soz/soz.hpp"
 #include "design/analysis/static_case.hpp"
 #include "design/project/validated_project.hpp"
+#include "engine/numerics/statistics.hpp"
 
 namespace spiral::design {
+
+/// Where a storm's tension channel comes from.
+enum class TensionSource {
+  quasi_static,  ///< the catenary at the instantaneous fairlead (the S-C levels)
+  coupled,       ///< the dynamic FE line of the coupled run
+};
 
 /// One channel of a stage's dynamic analysis and its statistics.
 struct StormChannel {
   std::string name;            ///< surge, sway, yaw, offset, or "tension <line>"
   std::string unit;            ///< m, deg or N (the values below are in it)
   std::vector<double> values;  ///< per output time
-  double mean = 0.0, std_dev = 0.0, minimum = 0.0, maximum = 0.0;
+  /// Its statistics (engine::analyze_channel): the moments always; the
+  /// one-sided Welch spectrum (up to its last significant bin), the periods
+  /// and the extremes only when `extremes_note` is empty.
+  engine::ChannelStatistics statistics;
+  std::string extremes_note;  ///< why the extremes are missing (constant or short channel)
+
+  const engine::ChannelMoments& moments() const { return statistics.moments; }
   /// MPM of the 3-h maximum and minimum (Gumbel); absent with `extremes_note`.
-  std::optional<double> mpm_max, mpm_min;
-  std::optional<double> mpm_max_weibull;  ///< second estimate, for comparison
-  std::string extremes_note;              ///< why the extremes are missing (constant or short channel)
-  /// One-sided Welch spectrum up to its last significant bin (rad/s, unit²·s/rad).
-  std::vector<double> spectrum_frequency_rad_per_s, spectrum_density;
-  std::size_t welch_segments = 0;
-  double spectral_peak_period_s = 0.0;  ///< 0 when no spectrum
+  std::optional<double> mpm_max() const { return extreme(statistics.maximum.mpm_gumbel); }
+  std::optional<double> mpm_min() const { return extreme(statistics.minimum.mpm_gumbel); }
+  /// The Weibull MPM of the maximum, a second estimate for comparison.
+  std::optional<double> mpm_max_weibull() const { return extreme(statistics.maximum.mpm_weibull); }
+
+ private:
+  std::optional<double> extreme(double value) const {
+    return extremes_note.empty() ? std::optional<double>(value) : std::nullopt;
+  }
 };
 
 struct StageDynamics {
@@ -56,15 +71,12 @@ struct StageDynamics {
   /// surge (m), sway (m), yaw (deg), offset (m, horizontal), tension of the most loaded line (N).
   std::vector<StormChannel> channels;
   std::string most_loaded_line;  ///< by its largest sampled fairlead tension
-  /// Where the tension channel comes from: "quasi-static" (catenary at the
-  /// instantaneous fairlead, the S-C levels) or "coupled" (the dynamic FE line
-  /// of the coupled run).
-  std::string tension_source = "quasi-static";
+  TensionSource tension_source = TensionSource::quasi_static;
   double fairlead_mbl_N = 0.0;         ///< MBL of that line's fairlead segment
   double dynamic_safety_factor = 0.0;  ///< API SF_dyn, or γ_dyn for DNV
   double tension_utilization = 0.0;    ///< see the file comment; pass when <= 1
   bool tension_pass = true;
-  std::optional<OffsetCheck> extreme_offset;  ///< kind "extreme", with a zone
+  std::optional<OffsetCheck> extreme_offset;  ///< kind extreme, with a zone
   std::vector<std::string> notes;
   AnalysisTimings timing;  ///< of the analysis (equilibrium 0 when the stage's static case was reused)
   double wall_s = 0.0;     ///< the whole analysis and its statistics

@@ -91,9 +91,9 @@ LineState FeStaticLine::state(const Eigen::Vector3d& attachment_g, int /*points_
   if (r.touchdown) {
     state.laid_length_m = r.touchdown->arc_length_m;
     state.touchdown_distance_m = (r.touchdown->position_m - end_A_g_).head<2>().norm();
-    state.regime = "touchdown";
+    state.regime = LineRegime::touchdown;
   } else {
-    state.regime = "suspended";
+    state.regime = LineRegime::suspended;
   }
   const std::vector<int> sections = node_sections(model_, r);
   for (std::size_t i = 0; i < r.node_position_m.size(); ++i) {

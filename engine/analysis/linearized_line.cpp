@@ -17,7 +17,7 @@ LineEndResponse LinearizedStaticLine::solve(const Eigen::Vector3d& attachment_g)
 LineState LinearizedStaticLine::state(const Eigen::Vector3d& attachment_g, int /*points_per_segment*/) {
   LineState s;
   s.top = solve(attachment_g);
-  s.regime = "linearized";
+  // No profile, no regime: only the top response is meaningful.
   return s;
 }
 

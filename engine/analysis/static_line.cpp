@@ -13,6 +13,18 @@ namespace {
 constexpr double kVerticalSpan_m = 1e-9;
 }  // namespace
 
+const char* to_string(LineRegime regime) {
+  switch (regime) {
+    case LineRegime::suspended:
+      return "suspended";
+    case LineRegime::touchdown:
+      return "touchdown";
+    case LineRegime::slack:
+      return "slack";
+  }
+  return "?";
+}
+
 Eigen::Matrix3d catenary_fairlead_stiffness(const Eigen::Matrix2d& tangent, double horizontal_force_N,
                                             double horizontal_span_m, const Eigen::Vector3d& e) {
   // Force on the fairlead: f = −H e − V ẑ, with H(XF, ZF), V(XF, ZF),
@@ -85,13 +97,13 @@ LineState CatenaryStaticLine::state(const Eigen::Vector3d& attachment_g, int poi
   state.touchdown_distance_m = last_.touchdown_x_m;
   switch (last_.regime) {
     case CatenaryRegime::suspended:
-      state.regime = "suspended";
+      state.regime = LineRegime::suspended;
       break;
     case CatenaryRegime::touchdown:
-      state.regime = "touchdown";
+      state.regime = LineRegime::touchdown;
       break;
     case CatenaryRegime::slack_vertical:
-      state.regime = "slack";
+      state.regime = LineRegime::slack;
       break;
   }
   state.profile.reserve(last_.profile.size());

@@ -35,13 +35,22 @@ struct LineProfilePoint {
   bool on_seabed = false;
 };
 
+/// How a line at rest meets the seabed.
+enum class LineRegime {
+  suspended,  ///< no seabed contact
+  touchdown,  ///< part of the line lies on the seabed
+  slack,      ///< no horizontal tension: a vertical hanging part, the rest on the seabed (catenary lines)
+};
+
+const char* to_string(LineRegime regime);  ///< "suspended" | "touchdown" | "slack"
+
 /// The full static state of a line, for results tables and reports.
 struct LineState {
   LineEndResponse top;                                       ///< at the hull
   Eigen::Vector3d bottom_force_g = Eigen::Vector3d::Zero();  ///< force of the line on its anchor, N
   double laid_length_m = 0.0;                                ///< unstretched length resting on the seabed
   double touchdown_distance_m = 0.0;                         ///< horizontal, anchor to touchdown point (0: none)
-  std::string regime;                                        ///< suspended | touchdown | slack
+  LineRegime regime = LineRegime::suspended;
   std::vector<LineProfilePoint> profile;
 };
 

@@ -191,7 +191,7 @@ TEST(ScAnalysis, HeadingOutsideTheDriftDatabaseIsAnInputError) {
     run_dynamic_analysis(p, request);
     FAIL() << "heading 30 deg accepted by a 0 deg database";
   } catch (const InputError& e) {
-    EXPECT_EQ(e.issues().at(0).condition, "heading_in_database");
+    EXPECT_EQ(e.issues().at(0).problem, "heading_in_database");
     EXPECT_NE(std::string(e.what()).find("waves.heading_deg"), std::string::npos) << e.what();
   }
 }
@@ -265,7 +265,7 @@ TEST(ScAnalysis, RadiationMemoryWithoutDecayedDampingIsAnInputError) {
     build_dynamic_model(p, request);
     FAIL() << "a .1 table stopping at the damping peak was accepted for the memory";
   } catch (const InputError& e) {
-    EXPECT_EQ(e.issues().at(0).condition, "radiation_memory_data");
+    EXPECT_EQ(e.issues().at(0).problem, "radiation_memory_data");
     EXPECT_EQ(e.issues().at(0).path, "hull.hydrodynamics.radiation");
     EXPECT_NE(std::string(e.what()).find("highest frequency"), std::string::npos) << e.what();
   }

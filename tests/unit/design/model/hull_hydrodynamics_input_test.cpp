@@ -1,5 +1,5 @@
 // hull.hydrodynamics and mean_drift.period_scale: the keys load with their
-// documented defaults, bad values are named validation conditions, the WAMIT
+// documented defaults, bad values are named validation problems, the WAMIT
 // readers scale the period axis, and the static case's natural periods of
 // OC4 use M + A(w_LF) and match the published full-system periods.
 #include <gtest/gtest.h>
@@ -55,15 +55,15 @@ TEST(HullHydrodynamicsInput, BadValuesAreNamedConditions) {
                                    "    added_mass_frequency: 0\n"),
                     "t.yaml");
   const auto issues = check_project(p, {});
-  std::string conditions;
-  for (const auto& i : issues) conditions += i.condition + " " + i.path + "\n";
-  EXPECT_NE(conditions.find("file_exists hull.hydrodynamics.radiation_file"), std::string::npos) << conditions;
-  EXPECT_NE(conditions.find("hull_value_positive hull.hydrodynamics.ulen"), std::string::npos) << conditions;
-  EXPECT_NE(conditions.find("hull_value_positive hull.hydrodynamics.period_scale"), std::string::npos) << conditions;
-  EXPECT_NE(conditions.find("hull_damping_non_negative hull.hydrodynamics.linear_damping[2]"), std::string::npos)
-      << conditions;
-  EXPECT_NE(conditions.find("hull_value_positive hull.hydrodynamics.added_mass_frequency"), std::string::npos)
-      << conditions;
+  std::string problems;
+  for (const auto& i : issues) problems += i.problem + " " + i.path + "\n";
+  EXPECT_NE(problems.find("file_exists hull.hydrodynamics.radiation_file"), std::string::npos) << problems;
+  EXPECT_NE(problems.find("hull_value_positive hull.hydrodynamics.ulen"), std::string::npos) << problems;
+  EXPECT_NE(problems.find("hull_value_positive hull.hydrodynamics.period_scale"), std::string::npos) << problems;
+  EXPECT_NE(problems.find("hull_damping_non_negative hull.hydrodynamics.linear_damping[2]"), std::string::npos)
+      << problems;
+  EXPECT_NE(problems.find("hull_value_positive hull.hydrodynamics.added_mass_frequency"), std::string::npos)
+      << problems;
 }
 
 TEST(HullHydrodynamicsInput, DampingNeedsSixValuesAndUnknownKeysFail) {

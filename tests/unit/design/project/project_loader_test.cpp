@@ -234,14 +234,14 @@ TEST(ProjectLoader, FormatSampleLoadsWithExpectedValues) {
 TEST(ProjectLoader, UnknownKeyIsReportedWithPositionAndSuggestion) {
   const auto issues = issues_of(replace(kMinimal, "  gravity: 9.81\n", "  gravity: 9.81\n  gravty: 9.8\n"));
   ASSERT_EQ(issues.size(), 1u);
-  EXPECT_EQ(issues[0].condition, "unknown_key");
+  EXPECT_EQ(issues[0].problem, "unknown_key");
   EXPECT_EQ(format_issue(issues[0]), "test.yaml:7:3: site.gravty: unknown key \"gravty\" (did you mean \"gravity\"?)");
 }
 
 TEST(ProjectLoader, WrongTypeNamesExpectedTypeAndUnit) {
   const auto issues = issues_of(replace(kMinimal, "depth: 100.0", "depth: deep"));
   ASSERT_EQ(issues.size(), 1u);
-  EXPECT_EQ(issues[0].condition, "wrong_type");
+  EXPECT_EQ(issues[0].problem, "wrong_type");
   EXPECT_EQ(format_issue(issues[0]), "test.yaml:4:10: site.depth: expected a finite number in m, got \"deep\"");
 }
 
@@ -249,13 +249,13 @@ TEST(ProjectLoader, QuotedNumberIsAString) {
   const auto issues = issues_of(replace(kMinimal, "mass: 1.0e7", "mass: \"1.0e7\""));
   ASSERT_EQ(issues.size(), 1u);
   EXPECT_EQ(issues[0].path, "hull.mass");
-  EXPECT_EQ(issues[0].condition, "wrong_type");
+  EXPECT_EQ(issues[0].problem, "wrong_type");
 }
 
 TEST(ProjectLoader, BadEnumListsAllowedValues) {
   const auto issues = issues_of(replace(kMinimal, "kind: user", "kind: chian"));
   ASSERT_EQ(issues.size(), 1u);
-  EXPECT_EQ(issues[0].condition, "bad_enum");
+  EXPECT_EQ(issues[0].problem, "bad_enum");
   EXPECT_EQ(format_issue(issues[0]),
             "test.yaml:9:21: line_types[0].kind: unknown value \"chian\"; allowed: chain | wire | "
             "polyester | user (did you mean \"chain\"?)");
@@ -264,7 +264,7 @@ TEST(ProjectLoader, BadEnumListsAllowedValues) {
 TEST(ProjectLoader, MissingRequiredKeyIsReportedAtItsParent) {
   const auto issues = issues_of(replace(kMinimal, "  mass: 1.0e7\n", ""));
   ASSERT_EQ(issues.size(), 1u);
-  EXPECT_EQ(issues[0].condition, "missing_key");
+  EXPECT_EQ(issues[0].problem, "missing_key");
   EXPECT_EQ(format_issue(issues[0]), "test.yaml:18:3: hull.mass: required key is missing (kg)");
 }
 
@@ -273,33 +273,33 @@ TEST(ProjectLoader, PolarFairleadNeedsZ) {
       issues_of(replace(kMinimal, "fairlead: [10.0, 0.0, -10.0]", "fairlead: {radius: 10.0, azimuth_deg: 0}"));
   ASSERT_EQ(issues.size(), 1u);
   EXPECT_EQ(issues[0].path, "mooring.lines[0].fairlead.z");
-  EXPECT_EQ(issues[0].condition, "missing_key");
+  EXPECT_EQ(issues[0].problem, "missing_key");
 }
 
 TEST(ProjectLoader, ConstructionMustMatchKind) {
   const auto issues = issues_of(replace(kMinimal, "kind: user,", "kind: user, construction: studless,"));
   ASSERT_EQ(issues.size(), 1u);
   EXPECT_EQ(issues[0].path, "line_types[0].construction");
-  EXPECT_EQ(issues[0].condition, "key_not_applicable");
+  EXPECT_EQ(issues[0].problem, "key_not_applicable");
 }
 
 TEST(ProjectLoader, DuplicateKeyIsAnError) {
   const auto issues = issues_of(replace(kMinimal, "name: minimal", "name: minimal\nname: again"));
   ASSERT_EQ(issues.size(), 1u);
-  EXPECT_EQ(issues[0].condition, "duplicate_key");
+  EXPECT_EQ(issues[0].problem, "duplicate_key");
   EXPECT_EQ(issues[0].line, 3);
 }
 
 TEST(ProjectLoader, UnsupportedVersionIsAnError) {
   const auto issues = issues_of(replace(kMinimal, "version: 1", "version: 2"));
   ASSERT_EQ(issues.size(), 1u);
-  EXPECT_EQ(issues[0].condition, "unsupported_version");
+  EXPECT_EQ(issues[0].problem, "unsupported_version");
 }
 
 TEST(ProjectLoader, YamlSyntaxErrorHasLineAndColumn) {
   const auto issues = issues_of(replace(kMinimal, "[10.0, 0.0, -10.0]", "[10.0, 0.0, -10.0"));
   ASSERT_EQ(issues.size(), 1u);
-  EXPECT_EQ(issues[0].condition, "yaml_syntax");
+  EXPECT_EQ(issues[0].problem, "yaml_syntax");
   ASSERT_TRUE(issues[0].line.has_value());
   EXPECT_GE(*issues[0].line, 14);
   EXPECT_NE(issues[0].message.find("YAML syntax error"), std::string::npos);
@@ -311,7 +311,7 @@ TEST(ProjectLoader, MissingFileNamesTheFile) {
     FAIL() << "no InputError";
   } catch (const InputError& e) {
     ASSERT_EQ(e.issues().size(), 1u);
-    EXPECT_EQ(e.issues()[0].condition, "missing_file");
+    EXPECT_EQ(e.issues()[0].problem, "missing_file");
     EXPECT_FALSE(e.issues()[0].line.has_value());
     EXPECT_EQ(std::string(e.what()), "/nonexistent/folder/project.yaml: project file not found");
   }
@@ -374,7 +374,7 @@ const std::string kWaterplane = "  waterplane_inertia: [1.0e5, 1.0e5]\n";
 TEST(ProjectLoader, BadLineModelListsAllowedValues) {
   const auto issues = issues_of(replace(kMinimal, kLine, kLine + "      model: finite\n"));
   ASSERT_EQ(issues.size(), 1u);
-  EXPECT_EQ(issues[0].condition, "bad_enum");
+  EXPECT_EQ(issues[0].problem, "bad_enum");
   EXPECT_EQ(format_issue(issues[0]),
             "test.yaml:17:14: mooring.lines[0].model: unknown value \"finite\"; allowed: "
             "catenary | fe");
@@ -383,7 +383,7 @@ TEST(ProjectLoader, BadLineModelListsAllowedValues) {
 TEST(ProjectLoader, UnknownKeyInFeMeshIsReported) {
   const auto issues = issues_of(replace(kMinimal, kLine, kLine + "      fe: {element_lenght: 5.0}\n"));
   ASSERT_EQ(issues.size(), 1u);
-  EXPECT_EQ(issues[0].condition, "unknown_key");
+  EXPECT_EQ(issues[0].problem, "unknown_key");
   EXPECT_EQ(issues[0].path, "mooring.lines[0].fe.element_lenght");
   EXPECT_NE(issues[0].message.find("did you mean \"element_length\""), std::string::npos);
 }
@@ -391,7 +391,7 @@ TEST(ProjectLoader, UnknownKeyInFeMeshIsReported) {
 TEST(ProjectLoader, TouchdownRefinementNeedsBothValues) {
   const auto issues = issues_of(replace(kMinimal, kLine, kLine + "      fe: {touchdown_refinement: {length: 50.0}}\n"));
   ASSERT_EQ(issues.size(), 1u);
-  EXPECT_EQ(issues[0].condition, "missing_key");
+  EXPECT_EQ(issues[0].problem, "missing_key");
   EXPECT_EQ(issues[0].path, "mooring.lines[0].fe.touchdown_refinement.element_length");
 }
 
@@ -400,7 +400,7 @@ TEST(ProjectLoader, BadLoadCaseConditionIsAnError) {
                                         "{name: lc1, environment: calm, "
                                         "condition: survivl}"));
   ASSERT_EQ(issues.size(), 1u);
-  EXPECT_EQ(issues[0].condition, "bad_enum");
+  EXPECT_EQ(issues[0].problem, "bad_enum");
   EXPECT_NE(issues[0].message.find("did you mean \"survival\""), std::string::npos);
 }
 
@@ -448,7 +448,7 @@ TEST(ProjectLoader, MeanDriftIsEitherAFileOrATable) {
   auto issues = issues_of(replace(
       kMinimal, kWaterplane, kWaterplane + "  mean_drift: {file: hull.12d, frequencies: [0.5], surge: [[1.0]]}\n"));
   ASSERT_EQ(issues.size(), 2u);
-  EXPECT_EQ(issues[0].condition, "conflicting_keys");
+  EXPECT_EQ(issues[0].problem, "conflicting_keys");
   EXPECT_EQ(issues[0].path, "hull.mean_drift.frequencies");
   EXPECT_EQ(issues[1].path, "hull.mean_drift.surge");
 
@@ -457,9 +457,9 @@ TEST(ProjectLoader, MeanDriftIsEitherAFileOrATable) {
                                            "frequencies: [0.5], surge: [[1], [2]], sway: [[0], "
                                            "[0]]}\n"));
   ASSERT_EQ(issues.size(), 2u);
-  EXPECT_EQ(issues[0].condition, "missing_key");  // yaw, reported at the map
+  EXPECT_EQ(issues[0].problem, "missing_key");  // yaw, reported at the map
   EXPECT_EQ(issues[0].path, "hull.mean_drift.yaw");
-  EXPECT_EQ(issues[1].condition, "key_not_applicable");
+  EXPECT_EQ(issues[1].problem, "key_not_applicable");
   EXPECT_EQ(issues[1].path, "hull.mean_drift.ulen");
 }
 
@@ -469,7 +469,7 @@ TEST(ProjectLoader, MeanDriftTableRowsMustBeLists) {
                         kWaterplane + "  mean_drift: {headings_deg: [0, 90], frequencies: [0.5], surge: [1, 2], "
                                       "sway: [[0], [0]], yaw: [[0], [0]]}\n"));
   ASSERT_EQ(issues.size(), 2u);
-  EXPECT_EQ(issues[0].condition, "wrong_type");
+  EXPECT_EQ(issues[0].problem, "wrong_type");
   EXPECT_EQ(issues[0].path, "hull.mean_drift.surge[0]");
   EXPECT_EQ(issues[1].path, "hull.mean_drift.surge[1]");
 }

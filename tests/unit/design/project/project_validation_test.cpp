@@ -1,4 +1,4 @@
-// The validation pass: valid projects pass; each named condition is reported
+// The validation pass: valid projects pass; each named problem is reported
 // with the position of the offending node; all issues come together.
 
 #include "design/project/project_validation.hpp"
@@ -25,7 +25,7 @@ std::vector<InputIssue> check(const std::string& text, const LineCheckTable& tab
 
 std::vector<std::string> conditions(const std::vector<InputIssue>& issues) {
   std::vector<std::string> out;
-  for (const auto& issue : issues) out.push_back(issue.condition);
+  for (const auto& issue : issues) out.push_back(issue.problem);
   return out;
 }
 
@@ -35,10 +35,10 @@ std::string all(const std::vector<InputIssue>& issues) {
   return out;
 }
 
-/// One issue with the given condition and path.
-void expect_single(const std::vector<InputIssue>& issues, const std::string& condition, const std::string& path) {
+/// One issue with the given problem and path.
+void expect_single(const std::vector<InputIssue>& issues, const std::string& problem, const std::string& path) {
   ASSERT_EQ(issues.size(), 1u) << all(issues);
-  EXPECT_EQ(issues[0].condition, condition) << all(issues);
+  EXPECT_EQ(issues[0].problem, problem) << all(issues);
   EXPECT_EQ(issues[0].path, path) << all(issues);
   EXPECT_TRUE(issues[0].line.has_value()) << all(issues);
 }
@@ -68,7 +68,7 @@ TEST(ProjectValidation, MinimalProjectWithRiserIsValid) {
 TEST(ProjectValidation, NegativeLengthMessageHasTheDocumentedForm) {
   const auto issues = check(replace(kMinimal, "length: 550.0", "length: -20"));
   ASSERT_EQ(issues.size(), 1u) << all(issues);
-  EXPECT_EQ(issues[0].condition, "segment_length_positive");
+  EXPECT_EQ(issues[0].problem, "segment_length_positive");
   EXPECT_EQ(format_issue(issues[0]), "test.yaml:16:29: mooring.lines[0].segments[0].length: must be > 0 m, got -20 m");
 }
 
@@ -97,10 +97,10 @@ TEST(ProjectValidation, DuplicateNamesAreReported) {
                  "  - {name: lc1, environment: calm}\n  - {name: lc1, environment: calm}\n");
   const auto issues = check(text);
   ASSERT_EQ(issues.size(), 2u) << all(issues);
-  EXPECT_EQ(issues[0].condition, "line_type_name_unique");
+  EXPECT_EQ(issues[0].problem, "line_type_name_unique");
   EXPECT_EQ(issues[0].path, "line_types[1].name");
   EXPECT_EQ(issues[0].message, "duplicate line type name \"c\", first used by line_types[0]");
-  EXPECT_EQ(issues[1].condition, "load_case_name_unique");
+  EXPECT_EQ(issues[1].problem, "load_case_name_unique");
 }
 
 TEST(ProjectValidation, AnchorBelowSeabed) {
@@ -461,7 +461,7 @@ TEST(ProjectValidation, MorisonHullNeedsGeometryAndTakesNoBemKeys) {
   } catch (const InputError& e) {
     bool found = false;
     for (const auto& i : e.issues())
-      found = found || (i.condition == "key_not_applicable" && i.path == "hull.hydrodynamics.strip_length");
+      found = found || (i.problem == "key_not_applicable" && i.path == "hull.hydrodynamics.strip_length");
     EXPECT_TRUE(found) << e.what();
   }
   // Negative coefficients.

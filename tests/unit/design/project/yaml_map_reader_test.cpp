@@ -41,7 +41,7 @@ TEST(YamlMapReader, ReportsUnknownKeysWithASuggestionWhenItGoesOutOfScope) {
     EXPECT_TRUE(ctx.issues.empty());
   }
   ASSERT_EQ(ctx.issues.size(), 1u);
-  EXPECT_EQ(ctx.issues[0].condition, "unknown_key");
+  EXPECT_EQ(ctx.issues[0].problem, "unknown_key");
   EXPECT_EQ(ctx.issues[0].path, "site.depht");
   EXPECT_EQ(ctx.issues[0].message, "unknown key \"depht\" (did you mean \"depth\"?)");
   EXPECT_EQ(ctx.issues[0].line, 1);
@@ -58,11 +58,11 @@ TEST(YamlMapReader, ReportsDuplicateAndMissingKeysAndWrongTypes) {
     EXPECT_FALSE(r.number("c", "m", kRequired).has_value());
   }
   ASSERT_EQ(ctx.issues.size(), 3u);
-  EXPECT_EQ(ctx.issues[0].condition, "duplicate_key");
+  EXPECT_EQ(ctx.issues[0].problem, "duplicate_key");
   EXPECT_EQ(ctx.issues[0].path, "a");
-  EXPECT_EQ(ctx.issues[1].condition, "wrong_type");
+  EXPECT_EQ(ctx.issues[1].problem, "wrong_type");
   EXPECT_EQ(ctx.issues[1].message, "expected a finite number in m, got \"3\"");
-  EXPECT_EQ(ctx.issues[2].condition, "missing_key");
+  EXPECT_EQ(ctx.issues[2].problem, "missing_key");
   EXPECT_EQ(ctx.issues[2].message, "required key is missing (m)");
 }
 

@@ -41,9 +41,9 @@ TEST(AdvancedStage, CriticalCasesGetCoupledAndScResultsAndTheFinalChecks) {
     ASSERT_TRUE(c.coupled.has_value());
     ASSERT_TRUE(c.sc.has_value());
     EXPECT_EQ(c.coupled->level, AnalysisLevel::coupled);
-    EXPECT_EQ(c.coupled->tension_source, "coupled");
+    EXPECT_EQ(c.coupled->tension_source, TensionSource::coupled);
     EXPECT_EQ(c.sc->level, AnalysisLevel::semi_coupled_enhanced);
-    EXPECT_EQ(c.sc->tension_source, "quasi-static");
+    EXPECT_EQ(c.sc->tension_source, TensionSource::quasi_static);
     // Same sea and record: same seed and samples; the S-C tension channel is the coupled run's most loaded line.
     EXPECT_EQ(c.sc->seed, c.coupled->seed);
     EXPECT_EQ(c.sc->times_s.size(), c.coupled->times_s.size());
@@ -82,8 +82,8 @@ TEST(AdvancedStage, CriticalCasesGetCoupledAndScResultsAndTheFinalChecks) {
   const ChannelSummary* sc = channel(storm->comparison.levels[0], "qs_tension_" + line + "_N");
   ASSERT_NE(coupled, nullptr);
   ASSERT_NE(sc, nullptr);
-  EXPECT_NE(coupled->std_dev, sc->std_dev);
-  EXPECT_GT(coupled->std_dev, 0.0);
+  EXPECT_NE(coupled->moments.std_dev, sc->moments.std_dev);
+  EXPECT_GT(coupled->moments.std_dev, 0.0);
   EXPECT_FALSE(r.governing.empty());
 }
 

@@ -69,15 +69,15 @@ TEST(StaticStage, DefaultScenarioCasesChecksAndCurves) {
   EXPECT_EQ(d.channels[4].name, "tension " + d.most_loaded_line);
   for (const StormChannel& c : d.channels) {
     EXPECT_EQ(c.values.size(), d.times_s.size()) << c.name;
-    ASSERT_TRUE(c.mpm_max.has_value()) << c.name << ": " << c.extremes_note;
-    EXPECT_GT(*c.mpm_max, c.mean) << c.name;
-    EXPECT_FALSE(c.spectrum_density.empty()) << c.name;
+    ASSERT_TRUE(c.mpm_max().has_value()) << c.name << ": " << c.extremes_note;
+    EXPECT_GT(*c.mpm_max(), c.moments().mean) << c.name;
+    EXPECT_GT(c.statistics.spectrum.density.size(), 0) << c.name;
   }
   const StormChannel& t = d.channels[4];
   const double sf_dynamic = d.integrity == LineIntegrity::damaged ? 1.25 : 1.67;  // the scenario's API RP 2SK factors
-  EXPECT_NEAR(d.tension_utilization, *t.mpm_max * sf_dynamic / d.fairlead_mbl_N, 1e-12);
+  EXPECT_NEAR(d.tension_utilization, *t.mpm_max() * sf_dynamic / d.fairlead_mbl_N, 1e-12);
   ASSERT_TRUE(d.extreme_offset.has_value());
-  EXPECT_EQ(d.extreme_offset->kind, "extreme");
+  EXPECT_EQ(d.extreme_offset->kind, OffsetCheckKind::extreme);
   // The one extreme-offset rule (soz.hpp), the same as `spiral soz --extreme`
   // applies: the Weibull 3-h MPM of offset/allowable, shown as an offset.
   ASSERT_TRUE(d.extreme_offset->extreme.has_value());

@@ -79,7 +79,7 @@ TEST(LineArray, StateAgreesWithTheSolveAndHasAProfile) {
   EXPECT_LT((state.profile.front().position_g - test::oc4_lines()[0].anchor_g).norm(), 1e-9);
   EXPECT_LT((state.profile.back().position_g - attachment).norm(), 1e-6);
   EXPECT_NEAR(state.profile.back().tension_N, end.top_tension_N, 1e-9 * end.top_tension_N);
-  EXPECT_EQ(state.regime, "touchdown");
+  EXPECT_EQ(state.regime, LineRegime::touchdown);
   EXPECT_GT(state.laid_length_m, 0.0);
 }
 

@@ -52,7 +52,8 @@ TEST(SozCheck, ExtremeOffsetOfEveryCaseFromTheEnhancedScAnalysis) {
   ASSERT_EQ(r.zones.size(), 2u);
   EXPECT_FALSE(r.zones[0].conditions.current || r.zones[1].conditions.current);
   std::map<std::string, const OffsetCheck*> statics, extremes;
-  for (const OffsetCheck& c : r.offset_checks) (c.kind == "static" ? statics : extremes)[c.case_name] = &c;
+  for (const OffsetCheck& c : r.offset_checks)
+    (c.kind == OffsetCheckKind::static_mean ? statics : extremes)[c.case_name] = &c;
   ASSERT_EQ(statics.size(), p.project.load_cases.size());
   ASSERT_EQ(extremes.size(), p.project.load_cases.size());
   for (const LoadCase& lc : p.project.load_cases) {

@@ -435,8 +435,9 @@ TEST(Soz, DirectionStepMustDivide360) {
       compute_soz(p, designs(p), {}, options(step));
       ADD_FAILURE() << "step " << step << " accepted";
     } catch (const InputError& e) {
-      EXPECT_EQ(e.issues().front().condition, "soz_step_divides_360");
-      EXPECT_NE(std::string(e.what()).find("--step-deg"), std::string::npos);
+      EXPECT_EQ(e.issues().front().problem, "soz_step_divides_360");
+      EXPECT_EQ(e.issues().front().origin, InputOrigin::request);
+      EXPECT_EQ(e.issues().front().path, "step_deg");  // the request's argument, not a command-line flag
     }
   }
   EXPECT_NO_THROW(validate_soz_options(p, options(2.5)));

@@ -113,7 +113,7 @@ TEST(FeStaticLine, CurrentAlongTheLinePushesTheFairleadForce) {
 TEST(FeStaticLine, StateHasTheMeshAsProfile) {
   auto fe = oc4_fe_line(0.0);
   const auto state = fe->state(fe->attachment_b(), 0);
-  EXPECT_EQ(state.regime, "touchdown");
+  EXPECT_EQ(state.regime, LineRegime::touchdown);
   EXPECT_GT(state.laid_length_m, 200.0);
   EXPECT_GE(state.profile.size(), 41u);
   EXPECT_NEAR(state.profile.back().tension_N, state.top.top_tension_N, 1e-3 * state.top.top_tension_N);

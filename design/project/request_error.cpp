@@ -1,4 +1,4 @@
-#include "design/project/command_line_reference.hpp"
+#include "design/project/request_error.hpp"
 
 #include <algorithm>
 
@@ -6,13 +6,14 @@
 
 namespace spiral::design {
 
-InputError command_line_error(const Project& project, const std::string& option, const std::string& message,
-                              const std::string& condition) {
+InputError request_error(const Project& project, const std::string& argument, const std::string& message,
+                         const std::string& problem) {
   InputIssue issue;
   issue.file = project.source_file;
-  issue.path = option;
+  issue.path = argument;
+  issue.origin = InputOrigin::request;
   issue.message = message;
-  issue.condition = condition;
+  issue.problem = problem;
   return InputError({issue});
 }
 
@@ -22,7 +23,7 @@ const LoadCase& find_load_case(const Project& project, const std::string& name) 
   if (it == project.load_cases.end()) {
     std::string names;
     for (const LoadCase& c : project.load_cases) names += (names.empty() ? "" : ", ") + c.name;
-    throw command_line_error(project, "--case", fmt::format("no load case named \"{}\" (defined: {})", name, names));
+    throw request_error(project, "load_case", fmt::format("no load case named \"{}\" (defined: {})", name, names));
   }
   return *it;
 }
