@@ -456,9 +456,8 @@ OptimizationResult optimize_pretension(const ValidatedProject& validated, const 
   result.evaluations = static_cast<int>(result.history.size());
   result.payouts_m.assign(best.data(), best.data() + best.size());
 
-  // Re-verify the kept point with models built afresh (no warm start from
-  // the search), and take the sensitivities there.
-  problem.rebuild_models();
+  // Verify the kept point with the full models (risers restored: a new
+  // equilibrium of every scenario), and take the sensitivities there.
   const ProblemEvaluation check = problem.evaluate(best, true);
   for (std::size_t s = 0; s < check.responses.size(); ++s)
     result.after.push_back(problem.summarize(s, check.responses[s]));

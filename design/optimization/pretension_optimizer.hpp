@@ -24,7 +24,7 @@
 // thousandth of the payout tolerance (SLSQP's line search takes short steps
 // on its way: stopping at the tolerance itself ended runs metres from the
 // optimum), on a relative objective change of 1e-8, or at the evaluation cap. Every evaluation is recorded; the best
-// feasible point is kept and re-verified with freshly built models. A solver
+// feasible point is kept and verified with the full models. A solver
 // failure inside an evaluation stops the run with the scenario named (no
 // penalty value is invented). When no evaluated point is feasible the result
 // says so, with the most violated constraint.

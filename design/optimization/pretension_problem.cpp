@@ -196,12 +196,12 @@ PretensionProblem::PretensionProblem(const ValidatedProject& validated, const Op
     notes_.push_back("mooring lines with model: catenary carry no current drag in the equilibria (risers do)");
   }
   hull_ = build_hull_model(project_);
-  rebuild_models();
+  build_models();
 }
 
 PretensionProblem::~PretensionProblem() = default;
 
-void PretensionProblem::rebuild_models() {
+void PretensionProblem::build_models() {
   models_.clear();
   models_.reserve(scenarios_.size());
   for (const Scenario& s : scenarios_) models_.emplace_back(project_, hull_, payout_groups_, s);

@@ -58,9 +58,6 @@ class PretensionProblem {
   /// Every distinct zone, sampled every 2°.
   std::vector<ZoneOutline> zone_outlines() const;
 
-  /// The same problem with every scenario model built afresh (re-verification).
-  void rebuild_models();
-
   /// Whether any scenario has expensive lines that are not variables (FE risers).
   bool has_expensive_lines() const;
   /// ScenarioModel::linearize_expensive_lines / restore_expensive_lines of every scenario.
@@ -87,6 +84,7 @@ class PretensionProblem {
   double zone_wall_s_ = 0.0;
   int threads_ = 1;
 
+  void build_models();
   void add_scenario_constraints(std::size_t s, const ScenarioResponse& r, bool with_gradient,
                                 ProblemEvaluation& out) const;
 };
