@@ -1,6 +1,7 @@
 // `spiral optimize`: pretension optimization of the mooring (or, with
 // --target-pretension, the payouts that give each group its target
 // pretension), the optimized project written beside the original.
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -59,6 +60,7 @@ class OptimizeCommand : public Command {
     request.cases = cases_;
     if (max_evaluations_ > 0) request.max_evaluations = max_evaluations_;
     request.threads = threads_;
+    if (level_ == "sc-enhanced") request.dynamic = design::DynamicLevelOptions{duration_s_, seed_};
     const design::OptimizationResult result = design::optimize_pretension(loaded, request);
 
     const std::string json = design::optimization_to_json(result).dump(2);
@@ -126,13 +128,21 @@ class OptimizeCommand : public Command {
         ->delimiter(',');
     sub.add_option("--max-evaluations", max_evaluations_, "Evaluation cap (default: optimization.max_evaluations)");
     sub.add_option("--threads", threads_, "Scenarios evaluated in parallel (default: all cores)");
+    sub.add_option("--level", level_,
+                   "static (default: equilibria, analytic gradients) or sc-enhanced (the 3-h MPM offset and tensions "
+                   "of each case's enhanced S-C storm; COBYLA)")
+        ->check(CLI::IsMember({"static", "sc-enhanced"}));
+    sub.add_option("--duration", duration_s_, "With --level sc-enhanced: simulated time per storm, s (default 10800)");
+    sub.add_option("--seed", seed_, "With --level sc-enhanced: seed of the wave and wind realizations (default 1)");
     sub.add_flag("--target-pretension", target_,
                  "Instead: the payout of every line that gives its group's optimization.target_pretension at rest");
     sub.add_flag("--json", json_, "Machine output (docs/output-format.md) instead of the tables");
     sub.add_option("--out", out_, "Results folder (default out/<project>/optimize)");
   }
 
-  std::string objective_, algorithm_, damaged_, out_;
+  std::string objective_, algorithm_, damaged_, out_, level_ = "static";
+  double duration_s_ = 10800.0;
+  std::uint64_t seed_ = 1;
   std::vector<std::string> cases_;
   int max_evaluations_ = 0;
   int threads_ = 0;

@@ -394,6 +394,7 @@ OptimizationResult optimize_pretension(const ValidatedProject& validated, const 
   result.project = validated.project.name;
   result.objective = problem.settings().objective;
   result.algorithm = problem.settings().algorithm;
+  result.dynamic = problem.dynamic();
   result.groups = problem.groups();
   for (const Scenario& s : problem.scenarios()) result.scenarios.push_back(s.label());
   result.findings = problem.findings();
@@ -408,7 +409,7 @@ OptimizationResult optimize_pretension(const ValidatedProject& validated, const 
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(problem.groups().size()));
   const ProblemEvaluation start_eval = problem.evaluate(zero, false);
   for (std::size_t s = 0; s < start_eval.responses.size(); ++s)
-    result.before.push_back(problem.summarize(s, start_eval.responses[s]));
+    result.before.push_back(problem.summarize(s, start_eval));
   result.objective_start = problem.objective_of(start_eval, zero);
 
   // Passes. Without risers: one NLopt run on the full models. With risers
@@ -418,7 +419,8 @@ OptimizationResult optimize_pretension(const ValidatedProject& validated, const 
   // risers. The pass is accepted when that holds every constraint; else the
   // next pass linearizes there and optimizes again (successive linearization:
   // the riser force error is second order in the hull's move between passes).
-  const bool linearize = problem.has_expensive_lines();
+  // The dynamic level's constraints come from storms, not from the risers' statics.
+  const bool linearize = problem.has_expensive_lines() && !problem.dynamic();
   constexpr int kMaxPasses = 4;
   Eigen::VectorXd from = zero;
   Eigen::VectorXd best = zero;
@@ -459,8 +461,7 @@ OptimizationResult optimize_pretension(const ValidatedProject& validated, const 
   // Verify the kept point with the full models (risers restored: a new
   // equilibrium of every scenario), and take the sensitivities there.
   const ProblemEvaluation check = problem.evaluate(best, true);
-  for (std::size_t s = 0; s < check.responses.size(); ++s)
-    result.after.push_back(problem.summarize(s, check.responses[s]));
+  for (std::size_t s = 0; s < check.responses.size(); ++s) result.after.push_back(problem.summarize(s, check));
   result.objective_best = problem.objective_of(check, best);
   const ConstraintValue* worst = nullptr;
   const double violation = worst_of(check.constraints, &worst);

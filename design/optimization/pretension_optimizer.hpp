@@ -30,6 +30,7 @@
 // says so, with the most violated constraint.
 
 #include <Eigen/Core>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -39,6 +40,12 @@
 
 namespace spiral::design {
 
+/// The storms of the dynamic level (dynamic_level.hpp).
+struct DynamicLevelOptions {
+  double duration_s = 10800.0;  ///< of each storm, > 0; the MPMs refer to 3 h whatever the duration
+  std::uint64_t seed = 1;
+};
+
 /// What the command line may override of the project's `optimization`.
 struct OptimizationRequest {
   std::optional<OptimizationObjective> objective;
@@ -47,6 +54,8 @@ struct OptimizationRequest {
   std::optional<DamagedConditions> damaged;
   std::optional<int> max_evaluations;
   int threads = 0;  ///< scenarios evaluated in parallel; 0: all cores
+  /// The dynamic level (enhanced S-C storms, COBYLA); none: the static level.
+  std::optional<DynamicLevelOptions> dynamic;
 };
 
 /// One design variable.
@@ -89,6 +98,10 @@ struct ScenarioSummary {
   std::string worst_line;
   double min_laid_length_m = 0.0;
   double min_fairlead_tension_N = 0.0;
+  /// Dynamic level: 3-h MPM offset, its ratio to the zone (Weibull MPM of
+  /// |d(t)| / A(θ(t))), and the worst dynamic code utilization and its line.
+  std::optional<double> mpm_offset_m, mpm_soz_ratio, worst_dynamic_utilization;
+  std::string worst_dynamic_line;
 };
 
 /// A line's length and pretension (hull at rest, still water, intact) before
@@ -131,6 +144,7 @@ struct OptimizationResult {
   std::string project;
   OptimizationObjective objective = OptimizationObjective::max_soz_margin;
   OptimizationAlgorithm algorithm = OptimizationAlgorithm::slsqp;
+  bool dynamic = false;  ///< the dynamic level (enhanced S-C storms)
   OptimizationStatus status = OptimizationStatus::optimal;
   std::string stop_reason;  ///< NLopt's result code as text
   std::vector<GroupVariable> groups;

@@ -8,6 +8,7 @@
 #include <map>
 #include <numbers>
 
+#include "design/optimization/dynamic_level.hpp"
 #include "design/project/request_error.hpp"
 #include "design/soz/soz.hpp"
 #include "engine/common/parallel_for.hpp"
@@ -40,6 +41,7 @@ Optimization settings_of(const Project& project, const OptimizationRequest& requ
   if (!request.cases.empty()) s.cases = request.cases;
   if (request.damaged) s.damaged = *request.damaged;
   if (request.max_evaluations) s.max_evaluations = *request.max_evaluations;
+  if (request.dynamic) s.algorithm = OptimizationAlgorithm::cobyla;  // storms give no gradients
   return s;
 }
 
@@ -61,6 +63,8 @@ void check_request(const Project& project, const OptimizationRequest& request) {
     add("objective", "max_soz_margin needs risers (their safe operational zone); the project has none",
         "objective_needs_risers");
   }
+  if (request.dynamic && !(request.dynamic->duration_s > 0.0))
+    add("duration_s", fmt::format("must be > 0 s, got {} s", request.dynamic->duration_s), "duration_positive");
   if (!issues.empty()) throw InputError(std::move(issues));
 }
 
@@ -197,6 +201,13 @@ PretensionProblem::PretensionProblem(const ValidatedProject& validated, const Op
   }
   hull_ = build_hull_model(project_);
   build_models();
+  if (request.dynamic) {
+    dynamic_ = std::make_unique<DynamicLevel>(validated, *request.dynamic, threads_);
+    notes_.push_back(fmt::format(
+        "dynamic level: the constraints on each scenario's enhanced S-C storm ({:g} s, seed {}): Weibull 3-h MPM of "
+        "offset / SOZ, MPM offset against the limit, each line's dynamic check on its mean and Gumbel MPM tension",
+        request.dynamic->duration_s, request.dynamic->seed));
+  }
 }
 
 PretensionProblem::~PretensionProblem() = default;
@@ -205,6 +216,16 @@ void PretensionProblem::build_models() {
   models_.clear();
   models_.reserve(scenarios_.size());
   for (const Scenario& s : scenarios_) models_.emplace_back(project_, hull_, payout_groups_, s);
+}
+
+std::string PretensionProblem::governing_riser(std::size_t s, double direction_rad) const {
+  // The riser governing the zone at the grid direction nearest θ.
+  const std::vector<double>& dirs = zones_[s].directions_deg;
+  double deg = direction_rad * kRadToDeg;
+  if (deg < 0.0) deg += 360.0;
+  const double step = dirs.size() > 1 ? dirs[1] - dirs[0] : 360.0;
+  const auto nearest = static_cast<std::size_t>(std::lround(deg / step)) % std::max<std::size_t>(dirs.size(), 1);
+  return nearest < zones_[s].governing_riser.size() ? zones_[s].governing_riser[nearest] : "";
 }
 
 std::vector<ZoneOutline> PretensionProblem::zone_outlines() const {
@@ -259,6 +280,7 @@ ProblemEvaluation PretensionProblem::evaluate(const Eigen::VectorXd& payouts_m, 
         models_[static_cast<std::size_t>(s)].evaluate(payouts_m, with_gradient);
   });
   for (std::size_t s = 0; s < scenarios_.size(); ++s) add_scenario_constraints(s, out.responses[s], with_gradient, out);
+  if (dynamic_) dynamic_->apply(*this, payouts_m, out);
   return out;
 }
 
@@ -300,13 +322,7 @@ void PretensionProblem::add_scenario_constraints(std::size_t s, const ScenarioRe
     const double ratio = allowable > 0.0 ? rho / allowable : std::numeric_limits<double>::infinity();
     const Eigen::VectorXd d_ratio =
         d_rho / allowable - rho * zone->slope_m_per_rad(theta) / (allowable * allowable) * d_theta;
-    // The riser governing the zone at the grid direction nearest θ.
-    const std::vector<double>& dirs = zones_[s].directions_deg;
-    double deg = theta * kRadToDeg;
-    if (deg < 0.0) deg += 360.0;
-    const double step = dirs.size() > 1 ? dirs[1] - dirs[0] : 360.0;
-    const auto nearest = static_cast<std::size_t>(std::lround(deg / step)) % std::max<std::size_t>(dirs.size(), 1);
-    const std::string riser = nearest < zones_[s].governing_riser.size() ? zones_[s].governing_riser[nearest] : "";
+    const std::string riser = governing_riser(s, theta);
     out.constraints.push_back({{label, "soz", riser, ratio - 1.0}, gradient(d_ratio)});
     if (settings_.objective == OptimizationObjective::max_soz_margin)
       out.objective_measures.push_back({{label, "soz", riser, ratio}, gradient(d_ratio)});
@@ -331,8 +347,16 @@ double PretensionProblem::objective_of(const ProblemEvaluation& evaluation, cons
   return worst;
 }
 
-ScenarioSummary PretensionProblem::summarize(std::size_t s, const ScenarioResponse& r) const {
+ScenarioSummary PretensionProblem::summarize(std::size_t s, const ProblemEvaluation& evaluation) const {
+  const ScenarioResponse& r = evaluation.responses[s];
   ScenarioSummary out;
+  if (s < evaluation.dynamic.size()) {
+    const DynamicScenarioMeasures& d = evaluation.dynamic[s];
+    out.mpm_offset_m = d.mpm_offset_m;
+    out.mpm_soz_ratio = d.mpm_soz_ratio;
+    out.worst_dynamic_utilization = d.worst_utilization;
+    out.worst_dynamic_line = d.worst_line;
+  }
   out.scenario = scenarios_[s].label();
   out.case_name = scenarios_[s].case_name;
   out.damaged_line = scenarios_[s].damaged_line;

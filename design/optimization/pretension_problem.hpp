@@ -22,12 +22,23 @@ struct Measure {
   Eigen::VectorXd gradient;
 };
 
+/// A scenario's dynamic measures (dynamic level), for its summary.
+struct DynamicScenarioMeasures {
+  double mpm_offset_m = 0.0;
+  std::optional<double> mpm_soz_ratio;
+  double worst_utilization = 0.0;
+  std::string worst_line;
+};
+
 struct ProblemEvaluation {
-  std::vector<ScenarioResponse> responses;  ///< per scenario
-  std::vector<Measure> constraints;         ///< g ≤ 0
+  std::vector<ScenarioResponse> responses;       ///< per scenario (static equilibria)
+  std::vector<DynamicScenarioMeasures> dynamic;  ///< per scenario, dynamic level only
+  std::vector<Measure> constraints;              ///< g ≤ 0
   /// The quantities the minimax objective bounds (empty for min_total_payout).
   std::vector<Measure> objective_measures;
 };
+
+class DynamicLevel;
 
 class PretensionProblem {
  public:
@@ -53,7 +64,14 @@ class PretensionProblem {
   /// The objective at an evaluation (for minimax: the largest measure).
   double objective_of(const ProblemEvaluation& evaluation, const Eigen::VectorXd& payouts_m) const;
 
-  ScenarioSummary summarize(std::size_t scenario, const ScenarioResponse& response) const;
+  /// The scenario's summary at an evaluation (with the dynamic measures when it has them).
+  ScenarioSummary summarize(std::size_t scenario, const ProblemEvaluation& evaluation) const;
+
+  /// The zone scenario `s` is checked against (none: no risers, or no zone),
+  /// and the riser governing it at direction θ (rad).
+  const SmoothZone* zone_of(std::size_t s) const { return zones_[s].zone.get(); }
+  std::string governing_riser(std::size_t s, double direction_rad) const;
+  bool dynamic() const { return dynamic_ != nullptr; }
 
   /// Every distinct zone, sampled every 2°.
   std::vector<ZoneOutline> zone_outlines() const;
@@ -78,6 +96,7 @@ class PretensionProblem {
   std::vector<Scenario> scenarios_;
   std::vector<ZoneOfScenario> zones_;
   std::vector<ScenarioModel> models_;
+  std::unique_ptr<DynamicLevel> dynamic_;
   HullModel hull_;
   std::vector<std::string> findings_, notes_;
   double zone_conservatism_m_ = 0.0;

@@ -36,7 +36,7 @@ PretensionStudyPoint point_of(PretensionProblem& problem, const Eigen::VectorXd&
   const ProblemEvaluation e = problem.evaluate(payouts, false);
   PretensionStudyPoint p;
   for (std::size_t s = 0; s < e.responses.size(); ++s) {
-    const ScenarioSummary summary = problem.summarize(s, e.responses[s]);
+    const ScenarioSummary summary = problem.summarize(s, e);
     const bool damaged = summary.damaged_line.has_value();
     p.max_offset_m = std::max(p.max_offset_m, summary.offset_m);
     double& utilization = damaged ? p.max_utilization_damaged : p.max_utilization_intact;

@@ -28,7 +28,11 @@ nlohmann::json scenario_json(const ScenarioSummary& s) {
           {"worst_utilization", s.worst_utilization},
           {"worst_line", s.worst_line},
           {"min_laid_length_m", finite(s.min_laid_length_m)},
-          {"min_fairlead_tension_N", finite(s.min_fairlead_tension_N)}};
+          {"min_fairlead_tension_N", finite(s.min_fairlead_tension_N)},
+          {"mpm_offset_m", optional_number(s.mpm_offset_m)},
+          {"mpm_soz_ratio", optional_number(s.mpm_soz_ratio)},
+          {"worst_dynamic_utilization", optional_number(s.worst_dynamic_utilization)},
+          {"worst_dynamic_line", s.worst_dynamic_line}};
 }
 
 }  // namespace
@@ -45,6 +49,7 @@ nlohmann::json optimization_to_json(const OptimizationResult& r) {
                     {"start", r.objective_start},
                     {"best", r.objective_best}};
   j["algorithm"] = to_string(r.algorithm);
+  j["level"] = r.dynamic ? "sc-enhanced" : "static";
   nlohmann::json groups = nlohmann::json::array();
   for (std::size_t g = 0; g < r.groups.size(); ++g) {
     groups.push_back({{"name", r.groups[g].name},

@@ -29,9 +29,10 @@ std::string scenario_rows(const std::vector<design::ScenarioSummary>& before,
 }  // namespace
 
 std::string optimization_table(const design::OptimizationResult& r) {
-  std::string out = fmt::format("Pretension optimization of {}: {} ({}), {} scenarios, {} evaluations, {:.2f} s\n",
-                                r.project, design::to_string(r.objective), design::to_string(r.algorithm),
-                                r.scenarios.size(), r.evaluations, r.wall_s);
+  std::string out =
+      fmt::format("Pretension optimization of {}: {} ({}, {} level), {} scenarios, {} evaluations, {:.2f} s\n",
+                  r.project, design::to_string(r.objective), design::to_string(r.algorithm),
+                  r.dynamic ? "sc-enhanced" : "static", r.scenarios.size(), r.evaluations, r.wall_s);
   out += fmt::format("objective ({}): {:.6g} -> {:.6g}; {}; stop: {}\n\n", r.objective_unit, r.objective_start,
                      r.objective_best, design::to_string(r.status), r.stop_reason);
   out += fmt::format("{:>5} {:>14} {:>12}  {}\n", "eval", "objective", "worst g", "worst constraint");
@@ -47,6 +48,18 @@ std::string optimization_table(const design::OptimizationResult& r) {
                        l.pretension_after_N / 1e3, 100.0 * l.pretension_after_N / l.top_segment_mbl_N);
   }
   out += "\n" + scenario_rows(r.before, r.after);
+  if (r.dynamic) {
+    out += fmt::format("\n{:<44} {:>12} {:>12} {:>12} {:>12}  {}\n", "storm extremes (3-h MPM)", "offset m", "-> after",
+                       "ratio", "-> after", "dyn. util after (line)");
+    for (std::size_t i = 0; i < r.before.size() && i < r.after.size(); ++i) {
+      const design::ScenarioSummary& b = r.before[i];
+      const design::ScenarioSummary& a = r.after[i];
+      const auto value = [](const std::optional<double>& v) { return v ? fmt::format("{:.3f}", *v) : "-"; };
+      out += fmt::format("{:<44} {:>12} {:>12} {:>12} {:>12}  {} ({})\n", b.scenario, value(b.mpm_offset_m),
+                         value(a.mpm_offset_m), value(b.mpm_soz_ratio), value(a.mpm_soz_ratio),
+                         value(a.worst_dynamic_utilization), a.worst_dynamic_line);
+    }
+  }
   if (!r.active.empty()) {
     out += "\nactive at the optimum (multiplier: objective gained per unit relaxation)\n";
     for (const design::ActiveConstraint& a : r.active) out += fmt::format("  {:<70} {:>12.4g}\n", a.name, a.multiplier);
