@@ -156,7 +156,7 @@ TEST(CliOptimize, TargetPretensionIsReachedInTheWrittenProject) {
 TEST(CliStudy, PretensionSweepMarksTheFeasibleBand) {
   const auto dir = fresh_folder("study");
   const auto project = write_project(dir, oc4_optimization_text("  cases: [current]\n"));
-  const auto run = run_spiral("study pretension --json --points 9 '" + project.string() + "' --out '" +
+  const auto run = run_spiral("study pretension --json --points 9 --with-optimum '" + project.string() + "' --out '" +
                               (dir / "out").string() + "'");
   ASSERT_EQ(run.exit_code, app::kExitOk) << run.err;
   const auto doc = nlohmann::json::parse(run.out);
@@ -168,6 +168,9 @@ TEST(CliStudy, PretensionSweepMarksTheFeasibleBand) {
   EXPECT_GT(points[0]["pretension_N"].get<double>(), points[8]["pretension_N"].get<double>());
   EXPECT_LT(points[0]["max_offset_m"].get<double>(), points[8]["max_offset_m"].get<double>());
   EXPECT_TRUE(std::filesystem::exists(dir / "out" / "pretension_study.csv"));
+  // The optimizer's point on it: one payout per line (three groups).
+  ASSERT_TRUE(doc.contains("optimum")) << run.out;
+  EXPECT_EQ(doc["optimum"]["payouts_m"].size(), 3u);
   std::filesystem::remove_all(dir);
 }
 
