@@ -387,6 +387,21 @@ struct LoadCase {
   DesignCondition condition = DesignCondition::extreme;  ///< selects the riser design factor
 };
 
+/// The line integrity a load-case matrix entry covers (`load_case_matrix[i].damaged`).
+enum class MatrixDamage { none, every_line, listed };
+
+/// `load_case_matrix[i]`: load cases generated from one environment turned
+/// to several headings, intact and with single lines removed
+/// (load_case_matrix.hpp expands them; docs/project-format.md).
+struct LoadCaseMatrixEntry {
+  std::string environment;           ///< the base environment: its headings are those of matrix heading 0
+  std::vector<double> headings_rad;  ///< >= 1, distinct, in [0, 2 pi): added to every heading of the base
+  DesignCondition condition = DesignCondition::extreme;  ///< of the intact cases
+  MatrixDamage damaged = MatrixDamage::none;
+  std::vector<std::string> damaged_lines;                         ///< MatrixDamage::listed
+  DesignCondition damaged_condition = DesignCondition::survival;  ///< of the damaged cases
+};
+
 enum class MooringCode { api_rp_2sk, dnv_os_e301 };
 
 /// API RP 2SK (3rd ed., Table 2) safety factors on MBL.
@@ -517,7 +532,8 @@ struct Project {
   Hull hull;
   std::vector<Riser> risers;
   std::vector<Environment> environments;
-  std::vector<LoadCase> load_cases;
+  std::vector<LoadCase> load_cases;  ///< as written, then the expanded load_case_matrix (load_validated_project)
+  std::vector<LoadCaseMatrixEntry> load_case_matrix;
   Criteria criteria;
   std::vector<Stage> stages;  ///< absent in YAML: preliminary, intermediate, advanced
   std::optional<Optimization> optimization;

@@ -47,6 +47,8 @@ void read_project(MapReader& r, Project& p, const std::filesystem::path& base_fo
   r.list_of_maps("risers", kOptional, [&](MapReader& x) { p.risers.push_back(read_riser(x)); });
   r.list_of_maps("environments", kRequired, [&](MapReader& e) { p.environments.push_back(read_environment(e)); });
   r.list_of_maps("load_cases", kRequired, [&](MapReader& c) { p.load_cases.push_back(read_load_case(c)); });
+  r.list_of_maps("load_case_matrix", kOptional,
+                 [&](MapReader& m) { p.load_case_matrix.push_back(read_load_case_matrix_entry(m)); });
   r.map("criteria", kRequired, [&](MapReader& c) { p.criteria = read_criteria(c); });
   if (r.has("stages")) {
     r.list_of_maps("stages", kOptional, [&](MapReader& s) { p.stages.push_back(read_stage(s)); });

@@ -64,6 +64,28 @@ LoadCase read_load_case(MapReader& r) {
   return load_case;
 }
 
+LoadCaseMatrixEntry read_load_case_matrix_entry(MapReader& r) {
+  LoadCaseMatrixEntry entry;
+  assign(entry.environment, r.text("environment", kRequired));
+  assign(entry.headings_rad, r.angles("headings", kRequired));
+  assign(entry.condition, r.enumeration("condition", kDesignConditions, kOptional));
+  assign(entry.damaged_condition, r.enumeration("damaged_condition", kDesignConditions, kOptional));
+  // `damaged`: none | every_line, or a list of line names.
+  if (const auto node = r.child("damaged", kOptional, "none, every_line or a list of lines")) {
+    const std::string path = r.path_of("damaged");
+    if (node->IsSequence()) {
+      entry.damaged = MatrixDamage::listed;
+      for (std::size_t i = 0; i < node->size(); ++i)
+        read_name(r.context(), (*node)[i], index_path(path, i), entry.damaged_lines);
+    } else {
+      static const EnumTable<MatrixDamage> kDamage = {{"none", MatrixDamage::none},
+                                                      {"every_line", MatrixDamage::every_line}};
+      assign(entry.damaged, to_enum(r.context(), *node, path, kDamage));
+    }
+  }
+  return entry;
+}
+
 Criteria read_criteria(MapReader& r) {
   Criteria criteria;
   r.map("mooring", kRequired, [&](MapReader& m) {

@@ -41,6 +41,7 @@ RiserCriteriaOverrides read_riser_criteria(MapReader& r);
 
 Environment read_environment(MapReader& r);
 LoadCase read_load_case(MapReader& r);
+LoadCaseMatrixEntry read_load_case_matrix_entry(MapReader& r);
 Criteria read_criteria(MapReader& r);
 Stage read_stage(MapReader& r);
 Optimization read_optimization(MapReader& r);

@@ -42,6 +42,7 @@ std::vector<InputIssue> check_project(const Project& project, const LineCheckTab
   check_risers(project, r);
   check_environments(project, r);
   check_load_cases(project, r);
+  check_load_case_matrix(project, r);
   check_criteria(project, r);
   check_stages(project, r);
   check_optimization(project, line_types, r);

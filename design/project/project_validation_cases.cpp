@@ -1,8 +1,11 @@
 // Validation of the sections environments, load_cases, criteria and stages
 // (project_validation_checks.hpp).
 
+#include <algorithm>
 #include <cmath>
+#include <numbers>
 
+#include "design/project/load_case_matrix.hpp"
 #include "design/project/project_validation_checks.hpp"
 
 namespace spiral::design::validation_detail {
@@ -60,6 +63,55 @@ void check_load_cases(const Project& p, Reporter& r) {
     if (c.damaged_line && !defined(p.mooring.lines, *c.damaged_line)) {
       r.fail(at + ".damaged_line", "line_defined",
              fmt::format("undefined mooring line \"{}\"{}", *c.damaged_line, defined_list(p.mooring.lines)));
+    }
+  }
+}
+
+void check_load_case_matrix(const Project& p, Reporter& r) {
+  std::vector<std::string> generated;  // names of the matrix's environments and cases so far
+  for (std::size_t i = 0; i < p.load_case_matrix.size(); ++i) {
+    const LoadCaseMatrixEntry& m = p.load_case_matrix[i];
+    const std::string at = fmt::format("load_case_matrix[{}]", i);
+    if (!defined(p.environments, m.environment)) {
+      r.fail(at + ".environment", "environment_defined",
+             fmt::format("undefined environment \"{}\"{}", m.environment, defined_list(p.environments)));
+      continue;
+    }
+    if (m.headings_rad.empty()) r.fail(at + ".headings_deg", "matrix_headings_given", "needs at least one heading");
+    bool headings_ok = true;
+    for (std::size_t k = 0; k < m.headings_rad.size(); ++k) {
+      const double deg = m.headings_rad[k] * 180.0 / std::numbers::pi;
+      const std::string hat = fmt::format("{}.headings_deg[{}]", at, k);
+      if (!(deg >= 0.0 && deg < 360.0)) {
+        r.fail(hat, "matrix_heading_in_range", fmt::format("must be in [0, 360) deg, got {} deg", deg));
+        headings_ok = false;
+      }
+      for (std::size_t j = 0; j < k; ++j) {
+        if (std::abs(m.headings_rad[j] - m.headings_rad[k]) < 1e-12) {
+          r.fail(hat, "matrix_headings_distinct", fmt::format("repeats heading {} deg (headings_deg[{}])", deg, j));
+          headings_ok = false;
+        }
+      }
+    }
+    for (std::size_t k = 0; k < m.damaged_lines.size(); ++k) {
+      if (!defined(p.mooring.lines, m.damaged_lines[k])) {
+        r.fail(fmt::format("{}.damaged[{}]", at, k), "line_defined",
+               fmt::format("undefined mooring line \"{}\"{}", m.damaged_lines[k], defined_list(p.mooring.lines)));
+        headings_ok = false;
+      }
+    }
+    if (!headings_ok) continue;
+    // Generated names must not meet the written ones or another entry's.
+    for (const LoadCase& c : matrix_load_cases(p, m)) {
+      const bool written =
+          defined(p.load_cases, c.name) || (c.name == c.environment && defined(p.environments, c.name));
+      const bool repeated = std::find(generated.begin(), generated.end(), c.name) != generated.end();
+      if (written || repeated) {
+        r.fail(at, "matrix_names_unique",
+               fmt::format("generates \"{}\", a name {}", c.name,
+                           written ? "the project already uses" : "an earlier entry generates"));
+      }
+      generated.push_back(c.name);
     }
   }
 }

@@ -107,6 +107,8 @@ void check_hull(const Project& p, Reporter& r);
 void check_risers(const Project& p, Reporter& r);
 void check_environments(const Project& p, Reporter& r);
 void check_load_cases(const Project& p, Reporter& r);
+/// Environments, headings, damaged lines and generated names of `load_case_matrix`.
+void check_load_case_matrix(const Project& p, Reporter& r);
 void check_criteria(const Project& p, Reporter& r);
 void check_stages(const Project& p, Reporter& r);
 /// Groups, bounds (ordered, no line left too short), cases and limits of `optimization`.

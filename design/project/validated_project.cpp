@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "design/project/load_case_matrix.hpp"
 #include "design/project/project_loader.hpp"
 #include "design/project/project_validation.hpp"
 
@@ -30,6 +31,15 @@ ValidatedProject load_validated_project(const std::filesystem::path& file) {
   }
   for (InputIssue& issue : check_project(project, check_table)) issues.push_back(std::move(issue));
   if (!issues.empty()) throw InputError(std::move(issues));
+  if (!project.load_case_matrix.empty()) {
+    // The generated environments and cases are checked like written ones (a
+    // turned sea may leave the hull's drift data, say); their issues name them.
+    expand_load_case_matrix(result.project);
+    Project expanded = result.project;  // the matrix is checked already; its names are now taken by itself
+    expanded.load_case_matrix.clear();
+    for (InputIssue& issue : check_project(expanded, check_table)) issues.push_back(std::move(issue));
+    if (!issues.empty()) throw InputError(std::move(issues));
+  }
   return result;
 }
 

@@ -1,0 +1,112 @@
+// The load-case matrix: its expansion (names, turned headings, damaged lines,
+// conditions), its validation with positions, and load_validated_project
+// appending the generated cases.
+
+#include "design/project/load_case_matrix.hpp"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+
+#include "design/project/project_loader.hpp"
+#include "design/project/project_validation.hpp"
+#include "design/project/validated_project.hpp"
+#include "support/project_fixture.hpp"
+
+namespace spiral::design {
+namespace {
+
+constexpr double kDegToRad = std::numbers::pi / 180.0;
+
+std::string with_matrix(const std::string& matrix) {
+  std::string text = replace(kMinimal, "  - name: calm\n",
+                             "  - name: calm\n"
+                             "  - name: storm\n"
+                             "    waves: {spectrum: jonswap, hs: 6.0, tp: 11.0, heading_deg: 10.0}\n"
+                             "    current: {heading_deg: 350.0, profile: [[0.0, 1.0], [-100.0, 0.5]]}\n");
+  text = replace(text, "mooring:\n  lines:\n",
+                 "mooring:\n  lines:\n"
+                 "    - name: L0\n"
+                 "      anchor: {radius: 500.0, azimuth_deg: 180.0}\n"
+                 "      fairlead: [-10.0, 0.0, -10.0]\n"
+                 "      segments:\n"
+                 "        - {type: c, length: 550.0}\n");
+  return text + "load_case_matrix:\n" + matrix;
+}
+
+std::string report(const std::string& text) {
+  std::string out;
+  for (const InputIssue& issue : check_project(parse_project(text, "test.yaml"), {})) out += format_issue(issue) + "\n";
+  return out;
+}
+
+TEST(LoadCaseMatrix, ExpandsHeadingsAndDamagedLinesWithReproducibleNames) {
+  Project p =
+      parse_project(with_matrix("  - {environment: storm, headings_deg: [0.0, 45.0, 90.5], condition: extreme,\n"
+                                "     damaged: every_line, damaged_condition: survival}\n"),
+                    "test.yaml");
+  ASSERT_EQ(report(with_matrix("  - {environment: storm, headings_deg: [0.0, 45.0, 90.5], damaged: every_line}\n")),
+            "");
+  const std::size_t cases_before = p.load_cases.size();
+  expand_load_case_matrix(p);
+  // 3 headings × (intact + 2 lines removed).
+  ASSERT_EQ(p.load_cases.size(), cases_before + 9);
+  const LoadCase& first = p.load_cases[cases_before];
+  EXPECT_EQ(first.name, "storm@h000");
+  EXPECT_EQ(first.condition, DesignCondition::extreme);
+  EXPECT_FALSE(first.damaged_line.has_value());
+  const LoadCase& damaged = p.load_cases[cases_before + 4];
+  EXPECT_EQ(damaged.name, "storm@h045-without-L0");
+  EXPECT_EQ(damaged.environment, "storm@h045");
+  EXPECT_EQ(damaged.damaged_line, std::string("L0"));
+  EXPECT_EQ(damaged.condition, DesignCondition::survival);
+  EXPECT_EQ(p.load_cases.back().name, "storm@h90.5-without-L1");
+  // Every heading of the sea turns together (waves 10° -> 55°, current 350° -> 35°).
+  const Environment& turned = *std::find_if(p.environments.begin(), p.environments.end(),
+                                            [](const Environment& e) { return e.name == "storm@h045"; });
+  EXPECT_NEAR(turned.waves->heading_rad, 55.0 * kDegToRad, 1e-12);
+  EXPECT_NEAR(turned.current->heading_rad, 35.0 * kDegToRad, 1e-12);
+}
+
+TEST(LoadCaseMatrix, ListedLinesOnly) {
+  Project p =
+      parse_project(with_matrix("  - {environment: storm, headings_deg: [30.0], damaged: [L1]}\n"), "test.yaml");
+  const std::vector<LoadCase> cases = matrix_load_cases(p, p.load_case_matrix[0]);
+  ASSERT_EQ(cases.size(), 2u);
+  EXPECT_EQ(cases[1].name, "storm@h030-without-L1");
+}
+
+TEST(LoadCaseMatrix, BadEntriesAreReportedWithPositions) {
+  const std::string issues =
+      report(with_matrix("  - {environment: gale, headings_deg: [0.0]}\n"
+                         "  - {environment: storm, headings_deg: [0.0, 360.0, 0.0], damaged: [L7]}\n"));
+  EXPECT_NE(issues.find("load_case_matrix[0].environment: undefined environment \"gale\""), std::string::npos)
+      << issues;
+  EXPECT_NE(issues.find("load_case_matrix[1].headings_deg[1]: must be in [0, 360) deg, got 360 deg"), std::string::npos)
+      << issues;
+  EXPECT_NE(issues.find("load_case_matrix[1].headings_deg[2]: repeats heading 0 deg"), std::string::npos) << issues;
+  EXPECT_NE(issues.find("load_case_matrix[1].damaged[0]: undefined mooring line \"L7\""), std::string::npos) << issues;
+  EXPECT_NE(issues.find("test.yaml:"), std::string::npos) << issues;
+  const std::string collision =
+      report(with_matrix("  - {environment: storm, headings_deg: [0.0]}\n"
+                         "  - {environment: storm, headings_deg: [0.0]}\n"));
+  EXPECT_NE(collision.find("load_case_matrix[1]: generates \"storm@h000\", a name an earlier entry generates"),
+            std::string::npos)
+      << collision;
+}
+
+TEST(LoadCaseMatrix, LoadedProjectHoldsTheGeneratedCases) {
+  const auto file = std::filesystem::temp_directory_path() / ("spiral-matrix-" + std::to_string(::getpid()) + ".yaml");
+  std::ofstream(file) << with_matrix("  - {environment: storm, headings_deg: [0.0, 180.0], damaged: [L0]}\n");
+  const ValidatedProject p = load_validated_project(file);
+  std::filesystem::remove(file);
+  ASSERT_EQ(p.project.load_cases.size(), 1u + 4u);
+  EXPECT_EQ(p.project.load_cases[4].name, "storm@h180-without-L0");
+  EXPECT_EQ(p.project.environments.size(), 2u + 2u);
+}
+
+}  // namespace
+}  // namespace spiral::design
