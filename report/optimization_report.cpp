@@ -15,16 +15,6 @@ namespace {
 
 constexpr double kDegToRad = std::numbers::pi / 180.0;
 
-Series outline(const design::ZoneOutline& z) {
-  Series s;
-  for (std::size_t k = 0; k <= z.directions_deg.size() && !z.directions_deg.empty(); ++k) {
-    const std::size_t i = k % z.directions_deg.size();
-    s.x.push_back(z.allowable_m[i] * std::cos(z.directions_deg[i] * kDegToRad));
-    s.y.push_back(z.allowable_m[i] * std::sin(z.directions_deg[i] * kDegToRad));
-  }
-  return s;
-}
-
 /// Offsets of the scenarios (intact or damaged) as markers.
 Series offsets(const std::vector<design::ScenarioSummary>& scenarios, bool damaged, bool after) {
   Series s;
@@ -49,7 +39,7 @@ Figure plan_figure(const design::Project& p, const design::OptimizationResult& r
   plot.equal_aspect = true;
   plot.legend_columns = 1;
   for (std::size_t k = 0; k < r.zones.size(); ++k) {
-    Series zone = outline(r.zones[k]);
+    Series zone = polar_polygon(r.zones[k].directions_deg, r.zones[k].allowable_m);
     zone.label = "SOZ " + r.zones[k].name;
     zone.color = palette(k + 2);
     plot.series.push_back(std::move(zone));

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numbers>
 
 #include "report/text.hpp"
 
@@ -366,6 +367,17 @@ void draw_bar_chart(cairo_t* cr, const BarChart& chart, double width, double hei
     draw_text_right(cr, f.x0 + f.w - 4, f.py(*chart.limit) - 3, chart.limit_label);
   }
   cairo_restore(cr);
+}
+
+Series polar_polygon(const std::vector<double>& directions_deg, const std::vector<double>& radius_m) {
+  Series s;
+  constexpr double kDegToRad = std::numbers::pi / 180.0;
+  for (std::size_t k = 0; k <= directions_deg.size() && !directions_deg.empty(); ++k) {
+    const std::size_t i = k % directions_deg.size();
+    s.x.push_back(radius_m[i] * std::cos(directions_deg[i] * kDegToRad));
+    s.y.push_back(radius_m[i] * std::sin(directions_deg[i] * kDegToRad));
+  }
+  return s;
 }
 
 }  // namespace spiral::report

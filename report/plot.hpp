@@ -88,4 +88,8 @@ std::vector<double> nice_ticks(double lo, double hi, int target);
 /// A qualitative palette (Tableau 10) for distinguishing series.
 Rgb palette(std::size_t index);
 
+/// A closed polar polygon in plan view: radius_m[i] in direction
+/// directions_deg[i] (CCW from +x), back to the first point.
+Series polar_polygon(const std::vector<double>& directions_deg, const std::vector<double>& radius_m);
+
 }  // namespace spiral::report

@@ -18,17 +18,6 @@ constexpr Rgb kIntactColor{0.12, 0.47, 0.71};
 constexpr Rgb kDamagedColor{0.84, 0.15, 0.16};
 constexpr Rgb kExtremeColor{0.58, 0.40, 0.74};
 
-/// The closed polar polygon (allowable offset per grid direction) in x, y.
-Series polygon(const std::vector<double>& directions_deg, const std::vector<double>& allowable_m) {
-  Series s;
-  for (std::size_t k = 0; k <= directions_deg.size() && !directions_deg.empty(); ++k) {
-    const std::size_t i = k % directions_deg.size();
-    s.x.push_back(allowable_m[i] * std::cos(directions_deg[i] * kDegToRad));
-    s.y.push_back(allowable_m[i] * std::sin(directions_deg[i] * kDegToRad));
-  }
-  return s;
-}
-
 /// Governing criterion of the grid direction nearest to `deg`.
 const std::string& criterion_near(const design::SozResult& z, const design::RiserSoz& r, double deg) {
   const double step = z.options.step_deg;
@@ -59,7 +48,7 @@ Figure plan_figure(const design::SozResult& z, const std::vector<design::OffsetC
   for (const auto& riser : z.risers) {
     std::vector<double> a;
     for (const auto& d : riser.directions) a.push_back(d.allowable_offset_m);
-    Series s = polygon(z.directions_deg, a);
+    Series s = polar_polygon(z.directions_deg, a);
     // Where every riser reaches the search limit the "governing" riser is just the first one.
     bool governs = false;
     for (std::size_t k = 0; k < z.platform.governing_riser.size(); ++k)
@@ -77,7 +66,7 @@ Figure plan_figure(const design::SozResult& z, const std::vector<design::OffsetC
     }
     plot.series.push_back(std::move(s));
   }
-  Series platform = polygon(z.directions_deg, z.platform.allowable_offset_m);
+  Series platform = polar_polygon(z.directions_deg, z.platform.allowable_offset_m);
   platform.label = "platform SOZ (intersection)";
   platform.color = {0.05, 0.05, 0.08};
   platform.line_width = 2.6;
