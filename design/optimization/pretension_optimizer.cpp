@@ -426,7 +426,6 @@ OptimizationResult optimize_pretension(const ValidatedProject& validated, const 
   Eigen::VectorXd best = zero;
   bool feasible = false;
   std::optional<std::pair<Eigen::VectorXd, double>> kept;  // best point feasible with the full risers, its objective
-  std::optional<ProblemEvaluation> kept_evaluation;        // the full models there (with gradients)
   for (int pass_number = 1; pass_number <= (linearize ? kMaxPasses : 1); ++pass_number) {
     if (linearize) problem.linearize_expensive_lines();
     Pass pass = run_pass(problem, gradients, from, start, static_cast<int>(result.history.size()) + 1);
@@ -437,7 +436,7 @@ OptimizationResult optimize_pretension(const ValidatedProject& validated, const 
     feasible = pass.best_feasible.has_value();
     best = feasible ? *pass.best_feasible : pass.least_infeasible;
     if (!linearize || !feasible) break;
-    ProblemEvaluation full = problem.evaluate(best, true);
+    const ProblemEvaluation full = problem.evaluate(best, false);
     const ConstraintValue* worst_full = nullptr;
     const double violation = worst_of(full.constraints, &worst_full);
     const double objective = problem.objective_of(full, best);
@@ -445,10 +444,7 @@ OptimizationResult optimize_pretension(const ValidatedProject& validated, const 
         "pass {}: risers linearized, {} evaluations; its best point with the full risers: objective {:.6g}, worst "
         "constraint {:.3e}{}",
         pass_number, evaluations, objective, violation, worst_full ? " (" + worst_full->describe() + ")" : ""));
-    if (violation <= kFeasibilityTolerance && (!kept || objective < kept->second)) {
-      kept = {{best, objective}};
-      kept_evaluation = std::move(full);
-    }
+    if (violation <= kFeasibilityTolerance && (!kept || objective < kept->second)) kept = {{best, objective}};
     // Converged when the linearization point no longer moves by the payout tolerance.
     if ((best - from).lpNorm<Eigen::Infinity>() <= problem.settings().payout_tolerance_m) break;
     from = best;  // the full models were last solved here: the next linearization is about this point
@@ -464,8 +460,7 @@ OptimizationResult optimize_pretension(const ValidatedProject& validated, const 
 
   // Verify the kept point with the full models (risers restored: a new
   // equilibrium of every scenario), and take the sensitivities there.
-  // (A pass's kept point was solved so already: not again.)
-  const ProblemEvaluation check = kept_evaluation ? std::move(*kept_evaluation) : problem.evaluate(best, true);
+  const ProblemEvaluation check = problem.evaluate(best, true);
   for (std::size_t s = 0; s < check.responses.size(); ++s) result.after.push_back(problem.summarize(s, check));
   result.objective_best = problem.objective_of(check, best);
   const ConstraintValue* worst = nullptr;
