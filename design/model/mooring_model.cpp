@@ -1,5 +1,7 @@
 #include "design/model/mooring_model.hpp"
 
+#include "engine/lines/catenary_payout.hpp"
+
 #include <algorithm>
 #include <numbers>
 #include <stdexcept>
@@ -97,6 +99,13 @@ engine::CatenaryGeometry catenary_geometry_at_rest(const Project& project, const
   const Eigen::Vector3d fairlead_g = project.hull.reference_point_g + line.fairlead_b;
   return {(fairlead_g - line.anchor_g).head<2>().norm(), fairlead_g.z() - line.anchor_g.z(),
           std::max(0.0, line.anchor_g.z() + project.site.depth_m)};
+}
+
+double pretension_at_rest_N(const Project& project, const MooringLine& line,
+                            const std::vector<LineTypeProperties>& types, double payout_m) {
+  return engine::solve_catenary(engine::with_payout(catenary_of(project, line, types), payout_m),
+                                catenary_geometry_at_rest(project, line))
+      .fairlead_tension_N;
 }
 
 LineArrayModel build_mooring_model(const Project& project, const std::string& excluded_line) {

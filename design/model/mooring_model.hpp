@@ -49,6 +49,12 @@ std::vector<LineTypeProperties> resolve_line_types(const Project& project);
 /// defined at (hull fixed, still water).
 engine::CatenaryGeometry catenary_geometry_at_rest(const Project& project, const MooringLine& line);
 
+/// The line's pretension — its fairlead tension with the hull at rest, in
+/// still water, as its catenary — with `payout_m` added to its top segment.
+/// Throws engine::SolverError when the line cannot be solved there.
+double pretension_at_rest_N(const Project& project, const MooringLine& line,
+                            const std::vector<LineTypeProperties>& types, double payout_m = 0.0);
+
 /// The engine catenary of one project line.
 engine::CatenaryLine catenary_of(const Project& project, const MooringLine& line,
                                  const std::vector<LineTypeProperties>& types);

@@ -12,16 +12,11 @@
 #include "design/model/mooring_model.hpp"
 #include "design/optimization/pretension_problem.hpp"
 #include "engine/common/stopwatch.hpp"
-#include "engine/lines/catenary_payout.hpp"
 
 namespace spiral::design {
 
 namespace {
 
-// A constraint g ≤ 0 of ratios − 1 holds within this: 1e-6 of a ratio is
-// micrometres of offset and newtons of tension, below what the equilibrium
-// (1e-9 relative) and the catenary (1e-9 m) resolve in the outputs.
-constexpr double kFeasibilityTolerance = 1e-6;
 // A constraint within this of its limit (or a variable within this fraction
 // of its bound range) at the optimum is active for the multipliers.
 constexpr double kActive = 1e-4;
@@ -198,7 +193,7 @@ class Run {
     const ConstraintValue* worst = nullptr;
     row.worst_constraint = worst_of(cache_.constraints, &worst);
     if (worst) row.worst_constraint_name = worst->describe();
-    row.feasible = row.worst_constraint <= kFeasibilityTolerance;
+    row.feasible = row.worst_constraint <= kConstraintTolerance;
     row.wall_s = clock_.seconds();
     row.payouts_m.assign(payouts.data(), payouts.data() + payouts.size());
     if (row.feasible && row.objective < best_objective) {
@@ -223,9 +218,10 @@ void constraint_callback(unsigned m, double* result, unsigned n, const double* x
 
 /// Pretensions at rest (hull at its reference position, still water, intact)
 /// before and after, from each line's catenary.
-std::vector<LinePayout> line_payouts(const Project& project, const std::vector<GroupVariable>& groups,
+std::vector<LinePayout> line_payouts(const ValidatedProject& validated, const std::vector<GroupVariable>& groups,
                                      const Eigen::VectorXd& payouts) {
-  const std::vector<LineTypeProperties> types = resolve_line_types(project);
+  const Project& project = validated.project;
+  const std::vector<LineTypeProperties>& types = validated.line_types;
   std::vector<LinePayout> out;
   for (std::size_t g = 0; g < groups.size(); ++g) {
     for (const std::string& name : groups[g].lines) {
@@ -240,11 +236,8 @@ std::vector<LinePayout> line_payouts(const Project& project, const std::vector<G
       row.top_segment_before_m = line.segments.back().length_m;
       row.top_segment_after_m = row.top_segment_before_m + row.payout_m;
       row.top_segment_mbl_N = find_type(types, line.segments.back().type).breaking_load_N;
-      const engine::CatenaryGeometry at_rest = catenary_geometry_at_rest(project, line);
-      const engine::CatenaryLine catenary = catenary_of(project, line, types);
-      row.pretension_before_N = engine::solve_catenary(catenary, at_rest).fairlead_tension_N;
-      row.pretension_after_N =
-          engine::solve_catenary(engine::with_payout(catenary, row.payout_m), at_rest).fairlead_tension_N;
+      row.pretension_before_N = pretension_at_rest_N(project, line, types);
+      row.pretension_after_N = pretension_at_rest_N(project, line, types, row.payout_m);
       out.push_back(std::move(row));
     }
   }
@@ -348,7 +341,7 @@ Pass run_pass(PretensionProblem& problem, bool gradients, const Eigen::VectorXd&
   opt.set_maxeval(problem.settings().max_evaluations);
   opt.set_min_objective(objective_callback, &run);
   opt.add_inequality_mconstraint(constraint_callback, &run,
-                                 std::vector<double>(constraint_count, kFeasibilityTolerance));
+                                 std::vector<double>(constraint_count, kConstraintTolerance));
   run.set_optimizer(&opt);
 
   Pass pass;
@@ -444,7 +437,7 @@ OptimizationResult optimize_pretension(const ValidatedProject& validated, const 
         "pass {}: risers linearized, {} evaluations; its best point with the full risers: objective {:.6g}, worst "
         "constraint {:.3e}{}",
         pass_number, evaluations, objective, violation, worst_full ? " (" + worst_full->describe() + ")" : ""));
-    if (violation <= kFeasibilityTolerance && (!kept || objective < kept->second)) kept = {{best, objective}};
+    if (violation <= kConstraintTolerance && (!kept || objective < kept->second)) kept = {{best, objective}};
     // Converged when the linearization point no longer moves by the payout tolerance.
     if ((best - from).lpNorm<Eigen::Infinity>() <= problem.settings().payout_tolerance_m) break;
     from = best;  // the full models were last solved here: the next linearization is about this point
@@ -466,7 +459,7 @@ OptimizationResult optimize_pretension(const ValidatedProject& validated, const 
   const ConstraintValue* worst = nullptr;
   const double violation = worst_of(check.constraints, &worst);
   result.status =
-      feasible && violation <= kFeasibilityTolerance ? OptimizationStatus::optimal : OptimizationStatus::infeasible;
+      feasible && violation <= kConstraintTolerance ? OptimizationStatus::optimal : OptimizationStatus::infeasible;
   if (result.status == OptimizationStatus::infeasible && worst) result.most_violated = *worst;
   if (!result.findings.empty()) result.status = OptimizationStatus::infeasible;
   const bool minimax = result.objective != OptimizationObjective::min_total_payout;
@@ -485,7 +478,7 @@ OptimizationResult optimize_pretension(const ValidatedProject& validated, const 
     for (Eigen::Index g = 0; g < best.size(); ++g)
       result.objective_gradient[static_cast<std::size_t>(g)] = best(g) / std::sqrt(best(g) * best(g) + eps * eps);
   }
-  result.lines = line_payouts(validated.project, problem.groups(), best);
+  result.lines = line_payouts(validated, problem.groups(), best);
   result.wall_s = start.seconds();
   return result;
 }

@@ -16,6 +16,11 @@
 
 namespace spiral::design {
 
+/// A constraint g ≤ 0 (ratios − 1) holds within this: 1e-6 of a ratio is
+/// micrometres of offset and newtons of tension, below what the equilibrium
+/// (1e-9 relative) and the catenary (1e-9 m) resolve in the outputs.
+inline constexpr double kConstraintTolerance = 1e-6;
+
 /// A function of the payouts with its gradient (per group, 1/m).
 struct Measure {
   ConstraintValue value;

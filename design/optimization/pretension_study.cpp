@@ -9,25 +9,19 @@
 #include "design/optimization/pretension_problem.hpp"
 #include "design/project/request_error.hpp"
 #include "engine/common/stopwatch.hpp"
-#include "engine/lines/catenary_payout.hpp"
 
 namespace spiral::design {
 
 namespace {
 
-// As the optimizer's feasibility tolerance (pretension_optimizer.cpp).
-constexpr double kFeasibilityTolerance = 1e-6;
-
 /// Mean pretension at rest of `lines` paid out by `payout_m` (hull fixed, still water).
-double mean_pretension_N(const Project& project, const std::vector<std::string>& lines, double payout_m) {
-  const std::vector<LineTypeProperties> types = resolve_line_types(project);
+double mean_pretension_N(const ValidatedProject& validated, const std::vector<std::string>& lines, double payout_m) {
+  const Project& project = validated.project;
   double sum = 0.0;
   for (const std::string& name : lines) {
     const MooringLine& line = *std::find_if(project.mooring.lines.begin(), project.mooring.lines.end(),
                                             [&](const MooringLine& l) { return l.name == name; });
-    const engine::CatenaryGeometry at_rest = catenary_geometry_at_rest(project, line);
-    sum += engine::solve_catenary(engine::with_payout(catenary_of(project, line, types), payout_m), at_rest)
-               .fairlead_tension_N;
+    sum += pretension_at_rest_N(project, line, validated.line_types, payout_m);
   }
   return lines.empty() ? 0.0 : sum / static_cast<double>(lines.size());
 }
@@ -53,7 +47,7 @@ PretensionStudyPoint point_of(PretensionProblem& problem, const Eigen::VectorXd&
       p.worst_constraint_name = c.value.describe();
     }
   }
-  p.feasible = p.worst_constraint <= kFeasibilityTolerance;
+  p.feasible = p.worst_constraint <= kConstraintTolerance;
   return p;
 }
 
@@ -119,7 +113,7 @@ PretensionStudyResult run_pretension_study(const ValidatedProject& validated, co
       const double payout = sweep.from_m + (sweep.to_m - sweep.from_m) * k / (request.points - 1);
       PretensionStudyPoint point = point_of(problem, payout * sweep.direction);
       point.payout_m = payout;
-      point.pretension_N = mean_pretension_N(validated.project, sweep.lines, payout);
+      point.pretension_N = mean_pretension_N(validated, sweep.lines, payout);
       ++result.evaluations;
       if (point.feasible) {
         if (!out.feasible_m) out.feasible_m = {payout, payout};

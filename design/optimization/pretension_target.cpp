@@ -36,7 +36,7 @@ TargetPretensionResult solve_target_pretensions(const Project& project) {
       row.line = name;
       row.group = group.name;
       row.target_N = target.tension_N;
-      row.pretension_before_N = engine::solve_catenary(catenary, at_rest).fairlead_tension_N;
+      row.pretension_before_N = pretension_at_rest_N(project, line, types);
       try {
         const engine::PayoutForTension solved =
             engine::payout_for_fairlead_tension(catenary, at_rest, target.tension_N, {group.min_m, group.max_m});
