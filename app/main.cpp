@@ -24,9 +24,9 @@ int main(int argc, char** argv) {
   cli.set_version_flag("--version", fmt::format("spiral {} (commit {})", app::kVersion, app::kGitCommit));
   // In the order of `spiral --help`.
   const std::unique_ptr<app::Command> commands[] = {
-      app::validate_command(), app::statics_command(), app::equilibrium_command(), app::stiffness_command(),
-      app::report_command(),   app::soz_command(),     app::optimize_command(),    app::study_command(),
-      app::analyze_command(),  app::compare_command()};
+      app::run_command(),         app::results_command(),   app::validate_command(), app::statics_command(),
+      app::equilibrium_command(), app::stiffness_command(), app::report_command(),   app::soz_command(),
+      app::optimize_command(),    app::study_command(),     app::analyze_command(),  app::compare_command()};
   for (const auto& command : commands) command->add_to(cli);
 
   try {

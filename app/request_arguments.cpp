@@ -24,6 +24,8 @@ std::string flag_of(const std::string& argument) {
       {"points", "--points"},
       {"objective", "--objective"},
       {"max_evaluations", "--max-evaluations"},
+      {"until", "--until"},
+      {"jobs", "--jobs"},
   };
   for (const auto& [name, flag] : kFlags)
     if (name == argument) return std::string(flag);

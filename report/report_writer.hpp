@@ -8,15 +8,13 @@
 #include <stdexcept>
 #include <string>
 
+#include "design/results/output_error.hpp"
 #include "report/document.hpp"
 
 namespace spiral::report {
 
 /// The report could not be written (the message names the folder or file).
-class OutputError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
+using design::OutputError;
 
 struct WrittenReport {
   std::filesystem::path folder;

@@ -12,7 +12,8 @@ Command::Command(std::string name, std::string description)
 void Command::add_to(CLI::App& cli) {
   subcommand_ = cli.add_subcommand(name_, description_);
   add_leading_arguments(*subcommand_);
-  subcommand_->add_option("PROJECT", project_file_, "Project YAML file")->required();
+  const auto [argument, help] = main_argument();
+  subcommand_->add_option(argument, project_file_, help)->required();
   add_options(*subcommand_);
   subcommand_->footer(kExitCodeHelp);
 }

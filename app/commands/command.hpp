@@ -4,6 +4,7 @@
 // main.cpp registers them and maps what they throw to exit codes.
 #include <memory>
 #include <string>
+#include <utility>
 
 #include <CLI/CLI.hpp>
 
@@ -26,6 +27,9 @@ class Command {
   virtual void add_options(CLI::App& subcommand) = 0;
   /// Positional arguments before PROJECT (e.g. the kind of a study).
   virtual void add_leading_arguments(CLI::App& /*subcommand*/) {}
+  /// The main positional argument: a project file unless the command reads
+  /// something else (`spiral results` reads a run folder).
+  virtual std::pair<std::string, std::string> main_argument() const { return {"PROJECT", "Project YAML file"}; }
 
   std::string project_file_;
 
@@ -45,5 +49,7 @@ std::unique_ptr<Command> analyze_command();
 std::unique_ptr<Command> compare_command();
 std::unique_ptr<Command> optimize_command();
 std::unique_ptr<Command> study_command();
+std::unique_ptr<Command> run_command();
+std::unique_ptr<Command> results_command();
 
 }  // namespace spiral::app

@@ -1,8 +1,6 @@
 // `spiral report`: run a stage's analyses and write its report folder.
 #include <chrono>
 #include <cstdio>
-#include <cstdlib>
-#include <ctime>
 #include <string>
 
 #include <fmt/format.h>
@@ -10,9 +8,8 @@
 #include "app/commands/command.hpp"
 #include "app/exit_codes.hpp"
 #include "app/output_folder.hpp"
-#include "app/version.hpp"
+#include "app/report_info.hpp"
 #include "design/project/request_error.hpp"
-#include "design/project/model_hash.hpp"
 #include "design/project/validated_project.hpp"
 #include "design/optimization/pretension_optimizer.hpp"
 #include "design/optimization/pretension_study.hpp"
@@ -28,17 +25,6 @@
 namespace spiral::app {
 namespace {
 
-/// UTC date of the report; SOURCE_DATE_EPOCH (reproducible-builds.org) fixes it.
-std::string report_date() {
-  std::time_t now = std::time(nullptr);
-  if (const char* epoch = std::getenv("SOURCE_DATE_EPOCH")) now = static_cast<std::time_t>(std::atoll(epoch));
-  std::tm utc{};
-  gmtime_r(&now, &utc);
-  char buffer[32];
-  std::strftime(buffer, sizeof buffer, "%Y-%m-%d %H:%M UTC", &utc);
-  return buffer;
-}
-
 class ReportCommand : public Command {
  public:
   ReportCommand()
@@ -48,11 +34,7 @@ class ReportCommand : public Command {
     const design::ValidatedProject loaded = design::load_validated_project(project_file_);
     check_stage(loaded);
     const auto start = std::chrono::steady_clock::now();
-    report::ReportInfo info;
-    info.project_file = project_file_;
-    info.model_hash = design::model_hash(project_file_);
-    info.date = report_date();
-    info.version = kVersion;
+    const report::ReportInfo info = report_info(project_file_);
     bool pass = true;
     report::ReportDocument document;
     bool solver_failed = false;

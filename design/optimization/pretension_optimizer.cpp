@@ -142,7 +142,7 @@ class Run {
         }
         ++row;
       };
-      for (const Measure& c : e.constraints) put(c, c.value.value, 1.0, 0.0);
+      for (const Measure& c : e.constraints) put(c, c.value.value + kDesignMargin, 1.0, 0.0);
       if (minimax_) {
         // (measure − s) / s_scale ≤ 0, s = x_s s_scale.
         const double s = x[n - 1] * slack_scale;

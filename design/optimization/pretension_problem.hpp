@@ -21,6 +21,13 @@ namespace spiral::design {
 /// (1e-9 relative) and the catenary (1e-9 m) resolve in the outputs.
 inline constexpr double kConstraintTolerance = 1e-6;
 
+/// The optimizer holds every constraint this far inside its limit (g ≤ −1e-5,
+/// a thousandth of a percent of utilization or offset ratio), so that the
+/// design it writes — lengths printed to 0.1 mm, solved again by the stages'
+/// own equilibria — still passes a check the optimum makes active (spiral
+/// run's feedback checks it with g ≤ 0, without tolerance).
+inline constexpr double kDesignMargin = 1e-5;
+
 /// A function of the payouts with its gradient (per group, 1/m).
 struct Measure {
   ConstraintValue value;

@@ -7,6 +7,8 @@
 #include <string>
 #include <string_view>
 
+#include "design/project/project.hpp"
+
 namespace spiral::design {
 
 /// FNV-1a, 64 bit (Fowler, Noll, Vo; IETF draft-eastlake-fnv), of `bytes`.
@@ -15,5 +17,12 @@ std::uint64_t fnv1a_64(std::string_view bytes);
 /// FNV-1a 64 of the file's bytes as 16 lowercase hex digits. Throws
 /// std::runtime_error naming the file when it cannot be read.
 std::string model_hash(const std::filesystem::path& file);
+
+/// The fingerprint of what a project computes: its YAML tree re-emitted
+/// without comments or layout, and the bytes of every data file it names
+/// (hydrodynamics, hydrostatics, mean drift, panel mesh). A comment edit
+/// keeps it; an edited value or data file changes it. 16 hex digits. Throws
+/// std::runtime_error naming a file that cannot be read.
+std::string project_content_hash(const std::filesystem::path& project_file, const Project& project);
 
 }  // namespace spiral::design

@@ -457,6 +457,13 @@ struct Stage {
   /// (s, > 0; absent: 3 h, the duration the MPM extremes refer to). Only the
   /// advanced stage takes it (`stage_duration_advanced_only`).
   std::optional<double> duration_s;
+  /// Run the pretension optimizer after this stage even when its checks
+  /// pass (`optimize`); it runs anyway when the preliminary stage's offset or
+  /// tension checks fail (spiral run's feedback, DESIGN.md §2).
+  bool optimize = false;
+  /// Iterations of the stage with the optimizer's payouts, the first
+  /// included (`max_iterations`, ≥ 1).
+  int max_iterations = 3;
 };
 
 /// What the pretension optimizer seeks (`optimization.objective`,

@@ -66,7 +66,8 @@ void read_project(MapReader& r, Project& p, const std::filesystem::path& base_fo
 
 }  // namespace
 
-Project parse_project(std::string_view yaml_text, std::string source_name) {
+Project parse_project(std::string_view yaml_text, std::string source_name,
+                      const std::optional<std::filesystem::path>& data_folder) {
   Context ctx{source_name, {}, {}};
   YAML::Node root;
   try {
@@ -85,14 +86,14 @@ Project parse_project(std::string_view yaml_text, std::string source_name) {
   project.source_file = source_name;
   {
     MapReader reader(ctx, root, "");
-    read_project(reader, project, std::filesystem::path(source_name).parent_path());
+    read_project(reader, project, data_folder.value_or(std::filesystem::path(source_name).parent_path()));
   }  // the reader reports unknown top-level keys here
   if (!ctx.issues.empty()) throw_issues(std::move(ctx.issues));
   project.source_map = std::move(ctx.positions);
   return project;
 }
 
-Project load_project(const std::filesystem::path& file) {
+Project load_project(const std::filesystem::path& file, const std::optional<std::filesystem::path>& data_folder) {
   std::ifstream in(file, std::ios::binary);
   if (!in) {
     InputIssue issue;
@@ -103,7 +104,7 @@ Project load_project(const std::filesystem::path& file) {
   }
   std::ostringstream text;
   text << in.rdbuf();
-  return parse_project(text.str(), file.string());
+  return parse_project(text.str(), file.string(), data_folder);
 }
 
 }  // namespace spiral::design

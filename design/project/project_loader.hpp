@@ -10,6 +10,7 @@
 // separate pass: validate_project() in design/project/project_validation.hpp.
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -18,14 +19,18 @@
 
 namespace spiral::design {
 
-/// Reads and parses `file`. `hull.hydrostatics_file` is resolved relative to
-/// the folder of `file`. Throws InputError (naming the file) when it cannot be
-/// read or when the text is not a valid project.
-Project load_project(const std::filesystem::path& file);
+/// Reads and parses `file`. Relative data-file references resolve against
+/// `data_folder`, by default the folder of `file` (a spiral iteration's
+/// project, written in the run folder, keeps the original's references).
+/// Throws InputError (naming the file) when it cannot be read or when the
+/// text is not a valid project.
+Project load_project(const std::filesystem::path& file,
+                     const std::optional<std::filesystem::path>& data_folder = std::nullopt);
 
 /// Parses project text. `source_name` names the text in messages and in
-/// Project::source_file; relative file references resolve against its folder.
-/// Throws InputError with every issue found.
-Project parse_project(std::string_view yaml_text, std::string source_name);
+/// Project::source_file; relative file references resolve against
+/// `data_folder`, by default its folder. Throws InputError with every issue found.
+Project parse_project(std::string_view yaml_text, std::string source_name,
+                      const std::optional<std::filesystem::path>& data_folder = std::nullopt);
 
 }  // namespace spiral::design

@@ -130,6 +130,8 @@ Stage read_stage(MapReader& r) {
     assign(stage.soz.step_deg, z.number("step_deg", "deg", kOptional));
   });
   stage.duration_s = r.number("duration", "s", kOptional);
+  assign(stage.optimize, r.boolean("optimize", kOptional));
+  assign(stage.max_iterations, r.integer("max_iterations", kOptional));
   return stage;
 }
 

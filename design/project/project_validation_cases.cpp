@@ -147,6 +147,10 @@ void check_stages(const Project& p, Reporter& r) {
       r.fail(fmt::format("stages[{}].soz.step_deg", i), "soz_step_divides_360",
              fmt::format("must be > 0 and divide 360, got {} deg", step));
     }
+    if (p.stages[i].max_iterations < 1) {
+      r.fail(fmt::format("stages[{}].max_iterations", i), "stage_iterations_positive",
+             fmt::format("must be >= 1 (the first iteration counts), got {}", p.stages[i].max_iterations));
+    }
     if (const std::optional<double> duration = p.stages[i].duration_s) {
       const std::string path = fmt::format("stages[{}].duration", i);
       if (p.stages[i].name != "advanced") {

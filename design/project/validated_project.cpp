@@ -10,9 +10,10 @@
 
 namespace spiral::design {
 
-ValidatedProject load_validated_project(const std::filesystem::path& file) {
+ValidatedProject load_validated_project(const std::filesystem::path& file,
+                                        const std::optional<std::filesystem::path>& data_folder) {
   ValidatedProject result;
-  result.project = load_project(file);
+  result.project = load_project(file, data_folder);
   const Project& project = result.project;
 
   std::vector<InputIssue> issues;

@@ -4,6 +4,7 @@
 // problem found on the way is reported together in one InputError.
 
 #include <filesystem>
+#include <optional>
 #include <vector>
 
 #include "design/project/input_error.hpp"
@@ -18,6 +19,8 @@ struct ValidatedProject {
 };
 
 /// Throws InputError listing every problem (file, line, column, field path).
-ValidatedProject load_validated_project(const std::filesystem::path& file);
+/// `data_folder`: as load_project.
+ValidatedProject load_validated_project(const std::filesystem::path& file,
+                                        const std::optional<std::filesystem::path>& data_folder = std::nullopt);
 
 }  // namespace spiral::design

@@ -219,6 +219,11 @@ std::optional<int> MapReader::integer(std::string_view key, Presence presence) {
   return node ? to_integer(ctx_, *node, path_of(key)) : std::nullopt;
 }
 
+std::optional<bool> MapReader::boolean(std::string_view key, Presence presence) {
+  static const EnumTable<bool> kBooleans{{"true", true}, {"false", false}};
+  return enumeration(key, kBooleans, presence);
+}
+
 std::optional<std::string> MapReader::text(std::string_view key, Presence presence) {
   const auto node = child(key, presence);
   return node ? to_string_value(ctx_, *node, path_of(key)) : std::nullopt;

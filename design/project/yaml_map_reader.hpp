@@ -148,6 +148,8 @@ class MapReader {
   /// Reads `<key>_deg` in degrees and returns radians.
   std::optional<double> angle(std::string_view key, Presence presence);
   std::optional<int> integer(std::string_view key, Presence presence);
+  /// YAML 1.2 core schema booleans only: true | false.
+  std::optional<bool> boolean(std::string_view key, Presence presence);
   std::optional<std::string> text(std::string_view key, Presence presence);
   std::optional<std::vector<double>> numbers(std::string_view key, std::string_view unit, Presence presence);
   /// Reads the list `<key>_deg` in degrees and returns radians.

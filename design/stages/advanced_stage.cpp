@@ -73,11 +73,15 @@ void final_checks(const ValidatedProject& vp, const LevelSummary& coupled, Criti
            v.offset_limit_pass && (!v.soz_offset || v.soz_offset->passes) && v.static_risers_pass;
 }
 
-CriticalCaseVerification verify_case(const ValidatedProject& vp, const IntermediateStageResults& stage,
-                                     const RankedCase& ranked, const DynamicAnalysisRequest& base,
-                                     long coupled_max_steps) {
+}  // namespace
+
+CriticalCaseVerification verify_critical_case(const ValidatedProject& vp, const IntermediateStageResults& stage,
+                                              const RankedCase& ranked, DynamicAnalysisRequest base,
+                                              long coupled_max_steps) {
   engine::Stopwatch start;
   const StaticCaseResult& statics = stage.statics.cases[ranked.case_index];
+  base.load_case = statics.case_name;
+  base.statics = &statics;
   const SozResult* zone = stage.statics.soz ? &*stage.statics.soz : nullptr;
   const std::string selection = fmt::format("critical case #{} of the intermediate ranking", ranked.rank);
   CriticalCaseVerification v;
@@ -136,6 +140,8 @@ CriticalCaseVerification verify_case(const ValidatedProject& vp, const Intermedi
   return v;
 }
 
+namespace {
+
 /// The failing check of largest utilization over the verified cases, else
 /// the largest utilization.
 std::string governing_of(const AdvancedStageResults& r) {
@@ -180,38 +186,53 @@ double advanced_stage_duration(const Project& project) {
   return kAdvancedStageDuration_s;
 }
 
-AdvancedStageResults run_advanced_stage(const ValidatedProject& vp, const AdvancedStageOptions& options) {
-  engine::Stopwatch start;
-  AdvancedStageResults out;
-  out.intermediate = run_intermediate_stage(vp);
-  out.intermediate.statics.stage = "advanced";
-  out.duration_s = options.duration_s.value_or(advanced_stage_duration(vp.project));
-  out.output_step_s = std::min(kOutputStep_s, out.duration_s);
-  out.seed = kSeed;
-
+DynamicAnalysisRequest advanced_stage_request(const Project& project, const AdvancedStageOptions& options) {
   DynamicAnalysisRequest base;
-  base.duration_s = out.duration_s;
-  base.output_step_s = out.output_step_s;
-  base.seed = out.seed;
-  engine::Stopwatch runs_start;
-  // One case at a time: the coupled run already spreads its lines over the
-  // worker pool, and its memory is that of every FE line of the case.
-  for (const RankedCase& ranked : out.intermediate.ranked) {
-    if (!ranked.critical) continue;
-    base.load_case = out.intermediate.statics.cases[ranked.case_index].case_name;
-    base.statics = &out.intermediate.statics.cases[ranked.case_index];
-    const auto limit = options.coupled_max_steps_by_case.find(base.load_case);
-    const long max_steps =
-        limit != options.coupled_max_steps_by_case.end() ? limit->second : options.coupled_max_steps_between_outputs;
-    out.cases.push_back(verify_case(vp, out.intermediate, ranked, base, max_steps));
-  }
-  out.verification_wall_s = runs_start.seconds();
+  base.duration_s = options.duration_s.value_or(advanced_stage_duration(project));
+  base.output_step_s = std::min(kOutputStep_s, base.duration_s);
+  base.seed = kSeed;
+  return base;
+}
+
+long coupled_max_steps(const AdvancedStageOptions& options, const std::string& case_name) {
+  const auto limit = options.coupled_max_steps_by_case.find(case_name);
+  return limit != options.coupled_max_steps_by_case.end() ? limit->second : options.coupled_max_steps_between_outputs;
+}
+
+AdvancedStageResults reduce_advanced_stage(IntermediateStageResults intermediate, const DynamicAnalysisRequest& base,
+                                           std::vector<CriticalCaseVerification> cases) {
+  AdvancedStageResults out;
+  out.intermediate = std::move(intermediate);
+  out.intermediate.statics.stage = "advanced";
+  out.duration_s = base.duration_s;
+  out.output_step_s = base.output_step_s;
+  out.seed = base.seed;
+  out.cases = std::move(cases);
   for (const CriticalCaseVerification& c : out.cases) {
     if (!c.coupled) out.failed_cases.push_back(c.case_name);
     out.pass = out.pass && c.pass;
   }
   out.failed_runs = static_cast<int>(out.failed_cases.size());
   out.governing = governing_of(out);
+  return out;
+}
+
+AdvancedStageResults run_advanced_stage(const ValidatedProject& vp, const AdvancedStageOptions& options) {
+  engine::Stopwatch start;
+  IntermediateStageResults intermediate = run_intermediate_stage(vp);
+  const DynamicAnalysisRequest base = advanced_stage_request(vp.project, options);
+  engine::Stopwatch runs_start;
+  // One case at a time: the coupled run already spreads its lines over the
+  // worker pool, and its memory is that of every FE line of the case.
+  std::vector<CriticalCaseVerification> cases;
+  for (const RankedCase& ranked : intermediate.ranked) {
+    if (!ranked.critical) continue;
+    const std::string& name = intermediate.statics.cases[ranked.case_index].case_name;
+    cases.push_back(verify_critical_case(vp, intermediate, ranked, base, coupled_max_steps(options, name)));
+  }
+  const double verification_wall_s = runs_start.seconds();
+  AdvancedStageResults out = reduce_advanced_stage(std::move(intermediate), base, std::move(cases));
+  out.verification_wall_s = verification_wall_s;
   out.wall_time_s = start.seconds();
   return out;
 }

@@ -126,6 +126,25 @@ struct AdvancedStageOptions {
 /// The advanced stage's duration: stages[advanced].duration, else 3 h.
 double advanced_stage_duration(const Project& project);
 
+/// The verification request of the advanced stage's critical cases: duration
+/// (options, else stages[advanced].duration, else 3 h), output step, one seed
+/// for both levels so that they see the same sea.
+DynamicAnalysisRequest advanced_stage_request(const Project& project, const AdvancedStageOptions& options = {});
+
+/// The coupled work limit of one case (AdvancedStageOptions).
+long coupled_max_steps(const AdvancedStageOptions& options, const std::string& case_name);
+
+/// One critical case of `stage` verified: the coupled run and the enhanced
+/// S-C run on the same sea (`base`, its load case and statics set here), the
+/// final checks. Solver failures are recorded in the result, not thrown.
+CriticalCaseVerification verify_critical_case(const ValidatedProject& project, const IntermediateStageResults& stage,
+                                              const RankedCase& ranked, DynamicAnalysisRequest base,
+                                              long coupled_max_steps);
+
+/// The stage from the ranking and the verified cases (rank order).
+AdvancedStageResults reduce_advanced_stage(IntermediateStageResults intermediate, const DynamicAnalysisRequest& base,
+                                           std::vector<CriticalCaseVerification> cases);
+
 /// Throws as run_intermediate_stage; solver failures of the verification
 /// runs are recorded per case (CriticalCaseVerification::error), not thrown.
 AdvancedStageResults run_advanced_stage(const ValidatedProject& project, const AdvancedStageOptions& options = {});

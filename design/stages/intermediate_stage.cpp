@@ -20,27 +20,20 @@ const char* to_string(RankingMeasure measure) {
   return "?";
 }
 
-IntermediateStageResults run_intermediate_stage(const ValidatedProject& vp) {
-  engine::Stopwatch start;
-  IntermediateStageResults out;
-  StaticStageOptions options;
-  options.dynamics = false;  // every case gets its storm below
-  out.statics = run_static_stage(vp, options);
-  out.statics.stage = "intermediate";
-  const std::size_t n = out.statics.cases.size() - 1;  // load cases, after still water
-  out.ranked.resize(n);
-  out.threads = engine::worker_count(static_cast<int>(n));
-  engine::Stopwatch storms_start;
-  const SozResult* zone = out.statics.soz ? &*out.statics.soz : nullptr;
-  engine::parallel_for(static_cast<int>(n), out.threads, [&](int i) {
-    RankedCase& c = out.ranked[static_cast<std::size_t>(i)];
-    c.case_index = static_cast<std::size_t>(i) + 1;
-    c.storm = run_stage_dynamics(vp, out.statics.cases[c.case_index], AnalysisLevel::semi_coupled_enhanced, zone,
-                                 "every case of the matrix");
-  });
-  out.storms_wall_s = storms_start.seconds();
+StageDynamics run_case_storm(const ValidatedProject& vp, const StaticStageResults& statics, std::size_t case_index) {
+  return run_stage_dynamics(vp, statics.cases[case_index], AnalysisLevel::semi_coupled_enhanced,
+                            statics.soz ? &*statics.soz : nullptr, "every case of the matrix");
+}
 
-  for (RankedCase& c : out.ranked) {
+IntermediateStageResults reduce_intermediate_stage(StaticStageResults statics, std::vector<CaseStorm> storms) {
+  IntermediateStageResults out;
+  out.statics = std::move(statics);
+  out.statics.stage = "intermediate";
+  out.ranked.resize(storms.size());
+  for (std::size_t i = 0; i < storms.size(); ++i) {
+    RankedCase& c = out.ranked[i];
+    c.case_index = storms[i].case_index;
+    c.storm = std::move(storms[i].storm);
     c.tension_utilization = c.storm.tension_utilization;
     c.offset_ratio = c.storm.extreme_offset ? c.storm.extreme_offset->ratio : 0.0;
     for (const RiserStaticsRow& r : out.statics.cases[c.case_index].risers) {
@@ -64,6 +57,27 @@ IntermediateStageResults run_intermediate_stage(const ValidatedProject& vp) {
     out.ranked[i].rank = static_cast<int>(i) + 1;
     out.ranked[i].critical = i < kCriticalCases || !out.ranked[i].pass;
   }
+  return out;
+}
+
+IntermediateStageResults run_intermediate_stage(const ValidatedProject& vp) {
+  engine::Stopwatch start;
+  StaticStageOptions options;
+  options.dynamics = false;  // every case gets its storm below
+  StaticStageResults statics = run_static_stage(vp, options);
+  const std::size_t n = statics.cases.size() - 1;  // load cases, after still water
+  std::vector<CaseStorm> storms(n);
+  const int threads = engine::worker_count(static_cast<int>(n));
+  engine::Stopwatch storms_start;
+  engine::parallel_for(static_cast<int>(n), threads, [&](int i) {
+    CaseStorm& s = storms[static_cast<std::size_t>(i)];
+    s.case_index = static_cast<std::size_t>(i) + 1;
+    s.storm = run_case_storm(vp, statics, s.case_index);
+  });
+  const double storms_wall_s = storms_start.seconds();
+  IntermediateStageResults out = reduce_intermediate_stage(std::move(statics), std::move(storms));
+  out.threads = threads;
+  out.storms_wall_s = storms_wall_s;
   out.wall_time_s = start.seconds();
   return out;
 }

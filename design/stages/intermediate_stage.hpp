@@ -59,6 +59,22 @@ struct IntermediateStageResults {
   double wall_time_s = 0.0;
 };
 
+/// The storm of the load case `case_index` of `statics.cases` (≥ 1), from
+/// its static equilibrium, against the still-water zone. Throws as run_dynamic_analysis.
+StageDynamics run_case_storm(const ValidatedProject& project, const StaticStageResults& statics,
+                             std::size_t case_index);
+
+/// One load case's storm: `case_index` into the stage's statics.cases (≥ 1).
+struct CaseStorm {
+  std::size_t case_index = 0;
+  StageDynamics storm;
+};
+
+/// The ranking from the stage's statics (run with StaticStageOptions::dynamics
+/// false) and the storms of its load cases. A case without a storm (its run
+/// failed) is not ranked; the caller says why in statics.notes.
+IntermediateStageResults reduce_intermediate_stage(StaticStageResults statics, std::vector<CaseStorm> storms);
+
 /// Throws as run_static_stage and run_dynamic_analysis (the message names the case).
 IntermediateStageResults run_intermediate_stage(const ValidatedProject& project);
 

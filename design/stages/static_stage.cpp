@@ -141,15 +141,9 @@ StageSoz preliminary_soz_settings(const Project& project) {
   return StageSoz{};
 }
 
-StaticStageResults run_static_stage(const ValidatedProject& validated, const StaticStageOptions& options) {
-  engine::Stopwatch start;
+MooringOverview run_mooring_overview(const ValidatedProject& validated) {
   const Project& project = validated.project;
-  StaticStageResults out;
-  out.code = to_string(project.criteria.mooring.code);
-  // Read first: a bad mesh file fails the stage before its analyses run.
-  if (project.hull.geometry && project.hull.geometry->panel_mesh)
-    out.hull_panels_b = engine::full_surface(engine::read_gdf(*project.hull.geometry->panel_mesh));
-
+  MooringOverview out;
   LineArrayModel model = build_mooring_model(project);
   out.pretension = run_statics(model, engine::Vector6d::Zero());
   for (const MooringLineDesign& design : model.designs) {
@@ -161,18 +155,43 @@ StaticStageResults run_static_stage(const ValidatedProject& validated, const Sta
     }
     out.strengths.push_back(std::move(strength));
   }
-
-  // The analytic stiffness is cross-checked by finite differences once, in still water.
-  StaticCaseRequest still_water;
-  still_water.finite_difference_check = true;
-  out.cases.push_back(run_static_case(validated, still_water));
-  RestSolutionCache rest_solutions;  // cases sharing an environment (intact, damaged) solve its lines once
-  for (const LoadCase& load_case : project.load_cases) {
-    StaticCaseRequest request;
-    request.load_case = load_case.name;
-    out.cases.push_back(run_static_case(validated, request, &rest_solutions));
+  for (const double direction_deg : {0.0, 90.0}) {
+    out.restoring.push_back(restoring_curve(model, direction_deg, project.site.depth_m));
   }
-  if (options.soz && !project.risers.empty()) out.soz = stage_soz(project, preliminary_soz_settings(project));
+  return out;
+}
+
+StaticCaseResult run_stage_static_case(const ValidatedProject& validated, const std::optional<std::string>& load_case,
+                                       RestSolutionCache* cache) {
+  StaticCaseRequest request;
+  request.load_case = load_case;
+  request.finite_difference_check = !load_case.has_value();
+  return run_static_case(validated, request, cache);
+}
+
+std::optional<SozResult> run_stage_soz(const ValidatedProject& validated) {
+  const Project& project = validated.project;
+  if (project.risers.empty()) return std::nullopt;
+  return stage_soz(project, preliminary_soz_settings(project));
+}
+
+std::vector<engine::Panel> stage_hull_panels(const Project& project) {
+  if (!project.hull.geometry || !project.hull.geometry->panel_mesh) return {};
+  return engine::full_surface(engine::read_gdf(*project.hull.geometry->panel_mesh));
+}
+
+StaticStageResults reduce_static_stage(const ValidatedProject& validated, MooringOverview overview,
+                                       std::vector<StaticCaseResult> cases, std::optional<SozResult> soz,
+                                       std::vector<engine::Panel> hull_panels_b, const StaticStageOptions& options) {
+  const Project& project = validated.project;
+  StaticStageResults out;
+  out.code = to_string(project.criteria.mooring.code);
+  out.hull_panels_b = std::move(hull_panels_b);
+  out.pretension = std::move(overview.pretension);
+  out.strengths = std::move(overview.strengths);
+  out.restoring = std::move(overview.restoring);
+  out.cases = std::move(cases);
+  out.soz = std::move(soz);
   double worst = -1.0;
   for (std::size_t i = 0; i < out.cases.size(); ++i) {
     out.checks.push_back(check_case(project, out.cases[i]));
@@ -189,29 +208,53 @@ StaticStageResults run_static_stage(const ValidatedProject& validated, const Sta
       out.worst_case = static_cast<int>(i);
     }
   }
+  if (options.dynamics && !project.load_cases.empty() && !project.hull.hydrodynamics)
+    out.notes.push_back("no S-C storm: the project gives no hull.hydrodynamics for the hull's dynamics");
+  out.governing = governing_check(out);
+  return out;
+}
 
-  for (const double direction_deg : {0.0, 90.0}) {
-    out.restoring.push_back(restoring_curve(model, direction_deg, project.site.depth_m));
+std::optional<StormChoice> stage_storm_choice(const Project& project, const StaticStageResults& stage) {
+  if (project.load_cases.empty() || !project.hull.hydrodynamics) return std::nullopt;
+  // The governing load case of the code check; still water governs only when
+  // the environment adds little: then the first load case.
+  if (stage.worst_case > 0) {
+    const CaseCheck& check = stage.checks[static_cast<std::size_t>(stage.worst_case)];
+    const double worst = check.lines[static_cast<std::size_t>(check.governing_line)].utilization;
+    return StormChoice{static_cast<std::size_t>(stage.worst_case),
+                       fmt::format("the governing load case of the static code check (utilization {:.3f})", worst)};
   }
+  return StormChoice{1, "the first load case (still water governs the static code check)"};
+}
 
-  // The storm of the governing load case (still water governs only when the
-  // environment adds little: then the first load case).
-  if (options.dynamics && !project.load_cases.empty()) {
-    if (project.hull.hydrodynamics) {
-      const std::size_t index = out.worst_case > 0 ? static_cast<std::size_t>(out.worst_case) : 1;
-      const std::string why =
-          out.worst_case > 0
-              ? fmt::format("the governing load case of the static code check (utilization {:.3f})", worst)
-              : std::string("the first load case (still water governs the static code check)");
-      out.dynamics = run_stage_dynamics(validated, out.cases[index], AnalysisLevel::semi_coupled_enhanced,
-                                        out.soz ? &*out.soz : nullptr, why);
-      out.pass = out.pass && out.dynamics->tension_pass &&
-                 (!out.dynamics->extreme_offset || out.dynamics->extreme_offset->passes);
-    } else {
-      out.notes.push_back("no S-C storm: the project gives no hull.hydrodynamics for the hull's dynamics");
+void add_stage_storm(StaticStageResults& stage, StageDynamics storm) {
+  stage.dynamics = std::move(storm);
+  stage.pass = stage.pass && stage.dynamics->tension_pass &&
+               (!stage.dynamics->extreme_offset || stage.dynamics->extreme_offset->passes);
+  stage.governing = governing_check(stage);
+}
+
+StaticStageResults run_static_stage(const ValidatedProject& validated, const StaticStageOptions& options) {
+  engine::Stopwatch start;
+  const Project& project = validated.project;
+  // Read first: a bad mesh file fails the stage before its analyses run.
+  std::vector<engine::Panel> panels = stage_hull_panels(project);
+  MooringOverview overview = run_mooring_overview(validated);
+  std::vector<StaticCaseResult> cases;
+  cases.push_back(run_stage_static_case(validated, std::nullopt));
+  RestSolutionCache rest_solutions;  // cases sharing an environment (intact, damaged) solve its lines once
+  for (const LoadCase& load_case : project.load_cases)
+    cases.push_back(run_stage_static_case(validated, load_case.name, &rest_solutions));
+  std::optional<SozResult> soz = options.soz ? run_stage_soz(validated) : std::nullopt;
+  StaticStageResults out =
+      reduce_static_stage(validated, std::move(overview), std::move(cases), std::move(soz), std::move(panels), options);
+  if (options.dynamics) {
+    if (const std::optional<StormChoice> choice = stage_storm_choice(project, out)) {
+      add_stage_storm(out,
+                      run_stage_dynamics(validated, out.cases[choice->case_index], AnalysisLevel::semi_coupled_enhanced,
+                                         out.soz ? &*out.soz : nullptr, choice->why));
     }
   }
-  out.governing = governing_check(out);
   out.wall_time_s = start.seconds();
   return out;
 }

@@ -117,9 +117,54 @@ struct StaticStageResults {
 inline constexpr double kRestoringMaxOffsetFractionOfDepth = 0.10;
 inline constexpr int kRestoringSteps = 20;
 
-/// Runs the static stage. Throws InputError / engine::SolverError as
-/// run_static_case does (the message names the case and line), and
-/// engine::FileFormatError for a malformed panel mesh (before any analysis).
+/// The parts of the stage that do not depend on a load case: the
+/// pretensions at zero offset, the segment strengths and the restoring curves.
+struct MooringOverview {
+  StaticsResult pretension;
+  std::vector<LineStrength> strengths;
+  std::vector<RestoringCurve> restoring;  ///< 0° and 90°
+};
+
+/// Throws engine::SolverError when a line cannot be solved at zero offset.
+MooringOverview run_mooring_overview(const ValidatedProject& project);
+
+/// One static case as every stage runs it: `load_case` none is still water,
+/// whose analytic stiffness is cross-checked by finite differences (once per
+/// stage). Throws as run_static_case.
+StaticCaseResult run_stage_static_case(const ValidatedProject& project, const std::optional<std::string>& load_case,
+                                       RestSolutionCache* cache = nullptr);
+
+/// The still-water zones with the preliminary stage's settings; none without risers.
+std::optional<SozResult> run_stage_soz(const ValidatedProject& project);
+
+/// The hull's panel mesh for the stage's 3-D views (empty without one).
+/// Throws engine::FileFormatError for a malformed mesh.
+std::vector<engine::Panel> stage_hull_panels(const Project& project);
+
+/// The stage from its parts (`cases`: still water first, then every load
+/// case in project order): the code, offset-limit, riser and SOZ checks, the
+/// worst case and the governing check. The storm is added by add_stage_storm;
+/// with options.dynamics and no hull hydrodynamics a note says why there is none.
+StaticStageResults reduce_static_stage(const ValidatedProject& project, MooringOverview overview,
+                                       std::vector<StaticCaseResult> cases, std::optional<SozResult> soz,
+                                       std::vector<engine::Panel> hull_panels_b,
+                                       const StaticStageOptions& options = {});
+
+/// The load case whose S-C storm the stage runs (index into `stage.cases`)
+/// and why; none without load cases or hull hydrodynamics.
+struct StormChoice {
+  std::size_t case_index = 0;
+  std::string why;
+};
+std::optional<StormChoice> stage_storm_choice(const Project& project, const StaticStageResults& stage);
+
+/// Adds the storm of stage_storm_choice: its checks join the verdict and the governing check.
+void add_stage_storm(StaticStageResults& stage, StageDynamics storm);
+
+/// Runs the static stage: every part above in turn. Throws InputError /
+/// engine::SolverError as run_static_case does (the message names the case
+/// and line), and engine::FileFormatError for a malformed panel mesh (before
+/// any analysis).
 StaticStageResults run_static_stage(const ValidatedProject& project, const StaticStageOptions& options = {});
 
 /// The SOZ settings of the project's preliminary stage (defaults when it lists none).

@@ -6,7 +6,7 @@
 # lower rank, never a higher one and never a sibling of the same rank.
 #   top level: engine 0 <- design 1 <- report 2 <- app 3
 #   engine:    common 0 <- numerics 1 <- environment 2 <- lines 3, hull 3 <- analysis 4
-#   design:    project 0 <- model 1 <- criteria 2 <- analysis 3 <- soz 4 <- optimization 5 <- stages 6 <- results 7
+#   design:    project 0 <- model 1 <- criteria 2 <- analysis 3 <- soz 4 <- optimization 5 <- stages 6 <- results 7 <- workflow 8
 # Also: design/project includes no engine header (the project model is plain
 # data), and engine includes no yaml-cpp (YAML belongs to design).
 if(NOT ROOT)
@@ -31,6 +31,7 @@ set(rank_design_soz 4)
 set(rank_design_optimization 5)
 set(rank_design_stages 6)
 set(rank_design_results 7)
+set(rank_design_workflow 8)
 
 # place(<path below ROOT> <out-top> <out-sub>): the top folder and, in engine
 # and design, the subfolder a path belongs to.

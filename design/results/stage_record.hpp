@@ -1,0 +1,42 @@
+#pragma once
+// Full-fidelity records of the results a stage's tasks produce, for the
+// results store (results_store.hpp): every field, in CBOR (RFC 8949) through
+// nlohmann::json. CBOR keeps IEEE-754 doubles bit for bit, NaN and infinities
+// included (JSON text would round them or turn NaN into null), so a stage
+// reduced from stored records equals the stage reduced from fresh results —
+// the condition for a resumed run to give the same report as an
+// uninterrupted one.
+//
+// The record layout follows the C++ structs; kStageRecordVersion changes with
+// it, and a record of another version is not read (the task runs again).
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "design/analysis/static_case.hpp"
+#include "design/optimization/pretension_optimizer.hpp"
+#include "design/soz/soz.hpp"
+#include "design/stages/advanced_stage.hpp"
+#include "design/stages/stage_dynamics.hpp"
+#include "design/stages/static_stage.hpp"
+
+namespace spiral::design {
+
+inline constexpr int kStageRecordVersion = 1;
+
+using RecordBytes = std::vector<std::uint8_t>;
+
+RecordBytes encode_record(const MooringOverview& value);
+RecordBytes encode_record(const StaticCaseResult& value);
+RecordBytes encode_record(const SozResult& value);
+RecordBytes encode_record(const StageDynamics& value);
+RecordBytes encode_record(const CriticalCaseVerification& value);
+RecordBytes encode_record(const OptimizationResult& value);
+
+/// Decodes a record of type T. Throws std::runtime_error when the bytes are
+/// not a record of this version and type (a damaged or older store).
+template <class T>
+T decode_record(std::span<const std::uint8_t> bytes);
+
+}  // namespace spiral::design
