@@ -1,6 +1,7 @@
 #include "design/project/validated_project.hpp"
 
 #include <stdexcept>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -11,8 +12,12 @@
 namespace spiral::design {
 
 ValidatedProject load_validated_project(const std::filesystem::path& file) {
+  return validate_loaded_project(load_project(file));
+}
+
+ValidatedProject validate_loaded_project(Project parsed) {
   ValidatedProject result;
-  result.project = load_project(file);
+  result.project = std::move(parsed);
   const Project& project = result.project;
 
   std::vector<InputIssue> issues;
