@@ -11,6 +11,7 @@ packages=(
   libosmesa6-dev libcli11-dev libfmt-dev libspdlog-dev libcairo2-dev libsqlite3-dev
   nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev libopenmpi-dev openmpi-bin
   poppler-utils fonts-dejavu-core clang-format
+  python3-dev python3-pybind11 python3-numpy python3-pytest python3-matplotlib
 )
 
 missing=()

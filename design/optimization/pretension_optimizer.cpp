@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <functional>
 #include <limits>
 
 #include "design/model/mooring_model.hpp"
@@ -68,8 +69,11 @@ double worst_of(const std::vector<Measure>& constraints, const ConstraintValue**
 class Run {
  public:
   /// `clock`: the run's (history times); `first_evaluation`: the number of the first evaluation.
-  Run(PretensionProblem& problem, bool gradients, const engine::Stopwatch& clock, int first_evaluation)
-      : clock_(clock),
+  /// `progress`: the request's hook, called after each evaluation (may be empty).
+  Run(PretensionProblem& problem, bool gradients, const engine::Stopwatch& clock, int first_evaluation,
+      const std::function<void(double)>& progress)
+      : progress_(progress),
+        clock_(clock),
         first_evaluation_(first_evaluation),
         problem_(problem),
         gradients_(gradients),
@@ -100,6 +104,10 @@ class Run {
     cached_payouts_ = payouts;
     cached_has_gradient_ = need_gradient;
     record(payouts);
+    if (progress_) {
+      const int evaluations = first_evaluation_ + static_cast<int>(history.size()) - 1;
+      progress_(std::min(1.0, evaluations / static_cast<double>(problem_.settings().max_evaluations)));
+    }
     return cache_;
   }
 
@@ -167,6 +175,7 @@ class Run {
   double least_violation = std::numeric_limits<double>::infinity();
 
  private:
+  const std::function<void(double)>& progress_;
   const engine::Stopwatch& clock_;
   int first_evaluation_;
   PretensionProblem& problem_;
@@ -306,8 +315,8 @@ struct Pass {
 };
 
 Pass run_pass(PretensionProblem& problem, bool gradients, const Eigen::VectorXd& start_payouts,
-              const engine::Stopwatch& clock, int first_evaluation) {
-  Run run(problem, gradients, clock, first_evaluation);
+              const engine::Stopwatch& clock, int first_evaluation, const std::function<void(double)>& progress) {
+  Run run(problem, gradients, clock, first_evaluation, progress);
   const auto n_groups = static_cast<unsigned>(run.groups());
   const unsigned n = n_groups + (run.minimax() ? 1u : 0u);
   std::vector<double> x(n, 0.0);
@@ -421,7 +430,8 @@ OptimizationResult optimize_pretension(const ValidatedProject& validated, const 
   std::optional<std::pair<Eigen::VectorXd, double>> kept;  // best point feasible with the full risers, its objective
   for (int pass_number = 1; pass_number <= (linearize ? kMaxPasses : 1); ++pass_number) {
     if (linearize) problem.linearize_expensive_lines();
-    Pass pass = run_pass(problem, gradients, from, start, static_cast<int>(result.history.size()) + 1);
+    Pass pass =
+        run_pass(problem, gradients, from, start, static_cast<int>(result.history.size()) + 1, request.progress);
     if (linearize) problem.restore_expensive_lines();
     result.stop_reason = pass.stop_reason;
     const int evaluations = static_cast<int>(pass.history.size());

@@ -31,6 +31,7 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -56,6 +57,11 @@ struct OptimizationRequest {
   int threads = 0;  ///< scenarios evaluated in parallel; 0: all cores
   /// The dynamic level (enhanced S-C storms, COBYLA); none: the static level.
   std::optional<DynamicLevelOptions> dynamic;
+  /// Called after each evaluation with the evaluations so far over the
+  /// evaluation cap (0..1; a run usually stops well before its cap), on the
+  /// calling thread. May throw to stop the run: the exception leaves
+  /// optimize_pretension. May be empty.
+  std::function<void(double)> progress;
 };
 
 /// One design variable.

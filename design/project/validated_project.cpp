@@ -1,6 +1,7 @@
 #include "design/project/validated_project.hpp"
 
 #include <stdexcept>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -12,8 +13,12 @@ namespace spiral::design {
 
 ValidatedProject load_validated_project(const std::filesystem::path& file,
                                         const std::optional<std::filesystem::path>& data_folder) {
+  return validate_loaded_project(load_project(file, data_folder));
+}
+
+ValidatedProject validate_loaded_project(Project parsed) {
   ValidatedProject result;
-  result.project = load_project(file, data_folder);
+  result.project = std::move(parsed);
   const Project& project = result.project;
 
   std::vector<InputIssue> issues;

@@ -23,4 +23,10 @@ struct ValidatedProject {
 ValidatedProject load_validated_project(const std::filesystem::path& file,
                                         const std::optional<std::filesystem::path>& data_folder = std::nullopt);
 
+/// The same for a project already parsed (load_project, parse_project) and
+/// perhaps edited in memory since (the Python API): the validation pass runs
+/// on `project` as it is now, and its issues carry the positions of its
+/// source map, i.e. where the edited values were written. Throws InputError.
+ValidatedProject validate_loaded_project(Project project);
+
 }  // namespace spiral::design

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 #include <sstream>
+#include <utility>
 
 #include "engine/numerics/statistics.hpp"
 
@@ -74,28 +75,37 @@ nlohmann::json matrix_json(const engine::Matrix6d& m) {
 
 }  // namespace
 
-std::string dynamic_time_series_csv(const DynamicAnalysisResult& r) {
-  std::ostringstream out;
-  out << "time_s";
-  for (const char* suffix : {"", "_lf", "_wf"}) {
-    for (int d = 0; d < 6; ++d) out << ',' << kDofNames[d] << suffix << '_' << dof_unit(d);
+std::vector<TimeSeriesColumn> dynamic_time_series_columns(const DynamicAnalysisResult& r) {
+  std::vector<TimeSeriesColumn> columns;
+  columns.push_back({"time_s", std::vector<double>(r.times_s.data(), r.times_s.data() + r.times_s.size()), "{:.3f}"});
+  const std::pair<const Eigen::Matrix<double, 6, Eigen::Dynamic>*, const char*> motions[] = {
+      {&r.total, ""}, {&r.low_frequency, "_lf"}, {&r.wave_frequency, "_wf"}};
+  for (const auto& [m, suffix] : motions) {
+    for (int d = 0; d < 6; ++d)
+      columns.push_back({fmt::format("{}{}_{}", kDofNames[d], suffix, dof_unit(d)), row_of(*m, d), "{:.6g}"});
   }
-  for (const auto& t : r.tensions) out << ",tension_" << t.line << "_N";
-  for (const auto& t : r.dynamic_tensions) out << ",dynamic_tension_" << t.line << "_N";
+  for (const auto& t : r.tensions) columns.push_back({"tension_" + t.line + "_N", t.tension_N, "{:.7g}"});
+  for (const auto& t : r.dynamic_tensions)
+    columns.push_back({"dynamic_tension_" + t.line + "_N", t.tension_N, "{:.7g}"});
   for (const auto& t : r.tensions) {
-    for (const char* axis : {"x", "y", "z"}) out << ",fairlead_" << t.line << '_' << axis << "_m";
+    for (int axis = 0; axis < 3; ++axis) {
+      std::vector<double> values(t.fairlead_g_m.size());
+      for (std::size_t k = 0; k < values.size(); ++k) values[k] = t.fairlead_g_m[k](axis);
+      columns.push_back({fmt::format("fairlead_{}_{}_m", t.line, "xyz"[axis]), std::move(values), "{:.4f}"});
+    }
   }
+  return columns;
+}
+
+std::string dynamic_time_series_csv(const DynamicAnalysisResult& r) {
+  const std::vector<TimeSeriesColumn> columns = dynamic_time_series_columns(r);
+  std::ostringstream out;
+  for (std::size_t c = 0; c < columns.size(); ++c) out << (c > 0 ? "," : "") << columns[c].name;
   out << '\n';
   for (Eigen::Index k = 0; k < r.times_s.size(); ++k) {
-    out << fmt::format("{:.3f}", r.times_s(k));
-    for (const auto* m : {&r.total, &r.low_frequency, &r.wave_frequency}) {
-      for (int d = 0; d < 6; ++d) out << fmt::format(",{:.6g}", (*m)(d, k) * dof_scale(d));
-    }
-    for (const auto& t : r.tensions) out << fmt::format(",{:.7g}", t.tension_N[static_cast<std::size_t>(k)]);
-    for (const auto& t : r.dynamic_tensions) out << fmt::format(",{:.7g}", t.tension_N[static_cast<std::size_t>(k)]);
-    for (const auto& t : r.tensions) {
-      const Eigen::Vector3d& f = t.fairlead_g_m[static_cast<std::size_t>(k)];
-      out << fmt::format(",{:.4f},{:.4f},{:.4f}", f.x(), f.y(), f.z());
+    for (std::size_t c = 0; c < columns.size(); ++c) {
+      if (c > 0) out << ',';
+      out << fmt::format(fmt::runtime(columns[c].csv_format), columns[c].values[static_cast<std::size_t>(k)]);
     }
     out << '\n';
   }

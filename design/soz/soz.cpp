@@ -554,7 +554,9 @@ SozResult compute_soz(const Project& project, const std::vector<RiserDesign>& ri
                                                                std::min(order.size(), i + kDirectionsPerTask)))});
     }
   }
+  std::atomic<int> started{0};
   engine::parallel_for(static_cast<int>(tasks.size()), result.threads, [&](int t) {
+    if (options.progress) options.progress(started++ / static_cast<double>(tasks.size()));
     const Task& task = tasks[static_cast<std::size_t>(t)];
     RiserSoz& z = result.risers[task.riser];
     // Directions of a task run in order, each warm-started from its

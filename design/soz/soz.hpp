@@ -66,6 +66,7 @@
 #include <Eigen/Core>
 #include <cstdint>
 #include <memory>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -124,6 +125,12 @@ struct SozOptions {
   /// tolerance). Off: every riser and direction is searched (tests).
   bool exploit_symmetry = true;
   int threads = 0;  ///< 0: std::thread::hardware_concurrency()
+  /// Called before each block of a riser's directions is searched, with the
+  /// fraction of the run's blocks started (0..1; the zones per current count
+  /// as equal parts). Called from the worker threads, concurrently: it must
+  /// be thread-safe. May throw to stop the run (the blocks not yet started
+  /// then stop at once): the exception leaves run_soz. May be empty.
+  std::function<void(double)> progress;
 };
 
 /// Where the risers hang when the hull is at zero horizontal offset, and what acts on them.

@@ -358,7 +358,28 @@ SozResult run_soz(const ValidatedProject& validated, const SozOptions& options) 
     }
     designs.push_back(riser_design(project, riser));
   }
-  SozResult result = compute_soz(project, designs, conditions, options);
+  // Without --case: a zone per current (and design condition) of the cases,
+  // each computed once and shared by the cases that have it. Known before
+  // any zone is computed, so that the progress hook runs once from 0 to 1.
+  // The catenary screening model carries no current: its zones differ by
+  // the design condition only.
+  const bool zone_per_current = !designs.empty() && !options.load_case && options.zone_per_current;
+  const bool ignore_current = options.model == SozModel::catenary;
+  std::vector<SozZone> zones;
+  std::vector<int> zone_of_case(cases.size(), -1);
+  if (zone_per_current) zone_of_case = zones_of_cases(project, case_names, options.condition, ignore_current, zones);
+  const auto zone_count = static_cast<double>(zones.size() + 1);  // the result's own zone is zone 0
+  const auto zone_options = [&](std::size_t zone) {
+    SozOptions o = options;
+    if (o.progress) {
+      o.progress = [progress = options.progress, zone, zone_count](double fraction) {
+        progress((static_cast<double>(zone) + fraction) / zone_count);
+      };
+    }
+    return o;
+  };
+  SozResult result = compute_soz(project, designs, conditions, zone_options(0));
+  result.zones = std::move(zones);
   if (options.model == SozModel::catenary && conditions.current) {
     result.notes.push_back(
         "the catenary screening model carries no current: this zone ignores the case's current on "
@@ -372,14 +393,7 @@ SozResult run_soz(const ValidatedProject& validated, const SozOptions& options) 
   }
   if (designs.empty()) return result;
 
-  // Without --case: a zone per current (and design condition) of the cases,
-  // each computed once and shared by the cases that have it.
-  std::vector<int> zone_of_case(cases.size(), -1);
-  if (!options.load_case && options.zone_per_current) {
-    // The catenary screening model carries no current: its zones differ by
-    // the design condition only.
-    const bool ignore_current = options.model == SozModel::catenary;
-    zone_of_case = zones_of_cases(project, case_names, options.condition, ignore_current, result.zones);
+  if (zone_per_current) {
     if (ignore_current && std::any_of(case_names.begin(), case_names.end(), [&](const std::string& name) {
           const LoadCase& lc = find_load_case(project, name);
           return std::any_of(project.environments.begin(), project.environments.end(),
@@ -389,8 +403,9 @@ SozResult run_soz(const ValidatedProject& validated, const SozOptions& options) 
           "the catenary screening model carries no current: the zones per case differ by design condition "
           "only (use --model fe)");
     }
-    for (SozZone& zone : result.zones) {
-      SozResult z = compute_soz(project, designs, zone.conditions, options);
+    for (std::size_t k = 0; k < result.zones.size(); ++k) {
+      SozZone& zone = result.zones[k];
+      SozResult z = compute_soz(project, designs, zone.conditions, zone_options(k + 1));
       zone.risers = std::move(z.risers);
       zone.platform = std::move(z.platform);
       zone.solves = z.solves;

@@ -4,7 +4,7 @@
 #
 # Each folder has a rank; a file may include its own folder or a folder of a
 # lower rank, never a higher one and never a sibling of the same rank.
-#   top level: engine 0 <- design 1 <- report 2 <- app 3
+#   top level: engine 0 <- design 1 <- report 2, python 2 <- app 3
 #   engine:    common 0 <- numerics 1 <- environment 2 <- lines 3, hull 3 <- analysis 4
 #   design:    project 0 <- model 1 <- criteria 2 <- analysis 3 <- soz 4 <- optimization 5 <- stages 6 <- results 7 <- workflow 8
 # Also: design/project includes no engine header (the project model is plain
@@ -16,6 +16,7 @@ endif()
 set(rank_top_engine 0)
 set(rank_top_design 1)
 set(rank_top_report 2)
+set(rank_top_python 2)  # the Python bindings: a thin layer over design, beside report
 set(rank_top_app 3)
 set(rank_engine_common 0)
 set(rank_engine_numerics 1)
@@ -52,7 +53,7 @@ endfunction()
 set(violations "")
 set(checked 0)
 file(GLOB_RECURSE files RELATIVE ${ROOT} ${ROOT}/engine/*.?pp ${ROOT}/design/*.?pp ${ROOT}/report/*.?pp
-     ${ROOT}/app/*.?pp)
+     ${ROOT}/app/*.?pp ${ROOT}/python/*.?pp)
 foreach(file ${files})
   place("${file}" top sub)
   if(NOT DEFINED rank_top_${top})
@@ -79,8 +80,8 @@ foreach(file ${files})
       continue()
     endif()
     if(NOT ttop STREQUAL top)
-      if(rank_top_${ttop} GREATER rank_top_${top})
-        list(APPEND violations "${file}: includes ${target}: ${top}/ may not include ${ttop}/ (engine <- design <- report <- app)")
+      if(NOT rank_top_${ttop} LESS rank_top_${top})
+        list(APPEND violations "${file}: includes ${target}: ${top}/ may not include ${ttop}/ (engine <- design <- {report, python} <- app)")
       endif()
       continue()
     endif()

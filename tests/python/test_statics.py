@@ -1,0 +1,86 @@
+"""Project.statics against `spiral statics --json`, bit for bit, for the
+project as written and after an edit in Python (against the CLI run of the
+file the edit was saved to); what save writes."""
+import shutil
+
+import numpy as np
+import pytest
+
+import spiral
+from conftest import DEEPWATER, OC4, assert_same, cli_json
+
+
+@pytest.mark.parametrize("scenario", [DEEPWATER, OC4], ids=["deepwater", "oc4"])
+def test_statics_at_rest_is_the_cli_document(scenario):
+    assert_same(spiral.load(scenario).statics(), cli_json("statics", scenario))
+
+
+def test_statics_at_an_offset_is_the_cli_document(deepwater):
+    offset = [10, -5, 0.5, 0.2, -0.3, 1.5]  # m, m, m, deg, deg, deg
+    s = deepwater.statics(offset=offset)
+    assert_same(s, cli_json("statics", DEEPWATER, "--offset", ",".join(map(str, offset))))
+    assert s.offset_6dof[5] == pytest.approx(np.radians(1.5), rel=1e-15)  # the document's rotations are in rad
+
+
+def test_per_line_columns_are_numpy_arrays(deepwater):
+    s = deepwater.statics(offset=[10, 0, 0, 0, 0, 0])
+    assert isinstance(s.fairlead_tension_N, np.ndarray) and s.fairlead_tension_N.shape == (len(deepwater.lines),)
+    assert list(s.column("lines", "name")) == list(deepwater.lines)
+    assert s.fairlead_tension_N[2] == s["lines"][2]["fairlead_tension_N"]
+    assert s.hull_force_6dof.shape == (6,)
+
+
+def test_edited_length_matches_the_cli_run_of_the_saved_file(tmp_path):
+    p = spiral.load(DEEPWATER)
+    before = p.statics().fairlead_tension_N
+    p.lines["L3"].segments[1].length += 2.0
+    after = p.statics()
+    assert after.fairlead_tension_N[2] < before[2]  # a longer line slackens
+    assert np.array_equal(after.fairlead_tension_N[3:], before[3:])  # the other lines are not touched
+    variant = tmp_path / "variant.yaml"
+    p.save(variant)
+    assert_same(after, cli_json("statics", variant))
+    assert_same(spiral.load(variant).statics(), after)
+
+
+def test_save_changes_only_the_edited_value(tmp_path):
+    # A copy of the project beside a copy of its data: saved over itself, only the edited value may change.
+    shutil.copytree(DEEPWATER.parent / "data", tmp_path / "data")
+    copy = tmp_path / "deepwater-fps.yaml"
+    shutil.copy(DEEPWATER, copy)
+    p = spiral.load(copy)
+    p.lines["L3"].segments[1].length += 2.0
+    p.lines["L5"].segments[2].type = "chain147"  # as written: no change
+    p.save(copy)
+    original = DEEPWATER.read_text().splitlines()
+    saved = copy.read_text().splitlines()
+    assert len(saved) == len(original)
+    changed = [(a, b) for a, b in zip(original, saved) if a != b]
+    assert len(changed) == 1, changed
+    assert changed[0][1] == changed[0][0].replace("length: 2490.0}", "length: 2492.0}")
+
+
+def test_save_elsewhere_rewrites_relative_file_references(tmp_path):
+    p = spiral.load(OC4)
+    (tmp_path / "sub").mkdir()
+    p.save(tmp_path / "sub" / "copy.yaml")
+    text = (tmp_path / "sub" / "copy.yaml").read_text()
+    radiation = str((OC4.parent / "data/hydro/oc4-semi/marin_semi.1").resolve())
+    assert f"radiation_file: {radiation}" in text  # /tmp and the sources share no folder below the root
+    assert_same(spiral.load(tmp_path / "sub" / "copy.yaml").statics(), spiral.load(OC4).statics())
+
+
+def test_an_edit_shared_through_a_yaml_anchor_is_refused(tmp_path):
+    text = OC4.read_text()
+    first = text.index("segments:")
+    # Each line's segment list, given once under an anchor and aliased by the other lines.
+    assert "{type: chain76, length: 835.35}" in text
+    shared = text.replace("- {type: chain76, length: 835.35}", "- &seg {type: chain76, length: 835.35}", 1)
+    shared = shared[:first] + shared[first:].replace("- {type: chain76, length: 835.35}", "- *seg")
+    (tmp_path / "shared.yaml").write_text(shared)
+    shutil.copytree(OC4.parent / "data", tmp_path / "data")
+    p = spiral.load(tmp_path / "shared.yaml")
+    p.lines[next(iter(p.lines))].segments[0].length += 1.0
+    with pytest.raises(spiral.OutputError, match="YAML anchor"):
+        p.save(tmp_path / "out.yaml")
+    assert not (tmp_path / "out.yaml").exists()
