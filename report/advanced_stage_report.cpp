@@ -26,11 +26,12 @@ Section critical_cases_section(const design::AdvancedStageResults& r) {
   const auto& in = r.intermediate;
   s.blocks.emplace_back(Paragraph{fmt::format(
       "The intermediate stage ranked the {} load cases by their enhanced S-C 3-h storms ({} storms in {:.1f} s "
-      "wall clock on {} threads); its critical cases — the top {} and every failing case — are verified here "
+      "wall clock on {} threads); its critical cases — the top {} by each measure and every failing case — are "
+      "verified here "
       "fully coupled: hull 6-DOF and every mooring line and riser as a dynamic FE line in one time-domain "
       "system, {} at a {:g} s output step, seed {}, from the stage's static equilibrium of the case. The "
       "sc-enhanced analysis of the same case and sea runs beside it for the comparison.",
-      in.ranked.size(), in.ranked.size(), in.storms_wall_s, in.threads, design::kCriticalCases,
+      in.ranked.size(), in.ranked.size(), in.storms_wall_s, in.threads, in.critical_per_measure,
       duration_text(r.duration_s), r.output_step_s, r.seed)});
   Table t{"critical-cases",
           "Critical cases: their intermediate score (S-C) and the outcome of the coupled verification.",
@@ -275,8 +276,8 @@ ReportDocument advanced_stage_report(const design::ValidatedProject& vp, const d
   doc.title.title = "Advanced stage report";
   doc.title.subtitle = "Fully coupled verification of the critical cases";
   doc.title.facts.emplace_back(
-      "Critical cases", fmt::format("{} of {} (intermediate ranking: top {} and every failing case)", r.cases.size(),
-                                    r.intermediate.ranked.size(), design::kCriticalCases));
+      "Critical cases", fmt::format("{} of {} (intermediate ranking: top {} by each measure and every failing case)",
+                                    r.cases.size(), r.intermediate.ranked.size(), r.intermediate.critical_per_measure));
   doc.title.facts.emplace_back("Verification runs", fmt::format("coupled and sc-enhanced, {} each, seed {}",
                                                                 duration_text(r.duration_s), r.seed));
   doc.title.pass = r.pass;

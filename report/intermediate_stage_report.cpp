@@ -27,8 +27,8 @@ Section ranking_section(const design::IntermediateStageResults& r) {
                   "MBL; offset — MPM horizontal offset against the still-water platform SOZ in its direction; riser — "
                   "largest riser utilization at the case's static equilibrium (FE risers with its current; riser "
                   "dynamics are not analysed at this level). The score is the largest measure; the critical cases "
-                  "(the top {} and every failing case) go to the advanced stage.",
-                  r.ranked.size(), r.storms_wall_s, r.threads, r.statics.code, design::kCriticalCases)});
+                  "(the top {} by each measure and every failing case) go to the advanced stage.",
+                  r.ranked.size(), r.storms_wall_s, r.threads, r.statics.code, r.critical_per_measure)});
   Table t{"ranking",
           "Load cases ranked by score (most severe first).",
           {"Rank", "Case", "Condition", "Tension util.", "Line", "Offset/SOZ", "Riser util.", "Riser", "Score",
@@ -94,8 +94,8 @@ ReportDocument intermediate_stage_report(const design::ValidatedProject& vp, con
     failed += c.pass ? 0 : 1;
   }
   doc.title.facts.emplace_back("Critical cases",
-                               fmt::format("{} of {} (top {} and every failing case; see the ranking)", critical,
-                                           r.ranked.size(), design::kCriticalCases));
+                               fmt::format("{} of {} (top {} by each measure and every failing case; see the ranking)",
+                                           critical, r.ranked.size(), r.critical_per_measure));
   doc.title.pass = r.pass;
   const design::RankedCase* top = r.ranked.empty() ? nullptr : &r.ranked.front();
   const std::string governing = top ? fmt::format("{} ({} {:.3f})", case_of(r, *top).case_name,

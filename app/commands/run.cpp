@@ -14,6 +14,7 @@
 #include "app/exit_codes.hpp"
 #include "app/report_info.hpp"
 #include "app/version.hpp"
+#include "design/workflow/cluster.hpp"
 #include "design/workflow/spiral_run.hpp"
 #include "report/advanced_stage_report.hpp"
 #include "report/intermediate_stage_report.hpp"
@@ -55,6 +56,15 @@ class RunCommand : public Command {
         fmt::print(stderr, "{}{}\n", terminal ? "\r\033[K" : "", line);
       std::fflush(stderr);
     };
+    // Under mpirun every rank runs the spiral; rank 0 owns the store, logs and writes the reports.
+    const std::unique_ptr<design::Cluster> cluster = design::launched_cluster();
+    options.cluster = cluster.get();
+    if (cluster && cluster->rank() != 0) {
+      options.log = nullptr;
+      const design::SpiralRunResult result = design::run_spiral(project_file_, options);
+      return result.solver_failures || !result.completed ? kExitSolverFailure : kExitOk;
+    }
+    if (cluster) fmt::print(stderr, "spiral run on {} MPI ranks\n", cluster->size());
     const report::ReportInfo info = report_info(project_file_);
     std::vector<std::string> written;
     const auto stage_done = [&](const design::StageRun& stage) {

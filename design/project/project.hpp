@@ -464,6 +464,10 @@ struct Stage {
   /// Iterations of the stage with the optimizer's payouts, the first
   /// included (`max_iterations`, ≥ 1).
   int max_iterations = 3;
+  /// Intermediate stage: the N most severe cases by each ranking measure
+  /// (tension, offset, riser), with every failing case, go to the advanced
+  /// stage (`critical_cases`, ≥ 1; absent: 3).
+  std::optional<int> critical_cases;
 };
 
 /// What the pretension optimizer seeks (`optimization.objective`,

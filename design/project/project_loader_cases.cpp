@@ -132,6 +132,7 @@ Stage read_stage(MapReader& r) {
   stage.duration_s = r.number("duration", "s", kOptional);
   assign(stage.optimize, r.boolean("optimize", kOptional));
   assign(stage.max_iterations, r.integer("max_iterations", kOptional));
+  stage.critical_cases = r.integer("critical_cases", kOptional);
   return stage;
 }
 

@@ -147,6 +147,16 @@ void check_stages(const Project& p, Reporter& r) {
       r.fail(fmt::format("stages[{}].soz.step_deg", i), "soz_step_divides_360",
              fmt::format("must be > 0 and divide 360, got {} deg", step));
     }
+    if (const std::optional<int> n = p.stages[i].critical_cases) {
+      const std::string path = fmt::format("stages[{}].critical_cases", i);
+      if (p.stages[i].name != "intermediate") {
+        r.fail(
+            path, "stage_critical_cases_intermediate_only",
+            fmt::format("only the intermediate stage selects critical cases, got it on stage '{}'", p.stages[i].name));
+      } else if (*n < 1) {
+        r.fail(path, "stage_critical_cases_positive", fmt::format("must be >= 1, got {}", *n));
+      }
+    }
     if (p.stages[i].max_iterations < 1) {
       r.fail(fmt::format("stages[{}].max_iterations", i), "stage_iterations_positive",
              fmt::format("must be >= 1 (the first iteration counts), got {}", p.stages[i].max_iterations));

@@ -25,8 +25,16 @@ StageDynamics run_case_storm(const ValidatedProject& vp, const StaticStageResult
                             statics.soz ? &*statics.soz : nullptr, "every case of the matrix");
 }
 
-IntermediateStageResults reduce_intermediate_stage(StaticStageResults statics, std::vector<CaseStorm> storms) {
+std::size_t intermediate_critical_cases(const Project& project) {
+  for (const Stage& s : project.stages)
+    if (s.name == "intermediate" && s.critical_cases) return static_cast<std::size_t>(*s.critical_cases);
+  return kCriticalCases;
+}
+
+IntermediateStageResults reduce_intermediate_stage(StaticStageResults statics, std::vector<CaseStorm> storms,
+                                                   std::size_t critical_per_measure) {
   IntermediateStageResults out;
+  out.critical_per_measure = critical_per_measure;
   out.statics = std::move(statics);
   out.statics.stage = "intermediate";
   out.ranked.resize(storms.size());
@@ -55,7 +63,18 @@ IntermediateStageResults reduce_intermediate_stage(StaticStageResults statics, s
                    [](const RankedCase& a, const RankedCase& b) { return a.score > b.score; });
   for (std::size_t i = 0; i < out.ranked.size(); ++i) {
     out.ranked[i].rank = static_cast<int>(i) + 1;
-    out.ranked[i].critical = i < kCriticalCases || !out.ranked[i].pass;
+    out.ranked[i].critical = !out.ranked[i].pass;
+  }
+  // The N most severe by each measure (a case that is severe in offset but
+  // not in tension still gets its coupled verification).
+  for (const auto measure :
+       {&RankedCase::tension_utilization, &RankedCase::offset_ratio, &RankedCase::riser_utilization}) {
+    std::vector<RankedCase*> order;
+    for (RankedCase& c : out.ranked) order.push_back(&c);
+    std::stable_sort(order.begin(), order.end(),
+                     [measure](const RankedCase* a, const RankedCase* b) { return a->*measure > b->*measure; });
+    for (std::size_t k = 0; k < std::min(critical_per_measure, order.size()); ++k)
+      if (order[k]->*measure > 0.0) order[k]->critical = true;
   }
   return out;
 }
@@ -75,7 +94,8 @@ IntermediateStageResults run_intermediate_stage(const ValidatedProject& vp) {
     s.storm = run_case_storm(vp, statics, s.case_index);
   });
   const double storms_wall_s = storms_start.seconds();
-  IntermediateStageResults out = reduce_intermediate_stage(std::move(statics), std::move(storms));
+  IntermediateStageResults out =
+      reduce_intermediate_stage(std::move(statics), std::move(storms), intermediate_critical_cases(vp.project));
   out.threads = threads;
   out.storms_wall_s = storms_wall_s;
   out.wall_time_s = start.seconds();

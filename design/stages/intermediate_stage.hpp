@@ -15,7 +15,9 @@
 //             equilibrium (FE risers with the case's current; the risers'
 //             dynamic response is not analysed at this level).
 // A case's score is the largest of the three; cases are ranked by score, and
-// the critical ones are the top kCriticalCases plus every failing case.
+// the critical ones are the N most severe by each measure (N =
+// stages[intermediate].critical_cases, default kCriticalCases) plus every
+// failing case.
 // Storms run in parallel over the cases (each owns its state).
 
 #include <string>
@@ -27,7 +29,8 @@
 
 namespace spiral::design {
 
-/// How many top-ranked cases go to the advanced stage (failing cases go too).
+/// How many top-ranked cases by each measure go to the advanced stage
+/// (failing cases go too), unless stages[intermediate].critical_cases says.
 inline constexpr std::size_t kCriticalCases = 3;
 
 /// The ranking measures (the file comment).
@@ -51,9 +54,10 @@ struct RankedCase {
 };
 
 struct IntermediateStageResults {
-  StaticStageResults statics;      ///< static cases, code check and SOZ (no storm)
-  std::vector<RankedCase> ranked;  ///< most severe first
-  bool pass = true;                ///< every case passes every measure
+  std::size_t critical_per_measure = kCriticalCases;  ///< N of the selection (file comment)
+  StaticStageResults statics;                         ///< static cases, code check and SOZ (no storm)
+  std::vector<RankedCase> ranked;                     ///< most severe first
+  bool pass = true;                                   ///< every case passes every measure
   int threads = 1;
   double storms_wall_s = 0.0;  ///< all storms, wall clock
   double wall_time_s = 0.0;
@@ -73,7 +77,11 @@ struct CaseStorm {
 /// The ranking from the stage's statics (run with StaticStageOptions::dynamics
 /// false) and the storms of its load cases. A case without a storm (its run
 /// failed) is not ranked; the caller says why in statics.notes.
-IntermediateStageResults reduce_intermediate_stage(StaticStageResults statics, std::vector<CaseStorm> storms);
+IntermediateStageResults reduce_intermediate_stage(StaticStageResults statics, std::vector<CaseStorm> storms,
+                                                   std::size_t critical_per_measure = kCriticalCases);
+
+/// stages[intermediate].critical_cases, else kCriticalCases.
+std::size_t intermediate_critical_cases(const Project& project);
 
 /// Throws as run_static_stage and run_dynamic_analysis (the message names the case).
 IntermediateStageResults run_intermediate_stage(const ValidatedProject& project);

@@ -28,12 +28,19 @@ constexpr std::uint64_t kStormSeed = 1;
 
 /// What one run shares between its stages.
 struct RunContext {
-  ResultsStore& store;
+  ResultsStore* store = nullptr;  ///< rank 0 (or the only process) only
   const SpiralRunOptions& options;
   int jobs = 1;
   int run_id = 0;
+  bool root() const { return options.cluster == nullptr || options.cluster->rank() == 0; }
   void log(const std::string& line) const {
-    if (options.log) options.log(line);
+    if (options.log && root()) options.log(line);
+  }
+  /// Every rank waits here until rank 0 has arrived (after it wrote a file the others read).
+  void barrier() const {
+    if (options.cluster == nullptr || options.cluster->size() < 2) return;
+    Bytes nothing;
+    options.cluster->broadcast(nothing);
   }
 };
 
@@ -53,21 +60,25 @@ std::string eta(double seconds) {
   return seconds < 90.0 ? fmt::format("{:.0f} s", seconds) : fmt::format("{:.0f} min", seconds / 60.0);
 }
 
-/// Runs a batch of the stage; progress lines name the stage and the step ("statics", "storms", …).
-void run_batch(const RunContext& ctx, TaskBatch& batch, StageRun& stage, const std::string& step) {
+/// Runs a batch of the stage on `jobs` threads (0: the run's); progress lines
+/// name the stage and the step ("statics", "storms", …).
+void run_batch(const RunContext& ctx, TaskBatch& batch, StageRun& stage, const std::string& step, int jobs = 0) {
   engine::Stopwatch start;
   int computed = 0;
-  batch.run(ctx.store, ctx.jobs, [&](const BatchProgress& p) {
-    computed += p.last_reused ? 0 : 1;
-    // Remaining tasks at the pace of those computed so far (wall clock, all jobs together).
-    const std::string remaining =
-        computed > 0 && p.finished < p.total
-            ? fmt::format(", ETA {}", eta(start.seconds() / computed * (p.total - p.finished)))
-            : "";
-    ctx.log(fmt::format("[{} {} {}/{}] {} {}{}{}", p.stage, step, p.finished, p.total, p.last_task,
-                        p.last_reused ? "(stored)" : fmt::format("{:.1f} s", p.last_wall_s),
-                        p.last_failed ? " FAILED" : "", remaining));
-  });
+  batch.run(
+      ctx.store, jobs > 0 ? jobs : ctx.jobs,
+      [&](const BatchProgress& p) {
+        computed += p.last_reused ? 0 : 1;
+        // Remaining tasks at the pace of those computed so far (wall clock, all jobs together).
+        const std::string remaining =
+            computed > 0 && p.finished < p.total
+                ? fmt::format(", ETA {}", eta(start.seconds() / computed * (p.total - p.finished)))
+                : "";
+        ctx.log(fmt::format("[{} {} {}/{}] {} {}{}{}", p.stage, step, p.finished, p.total, p.last_task,
+                            p.last_reused ? "(stored)" : fmt::format("{:.1f} s", p.last_wall_s),
+                            p.last_failed ? " FAILED" : "", remaining));
+      },
+      ctx.options.cluster);
   stage.tasks += static_cast<int>(batch.size());
   stage.tasks_failed += batch.failed();
   stage.tasks_reused += batch.reused();
@@ -296,7 +307,8 @@ StageRun run_intermediate(const RunContext& ctx, const Iteration& it) {
                                           statics.cases[k + 1].case_name, *batch.error(k)));
     }
   }
-  IntermediateStageResults r = reduce_intermediate_stage(std::move(statics), std::move(storms));
+  IntermediateStageResults r =
+      reduce_intermediate_stage(std::move(statics), std::move(storms), intermediate_critical_cases(vp.project));
   r.threads = ctx.jobs;
   r.storms_wall_s = storms_start.seconds();
   r.wall_time_s = start.seconds();
@@ -338,7 +350,7 @@ StageRun run_advanced(const RunContext& ctx, const Iteration& it, const Intermed
   engine::Stopwatch runs_start;
   // One coupled run at a time unless the user asks for more: each already
   // spreads its lines over the cores, and holds every FE line of its case.
-  run_batch(ctx, batch, stage, "verification");
+  run_batch(ctx, batch, stage, "verification", ctx.options.jobs > 0 ? ctx.options.jobs : 1);
   std::vector<CriticalCaseVerification> cases;
   for (std::size_t k = 0; k < batch.size(); ++k)
     if (const auto* v = batch.value<CriticalCaseVerification>(k)) cases.push_back(*v);
@@ -493,12 +505,12 @@ std::optional<Iteration> feedback(const RunContext& ctx, const Iteration& it, co
   Iteration next;
   next.number = it.number + 1;
   next.project_file = ctx.options.out_folder / "iterations" / fmt::format("iteration-{}.yaml", next.number);
-  std::filesystem::create_directories(next.project_file.parent_path());
+  if (ctx.root()) std::filesystem::create_directories(next.project_file.parent_path());
   const std::string header = optimized_project_header(*opt, it.project_file.string()) +
                              fmt::format("\nspiral run iteration {}; relative data files resolve from {}\n",
                                          next.number, std::filesystem::absolute(data_folder).string());
   const std::string text = with_line_payouts(read_text(it.project_file), vp.project, step.payouts_m, header);
-  {
+  if (ctx.root()) {
     // Whole or not at all: a run stopped here leaves no half-written project.
     const std::filesystem::path partial = next.project_file.string() + ".partial";
     std::ofstream out(partial, std::ios::binary | std::ios::trunc);
@@ -509,6 +521,7 @@ std::optional<Iteration> feedback(const RunContext& ctx, const Iteration& it, co
     std::filesystem::rename(partial, next.project_file, ec);
     if (ec) throw OutputError(fmt::format("{}: cannot be written: {}", next.project_file.string(), ec.message()));
   }
+  ctx.barrier();  // the other ranks read what rank 0 wrote
   next.project = std::make_shared<const ValidatedProject>(load_validated_project(next.project_file, data_folder));
   next.model_hash = project_content_hash(next.project_file, next.project->project);
   step.applied = true;
@@ -544,19 +557,26 @@ SpiralRunResult run_spiral(const std::filesystem::path& project_file, const Spir
   it.model_hash = project_content_hash(project_file, it.project->project);
   const std::filesystem::path data_folder = project_file.parent_path();
 
-  ResultsStore store(results_store_file(options.out_folder), options.fresh);
-  RunContext ctx{store, options};
+  const bool root = options.cluster == nullptr || options.cluster->rank() == 0;
+  std::unique_ptr<ResultsStore> store =
+      root ? std::make_unique<ResultsStore>(results_store_file(options.out_folder), options.fresh) : nullptr;
+  RunContext ctx{store.get(), options};
   ctx.jobs = options.jobs > 0 ? options.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   SpiralRunResult result;
-  result.store_file = store.file();
-  result.run_id = ctx.run_id = store.begin_run(project_file.string(), it.model_hash, ctx.jobs, options.version);
-  store.put_iteration(ctx.run_id,
-                      {1, "preliminary", it.model_hash, project_file.string(), "{}", "the project as given"});
+  result.store_file = results_store_file(options.out_folder);
+  if (store) {
+    const int ranks = options.cluster ? options.cluster->size() : 1;
+    result.run_id = ctx.run_id =
+        store->begin_run(project_file.string(), it.model_hash, ranks > 1 ? ranks : ctx.jobs, options.version);
+    store->put_iteration(ctx.run_id,
+                         {1, "preliminary", it.model_hash, project_file.string(), "{}", "the project as given"});
+  }
 
   const auto record = [&](StageRun stage) {
-    store.put_stage(ctx.run_id,
-                    {stage.stage, stage.iteration, stage.model_hash, stage.pass, stage.governing,
-                     stage.tasks - stage.tasks_failed, stage.tasks_failed, stage.tasks_reused, stage.wall_s});
+    if (store)
+      store->put_stage(ctx.run_id,
+                       {stage.stage, stage.iteration, stage.model_hash, stage.pass, stage.governing,
+                        stage.tasks - stage.tasks_failed, stage.tasks_failed, stage.tasks_reused, stage.wall_s});
     result.solver_failures = result.solver_failures || stage.tasks_failed > 0 || !stage.failures.empty();
     ctx.log(fmt::format("{} stage, iteration {}: {} ({} tasks, {} from the store, {} failed, {:.1f} s){}", stage.stage,
                         stage.iteration, !stage.completed ? "NOT COMPLETED" : (stage.pass ? "PASS" : "FAIL"),
@@ -611,9 +631,9 @@ SpiralRunResult run_spiral(const std::filesystem::path& project_file, const Spir
           step.reason = reason;
           ctx.log(fmt::format("feedback after iteration {}: {}; running the pretension optimizer", it.number, reason));
           std::optional<Iteration> next = feedback(ctx, it, data_folder, step, result);
-          if (next) {
-            store.put_iteration(ctx.run_id, {next->number, "preliminary", next->model_hash, next->project_file.string(),
-                                             payouts_json(step.payouts_m), reason});
+          if (next && store) {
+            store->put_iteration(ctx.run_id, {next->number, "preliminary", next->model_hash,
+                                              next->project_file.string(), payouts_json(step.payouts_m), reason});
           }
           result.feedback.push_back(std::move(step));
           if (!next) {
@@ -650,9 +670,9 @@ SpiralRunResult run_spiral(const std::filesystem::path& project_file, const Spir
     result.pass = result.completed;
     for (const StageRun& s : result.stages)
       if (s.iteration == it.number) result.pass = result.pass && s.pass;
-    store.finish_run(ctx.run_id, result.pass ? "pass" : (result.completed ? "fail" : "incomplete"));
+    if (store) store->finish_run(ctx.run_id, result.pass ? "pass" : (result.completed ? "fail" : "incomplete"));
   } catch (...) {
-    store.finish_run(ctx.run_id, "error");
+    if (store) store->finish_run(ctx.run_id, "error");
     throw;
   }
   return result;

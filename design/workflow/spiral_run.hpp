@@ -43,6 +43,7 @@
 #include "design/stages/advanced_stage.hpp"
 #include "design/stages/intermediate_stage.hpp"
 #include "design/stages/static_stage.hpp"
+#include "design/workflow/cluster.hpp"
 
 namespace spiral::design {
 
@@ -58,6 +59,10 @@ struct SpiralRunOptions {
   std::string version;               ///< of spiral, recorded with the run
   /// Progress lines (one per finished task, stage start and end); may be empty.
   std::function<void(const std::string&)> log;
+  /// The MPI ranks to share the tasks over (cluster.hpp); none: this process
+  /// alone, on `jobs` threads. Every rank calls run_spiral alike; rank 0 owns
+  /// the store and logs.
+  const Cluster* cluster = nullptr;
 };
 
 /// One stage of one iteration.

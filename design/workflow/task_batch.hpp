@@ -7,7 +7,8 @@
 // A task that throws engine::SolverError is stored as failed with its
 // message; the batch goes on. Anything else (bad input, a file that cannot be
 // read) is not the task's result: it is rethrown after the running tasks have
-// ended and been stored.
+// ended and been stored (under MPI as a std::runtime_error with its message,
+// on every rank).
 
 #include <any>
 #include <functional>
@@ -16,6 +17,7 @@
 #include <vector>
 
 #include "design/results/results_store.hpp"
+#include "design/workflow/cluster.hpp"
 
 namespace spiral::design {
 
@@ -53,8 +55,13 @@ class TaskBatch {
     return slots_.size() - 1;
   }
 
-  /// Runs what the store does not have. `jobs` ≥ 1.
-  void run(ResultsStore& store, int jobs, const std::function<void(const BatchProgress&)>& progress = {});
+  /// Runs what the store does not have on `jobs` threads (≥ 1). With a
+  /// cluster of several ranks (cluster.hpp) every rank calls it with the same
+  /// tasks; only rank 0 has the store (the others pass none) and reports
+  /// progress; the tasks are shared out over the ranks instead of threads,
+  /// and every rank ends with every task's value.
+  void run(ResultsStore* store, int jobs, const std::function<void(const BatchProgress&)>& progress = {},
+           const Cluster* cluster = nullptr);
 
   std::size_t size() const { return slots_.size(); }
   /// The task's value; nullptr when it failed.
@@ -79,6 +86,11 @@ class TaskBatch {
     std::optional<std::string> error;
     bool reused = false;
   };
+  void run_threads(ResultsStore& store, int jobs, const std::function<void(const BatchProgress&)>& progress);
+  void run_distributed(ResultsStore* store, const std::function<void(const BatchProgress&)>& progress,
+                       const Cluster& cluster);
+  /// Runs one task into its store row (solver failures as failed rows).
+  TaskResult compute_row(Slot& slot, std::any& value) const;
   std::string stage_;
   int iteration_;
   std::vector<Slot> slots_;

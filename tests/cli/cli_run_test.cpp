@@ -179,6 +179,39 @@ TEST(CliRun, ASolverFailureIsRecordedReportedAndExitsThree) {
   EXPECT_NE(summary.out.find("failed: verification"), std::string::npos) << summary.out;
 }
 
+TEST(CliRun, ThreadsAndMpiRanksStoreTheSameNumbers) {
+#ifndef SPIRAL_MPIEXEC
+  GTEST_SKIP() << "spiral is built without MPI";
+#else
+  const auto dir = temp_folder("mpi");
+  const auto project = oc4_project(dir);
+  const std::string common = "run '" + project.string() + "' --until intermediate --out '";
+  const CommandResult one = run_spiral(common + (dir / "one").string() + "' --jobs 1");
+  ASSERT_EQ(one.exit_code, 0) << one.err;
+  const CommandResult two = run_spiral(common + (dir / "two").string() + "' --jobs 2");
+  ASSERT_EQ(two.exit_code, 0) << two.err;
+  // Three ranks on this machine's cores; CI runs as root on loopback.
+  const std::string command = std::string("'") + SPIRAL_MPIEXEC + "' --oversubscribe --allow-run-as-root -n 3 '" +
+                              SPIRAL_EXECUTABLE + "' " + common + (dir / "mpi").string() + "' > '" +
+                              (dir / "mpi.log").string() + "' 2>&1";
+  ASSERT_EQ(std::system(command.c_str()), 0) << read_text(dir / "mpi.log");
+  const std::string log = read_text(dir / "mpi.log");
+  EXPECT_NE(log.find("spiral run on 3 MPI ranks"), std::string::npos) << log;
+  EXPECT_NE(log.find("intermediate stage, iteration 1: PASS"), std::string::npos) << log;
+  const auto numbers_one = numbers(dir / "one" / "results.sqlite");
+  EXPECT_GT(numbers_one.size(), 20u);
+  EXPECT_EQ(numbers(dir / "two" / "results.sqlite"), numbers_one);
+  EXPECT_EQ(numbers(dir / "mpi" / "results.sqlite"), numbers_one);
+  // An MPI run resumes a threaded one: everything from the store.
+  const std::string resume = std::string("'") + SPIRAL_MPIEXEC + "' --oversubscribe --allow-run-as-root -n 2 '" +
+                             SPIRAL_EXECUTABLE + "' " + common + (dir / "one").string() + "' > '" +
+                             (dir / "resume.log").string() + "' 2>&1";
+  ASSERT_EQ(std::system(resume.c_str()), 0) << read_text(dir / "resume.log");
+  EXPECT_NE(read_text(dir / "resume.log").find("(6 tasks, 6 from the store"), std::string::npos)
+      << read_text(dir / "resume.log");
+#endif
+}
+
 TEST(CliRun, BadRequestsSayWhichFlag) {
   const auto dir = temp_folder("bad");
   const auto project = oc4_project(dir);

@@ -483,5 +483,32 @@ TEST(ProjectValidation, StageDurationOnlyOnTheAdvancedStageAndPositive) {
                 "stage_duration_positive", "stages[1].duration");
 }
 
+// stages[].optimize, max_iterations (spiral run's feedback) and the
+// intermediate stage's critical_cases.
+TEST(ProjectValidation, StageFeedbackAndCriticalCaseKeys) {
+  const std::string good = kMinimal +
+                           "stages:\n  - {name: preliminary, optimize: true, max_iterations: 5}\n"
+                           "  - {name: intermediate, critical_cases: 2}\n";
+  EXPECT_TRUE(check(good).empty()) << all(check(good));
+  const Project p = parse_project(good, "test.yaml");
+  EXPECT_TRUE(p.stages[0].optimize);
+  EXPECT_EQ(p.stages[0].max_iterations, 5);
+  EXPECT_EQ(p.stages[1].critical_cases.value_or(0), 2);
+  EXPECT_FALSE(parse_project(kMinimal + "stages:\n  - {name: preliminary}\n", "test.yaml").stages[0].optimize);
+  expect_single(check(kMinimal + "stages:\n  - {name: preliminary, max_iterations: 0}\n"), "stage_iterations_positive",
+                "stages[0].max_iterations");
+  expect_single(check(kMinimal + "stages:\n  - {name: advanced, critical_cases: 2}\n"),
+                "stage_critical_cases_intermediate_only", "stages[0].critical_cases");
+  expect_single(check(kMinimal + "stages:\n  - {name: intermediate, critical_cases: 0}\n"),
+                "stage_critical_cases_positive", "stages[0].critical_cases");
+  // YAML 1.2 booleans only: a "yes" is refused with the allowed values.
+  try {
+    parse_project(kMinimal + "stages:\n  - {name: preliminary, optimize: yes}\n", "test.yaml");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("true | false"), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace spiral::design

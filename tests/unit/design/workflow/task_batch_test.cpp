@@ -43,7 +43,7 @@ TEST(TaskBatch, RunsWhatIsMissingStoresFailuresAndReusesBoth) {
   };
   TaskBatch first("preliminary", 1);
   fill(first);
-  first.run(store, 2);
+  first.run(&store, 2);
   EXPECT_EQ(computed.load(), 3);
   EXPECT_EQ(first.done(), 2);
   EXPECT_EQ(first.failed(), 1);
@@ -56,7 +56,7 @@ TEST(TaskBatch, RunsWhatIsMissingStoresFailuresAndReusesBoth) {
   TaskBatch second("intermediate", 1);
   fill(second);
   int progress_calls = 0;
-  second.run(store, 1, [&](const BatchProgress& p) {
+  second.run(&store, 1, [&](const BatchProgress& p) {
     ++progress_calls;
     EXPECT_TRUE(p.last_reused);
   });
@@ -72,7 +72,7 @@ TEST(TaskBatch, OtherErrorsAreRethrownAfterTheFinishedTasksAreStored) {
   TaskBatch batch("preliminary", 1);
   batch.add<StaticCaseResult>(id("ok"), [] { return named("ok"); });
   batch.add<StaticCaseResult>(id("bad"), []() -> StaticCaseResult { throw std::invalid_argument("bad input"); });
-  EXPECT_THROW(batch.run(store, 1), std::invalid_argument);
+  EXPECT_THROW(batch.run(&store, 1), std::invalid_argument);
   EXPECT_TRUE(store.find(task_key(id("ok"))).has_value());
   EXPECT_FALSE(store.find(task_key(id("bad"))).has_value());
 }
