@@ -164,6 +164,14 @@ std::string with_field_values(const std::string& text, const Project& project, c
   return out;
 }
 
+std::string field_value_text(const std::string& text, const Project& project, const std::string& path) {
+  const auto position = project.source_map.find(path);
+  if (position == project.source_map.end())
+    throw std::invalid_argument(fmt::format("{}: the file has no value of its own there (a default applies)", path));
+  const std::size_t at = offset_of(text, position->second.line, position->second.column);
+  return text.substr(at, scalar_length(text, at));
+}
+
 std::string with_line_payouts(const std::string& text, const Project& project,
                               const std::map<std::string, double>& payouts_m, const std::string& header) {
   std::vector<FieldEdit> edits;

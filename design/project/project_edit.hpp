@@ -26,6 +26,10 @@ struct FieldEdit {
 /// has no position for a path (a project built in code, a default value).
 std::string with_field_values(const std::string& text, const Project& project, const std::vector<FieldEdit>& edits);
 
+/// The scalar `text` writes at the field `path` of `project` (loaded from
+/// it), as written. Throws std::invalid_argument as with_field_values.
+std::string field_value_text(const std::string& text, const Project& project, const std::string& path);
+
 /// `text` with the top (fairlead-end) segment of each line in `payouts_m`
 /// lengthened by its payout (m; negative hauls in), the new lengths printed
 /// to 0.1 mm, and `header` (lines that become `# ` comments) put first.

@@ -198,6 +198,8 @@ PYBIND11_MODULE(_spiral, m) {
            [](const ProjectSession& s, const std::string& line, int index) { return s.segment(line, index).type; })
       .def("set_segment_length", &ProjectSession::set_segment_length)
       .def("set_segment_type", &ProjectSession::set_segment_type)
+      .def("set_field", &ProjectSession::set_field, arg("path"), arg("yaml_scalar"))
+      .def("field", &ProjectSession::field, arg("path"))
       .def("load_case_names",
            [](ProjectSession& s) {
              // With the load-case matrix expanded: the names a call may be given.

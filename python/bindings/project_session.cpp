@@ -67,6 +67,32 @@ void ProjectSession::set_segment_type(const std::string& line, int index, const 
   validated_.reset();
 }
 
+void ProjectSession::set_field(const std::string& path, const std::string& yaml_scalar) {
+  std::string text = design::with_field_values(text_, original_, {{path, yaml_scalar}});
+  // Read like the file (relative data files from its folder), then carry
+  // the segment edits made in memory over to the new reading.
+  design::Project reread = design::parse_project(text, file_, std::filesystem::path(file_).parent_path());
+  design::Project edited = reread;
+  const auto& before = original_.mooring.lines;
+  for (std::size_t l = 0; l < before.size() && l < edited.mooring.lines.size(); ++l) {
+    for (std::size_t s = 0; s < before[l].segments.size() && s < edited.mooring.lines[l].segments.size(); ++s) {
+      const design::LineSegment& was = before[l].segments[s];
+      const design::LineSegment& now = edited_.mooring.lines[l].segments[s];
+      design::LineSegment& target = edited.mooring.lines[l].segments[s];
+      if (now.length_m != was.length_m) target.length_m = now.length_m;
+      if (now.type != was.type) target.type = now.type;
+    }
+  }
+  text_ = std::move(text);
+  original_ = std::move(reread);
+  edited_ = std::move(edited);
+  validated_.reset();
+}
+
+std::string ProjectSession::field(const std::string& path) const {
+  return design::field_value_text(text_, original_, path);
+}
+
 const design::ValidatedProject& ProjectSession::validated() {
   if (!validated_) validated_ = design::validate_loaded_project(edited_);
   return *validated_;

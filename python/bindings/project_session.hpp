@@ -49,6 +49,20 @@ class ProjectSession {
   void set_segment_length(const std::string& line, int index, double length_m);
   void set_segment_type(const std::string& line, int index, const std::string& type);
 
+  /// Sets any value the file writes, by its field path as error messages
+  /// name it (`environments[1].waves.hs`, `hull.mass`,
+  /// `line_types[0].breaking_load`) to `yaml_scalar` (a YAML scalar: a
+  /// number, a name, true/false). The edit is made in the file's text at the
+  /// value's own position and the text parsed again, so any field the file
+  /// gives can change, with the same reading and checks as a file; segment
+  /// edits made since stay. Throws std::invalid_argument when the file gives
+  /// no value of its own there (a default), design::InputError when the
+  /// edited text does not parse.
+  void set_field(const std::string& path, const std::string& yaml_scalar);
+  /// The scalar the file writes at `path`, as written (after set_field edits);
+  /// throws std::invalid_argument when there is none.
+  std::string field(const std::string& path) const;
+
   /// The validated project as it is now; throws design::InputError.
   const design::ValidatedProject& validated();
 

@@ -83,7 +83,8 @@ class _Lines(dict):
 class Project:
     """A project loaded from a file and perhaps edited in memory since.
 
-    Editable: ``lines[NAME].segments[j].length`` and ``.type``. Every
+    Editable: ``lines[NAME].segments[j].length`` and ``.type``, and any
+    value the file writes by its field path (``set``/``get``). Every
     analysis validates the project as it is (InputError with the position in
     the file where an edited value was written) and runs on it; ``save``
     writes it back as the file's own text with only the edited values
@@ -118,6 +119,40 @@ class Project:
     @property
     def line_types(self):
         return self._session.line_type_names()
+
+    def get(self, path):
+        """The value the file writes at ``path``, the field path as messages
+        name it (``environments[1].waves.hs``, ``hull.mass``,
+        ``line_types[0].breaking_load``), as written: a string. KeyError when
+        the file gives no value of its own there (a default applies)."""
+        try:
+            return self._session.field(path)
+        except InputError:
+            raise
+        except ValueError as e:
+            raise KeyError(str(e)) from None
+
+    def set(self, path, value):
+        """Sets any value the file writes, by its field path (``get``): a number,
+        a name or a bool. The edit is made where the file writes the value and
+        the project is read again, so it gets the same reading and checks as a
+        file (InputError with the position, at once for a value that does not
+        read, at the next analysis for one that fails a check); ``save``
+        writes it. KeyError when the file gives no value there to replace
+        (write the key in the file first). Segment edits made through
+        ``lines`` stay."""
+        if isinstance(value, bool):
+            scalar = "true" if value else "false"
+        elif isinstance(value, (int, float)):
+            scalar = repr(float(value)) if isinstance(value, float) else str(value)
+        else:
+            scalar = str(value)
+        try:
+            self._session.set_field(path, scalar)
+        except InputError:
+            raise
+        except ValueError as e:  # no value of its own at that path
+            raise KeyError(str(e)) from None
 
     def validate(self):
         """Validates the project as edited; raises InputError."""

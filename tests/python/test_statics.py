@@ -84,3 +84,23 @@ def test_an_edit_shared_through_a_yaml_anchor_is_refused(tmp_path):
     with pytest.raises(spiral.OutputError, match="YAML anchor"):
         p.save(tmp_path / "out.yaml")
     assert not (tmp_path / "out.yaml").exists()
+
+
+def test_any_written_value_is_set_by_its_path_like_an_edit_of_the_file(tmp_path):
+    p = spiral.load(OC4)
+    assert p.get("site.depth") == "200.0"
+    # A sea-state edit: the same numbers as the CLI run of the saved file.
+    p.set("environments[1].waves.hs", 9.5)
+    assert p.get("environments[1].waves.hs") == "9.5"
+    p.lines["L1"].segments[0].length -= 1.0  # segment edits and field edits together
+    variant = tmp_path / "hs.yaml"
+    p.save(variant)
+    text = variant.read_text()
+    assert "hs: 9.5 " in text and "# m; S (RAFT)" in text  # in place, the comment kept
+    assert_same(p.equilibrium(case="intact-raft-jonswap"),
+                cli_json("equilibrium", str(variant), "--case", "intact-raft-jonswap"))
+    # A value the file does not write, and one that does not read.
+    with pytest.raises(KeyError, match="no value of its own"):
+        p.set("environments[1].waves.gamma_not_a_key", 1.0)
+    with pytest.raises(spiral.InputError, match=r"site\.depth"):
+        p.set("site.depth", "deep")
