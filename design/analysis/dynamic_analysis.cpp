@@ -79,20 +79,6 @@ engine::CoefficientTable table_of(const HullLoadCoefficients& c) {
   return {c.headings_rad, c.surge_m2, c.sway_m2, c.yaw_m3};
 }
 
-std::string environment_path(const Project& project, const std::string& name, const char* leaf) {
-  for (std::size_t i = 0; i < project.environments.size(); ++i) {
-    if (project.environments[i].name == name) return fmt::format("environments[{}].{}", i, leaf);
-  }
-  return leaf;
-}
-
-/// Heading outside a hydrodynamic database: an input error at the environment.
-[[noreturn]] void heading_error(const Project& project, const std::string& environment, const std::string& what,
-                                const std::exception& e) {
-  throw InputError({make_issue(project, environment_path(project, environment, "waves.heading_deg"),
-                               "heading_in_database", fmt::format("{}: {}", what, e.what()))});
-}
-
 engine::WaveRealization realize_sea(const Project& project, const Waves& waves, double duration_s, std::uint64_t seed) {
   engine::WaveRealizationInput input;
   input.spectrum = wave_spectrum_of(waves);
@@ -199,13 +185,8 @@ DynamicModel build_dynamic_model(const ValidatedProject& validated, const Dynami
   const Environment& environment = environment_of(project, load_case);
 
   DynamicModel model;
-  try {
-    model.statics =
-        request.statics ? *request.statics : run_static_case(validated, {request.load_case, std::nullopt, false});
-  } catch (const engine::TableRangeError& e) {
-    if (environment.waves) heading_error(project, environment.name, "mean drift (hull.mean_drift)", e);
-    throw;
-  }
+  model.statics =
+      request.statics ? *request.statics : run_static_case(validated, {request.load_case, std::nullopt, false});
   model.timing.equilibrium_s = model.statics.equilibrium_wall_s;
   model.timing.reduction_s = model.statics.stiffness_wall_s;
   model.notes = model.statics.notes;

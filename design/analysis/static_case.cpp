@@ -16,6 +16,7 @@
 #include "engine/analysis/line_array.hpp"
 #include "engine/analysis/static_equilibrium.hpp"
 #include "engine/common/stopwatch.hpp"
+#include "engine/common/table_range_error.hpp"
 
 namespace spiral::design {
 
@@ -132,8 +133,15 @@ StaticCaseResult run_static_case(const ValidatedProject& validated, const Static
     for (engine::FeStaticLine* fe : fe_lines)
       cache->solutions.try_emplace({result.environment, fe->name()}, *fe->last_result());
   }
-  const engine::EquilibriumResult equilibrium =
-      engine::solve_static_equilibrium(hull.statics, lines.lines, environment_load);
+  const engine::EquilibriumResult equilibrium = [&] {
+    try {
+      return engine::solve_static_equilibrium(hull.statics, lines.lines, environment_load);
+    } catch (const engine::TableRangeError& e) {
+      // The hull's yaw at equilibrium turns the relative heading off the data
+      // (e.g. a drift table of one heading and a damaged, yawing hull).
+      heading_error(project, result.environment, "mean environmental loads at the hull's mean yaw", e);
+    }
+  }();
   result.equilibrium_wall_s = start.seconds();
   result.equilibrium_iterations = equilibrium.iterations;
   result.offset = equilibrium.offset;

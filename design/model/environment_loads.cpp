@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "design/project/project_validation.hpp"
 #include "engine/environment/wind.hpp"
 #include "engine/hull/mean_environmental_loads.hpp"
 #include "engine/hull/wamit_12d.hpp"
@@ -134,6 +135,14 @@ MeanEnvironmentLoad mean_environment_load(const Project& project, const Environm
     return load;
   };
   return result;
+}
+
+void heading_error(const Project& project, const std::string& environment, const std::string& what,
+                   const std::exception& e) {
+  std::string path = "waves.heading_deg";
+  for (std::size_t i = 0; i < project.environments.size(); ++i)
+    if (project.environments[i].name == environment) path = fmt::format("environments[{}].waves.heading_deg", i);
+  throw InputError({make_issue(project, path, "heading_in_database", fmt::format("{}: {}", what, e.what()))});
 }
 
 }  // namespace spiral::design

@@ -37,4 +37,10 @@ engine::MeanDriftTable drift_table_of(const Project& project, const MeanDrift& d
 /// Throws engine::FileFormatError for a bad .12d file.
 MeanEnvironmentLoad mean_environment_load(const Project& project, const Environment& environment);
 
+/// A heading outside a table of the hull's data (engine::TableRangeError:
+/// RAOs, drift, coefficients) as the input error it is: at the environment's
+/// waves.heading_deg, problem `heading_in_database`, `what` naming the data.
+[[noreturn]] void heading_error(const Project& project, const std::string& environment, const std::string& what,
+                                const std::exception& e);
+
 }  // namespace spiral::design

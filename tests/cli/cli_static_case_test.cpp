@@ -118,5 +118,17 @@ TEST(CliStaticCase, UnknownCaseIsBadInput) {
   EXPECT_NE(result.err.find("--case"), std::string::npos) << result.err;
 }
 
+// OC4's drift data has one heading (0°); with L1 removed the hull yaws 0.5°
+// and the waves' relative heading leaves the table: the data does not cover
+// the case — bad input at the environment's heading, not an internal error.
+TEST(CliStaticCase, AHeadingOffTheDriftDataIsBadInputAtTheEnvironment) {
+  const CommandResult result =
+      run_spiral("equilibrium " + scenario("oc4-semisubmersible.yaml") + " --case intact-raft-jonswap --damaged L1");
+  EXPECT_EQ(result.exit_code, 2) << result.err;
+  EXPECT_NE(result.err.find("oc4-semisubmersible.yaml:139:20: environments[1].waves.heading_deg"), std::string::npos)
+      << result.err;
+  EXPECT_NE(result.err.find("tabulated headings 0..0 deg"), std::string::npos) << result.err;
+}
+
 }  // namespace
 }  // namespace spiral::test
