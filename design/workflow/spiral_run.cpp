@@ -52,10 +52,6 @@ struct Iteration {
   std::string model_hash;
 };
 
-std::string task_name(const TaskIdentity& id) {
-  return id.case_name.empty() ? id.kind : fmt::format("{} {}", id.kind, id.case_name);
-}
-
 std::string eta(double seconds) {
   return seconds < 90.0 ? fmt::format("{:.0f} s", seconds) : fmt::format("{:.0f} min", seconds / 60.0);
 }
@@ -68,15 +64,22 @@ void run_batch(const RunContext& ctx, TaskBatch& batch, StageRun& stage, const s
   batch.run(
       ctx.store, jobs > 0 ? jobs : ctx.jobs,
       [&](const BatchProgress& p) {
+        const std::string slowest = p.slowest_running.empty() ? ""
+                                                              : fmt::format("; running {} for {:.0f} s",
+                                                                            p.slowest_running, p.slowest_running_s);
+        if (p.heartbeat) {
+          ctx.log(fmt::format("[{} {} {}/{}]{}", p.stage, step, p.finished, p.total, slowest));
+          return;
+        }
         computed += p.last_reused ? 0 : 1;
         // Remaining tasks at the pace of those computed so far (wall clock, all jobs together).
         const std::string remaining =
             computed > 0 && p.finished < p.total
                 ? fmt::format(", ETA {}", eta(start.seconds() / computed * (p.total - p.finished)))
                 : "";
-        ctx.log(fmt::format("[{} {} {}/{}] {} {}{}{}", p.stage, step, p.finished, p.total, p.last_task,
+        ctx.log(fmt::format("[{} {} {}/{}] {} {}{}{}{}", p.stage, step, p.finished, p.total, p.last_task,
                             p.last_reused ? "(stored)" : fmt::format("{:.1f} s", p.last_wall_s),
-                            p.last_failed ? " FAILED" : "", remaining));
+                            p.last_failed ? " FAILED" : "", remaining, slowest));
       },
       ctx.options.cluster);
   stage.tasks += static_cast<int>(batch.size());

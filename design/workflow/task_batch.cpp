@@ -1,7 +1,11 @@
 #include "design/workflow/task_batch.hpp"
 
 #include <algorithm>
+#include <chrono>
+#include <condition_variable>
+#include <map>
 #include <mutex>
+#include <thread>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
@@ -60,7 +64,18 @@ TaskResult decode_row(const Bytes& bytes, std::string& fatal) {
   return row;
 }
 
+void stop_monitor(std::thread& monitor, std::condition_variable& wake, std::mutex& mutex, bool& finished) {
+  {
+    std::lock_guard lock(mutex);
+    finished = true;
+  }
+  wake.notify_all();
+  if (monitor.joinable()) monitor.join();
+}
+
 }  // namespace
+
+std::string task_name(const TaskIdentity& id) { return id.case_name.empty() ? id.kind : id.kind + " " + id.case_name; }
 
 TaskResult TaskBatch::compute_row(Slot& slot, std::any& value) const {
   TaskResult row;
@@ -94,14 +109,27 @@ void TaskBatch::run_threads(ResultsStore& store, int jobs, const std::function<v
   BatchProgress state;
   state.stage = stage_;
   state.total = static_cast<int>(slots_.size());
+  engine::Stopwatch clock;
+  std::map<std::size_t, double> running;  ///< slot → start (clock s), under progress_mutex
+  const auto slowest = [&] {
+    state.slowest_running.clear();
+    state.slowest_running_s = 0.0;
+    for (const auto& [i, start_s] : running) {
+      if (!state.slowest_running.empty() && clock.seconds() - start_s <= state.slowest_running_s) continue;
+      state.slowest_running = task_name(slots_[i].identity);
+      state.slowest_running_s = clock.seconds() - start_s;
+    }
+  };
   const auto report = [&](const Slot& slot, double wall_s) {
     if (!progress) return;
     std::lock_guard lock(progress_mutex);
     ++state.finished;
-    state.last_task = slot.identity.kind + (slot.identity.case_name.empty() ? "" : " " + slot.identity.case_name);
+    state.heartbeat = false;
+    state.last_task = task_name(slot.identity);
     state.last_wall_s = wall_s;
     state.last_failed = slot.error.has_value();
     state.last_reused = slot.reused;
+    slowest();
     progress(state);
   };
 
@@ -129,13 +157,43 @@ void TaskBatch::run_threads(ResultsStore& store, int jobs, const std::function<v
     return expected_length(slots_[a].identity.kind) < expected_length(slots_[b].identity.kind);
   });
 
-  engine::parallel_for(static_cast<int>(pending.size()), std::max(1, jobs), [&](int k) {
-    Slot& slot = slots_[pending[static_cast<std::size_t>(k)]];
-    const TaskResult row = compute_row(slot, slot.value);
-    if (row.status == TaskStatus::failed) slot.error = row.error;
-    store.put(row);
-    report(slot, row.wall_s);
-  });
+  // A heartbeat while long tasks run: what is running and for how long.
+  std::condition_variable wake;
+  bool finished = false;
+  std::thread monitor;
+  if (progress && !pending.empty()) {
+    monitor = std::thread([&] {
+      std::unique_lock lock(progress_mutex);
+      while (!wake.wait_for(lock, std::chrono::duration<double>(heartbeat_s_), [&] { return finished; })) {
+        if (running.empty()) continue;
+        state.heartbeat = true;
+        slowest();
+        progress(state);
+      }
+    });
+  }
+  try {
+    engine::parallel_for(static_cast<int>(pending.size()), std::max(1, jobs), [&](int k) {
+      const std::size_t index = pending[static_cast<std::size_t>(k)];
+      Slot& slot = slots_[index];
+      {
+        std::lock_guard lock(progress_mutex);
+        running[index] = clock.seconds();
+      }
+      const TaskResult row = compute_row(slot, slot.value);
+      if (row.status == TaskStatus::failed) slot.error = row.error;
+      store.put(row);
+      {
+        std::lock_guard lock(progress_mutex);
+        running.erase(index);
+      }
+      report(slot, row.wall_s);
+    });
+  } catch (...) {
+    stop_monitor(monitor, wake, progress_mutex, finished);
+    throw;
+  }
+  stop_monitor(monitor, wake, progress_mutex, finished);
 }
 
 void TaskBatch::run_distributed(ResultsStore* store, const std::function<void(const BatchProgress&)>& progress,
@@ -173,7 +231,7 @@ void TaskBatch::run_distributed(ResultsStore* store, const std::function<void(co
   const auto report = [&](const Slot& slot, double wall_s, bool failed, bool reused) {
     if (!progress) return;
     ++state.finished;
-    state.last_task = slot.identity.kind + (slot.identity.case_name.empty() ? "" : " " + slot.identity.case_name);
+    state.last_task = task_name(slot.identity);
     state.last_wall_s = wall_s;
     state.last_failed = failed;
     state.last_reused = reused;

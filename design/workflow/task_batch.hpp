@@ -21,16 +21,26 @@
 
 namespace spiral::design {
 
-/// Progress of a batch: called after each task (from a worker thread, one
-/// call at a time).
+/// Progress of a batch: called after each task, and every
+/// kHeartbeat_s while tasks run without one finishing (`heartbeat`), from a
+/// worker or monitor thread, one call at a time.
 struct BatchProgress {
   std::string stage;
   int finished = 0, total = 0;  ///< of the batch, reused ones included
-  std::string last_task;        ///< "kind case"
+  std::string last_task;        ///< "kind case" (not set by a heartbeat)
   double last_wall_s = 0.0;
   bool last_failed = false;
   bool last_reused = false;
+  bool heartbeat = false;
+  std::string slowest_running;  ///< the task running longest now, "" when none (threads only)
+  double slowest_running_s = 0.0;
 };
+
+/// Seconds between heartbeats while tasks run (a coupled verification runs minutes).
+inline constexpr double kHeartbeat_s = 15.0;
+
+/// "kind case" (or "kind" for a task without a case), as progress and failures name a task.
+std::string task_name(const TaskIdentity& identity);
 
 class TaskBatch {
  public:
@@ -63,6 +73,9 @@ class TaskBatch {
   void run(ResultsStore* store, int jobs, const std::function<void(const BatchProgress&)>& progress = {},
            const Cluster* cluster = nullptr);
 
+  /// Seconds between heartbeats (default kHeartbeat_s).
+  void set_heartbeat(double seconds) { heartbeat_s_ = seconds; }
+
   std::size_t size() const { return slots_.size(); }
   /// The task's value; nullptr when it failed.
   template <class T>
@@ -93,6 +106,7 @@ class TaskBatch {
   TaskResult compute_row(Slot& slot, std::any& value) const;
   std::string stage_;
   int iteration_;
+  double heartbeat_s_ = kHeartbeat_s;
   std::vector<Slot> slots_;
 };
 

@@ -7,7 +7,10 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <chrono>
 #include <filesystem>
+#include <thread>
+#include <vector>
 
 #include "engine/common/solver_error.hpp"
 
@@ -75,6 +78,25 @@ TEST(TaskBatch, OtherErrorsAreRethrownAfterTheFinishedTasksAreStored) {
   EXPECT_THROW(batch.run(&store, 1), std::invalid_argument);
   EXPECT_TRUE(store.find(task_key(id("ok"))).has_value());
   EXPECT_FALSE(store.find(task_key(id("bad"))).has_value());
+}
+
+TEST(TaskBatch, HeartbeatsNameTheTaskRunningLongest) {
+  ResultsStore store(store_path("heartbeat"), false);
+  TaskBatch batch("advanced", 1);
+  batch.set_heartbeat(0.05);
+  batch.add<StaticCaseResult>(id("slow"), [] {
+    std::this_thread::sleep_for(std::chrono::milliseconds(400));
+    return named("slow");
+  });
+  std::vector<BatchProgress> calls;
+  batch.run(&store, 1, [&](const BatchProgress& p) { calls.push_back(p); });
+  ASSERT_GE(calls.size(), 2u);
+  EXPECT_TRUE(calls.front().heartbeat);
+  EXPECT_EQ(calls.front().slowest_running, "static-case slow");
+  EXPECT_GT(calls.front().slowest_running_s, 0.0);
+  EXPECT_FALSE(calls.back().heartbeat);
+  EXPECT_EQ(calls.back().finished, 1);
+  EXPECT_EQ(calls.back().slowest_running, "");
 }
 
 }  // namespace
