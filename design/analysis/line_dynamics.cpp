@@ -33,12 +33,29 @@ engine::FeDynamicEnvironment dynamic_environment(const Project& project,
   return env;
 }
 
+/// The position at unstretched arc length `s_m` from the anchor along a
+/// profile (linear between its points, its ends held beyond them).
+Eigen::Vector3d profile_position(const std::vector<engine::LineProfilePoint>& profile, double s_m) {
+  if (s_m <= profile.front().arc_length_m) return profile.front().position_g;
+  for (std::size_t i = 1; i < profile.size(); ++i) {
+    const engine::LineProfilePoint& a = profile[i - 1];
+    const engine::LineProfilePoint& b = profile[i];
+    if (s_m <= b.arc_length_m) {
+      const double span = b.arc_length_m - a.arc_length_m;
+      const double t = span > 0.0 ? (s_m - a.arc_length_m) / span : 1.0;
+      return a.position_g + t * (b.position_g - a.position_g);
+    }
+  }
+  return profile.back().position_g;
+}
+
 }  // namespace
 
 DynamicLineSetup dynamic_mooring_line(const Project& project, const MooringLine& line,
                                       const std::vector<LineTypeProperties>& types,
                                       const std::optional<engine::CurrentProfile>& current,
-                                      const Eigen::Vector3d& fairlead_g) {
+                                      const Eigen::Vector3d& fairlead_g,
+                                      const std::vector<engine::LineProfilePoint>* known_shape) {
   DynamicLineSetup setup;
   setup.model = fe_line_model(project, line, types);
   engine::FeLineModel& model = setup.model;
@@ -46,8 +63,25 @@ DynamicLineSetup dynamic_mooring_line(const Project& project, const MooringLine&
   try {
     setup.statics = engine::solve_fe_line_statics(model, setup.environment.statics, {line.anchor_g, fairlead_g});
   } catch (const engine::SolverError& e) {
-    throw engine::SolverError(
-        fmt::format("line {}: FE statics at the static equilibrium failed: {}", line.name, e.what()));
+    // The default start is an inextensible catenary; a taut line whose
+    // touchdown is at the anchor (the slack side of a damaged case) can
+    // defeat Newton from there. The elastic catenary's shape at the same
+    // ends is close to the FE answer (without current and bending).
+    std::string message = e.what();
+    if (known_shape && known_shape->size() >= 2) {
+      engine::FeStaticsOptions options;
+      options.initial_shape = [known_shape](double s_m) { return profile_position(*known_shape, s_m); };
+      try {
+        setup.statics =
+            engine::solve_fe_line_statics(model, setup.environment.statics, {line.anchor_g, fairlead_g}, options);
+        message.clear();
+      } catch (const engine::SolverError& again) {
+        message += fmt::format("; from the elastic catenary's shape: {}", again.what());
+      }
+    }
+    if (!message.empty())
+      throw engine::SolverError(
+          fmt::format("line {}: FE statics at the static equilibrium failed: {}", line.name, message));
   }
   // Polyester: the dynamic EA at each section's mean static tension.
   const std::vector<int> node_section = engine::node_sections(model, setup.statics);

@@ -76,10 +76,14 @@ struct DynamicLineSetup {
 };
 
 /// Throws engine::SolverError naming the line when its statics fail.
+/// `known_shape` (optional): the line's profile from anchor to fairlead at
+/// these ends by another model (the case's elastic catenary): when the FE
+/// Newton from its default initial shape fails, it starts again from this one.
 DynamicLineSetup dynamic_mooring_line(const Project& project, const MooringLine& line,
                                       const std::vector<LineTypeProperties>& types,
                                       const std::optional<engine::CurrentProfile>& current,
-                                      const Eigen::Vector3d& top_g);
+                                      const Eigen::Vector3d& top_g,
+                                      const std::vector<engine::LineProfilePoint>* known_shape = nullptr);
 /// A riser (FE with bending, from its foot to the hang-off at `top_g`).
 DynamicLineSetup dynamic_riser(const Project& project, const RiserDesign& design,
                                const std::optional<engine::CurrentProfile>& current, const Eigen::Vector3d& top_g);

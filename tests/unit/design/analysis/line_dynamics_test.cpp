@@ -11,6 +11,10 @@
 #include <limits>
 #include <numbers>
 
+#include "design/analysis/static_case.hpp"
+#include "design/model/environment_loads.hpp"
+#include "engine/common/rigid_body.hpp"
+#include "engine/common/solver_error.hpp"
 #include "design/model/mooring_model.hpp"
 #include "design/project/validated_project.hpp"
 #include "engine/analysis/line_array.hpp"
@@ -134,6 +138,38 @@ TEST(LineDynamics, NonFiniteMotionIsRejected) {
   LineDynamicsInput in = surge_motion(1.0, 20.0, 40.0);
   in.motion(0, 40) = std::numeric_limits<double>::quiet_NaN();
   EXPECT_THROW(run_line_dynamics(p.project, in), std::invalid_argument);
+}
+
+// The default scenario's L2 in lc3 (L10 removed, the hull 41 m towards L2's
+// side): the taut polyester line's touchdown sits at its anchor and the FE
+// Newton from the default inextensible-catenary start fails; from the case's
+// elastic catenary it converges. Without current it gives the catenary's
+// fairlead tension; the survival current on the slack line lowers it by
+// 18 % (printed), the current-on-lines effect the S-C statics lacks (issue 17).
+TEST(DynamicMooringLine, StartsAgainFromTheElasticCatenaryWhenTheDefaultStartFails) {
+  const ValidatedProject vp = load_validated_project(std::string(SPIRAL_SOURCE_DIR) + "/scenarios/deepwater-fps.yaml");
+  const Project& p = vp.project;
+  StaticCaseRequest request;
+  request.load_case = "lc3-survival-45deg-damaged-L10";
+  const StaticCaseResult statics = run_static_case(vp, request);
+  const auto line =
+      std::find_if(p.mooring.lines.begin(), p.mooring.lines.end(), [](const MooringLine& l) { return l.name == "L2"; });
+  const auto row =
+      std::find_if(statics.lines.begin(), statics.lines.end(), [](const LineStaticsRow& r) { return r.name == "L2"; });
+  ASSERT_NE(row, statics.lines.end());
+  const engine::HullPose pose = engine::pose_from_offset(p.hull.reference_point_g, statics.offset);
+  const Eigen::Vector3d fairlead_g = pose.reference_point_g + pose.rotation * line->fairlead_b;
+  const auto environment = std::find_if(p.environments.begin(), p.environments.end(),
+                                        [&](const Environment& e) { return e.name == statics.environment; });
+  const auto current = current_profile_of(*environment);
+  EXPECT_THROW(dynamic_mooring_line(p, *line, vp.line_types, current, fairlead_g), engine::SolverError);
+  const DynamicLineSetup loaded = dynamic_mooring_line(p, *line, vp.line_types, current, fairlead_g, &row->profile);
+  std::cout << "L2 fairlead tension: catenary " << row->fairlead_tension_N << " N, FE with current "
+            << loaded.statics.node_tension_N.back() << " N\n";
+  // Without the current the two models of the same line between the same
+  // ends agree (FE: 1e-10 force tolerance; the difference is the mesh).
+  const DynamicLineSetup still = dynamic_mooring_line(p, *line, vp.line_types, std::nullopt, fairlead_g, &row->profile);
+  EXPECT_NEAR(still.statics.node_tension_N.back(), row->fairlead_tension_N, 0.01 * row->fairlead_tension_N);
 }
 
 }  // namespace
