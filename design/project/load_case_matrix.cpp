@@ -28,15 +28,23 @@ std::string matrix_case_name(const std::string& base_environment, double heading
 
 std::vector<LoadCase> matrix_load_cases(const Project& project, const LoadCaseMatrixEntry& entry) {
   std::vector<LoadCase> out;
+  // One seed keeps the plain names; several make a case per seed.
+  const auto with_seed = [&](const std::string& name, int seed) {
+    return entry.seeds.size() > 1 ? fmt::format("{}-seed{}", name, seed) : name;
+  };
   for (const double heading : entry.headings_rad) {
     const std::string name = matrix_case_name(entry.environment, heading);
-    out.push_back({name, name, std::nullopt, entry.condition});
-    for (const MooringLine& line : project.mooring.lines) {
-      const bool removed =
-          entry.damaged == MatrixDamage::every_line ||
-          (entry.damaged == MatrixDamage::listed &&
-           std::find(entry.damaged_lines.begin(), entry.damaged_lines.end(), line.name) != entry.damaged_lines.end());
-      if (removed) out.push_back({name + "-without-" + line.name, name, line.name, entry.damaged_condition});
+    for (const int seed : entry.seeds) {
+      out.push_back({with_seed(name, seed), name, std::nullopt, entry.condition, seed});
+      for (const MooringLine& line : project.mooring.lines) {
+        const bool removed =
+            entry.damaged == MatrixDamage::every_line ||
+            (entry.damaged == MatrixDamage::listed &&
+             std::find(entry.damaged_lines.begin(), entry.damaged_lines.end(), line.name) != entry.damaged_lines.end());
+        if (removed)
+          out.push_back(
+              {with_seed(name + "-without-" + line.name, seed), name, line.name, entry.damaged_condition, seed});
+      }
     }
   }
   return out;

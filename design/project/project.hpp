@@ -385,6 +385,9 @@ struct LoadCase {
   std::string environment;                               ///< name of an `environments` entry
   std::optional<std::string> damaged_line;               ///< name of a mooring line removed in this case
   DesignCondition condition = DesignCondition::extreme;  ///< selects the riser design factor
+  /// The seed of the case's wave and wind realizations in the stages' storms
+  /// and verification runs (`seed`, an integer >= 1): the same seed, the same sea.
+  int seed = 1;
 };
 
 /// The line integrity a load-case matrix entry covers (`load_case_matrix[i].damaged`).
@@ -400,6 +403,9 @@ struct LoadCaseMatrixEntry {
   MatrixDamage damaged = MatrixDamage::none;
   std::vector<std::string> damaged_lines;                         ///< MatrixDamage::listed
   DesignCondition damaged_condition = DesignCondition::survival;  ///< of the damaged cases
+  /// Seeds of the realizations (`seeds`, integers >= 1, distinct): with more
+  /// than one, every case is made once per seed, named `<case>-seed<k>`.
+  std::vector<int> seeds{1};
 };
 
 enum class MooringCode { api_rp_2sk, dnv_os_e301 };

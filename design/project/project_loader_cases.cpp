@@ -61,6 +61,7 @@ LoadCase read_load_case(MapReader& r) {
   assign(load_case.environment, r.text("environment", kRequired));
   load_case.damaged_line = r.text("damaged_line", kOptional);
   assign(load_case.condition, r.enumeration("condition", kDesignConditions, kOptional));
+  assign(load_case.seed, r.integer("seed", kOptional));
   return load_case;
 }
 
@@ -70,6 +71,17 @@ LoadCaseMatrixEntry read_load_case_matrix_entry(MapReader& r) {
   assign(entry.headings_rad, r.angles("headings", kRequired));
   assign(entry.condition, r.enumeration("condition", kDesignConditions, kOptional));
   assign(entry.damaged_condition, r.enumeration("damaged_condition", kDesignConditions, kOptional));
+  if (const auto node = r.child("seeds", kOptional, "a list of integers")) {
+    const std::string path = r.path_of("seeds");
+    if (!node->IsSequence()) {
+      r.context().add(node->Mark(), path, fmt::format("expected a list of integers, got {}", describe(*node)),
+                      "wrong_type");
+    } else {
+      entry.seeds.clear();
+      for (std::size_t i = 0; i < node->size(); ++i)
+        if (const auto seed = to_integer(r.context(), (*node)[i], index_path(path, i))) entry.seeds.push_back(*seed);
+    }
+  }
   // `damaged`: none | every_line, or a list of line names.
   if (const auto node = r.child("damaged", kOptional, "none, every_line or a list of lines")) {
     const std::string path = r.path_of("damaged");

@@ -60,6 +60,7 @@ void check_load_cases(const Project& p, Reporter& r) {
       r.fail(at + ".environment", "environment_defined",
              fmt::format("undefined environment \"{}\"{}", c.environment, defined_list(p.environments)));
     }
+    if (c.seed < 1) r.fail(at + ".seed", "seed_positive", fmt::format("must be >= 1, got {}", c.seed));
     if (c.damaged_line && !defined(p.mooring.lines, *c.damaged_line)) {
       r.fail(at + ".damaged_line", "line_defined",
              fmt::format("undefined mooring line \"{}\"{}", *c.damaged_line, defined_list(p.mooring.lines)));
@@ -99,6 +100,14 @@ void check_load_case_matrix(const Project& p, Reporter& r) {
                fmt::format("undefined mooring line \"{}\"{}", m.damaged_lines[k], defined_list(p.mooring.lines)));
         headings_ok = false;
       }
+    }
+    if (m.seeds.empty()) r.fail(at + ".seeds", "matrix_seeds_given", "needs at least one seed");
+    for (std::size_t k = 0; k < m.seeds.size(); ++k) {
+      const std::string sat = fmt::format("{}.seeds[{}]", at, k);
+      if (m.seeds[k] < 1) r.fail(sat, "seed_positive", fmt::format("must be >= 1, got {}", m.seeds[k]));
+      for (std::size_t j = 0; j < k; ++j)
+        if (m.seeds[j] == m.seeds[k])
+          r.fail(sat, "matrix_seeds_distinct", fmt::format("repeats seed {} (seeds[{}])", m.seeds[k], j));
     }
     if (!headings_ok) continue;
     // Generated names must not meet the written ones or another entry's.

@@ -82,6 +82,7 @@ CriticalCaseVerification verify_critical_case(const ValidatedProject& vp, const 
   const StaticCaseResult& statics = stage.statics.cases[ranked.case_index];
   base.load_case = statics.case_name;
   base.statics = &statics;
+  base.seed = static_cast<std::uint64_t>(case_seed(vp.project, statics.case_name));  // both levels, one sea
   const SozResult* zone = stage.statics.soz ? &*stage.statics.soz : nullptr;
   const std::string selection = fmt::format("critical case #{} of the intermediate ranking", ranked.rank);
   CriticalCaseVerification v;

@@ -60,6 +60,12 @@ StormChannel summarize_storm_channel(std::string name, std::string unit, std::ve
   return c;
 }
 
+int case_seed(const Project& project, const std::string& case_name) {
+  for (const LoadCase& c : project.load_cases)
+    if (c.name == case_name) return c.seed;
+  return 1;
+}
+
 StageDynamics run_stage_dynamics(const ValidatedProject& vp, const StaticCaseResult& statics, AnalysisLevel level,
                                  const SozResult* zone, std::string selection) {
   engine::Stopwatch start;
@@ -68,7 +74,7 @@ StageDynamics run_stage_dynamics(const ValidatedProject& vp, const StaticCaseRes
   request.level = level;
   request.duration_s = kStormDuration_s;
   request.output_step_s = kStormOutputStep_s;
-  request.seed = 1;
+  request.seed = case_seed(vp.project, statics.case_name);
   request.statics = &statics;
   const DynamicAnalysisResult r = run_dynamic_analysis(vp, request);
   StageDynamics out = summarize_stage_dynamics(vp, statics, request, r, zone, std::move(selection));

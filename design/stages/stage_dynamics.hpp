@@ -86,6 +86,9 @@ struct StageDynamics {
 /// Channel statistics of a uniformly sampled record (dt_s > 0).
 StormChannel summarize_storm_channel(std::string name, std::string unit, std::vector<double> values, double dt_s);
 
+/// The load case's seed (LoadCase::seed), 1 for still water or an unknown name.
+int case_seed(const Project& project, const std::string& case_name);
+
 /// MBL of the fairlead (top) segment of a mooring line; 0 for an unknown line.
 double fairlead_segment_mbl(const ValidatedProject& project, const std::string& line_name);
 

@@ -22,9 +22,8 @@ namespace spiral::design {
 
 namespace {
 
-/// The storms of every stage: 3 h at 0.5 s, seed 1 (stage_dynamics.hpp).
+/// The storms of every stage: 3 h at 0.5 s, the case's seed (stage_dynamics.hpp).
 constexpr const char* kStormOptions = "duration_s=10800 output_step_s=0.5";
-constexpr std::uint64_t kStormSeed = 1;
 
 /// What one run shares between its stages.
 struct RunContext {
@@ -222,7 +221,8 @@ StaticStageResults reduce_parts(const Iteration& it, const StaticParts& parts, c
 }
 
 TaskIdentity storm_identity(const Iteration& it, const std::string& case_name) {
-  return identity(it, "storm", case_name, to_string(AnalysisLevel::semi_coupled_enhanced), kStormSeed, kStormOptions);
+  return identity(it, "storm", case_name, to_string(AnalysisLevel::semi_coupled_enhanced),
+                  static_cast<std::uint64_t>(case_seed(it.project->project, case_name)), kStormOptions);
 }
 
 void finish(StageRun& stage, bool pass, std::string governing, const engine::Stopwatch& start) {
@@ -342,7 +342,8 @@ StageRun run_advanced(const RunContext& ctx, const Iteration& it, const Intermed
     // The rank and score are the intermediate stage's; they enter the key so
     // that a changed ranking does not reuse a record that names another rank.
     batch.add<CriticalCaseVerification>(
-        identity(it, "verification", name, to_string(AnalysisLevel::coupled), base.seed,
+        identity(it, "verification", name, to_string(AnalysisLevel::coupled),
+                 static_cast<std::uint64_t>(case_seed(vp.project, name)),
                  fmt::format("duration_s={} output_step_s={} max_steps={} rank={} score={:.17g}", base.duration_s,
                              base.output_step_s, max_steps, ranked.rank, ranked.score)),
         [&vp, &intermediate, &ranked, base, max_steps] {

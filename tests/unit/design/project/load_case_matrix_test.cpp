@@ -79,6 +79,39 @@ TEST(LoadCaseMatrix, ListedLinesOnly) {
   EXPECT_EQ(cases[1].name, "storm@h030-without-L1");
 }
 
+// seeds: one case per seed (the realization), named so; a written case has its own seed.
+TEST(LoadCaseMatrix, SeedsMakeACasePerSeedAndCasesKeepTheirSeed) {
+  Project p = parse_project(
+      with_matrix("  - {environment: storm, headings_deg: [0.0], damaged: [L1], seeds: [3, 7]}\n"), "test.yaml");
+  const std::vector<LoadCase> cases = matrix_load_cases(p, p.load_case_matrix[0]);
+  ASSERT_EQ(cases.size(), 4u);
+  EXPECT_EQ(cases[0].name, "storm@h000-seed3");
+  EXPECT_EQ(cases[0].seed, 3);
+  EXPECT_EQ(cases[1].name, "storm@h000-without-L1-seed3");
+  EXPECT_EQ(cases[3].name, "storm@h000-without-L1-seed7");
+  EXPECT_EQ(cases[3].seed, 7);
+  EXPECT_EQ(cases[3].environment, "storm@h000");
+  // One seed keeps the plain names.
+  Project one = parse_project(with_matrix("  - {environment: storm, headings_deg: [0.0], seeds: [5]}\n"), "test.yaml");
+  EXPECT_EQ(matrix_load_cases(one, one.load_case_matrix[0])[0].name, "storm@h000");
+  EXPECT_EQ(matrix_load_cases(one, one.load_case_matrix[0])[0].seed, 5);
+  // A written case: seed 1 unless it says.
+  EXPECT_EQ(parse_project(kMinimal, "test.yaml").load_cases[0].seed, 1);
+  EXPECT_EQ(
+      parse_project(replace(kMinimal, "{name: lc1, environment: calm}", "{name: lc1, environment: calm, seed: 4}"),
+                    "test.yaml")
+          .load_cases[0]
+          .seed,
+      4);
+  const std::string issues =
+      report(with_matrix("  - {environment: storm, headings_deg: [0.0], seeds: [2, 0, 2]}\n") + "");
+  EXPECT_NE(issues.find("load_case_matrix[0].seeds[1]: must be >= 1, got 0"), std::string::npos) << issues;
+  EXPECT_NE(issues.find("load_case_matrix[0].seeds[2]: repeats seed 2 (seeds[0])"), std::string::npos) << issues;
+  const std::string written =
+      report(replace(kMinimal, "{name: lc1, environment: calm}", "{name: lc1, environment: calm, seed: 0}"));
+  EXPECT_NE(written.find("load_cases[0].seed: must be >= 1, got 0"), std::string::npos) << written;
+}
+
 TEST(LoadCaseMatrix, BadEntriesAreReportedWithPositions) {
   const std::string issues =
       report(with_matrix("  - {environment: gale, headings_deg: [0.0]}\n"

@@ -226,6 +226,20 @@ TEST(SpiralRun, FeedbackOptimizesTheFailingOffsetAndTheNextIterationPasses) {
   EXPECT_EQ(again.stages[1].model_hash, r.stages[1].model_hash);
 }
 
+TEST(SpiralRun, EveryStormOfACaseUsesItsSeed) {
+  const auto project = oc4_variant("seed", "{name: intact-raft-jonswap, environment: raft-jonswap}",
+                                   "{name: intact-raft-jonswap, environment: raft-jonswap, seed: 3}");
+  SpiralRunOptions options;
+  options.out_folder = project.parent_path() / "out";
+  const SpiralRunResult r = run_spiral(project, options);
+  ASSERT_TRUE(r.completed);
+  EXPECT_EQ(r.stages[0].preliminary->dynamics->seed, 3u);
+  for (const RankedCase& c : r.stages[1].intermediate->ranked)
+    EXPECT_EQ(c.storm.seed, c.storm.case_name == "intact-raft-jonswap" ? 3u : 1u) << c.storm.case_name;
+  for (const CriticalCaseVerification& v : r.stages[2].advanced->cases)
+    EXPECT_EQ(v.comparison.seed, v.case_name == "intact-raft-jonswap" ? 3u : 1u) << v.case_name;
+}
+
 TEST(SpiralRun, AnUnknownLastStageIsARequestError) {
   const auto project = oc4_variant("until");
   SpiralRunOptions options;
