@@ -288,5 +288,66 @@ TEST(MoorDynImport, AnchorBelowTheSeabedIsAnError) {
       << message;
 }
 
+// A v2 deck with a coupled body: fairleads on Body1 (body frame), a bridle
+// (a Free point joining three lines) that spiral cannot represent, a buoy at
+// a joint, Fortran `D` exponents and trailing comments.
+const std::string kBodies = R"(--------------------- MoorDyn Input File ------------------------------------
+Body deck
+---------------------- LINE TYPES ----------------------------------------------
+TypeName Diam Mass/m EA BA/-zeta EI Cd Ca CdAx CaAx
+(name) (m) (kg/m) (N) (N-s/-) (N-m^2) (-) (-) (-) (-)
+wire 0.08 40.0 6.0D8 -1 0 1.2 1.0 0.01 0.0   # a steel wire
+---------------------- BODIES ---------------------------------------
+ID Attachment X0 Y0 Z0 r0 p0 y0 Mass CG* I* Volume CdA* Ca*
+(#) (word) (m) (m) (m) (deg) (deg) (deg) (kg) (m) (kg-m^2) (m^3) (m^2) (-)
+1 coupled 10 0 0 0 0 0 0 0 0 0 0 0
+2 free -300 0 -50 0 0 0 0 0 0 0 0 0
+---------------------- POINTS --------------------------------------------------
+ID Attachment X Y Z Mass Volume CdA Ca
+(#) (-) (m) (m) (m) (kg) (m^3) (m^2) (-)
+1 Fixed -600 0 -100 0 0 0 0
+2 Free -300 0 -60 100 2.0 0 0
+3 Body1 -20 0 -5 0 0 0 0
+4 Fixed 600 0 -100 0 0 0 0
+5 Free 300 0 -60 0 0 0 0
+6 Body1 20 0 -5 0 0 0 0
+7 Body1 20 5 -5 0 0 0 0
+---------------------- LINES ---------------------------------------------------
+ID LineType AttachA AttachB UnstrLen NumSegs LineOutputs
+(#) (name) (#) (#) (m) (-) (-)
+1 wire 1 2 320 32 -
+2 wire 2 3 300 30 -
+3 wire 4 5 320 32 -
+4 wire 5 6 300 30 -
+5 wire 5 7 300 30 -
+---------------------- OPTIONS -------------------------------------------------
+100 WtrDpth ! depth
+---------------------- OUTPUTS -------------------------------------------------
+END
+------------------------- need this line ---------------------------------------
+)";
+
+TEST(MoorDynImport, CoupledBodyBridlesAndBuoys) {
+  const MoorDynDeck deck = parse_moordyn_deck(kBodies, "bodies.dat");
+  EXPECT_EQ(deck.line_types[0].EA_N, 6.0e8);  // Fortran exponent
+  EXPECT_EQ(deck.line_types[0].CaAx, 0.0);    // the comment is not a column
+  ASSERT_EQ(deck.bodies.size(), 2u);
+  EXPECT_EQ(deck.points[2].kind, MoorDynPointKind::body);
+  EXPECT_EQ(deck.points[2].body, 1);
+  const MoorDynImport imported = import_moordyn(deck);
+  const Project& p = imported.project;
+  EXPECT_EQ(p.hull.reference_point_g, Eigen::Vector3d(10, 0, 0));  // the coupled body's origin
+  ASSERT_EQ(p.mooring.lines.size(), 1u);                           // the bridled line is not representable
+  const MooringLine& l = p.mooring.lines[0];
+  EXPECT_EQ(l.fairlead_b, Eigen::Vector3d(-20, 0, -5));  // Body1 points are in the body frame
+  ASSERT_EQ(l.attachments.size(), 1u);
+  EXPECT_EQ(l.attachments[0].kind, AttachmentKind::buoy);  // 2 m³ of water > 100 kg
+  std::string notes;
+  for (const std::string& n : imported.notes) notes += n + "\n";
+  for (const char* expected : {"point 5 (line 19) joins 3 lines", "MoorDyn line 3 ", "MoorDyn line 4 ",
+                               "MoorDyn line 5 ", "body 2 (line 11, free)"})
+    EXPECT_NE(notes.find(expected), std::string::npos) << expected << " not in\n" << notes;
+}
+
 }  // namespace
 }  // namespace spiral::design

@@ -20,9 +20,12 @@
 namespace spiral::design {
 namespace {
 
-void expect_round_trip(const std::string& scenario) {
-  SCOPED_TRACE(scenario);
-  const ValidatedProject original = load_validated_project(std::string(SPIRAL_SOURCE_DIR) + "/scenarios/" + scenario);
+ValidatedProject scenario_project(const std::string& scenario) {
+  return load_validated_project(std::string(SPIRAL_SOURCE_DIR) + "/scenarios/" + scenario);
+}
+
+void expect_round_trip(const ValidatedProject& original) {
+  SCOPED_TRACE(original.project.name);
   const std::string deck = export_moordyn(original.project, original.line_types);
   const MoorDynImport back = import_moordyn(parse_moordyn_deck(deck, "exported.dat"));
   const Project& p = original.project;
@@ -63,6 +66,7 @@ void expect_round_trip(const std::string& scenario) {
     ASSERT_EQ(b.attachments.size(), a.attachments.size());
     for (std::size_t k = 0; k < a.attachments.size(); ++k) {
       EXPECT_EQ(b.attachments[k].after_segment, a.attachments[k].after_segment);
+      EXPECT_EQ(b.attachments[k].kind, a.attachments[k].kind);
       EXPECT_EQ(b.attachments[k].mass_kg, a.attachments[k].mass_kg);
       EXPECT_EQ(b.attachments[k].volume_m3, a.attachments[k].volume_m3);
     }
@@ -79,8 +83,18 @@ void expect_round_trip(const std::string& scenario) {
   EXPECT_NO_THROW(validate_loaded_project(parse_project(moordyn_import_yaml(back, "exported.dat"), "back.yaml")));
 }
 
-TEST(MoorDynRoundTrip, Oc4Scenario) { expect_round_trip("oc4-semisubmersible.yaml"); }
-TEST(MoorDynRoundTrip, DeepwaterScenarioWithRisers) { expect_round_trip("deepwater-fps.yaml"); }
+TEST(MoorDynRoundTrip, Oc4Scenario) { expect_round_trip(scenario_project("oc4-semisubmersible.yaml")); }
+TEST(MoorDynRoundTrip, DeepwaterScenarioWithRisers) { expect_round_trip(scenario_project("deepwater-fps.yaml")); }
+
+// Joints with a clump and a buoy become Free points with mass and volume and come back.
+TEST(MoorDynRoundTrip, AttachmentsAtJoints) {
+  ValidatedProject p = scenario_project("oc4-semisubmersible.yaml");
+  MooringLine& line = p.project.mooring.lines[0];
+  line.segments = {{"chain76", 300.0}, {"chain76", 235.35}, {"chain76", 300.0}};
+  line.attachments = {{0, AttachmentKind::clump, 5000.0, 0.25}, {1, AttachmentKind::buoy, 800.0, 12.5}};
+  line.fe.element_length_m = 7.5;
+  expect_round_trip(validate_loaded_project(p.project));
+}
 
 TEST(MoorDynExport, RisersCarryTheirBendingStiffness) {
   const ValidatedProject p = load_validated_project(std::string(SPIRAL_SOURCE_DIR) + "/scenarios/deepwater-fps.yaml");
