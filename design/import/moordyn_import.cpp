@@ -204,9 +204,9 @@ class Importer {
         in.breaking_load_N = kPlaceholderMblPerEA * t.EA_N;
         out_.placeholder_breaking_loads.push_back(t.name);
         out_.notes.push_back(fmt::format(
-            "line type {}: MoorDyn gives no breaking load; breaking_load is a PLACEHOLDER ({:.4g} N = 1 % of EA) "
+            "line type {}: MoorDyn gives no breaking load; breaking_load is a PLACEHOLDER ({:.4g} N = {} % of EA) "
             "so the file validates: replace it with the data-sheet MBL before any code check",
-            t.name, *in.breaking_load_N));
+            t.name, *in.breaking_load_N, 100.0 * kPlaceholderMblPerEA));
       }
       if (t.EA_text.find('|') != std::string::npos)
         out_.notes.push_back(
@@ -472,7 +472,9 @@ std::string moordyn_import_yaml(const MoorDynImport& imported, const std::string
     y += fmt::format("    mass_per_length: {}\n", num(*t.mass_per_length_kg_per_m));
     y += fmt::format("    axial_stiffness: {}\n", num(*t.axial_stiffness_N));
     y += fmt::format("    breaking_load: {}{}\n", num(*t.breaking_load_N),
-                     placeholder ? "  # PLACEHOLDER: MoorDyn gives no MBL (1 % of EA); replace it" : "");
+                     placeholder ? fmt::format("  # PLACEHOLDER: MoorDyn gives no MBL ({} % of EA); replace it",
+                                               100.0 * kPlaceholderMblPerEA)
+                                 : std::string());
     y += fmt::format("    drag_normal: {}  # MoorDyn Cd, on d\n", num(*t.drag_normal));
     y += fmt::format("    drag_axial: {}  # MoorDyn CdAx, on pi d\n", num(*t.drag_axial));
     y += fmt::format("    added_mass_normal: {}  # MoorDyn Ca\n", num(*t.added_mass_normal));

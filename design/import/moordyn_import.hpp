@@ -42,11 +42,14 @@ struct MoorDynImport {
   std::vector<std::string> placeholder_breaking_loads;
 };
 
-/// Placeholder MBL of a line type the deck gives none for: 1 % of EA, a
-/// round figure in the range of steel chain and wire (R3 chain's MBL/EA is
-/// 0.7-1 %: docs/line-types.md formulas), so the file validates; the written
-/// project says it is a placeholder at the value and in the header.
-inline constexpr double kPlaceholderMblPerEA = 0.01;
+/// Placeholder MBL of a line type the deck gives none for, as a fraction of
+/// its EA: 0.5 %, below what the usual mooring materials have (R3 studless
+/// chain 0.65 % at 76 mm — the OC4 scenario's 4.884 MN on 7.536e8 N — and
+/// ~0.75 % at 185 mm with the docs/line-types.md formulas; wire rope ~1 %;
+/// polyester 5-10 %), so a code check run on it by mistake errs on the safe
+/// side. The file validates with it; the written project says it is a
+/// placeholder at the value and in the header.
+inline constexpr double kPlaceholderMblPerEA = 0.005;
 
 /// Maps a deck to a project. The water depth is `options.depth_m`, else the
 /// deck's WtrDpth, else (MoorDyn-F v1 decks take it from HydroDyn) the depth
