@@ -26,7 +26,8 @@ int main(int argc, char** argv) {
   const std::unique_ptr<app::Command> commands[] = {
       app::run_command(),         app::results_command(),   app::validate_command(), app::statics_command(),
       app::equilibrium_command(), app::stiffness_command(), app::report_command(),   app::soz_command(),
-      app::optimize_command(),    app::study_command(),     app::analyze_command(),  app::compare_command()};
+      app::optimize_command(),    app::study_command(),     app::analyze_command(),  app::compare_command(),
+      app::import_command(),      app::export_command()};
   for (const auto& command : commands) command->add_to(cli);
 
   try {

@@ -51,5 +51,7 @@ std::unique_ptr<Command> optimize_command();
 std::unique_ptr<Command> study_command();
 std::unique_ptr<Command> run_command();
 std::unique_ptr<Command> results_command();
+std::unique_ptr<Command> import_command();
+std::unique_ptr<Command> export_command();
 
 }  // namespace spiral::app

@@ -6,7 +6,7 @@
 # lower rank, never a higher one and never a sibling of the same rank.
 #   top level: engine 0 <- design 1 <- report 2, python 2 <- app 3
 #   engine:    common 0 <- numerics 1 <- environment 2 <- lines 3, hull 3 <- analysis 4
-#   design:    project 0 <- model 1 <- criteria 2 <- analysis 3 <- soz 4 <- optimization 5 <- stages 6 <- results 7 <- workflow 8
+#   design:    project 0 <- model 1 <- {criteria 2, import 2} <- analysis 3 <- soz 4 <- optimization 5 <- stages 6 <- results 7 <- workflow 8
 # Also: design/project includes no engine header (the project model is plain
 # data), and engine includes no yaml-cpp (YAML belongs to design).
 if(NOT ROOT)
@@ -27,6 +27,7 @@ set(rank_engine_analysis 4)
 set(rank_design_project 0)
 set(rank_design_model 1)
 set(rank_design_criteria 2)
+set(rank_design_import 2)  # MoorDyn decks in and out: needs project and model only
 set(rank_design_analysis 3)
 set(rank_design_soz 4)
 set(rank_design_optimization 5)

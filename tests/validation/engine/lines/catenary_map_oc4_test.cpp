@@ -15,6 +15,7 @@
 
 #include "engine/lines/catenary.hpp"
 #include "support/expect_near.hpp"
+#include "support/map_summary.hpp"
 
 namespace spiral::engine {
 namespace {
@@ -23,32 +24,7 @@ namespace {
 // same geometry yet differ by 2.5e-6 in the .sum; 2e-5 as in the brief.
 constexpr double kMapRelTol = 2e-5;
 
-struct MapLine {
-  double Lb_m, H_N, V_N, T_N, HAnch_N;
-};
-
-// Reads the per-line table of a MAP++ .sum file (rows "Lb", "H", "V", "T", "HAnch").
-std::vector<MapLine> read_map_sum(const std::string& path) {
-  std::ifstream in(path);
-  EXPECT_TRUE(in.good()) << "cannot open " << path;
-  std::vector<MapLine> lines;
-  std::string row;
-  while (std::getline(in, row)) {
-    std::stringstream ss(row);
-    std::string key;
-    ss >> key;
-    const auto bar = row.find('|');
-    if (bar == std::string::npos) continue;
-    const double value = std::atof(row.c_str() + bar + 1);
-    if (key == "Lb") lines.push_back({value, 0, 0, 0, 0});
-    if (lines.empty()) continue;
-    if (key == "H") lines.back().H_N = value;
-    if (key == "V") lines.back().V_N = value;
-    if (key == "T") lines.back().T_N = value;
-    if (key == "HAnch") lines.back().HAnch_N = value;
-  }
-  return lines;
-}
+using test::read_map_sum;
 
 TEST(CatenaryMapOC4, ThreeLinesMatchMapSummary) {
   const auto map = read_map_sum(std::string(SPIRAL_TEST_DATA_DIR) +
