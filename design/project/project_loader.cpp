@@ -95,11 +95,16 @@ Project parse_project(std::string_view yaml_text, std::string source_name,
 
 Project load_project(const std::filesystem::path& file, const std::optional<std::filesystem::path>& data_folder) {
   std::ifstream in(file, std::ios::binary);
-  if (!in) {
+  // A folder opens as an empty stream on Linux: say what it is.
+  std::error_code ec;
+  const bool folder = std::filesystem::is_directory(file, ec);
+  if (!in || folder) {
     InputIssue issue;
     issue.file = file.string();
-    issue.message = std::filesystem::exists(file) ? "cannot read the project file" : "project file not found";
-    issue.problem = "missing_file";
+    issue.message = folder                          ? "is a folder, not a project file (give the .yaml file in it)"
+                    : std::filesystem::exists(file) ? "cannot read the project file"
+                                                    : "project file not found";
+    issue.problem = folder ? "not_a_file" : "missing_file";
     throw InputError({issue});
   }
   std::ostringstream text;

@@ -317,6 +317,18 @@ TEST(ProjectLoader, MissingFileNamesTheFile) {
   }
 }
 
+TEST(ProjectLoader, AFolderIsSaidToBeAFolder) {
+  const std::string folder = std::string(SPIRAL_SOURCE_DIR) + "/scenarios";
+  try {
+    load_project(folder);
+    FAIL() << "no InputError";
+  } catch (const InputError& e) {
+    ASSERT_EQ(e.issues().size(), 1u);
+    EXPECT_EQ(e.issues()[0].problem, "not_a_file");
+    EXPECT_EQ(std::string(e.what()), folder + ": is a folder, not a project file (give the .yaml file in it)");
+  }
+}
+
 TEST(ProjectLoader, AllErrorsOfAFileAreReportedTogetherInFileOrder) {
   std::string text = replace(kMinimal, "depth: 100.0", "depth: deep");
   text = replace(text, "kind: user", "kind: rope");
