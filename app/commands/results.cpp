@@ -24,6 +24,8 @@ class ResultsCommand : public Command {
     const design::StoreSummary s = design::open_existing_store(project_file_)->summary();
     if (json_) {
       nlohmann::json j;
+      j["format"] = "spiral.results";
+      j["format_version"] = 1;
       j["schema_version"] = s.schema_version;
       j["runs"] = s.runs;
       j["tasks"] = {{"done", s.tasks_done}, {"failed", s.tasks_failed}};

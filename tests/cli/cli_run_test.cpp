@@ -105,6 +105,7 @@ TEST(CliRun, Oc4ThroughEveryStageWithReportsAndAStoreThatResults) {
   const CommandResult summary = run_spiral("results '" + out.string() + "' --json");
   ASSERT_EQ(summary.exit_code, 0) << summary.err;
   const nlohmann::json j = nlohmann::json::parse(summary.out);
+  EXPECT_EQ(j["format"], "spiral.results");
   EXPECT_EQ(j["schema_version"], 1);
   EXPECT_EQ(j["tasks"]["done"], 8);
   EXPECT_EQ(j["tasks"]["failed"], 0);
