@@ -168,6 +168,31 @@ TEST(CliRun, AKilledRunResumesWithExactlyTheUnfinishedTasks) {
   EXPECT_EQ(numbers(store), numbers(whole / "results.sqlite"));
 }
 
+// The feedback iteration end to end: OC4 with an offset limit of 0.5 % of
+// depth fails in the storm case, the optimizer hauls the chains in, the
+// second iteration passes, and the summary report shows both.
+TEST(CliRun, TheSummaryReportShowsTheFeedbackIterations) {
+  const auto dir = temp_folder("feedback");
+  const auto project = oc4_project(dir);
+  std::string text = read_text(project);
+  const std::string limit = "max_offset_pct_depth: 10.0";
+  text.replace(text.find(limit), limit.size(), "max_offset_pct_depth: 0.5");
+  std::ofstream(project) << text;
+  const auto out = dir / "out";
+  const CommandResult r = run_spiral("run '" + project.string() + "' --out '" + out.string() + "' --until preliminary");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("preliminary  iteration 2  PASS"), std::string::npos) << r.out;
+  const std::string iterations = read_text(out / "summary" / "tables" / "spiral-iterations.csv");
+  std::size_t rows = 0;
+  for (char c : iterations) rows += c == '\n' ? 1 : 0;
+  EXPECT_EQ(rows, 3u) << iterations;  // header + iterations 1 and 2
+  const std::string payouts = read_text(out / "summary" / "tables" / "spiral-payouts-2.csv");
+  EXPECT_NE(payouts.find("L1"), std::string::npos) << payouts;
+  EXPECT_TRUE(std::filesystem::exists(out / "iterations" / "iteration-2.yaml"));
+  // The written iteration is a valid project (its data found from the original folder).
+  EXPECT_NE(read_text(out / "iterations" / "iteration-2.yaml").find("spiral run iteration 2"), std::string::npos);
+}
+
 TEST(CliRun, ASolverFailureIsRecordedReportedAndExitsThree) {
   const auto dir = temp_folder("failure");
   const auto project = oc4_project(dir);
