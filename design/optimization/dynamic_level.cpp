@@ -20,14 +20,14 @@ namespace {
 // constant (no waves, no gusts): its extreme is its value (soz_check.cpp).
 constexpr double kConstantChannel = 1e-12;
 
-/// The Weibull (or Gumbel) 3-h MPM of a channel, or its largest sample when
-/// it is constant or too short to fit.
-double mpm_of(const std::vector<double>& x, double dt_s, bool weibull) {
+/// The Gumbel 3-h MPM of a tension channel (the stages' tension rule,
+/// stage_dynamics.hpp), or its largest sample when it is constant or too
+/// short to fit.
+double gumbel_mpm(const std::vector<double>& x, double dt_s) {
   const engine::ChannelMoments m = engine::channel_moments(x);
   if (m.std_dev <= kConstantChannel * std::max(1.0, std::abs(m.mean))) return m.maximum;
   try {
-    const engine::ExtremeEstimate e = engine::most_probable_maximum(x, dt_s);
-    return weibull ? e.mpm_weibull : e.mpm_gumbel;
+    return engine::most_probable_maximum(x, dt_s).mpm_gumbel;
   } catch (const std::invalid_argument&) {
     return m.maximum;
   }
@@ -99,7 +99,8 @@ void DynamicLevel::apply(const PretensionProblem& problem, const Eigen::VectorXd
     }
     measures.mpm_offset_m = horizontal_offset_mpm(offset, dt).offset_m;
     if (zone) {
-      measures.mpm_soz_ratio = mpm_of(ratio, dt, true);
+      // spiral's one extreme-offset rule (soz.hpp), on r(t) = |d| / A(θ).
+      measures.mpm_soz_ratio = horizontal_offset_mpm(ratio, dt).offset_m;
       const std::string riser = problem.governing_riser(s, worst_direction);
       evaluation.constraints.push_back({{label, "soz", riser, *measures.mpm_soz_ratio - 1.0}, {}});
       if (settings.objective == OptimizationObjective::max_soz_margin)
@@ -115,12 +116,11 @@ void DynamicLevel::apply(const PretensionProblem& problem, const Eigen::VectorXd
     }
     // Tensions: each line's dynamic check on its mean and MPM.
     for (const TensionSeries& t : run.tensions) {
-      const MooringLine& line = *std::find_if(p.mooring.lines.begin(), p.mooring.lines.end(),
-                                              [&](const MooringLine& l) { return l.name == t.line; });
+      const MooringLine& line = mooring_line(p, t.line);
       const double mbl = find_type(types, line.segments.back().type).breaking_load_N;
       const double mean = engine::channel_moments(t.tension_N).mean;
       const double utilization = dynamic_tension_check(p.criteria.mooring, scenarios[s].damaged_line.has_value(), mean,
-                                                       mpm_of(t.tension_N, dt, false), mbl)
+                                                       gumbel_mpm(t.tension_N, dt), mbl)
                                      .utilization;
       evaluation.constraints.push_back({{label, "utilization", t.line, utilization - 1.0}, {}});
       if (settings.objective == OptimizationObjective::min_max_utilization)

@@ -234,8 +234,7 @@ std::vector<LinePayout> line_payouts(const ValidatedProject& validated, const st
   std::vector<LinePayout> out;
   for (std::size_t g = 0; g < groups.size(); ++g) {
     for (const std::string& name : groups[g].lines) {
-      const MooringLine& line = *std::find_if(project.mooring.lines.begin(), project.mooring.lines.end(),
-                                              [&](const MooringLine& l) { return l.name == name; });
+      const MooringLine& line = mooring_line(project, name);
       LinePayout row;
       row.name = name;
       row.group = groups[g].name;

@@ -19,8 +19,7 @@ double mean_pretension_N(const ValidatedProject& validated, const std::vector<st
   const Project& project = validated.project;
   double sum = 0.0;
   for (const std::string& name : lines) {
-    const MooringLine& line = *std::find_if(project.mooring.lines.begin(), project.mooring.lines.end(),
-                                            [&](const MooringLine& l) { return l.name == name; });
+    const MooringLine& line = mooring_line(project, name);
     sum += pretension_at_rest_N(project, line, validated.line_types, payout_m);
   }
   return lines.empty() ? 0.0 : sum / static_cast<double>(lines.size());

@@ -28,8 +28,7 @@ TargetPretensionResult solve_target_pretensions(const Project& project) {
     const GroupVariable& group =
         *std::find_if(groups.begin(), groups.end(), [&](const GroupVariable& g) { return g.name == target.group; });
     for (const std::string& name : group.lines) {
-      const MooringLine& line = *std::find_if(project.mooring.lines.begin(), project.mooring.lines.end(),
-                                              [&](const MooringLine& l) { return l.name == name; });
+      const MooringLine& line = mooring_line(project, name);
       const engine::CatenaryGeometry at_rest = catenary_geometry_at_rest(project, line);
       const engine::CatenaryLine catenary = catenary_of(project, line, types);
       TargetPretensionRow row;

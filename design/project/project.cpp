@@ -200,6 +200,13 @@ double design_factor(const RiserDesignFactors& factors, DesignCondition conditio
   return factors.extreme;
 }
 
+const MooringLine& mooring_line(const Project& project, const std::string& name) {
+  const auto it = std::find_if(project.mooring.lines.begin(), project.mooring.lines.end(),
+                               [&](const MooringLine& l) { return l.name == name; });
+  if (it == project.mooring.lines.end()) throw std::logic_error("no mooring line named " + name + " in the project");
+  return *it;
+}
+
 const Environment& environment_of(const Project& project, const LoadCase& load_case) {
   const auto it = std::find_if(project.environments.begin(), project.environments.end(),
                                [&](const Environment& e) { return e.name == load_case.environment; });

@@ -600,6 +600,10 @@ RiserCriteria riser_criteria(const Criteria& criteria, const Riser& riser);
 /// The environment a load case names (validation guarantees it exists).
 const Environment& environment_of(const Project& project, const LoadCase& load_case);
 
+/// The mooring line named `name`, for names the validation or a request
+/// check has already found (std::logic_error otherwise: a bug).
+const MooringLine& mooring_line(const Project& project, const std::string& name);
+
 /// The design factor of `condition`.
 double design_factor(const RiserDesignFactors& factors, DesignCondition condition);
 
