@@ -82,7 +82,8 @@ class DeckParser {
     }
     finish_skipped();
     if (deck_.lines.empty() && issues_.empty())
-      fail(number, 1, "the deck defines no line (a LINES / LINE PROPERTIES section with at least one row)");
+      fail(std::max(number, 1), 1,
+           "the deck defines no line (a LINES / LINE PROPERTIES section with at least one row)");
     check_references();
     if (!issues_.empty()) throw InputError(std::move(issues_));
     return std::move(deck_);

@@ -175,7 +175,10 @@ std::string field_value_text(const std::string& text, const Project& project, co
 std::string with_line_payouts(const std::string& text, const Project& project,
                               const std::map<std::string, double>& payouts_m, const std::string& header) {
   std::vector<FieldEdit> edits;
-  for (const auto& [name, payout] : payouts_m) {
+  for (const auto& entry : payouts_m) {
+    // Not a structured binding: clang 14 (Debian 12's, the fuzz build's) cannot capture one in a lambda.
+    const std::string& name = entry.first;
+    const double payout = entry.second;
     const auto it = std::find_if(project.mooring.lines.begin(), project.mooring.lines.end(),
                                  [&](const MooringLine& l) { return l.name == name; });
     if (it == project.mooring.lines.end() || it->segments.empty())

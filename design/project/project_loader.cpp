@@ -77,7 +77,11 @@ Project parse_project(std::string_view yaml_text, std::string source_name,
     throw_issues(std::move(ctx.issues));
   }
   if (!root.IsMap()) {
-    ctx.add(root.Mark(), "",
+    // An empty or comment-only text has no node to point at (a null mark):
+    // say line 1, where the map should begin, so the message has a line.
+    YAML::Mark mark = root.Mark();
+    if (mark.is_null()) mark.pos = mark.line = mark.column = 0;
+    ctx.add(mark, "",
             fmt::format("a project file is a map of sections (version, name, site, ...), got {}", describe(root)),
             "wrong_type");
     throw_issues(std::move(ctx.issues));

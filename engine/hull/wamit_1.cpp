@@ -120,6 +120,11 @@ HydroCoefficients parse_wamit_1(std::istream& text, const std::string& file_name
         kind = RowKind::zero_frequency;
       } else {
         omega = 2.0 * std::numbers::pi / (column1 * options.period_scale);
+        if (!std::isfinite(omega)) {
+          // A period of 1e-310 s parses as a finite number; 2π over it does not.
+          throw FileFormatError(file_name, line_number,
+                                fmt::format("{} {} gives no finite frequency", column_name, column1));
+        }
       }
     } else {
       if (column1 == 0.0) {

@@ -86,6 +86,11 @@ WaveTransferTable parse_transfer(std::istream& text, const std::string& file_nam
                                         column_name, period_column ? "s" : "rad/s", column1));
     }
     const double omega = (period_column ? 2.0 * kPi / column1 : column1) / options.period_scale;
+    if (!std::isfinite(omega)) {
+      // A period of 1e-310 s parses as a finite number; 2π over it does not.
+      throw FileFormatError(file_name, line_number,
+                            fmt::format("{} {} gives no finite frequency", column_name, column1));
+    }
     rows.push_back({omega, v[1], dof, {v[5], v[6]}, line_number});
   }
   if (text.bad()) throw FileFormatError(file_name, line_number, "read error");
@@ -119,6 +124,11 @@ WaveTransferTable parse_transfer(std::istream& text, const std::string& file_nam
   for (const auto& r : rows) {
     const int iw = detail::index_in(omegas, r.omega, kSameFrequencyRelTol, 0.0);
     const int ih = detail::index_in(headings, r.heading_deg, 0.0, kSameHeadingAbsTol_deg);
+    if (iw < 0 || ih < 0) {
+      // Cannot happen: every row's value is on the grid made from the rows. Checked
+      // all the same, because an index of -1 would write outside the table.
+      throw FileFormatError(file_name, r.line, "frequency or heading not found on the table's grid");
+    }
     const int d = r.dof - 1;
     auto& first = seen[d](ih, iw);
     if (first != 0) {

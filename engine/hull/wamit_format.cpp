@@ -68,11 +68,25 @@ std::vector<double> distinct_sorted(std::vector<double> values, double rel_tol, 
 }
 
 int index_in(const std::vector<double>& grid, double value, double rel_tol, double abs_tol) {
-  const auto it = std::lower_bound(grid.begin(), grid.end(), value - (rel_tol * std::abs(value) + abs_tol));
-  if (it != grid.end() && std::abs(*it - value) <= rel_tol * std::abs(value) + abs_tol) {
-    return static_cast<int>(it - grid.begin());
-  }
-  return -1;
+  // The nearest of the grid points either side of `value`, by the acceptance
+  // test of distinct_sorted. (The first point >= value − tol is not enough: a
+  // fuzzed .4 file had headings 9e-6 and 1e-5 deg, 1e-6 deg + 1 ulp apart; for
+  // 1e-5 that search stopped at 9e-6, outside the tolerance, never looked at
+  // 1e-5 itself, and the index −1 wrote outside the table.)
+  const double tol = rel_tol * std::abs(value) + abs_tol;
+  const auto upper = std::upper_bound(grid.begin(), grid.end(), value);
+  int best = -1;
+  double best_distance = 0.0;
+  const auto consider = [&](std::vector<double>::const_iterator it) {
+    const double distance = std::abs(value - *it);
+    if (distance <= tol && (best < 0 || distance < best_distance)) {
+      best = static_cast<int>(it - grid.begin());
+      best_distance = distance;
+    }
+  };
+  if (upper != grid.begin()) consider(upper - 1);
+  if (upper != grid.end()) consider(upper);
+  return best;
 }
 
 }  // namespace spiral::engine::detail

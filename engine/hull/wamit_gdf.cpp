@@ -1,5 +1,7 @@
 #include "engine/hull/wamit_gdf.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <string>
 
@@ -32,6 +34,10 @@ PanelMesh read_gdf(const std::filesystem::path& path) {
   const std::string file = path.string();
   std::ifstream in(path);
   if (!in) throw FileFormatError(file, 0, "cannot open the panel mesh (WAMIT .gdf)");
+  return parse_gdf(in, file);
+}
+
+PanelMesh parse_gdf(std::istream& in, const std::string& file) {
   PanelMesh mesh;
   std::string line;
   std::size_t line_no = 0;
@@ -59,11 +65,17 @@ PanelMesh read_gdf(const std::filesystem::path& path) {
   mesh.symmetric_y = sym[1] == 1.0;
   next_line("NPAN");
   const double npan = header_numbers(file, line_no, line, 1, "NPAN (number of panels)")[0];
-  if (!(npan >= 1.0) || npan != static_cast<double>(static_cast<long>(npan))) {
-    throw FileFormatError(file, line_no, "NPAN must be a positive integer, got " + std::to_string(npan));
+  // The bound keeps the integer cast defined (a fuzzed NPAN of 6.7e62 was
+  // undefined behaviour); no BEM mesh comes near 2^31 panels.
+  constexpr double kMaxPanels = 2147483647.0;
+  if (!(npan >= 1.0) || npan > kMaxPanels || npan != std::floor(npan)) {
+    throw FileFormatError(file, line_no,
+                          "NPAN must be a positive integer up to 2147483647, got " + std::to_string(npan));
   }
   const auto panels = static_cast<std::size_t>(npan);
-  mesh.panels.reserve(panels);
+  // NPAN is what the file claims, not what it holds: reserve at most a large
+  // mesh's worth, so a wrong NPAN costs a "file ends" error, not gigabytes.
+  mesh.panels.reserve(std::min<std::size_t>(panels, 100000));
 
   // Vertex coordinates, 12 numbers a panel in any line layout.
   std::vector<double> numbers;

@@ -23,6 +23,7 @@
 #include <Eigen/Core>
 #include <array>
 #include <filesystem>
+#include <istream>
 #include <string>
 #include <vector>
 
@@ -39,6 +40,10 @@ struct PanelMesh {
   std::vector<Panel> panels;  ///< as written, scaled to m (body frame)
 };
 
+/// Parses .gdf text; `file_name` appears in error messages only (the other
+/// WAMIT readers have the same pair, so a fuzzer or a test feeds text).
+PanelMesh parse_gdf(std::istream& text, const std::string& file_name);
+/// Reads a .gdf file.
 PanelMesh read_gdf(const std::filesystem::path& file);
 
 /// The whole surface: the panels and their mirror images per ISX / ISY, each

@@ -208,6 +208,9 @@ TEST(MoorDynDeck, ErrorsNameFileLineAndColumn) {
             std::string::npos);
   EXPECT_NE(error_of([&] { parse_moordyn_deck("just text\n", "e.dat"); }).find("e.dat:1:1: the deck defines no line"),
             std::string::npos);
+  // Found by tests/fuzz/moordyn_fuzz.cpp: an empty deck said "e.dat:0:1".
+  EXPECT_NE(error_of([&] { parse_moordyn_deck("", "e.dat"); }).find("e.dat:1:1: the deck defines no line"),
+            std::string::npos);
   EXPECT_NE(error_of([] { read_moordyn_deck("/nonexistent/deck.dat"); }).find("/nonexistent/deck.dat: cannot read"),
             std::string::npos);
 }

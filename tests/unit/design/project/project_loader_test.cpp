@@ -329,6 +329,22 @@ TEST(ProjectLoader, AFolderIsSaidToBeAFolder) {
   }
 }
 
+// Found by tests/fuzz/project_fuzz.cpp: an empty or comment-only file had no
+// node to point at, so its one issue had no line.
+TEST(ProjectLoader, AnEmptyFileIsAnErrorAtLineOne) {
+  for (const char* text : {"", "# only a comment\n", "~\n"}) {
+    try {
+      parse_project(text, "empty.yaml");
+      FAIL() << "no InputError for \"" << text << "\"";
+    } catch (const InputError& e) {
+      ASSERT_EQ(e.issues().size(), 1u);
+      EXPECT_EQ(e.issues()[0].line, 1) << e.what();
+      EXPECT_EQ(e.issues()[0].column, 1) << e.what();
+      EXPECT_EQ(std::string(e.what()).rfind("empty.yaml:1:1: a project file is a map", 0), 0u) << e.what();
+    }
+  }
+}
+
 TEST(ProjectLoader, AllErrorsOfAFileAreReportedTogetherInFileOrder) {
   std::string text = replace(kMinimal, "depth: 100.0", "depth: deep");
   text = replace(text, "kind: user", "kind: rope");

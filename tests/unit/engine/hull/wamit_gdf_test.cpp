@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <sstream>
 
 #include "engine/common/file_format_error.hpp"
 
@@ -70,6 +71,41 @@ TEST(WamitGdf, ErrorsNameFileAndLine) {
     EXPECT_NE(std::string(e.what()).find("NPAN announces"), std::string::npos) << e.what();
   }
   EXPECT_THROW(read_gdf(kDir + "no-such-file.gdf"), FileFormatError);
+}
+
+// Found by tests/fuzz/wamit_gdf_fuzz.cpp: an NPAN beyond long's range was
+// cast to long (undefined behaviour), and a large one reserved that many panels.
+TEST(WamitGdf, HugeNpanIsAnErrorNotAnAllocation) {
+  std::istringstream huge("title\n2.0 9.81\n0 1\n6.66e62\n0 0 0  1 0 0  1 1 0  0 1 0\n");
+  try {
+    parse_gdf(huge, "huge.gdf");
+    FAIL() << "no error";
+  } catch (const FileFormatError& e) {
+    EXPECT_EQ(e.line(), 4u) << e.what();
+    EXPECT_NE(std::string(e.what()).find("NPAN must be a positive integer"), std::string::npos) << e.what();
+  }
+  std::istringstream claims("title\n2.0 9.81\n0 1\n2000000000\n0 0 0  1 0 0  1 1 0  0 1 0\n");
+  try {
+    parse_gdf(claims, "claims.gdf");
+    FAIL() << "no error";
+  } catch (const FileFormatError& e) {
+    EXPECT_NE(std::string(e.what()).find("file ends after 1 complete panels"), std::string::npos) << e.what();
+  }
+}
+
+TEST(WamitGdf, TextParsesUnderTheGivenName) {
+  std::istringstream text("one panel\n2.0 9.81\n0 1\n1\n0 0 0  1 0 0  1 1 0  0 1 0\n");
+  const PanelMesh mesh = parse_gdf(text, "inline.gdf");
+  ASSERT_EQ(mesh.panels.size(), 1u);
+  EXPECT_DOUBLE_EQ(mesh.panels[0][2].x(), 2.0);  // scaled by ULEN
+  EXPECT_TRUE(mesh.symmetric_y);
+  std::istringstream bad("title\n1 9.81\n0 0\nmany\n");
+  try {
+    parse_gdf(bad, "inline.gdf");
+    FAIL() << "no error";
+  } catch (const FileFormatError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("inline.gdf:4: ", 0), 0u) << e.what();
+  }
 }
 
 }  // namespace
