@@ -22,13 +22,12 @@ Table stages_table(const design::SpiralRunResult& run) {
   t.caption =
       "Every stage of every iteration, in the order they ran. Tasks from the store were computed by an "
       "earlier stage or run on the same model and taken as they were.";
-  t.headers = {"Stage", "Iteration", "Model hash", "Verdict", "Governing", "Tasks", "From store", "Failed", "Wall (s)"};
+  t.headers = {"Stage", "Iteration", "Verdict", "Governing", "Tasks", "From store", "Failed", "Wall (s)"};
   for (const design::StageRun& s : run.stages) {
     TableCell verdict_cell = text(stage_verdict(s));
     verdict_cell.status = s.completed && s.pass ? CellStatus::pass : CellStatus::fail;
-    t.rows.push_back({text(s.stage), num(s.iteration, 0), text(s.model_hash), verdict_cell,
-                      text(s.governing.empty() ? "—" : s.governing), num(s.tasks, 0), num(s.tasks_reused, 0),
-                      num(s.tasks_failed, 0), num(s.wall_s, 1)});
+    t.rows.push_back({text(s.stage), num(s.iteration, 0), verdict_cell, text(s.governing.empty() ? "—" : s.governing),
+                      num(s.tasks, 0), num(s.tasks_reused, 0), num(s.tasks_failed, 0), num(s.wall_s, 1)});
   }
   return t;
 }
@@ -114,20 +113,19 @@ Table provenance_table(const design::SpiralRunResult& run, const design::Project
   t.id = "spiral-provenance";
   t.caption =
       "Where each stage report's numbers come from: the iteration and model it ran on, and the analyses "
-      "behind its checks (every task is a row of the results store, keyed by the model hash).";
+      "behind its checks (every task is a row of the results store, keyed by the model hash). Static cases: "
+      "hull + catenary mooring + FE risers at equilibrium; storms: enhanced S-C, 3 h, each case's seed.";
   t.headers = {"Stage report", "Iteration", "Model hash", "Analyses"};
   std::set<std::string> seen;
   for (auto s = run.stages.rbegin(); s != run.stages.rend(); ++s) {
     if (!seen.insert(s->stage).second) continue;  // the report holds the stage's last iteration
     std::string analyses;
     if (s->stage == "preliminary")
-      analyses =
-          "static equilibria (hull + catenary mooring + FE risers) of still water and every load case; "
-          "still-water SOZ; enhanced S-C 3-h storm of the governing case, seed 1";
+      analyses = "static cases, still-water SOZ, S-C storm of the governing case";
     else if (s->stage == "intermediate")
-      analyses = "the same static equilibria; enhanced S-C 3-h storm of every load case, seed 1";
+      analyses = "static cases, S-C storm of every case";
     else
-      analyses = fmt::format("fully coupled and enhanced S-C runs of the critical cases, {:.0f} s, seed 1",
+      analyses = fmt::format("coupled + S-C of the critical cases, {:.0f} s",
                              s->advanced ? s->advanced->duration_s : design::advanced_stage_duration(project));
     t.rows.insert(t.rows.begin(), {text(s->stage), num(s->iteration, 0), text(s->model_hash), text(analyses)});
   }
@@ -161,7 +159,7 @@ ReportDocument spiral_summary_report(const design::ValidatedProject& vp, const d
   doc.running_header = fmt::format("{} — design spiral summary", p.name);
   doc.running_footer = fmt::format("spiral {} · model {}", info.version, info.model_hash);
 
-  Section verdict_section{"Verdict and findings", {}, false};
+  Section verdict_section{"Verdict and findings", {}, true};  // after the title page
   verdict_section.blocks.push_back(Paragraph{doc.title.verdict});
   if (run.findings.empty()) {
     verdict_section.blocks.push_back(Paragraph{"No findings beyond the stage verdicts."});
