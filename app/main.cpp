@@ -27,7 +27,7 @@ int main(int argc, char** argv) {
       app::run_command(),         app::results_command(),   app::validate_command(), app::statics_command(),
       app::equilibrium_command(), app::stiffness_command(), app::report_command(),   app::soz_command(),
       app::optimize_command(),    app::study_command(),     app::analyze_command(),  app::compare_command(),
-      app::import_command(),      app::export_command()};
+      app::import_command(),      app::export_command(),    app::lines_command()};
   for (const auto& command : commands) command->add_to(cli);
 
   try {

@@ -26,6 +26,10 @@ std::string flag_of(const std::string& argument) {
       {"max_evaluations", "--max-evaluations"},
       {"until", "--until"},
       {"jobs", "--jobs"},
+      {"lines", "--lines"},
+      {"motion", "--motion"},
+      {"output_step_s", "--step"},
+      {"ramp_s", "--ramp"},
   };
   for (const auto& [name, flag] : kFlags)
     if (name == argument) return std::string(flag);

@@ -5,7 +5,7 @@
 #   bash scripts/fuzz.sh [SECONDS | -runs=N] [HARNESS ...]
 #
 # SECONDS per harness (default 60), or -runs=N executions per harness;
-# harnesses: project moordyn wamit_1 wamit_3 wamit_4 wamit_hst wamit_12d
+# harnesses: project moordyn motion wamit_1 wamit_3 wamit_4 wamit_hst wamit_12d
 # wamit_gdf (default: all, one after the other on one core). Crashes, hangs
 # (> 10 s an input) and sanitizer reports are written to
 # build-fuzz/crashes/<harness>/; the grown corpus stays in
@@ -24,7 +24,7 @@ else
   echo "usage: scripts/fuzz.sh [SECONDS | -runs=N] [HARNESS ...]" >&2
   exit 2
 fi
-all=(project moordyn wamit_1 wamit_3 wamit_4 wamit_hst wamit_12d wamit_gdf)
+all=(project moordyn motion wamit_1 wamit_3 wamit_4 wamit_hst wamit_12d wamit_gdf)
 harnesses=("$@")
 [ ${#harnesses[@]} -eq 0 ] && harnesses=("${all[@]}")
 

@@ -53,5 +53,6 @@ std::unique_ptr<Command> run_command();
 std::unique_ptr<Command> results_command();
 std::unique_ptr<Command> import_command();
 std::unique_ptr<Command> export_command();
+std::unique_ptr<Command> lines_command();
 
 }  // namespace spiral::app

@@ -79,22 +79,6 @@ engine::CoefficientTable table_of(const HullLoadCoefficients& c) {
   return {c.headings_rad, c.surge_m2, c.sway_m2, c.yaw_m3};
 }
 
-engine::WaveRealization realize_sea(const Project& project, const Waves& waves, double duration_s, std::uint64_t seed) {
-  engine::WaveRealizationInput input;
-  input.spectrum = wave_spectrum_of(waves);
-  input.mean_heading_rad = waves.heading_rad;
-  if (waves.spreading_s) {
-    input.spreading = engine::DirectionalSpreading{engine::SpreadingForm::cos_2s, *waves.spreading_s};
-    input.direction_count = kSpreadingDirections;
-  }
-  input.components_per_direction = kWaveComponents;
-  input.duration_s = duration_s;
-  input.seed = seed;
-  input.water_depth_m = project.site.depth_m;
-  input.water = {project.site.water_density_kg_per_m3, project.site.gravity_m_per_s2};
-  return engine::make_wave_realization(input);
-}
-
 std::vector<double> output_times(double duration_s, double step_s) {
   std::vector<double> t;
   const auto n = static_cast<long>(std::floor(duration_s / step_s + 1e-9));
@@ -140,6 +124,22 @@ std::optional<Eigen::Matrix<double, 6, Eigen::Dynamic>> wave_frequency_motion(co
 }
 
 }  // namespace
+
+engine::WaveRealization realize_sea(const Project& project, const Waves& waves, double duration_s, std::uint64_t seed) {
+  engine::WaveRealizationInput input;
+  input.spectrum = wave_spectrum_of(waves);
+  input.mean_heading_rad = waves.heading_rad;
+  if (waves.spreading_s) {
+    input.spreading = engine::DirectionalSpreading{engine::SpreadingForm::cos_2s, *waves.spreading_s};
+    input.direction_count = kSpreadingDirections;
+  }
+  input.components_per_direction = kWaveComponents;
+  input.duration_s = duration_s;
+  input.seed = seed;
+  input.water_depth_m = project.site.depth_m;
+  input.water = {project.site.water_density_kg_per_m3, project.site.gravity_m_per_s2};
+  return engine::make_wave_realization(input);
+}
 
 std::optional<Eigen::Matrix<double, 6, Eigen::Dynamic>> wave_frequency_motions(const ValidatedProject& validated,
                                                                                const DynamicModel& model,

@@ -195,6 +195,11 @@ DynamicAnalysisResult result_of_model(const DynamicModel& model, const DynamicAn
 std::vector<TensionSeries> quasi_static_fairlead_tensions(const Project& project, const std::string& damaged_line,
                                                           const Eigen::Matrix<double, 6, Eigen::Dynamic>& total);
 
+/// The seeded sea of `waves` over `duration_s` from t = 0 (200 components per
+/// direction, 11 directions when spread): every level and the dynamic lines
+/// of one case, seed and duration see this one sea.
+engine::WaveRealization realize_sea(const Project& project, const Waves& waves, double duration_s, std::uint64_t seed);
+
 /// Any level; coupled goes to run_coupled_analysis (coupled_analysis.hpp).
 DynamicAnalysisResult run_dynamic_analysis(const ValidatedProject& project, const DynamicAnalysisRequest& request);
 

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -121,7 +122,7 @@ namespace {
 /// `attachment_b` on the hull; `make_setup` builds it with the top at a
 /// global position.
 template <class MakeSetup>
-LineDynamicsSeries run_one(const Project& project, const std::string& name, const char* kind,
+LineDynamicsSeries run_one(const Project& project, std::size_t index, const std::string& name, const char* kind,
                            const Eigen::Vector3d& attachment_b, const MakeSetup& make_setup,
                            const LineDynamicsInput& input) {
   engine::Stopwatch start;
@@ -141,10 +142,17 @@ LineDynamicsSeries run_one(const Project& project, const std::string& name, cons
   std::vector<Eigen::Vector3d> samples;
   samples.reserve(static_cast<std::size_t>(input.motion.cols()));
   for (Eigen::Index k = 0; k < input.motion.cols(); ++k) samples.push_back(fairlead_at(input.motion.col(k)));
-  const auto trajectory = std::make_shared<const engine::SampledTrajectory>(input.t0_s, input.dt_s, std::move(samples));
+  const auto trajectory =
+      input.motion_times_s.empty()
+          ? std::make_shared<const engine::SampledTrajectory>(input.t0_s, input.dt_s, std::move(samples))
+          : std::make_shared<const engine::SampledTrajectory>(input.motion_times_s, std::move(samples));
   engine::FeDynamicsOptions options;
   options.start_time_s = input.t0_s;
   options.max_steps_between_outputs = input.max_steps_between_samples;
+  options.relative_tolerance *= input.tolerance_scale;
+  options.position_tolerance_m *= input.tolerance_scale;
+  options.slope_tolerance *= input.tolerance_scale;
+  options.velocity_tolerance_m_per_s *= input.tolerance_scale;
   const double t0 = input.t0_s, ramp = input.ramp_s;
   options.end_B_motion = [trajectory, rest, t0, ramp](double t) {
     const engine::TrajectoryPoint p = trajectory->at(t);
@@ -160,14 +168,20 @@ LineDynamicsSeries run_one(const Project& project, const std::string& name, cons
 
   LineDynamicsSeries series;
   series.line = name;
-  const auto n = static_cast<std::size_t>(input.motion.cols());
+  const std::vector<double> times = line_dynamics_output_times(input);
+  const std::size_t n = times.size();
   series.tension_N.resize(n);
   try {
     engine::FeLineDynamics dynamics(model, env, statics, options);
-    series.tension_N[0] = statics.end_B_force_N.norm();
-    for (std::size_t k = 1; k < n; ++k) {
-      dynamics.advance_to(input.t0_s + input.dt_s * static_cast<double>(k));
-      series.tension_N[k] = dynamics.end_B_force_N().norm();
+    for (std::size_t k = 0; k < n; ++k) {
+      if (k > 0) dynamics.advance_to(times[k]);
+      if (input.on_sample) {
+        const engine::FeLineDynamicSnapshot state = dynamics.snapshot();
+        series.tension_N[k] = state.end_B_force_N.norm();
+        input.on_sample(index, k, state);
+      } else {
+        series.tension_N[k] = k == 0 ? statics.end_B_force_N.norm() : dynamics.end_B_force_N().norm();
+      }
     }
     series.solver = dynamics.statistics();
   } catch (const engine::SolverError& e) {
@@ -179,35 +193,67 @@ LineDynamicsSeries run_one(const Project& project, const std::string& name, cons
 
 }  // namespace
 
+std::vector<double> line_dynamics_output_times(const LineDynamicsInput& input) {
+  std::size_t count = static_cast<std::size_t>(input.motion.cols());
+  if (!input.motion_times_s.empty())
+    count = static_cast<std::size_t>(std::floor((input.motion_times_s.back() - input.t0_s) / input.dt_s + 1e-9)) + 1;
+  std::vector<double> times(count);
+  for (std::size_t k = 0; k < count; ++k) times[k] = input.t0_s + input.dt_s * static_cast<double>(k);
+  return times;
+}
+
 std::vector<LineDynamicsSeries> run_line_dynamics(const Project& project, const LineDynamicsInput& input) {
-  if (!(input.dt_s > 0.0) || input.motion.cols() < 2 || !(input.ramp_s >= 0.0)) {
+  if (!(input.dt_s > 0.0) || input.motion.cols() < 2 || !(input.ramp_s >= 0.0) || !(input.tolerance_scale > 0.0)) {
     throw std::invalid_argument(
-        fmt::format("line dynamics: needs dt > 0 s, >= 2 motion samples and ramp >= 0 s, "
-                    "got {} s, {}, {} s",
-                    input.dt_s, input.motion.cols(), input.ramp_s));
+        fmt::format("line dynamics: needs dt > 0 s, >= 2 motion samples, ramp >= 0 s and a tolerance scale > 0, "
+                    "got {} s, {}, {} s, {}",
+                    input.dt_s, input.motion.cols(), input.ramp_s, input.tolerance_scale));
   }
   if (!input.motion.allFinite()) throw std::invalid_argument("line dynamics: the hull motion has non-finite samples");
+  if (!input.motion_times_s.empty() &&
+      (input.motion_times_s.size() != static_cast<std::size_t>(input.motion.cols()) ||
+       !(input.t0_s >= input.motion_times_s.front()) || !(input.t0_s < input.motion_times_s.back()))) {
+    throw std::invalid_argument(
+        fmt::format("line dynamics: needs one time per motion sample and t0 inside them, got {} times for {} "
+                    "samples, t0 {} s",
+                    input.motion_times_s.size(), input.motion.cols(), input.t0_s));
+  }
+  auto selected = [&](const std::string& name) {
+    return input.only.empty() || std::find(input.only.begin(), input.only.end(), name) != input.only.end();
+  };
+  for (const std::string& name : input.only) {
+    const bool line =
+        name != input.damaged_line && std::any_of(project.mooring.lines.begin(), project.mooring.lines.end(),
+                                                  [&](const MooringLine& l) { return l.name == name; });
+    const bool riser = input.include_risers && std::any_of(project.risers.begin(), project.risers.end(),
+                                                           [&](const Riser& r) { return r.name == name; });
+    if (!line && !riser)
+      throw std::invalid_argument(fmt::format("line dynamics: \"{}\" is no intact mooring line or riser", name));
+  }
   const std::vector<LineTypeProperties> types = resolve_line_types(project);
   std::vector<const MooringLine*> lines;
   for (const MooringLine& l : project.mooring.lines) {
-    if (l.name != input.damaged_line) lines.push_back(&l);
+    if (l.name != input.damaged_line && selected(l.name)) lines.push_back(&l);
   }
-  const std::size_t risers = input.include_risers ? project.risers.size() : 0;
-  std::vector<LineDynamicsSeries> out(lines.size() + risers);
+  std::vector<const Riser*> risers;
+  for (const Riser& r : project.risers) {
+    if (input.include_risers && selected(r.name)) risers.push_back(&r);
+  }
+  std::vector<LineDynamicsSeries> out(lines.size() + risers.size());
   const int count = static_cast<int>(out.size());
   engine::parallel_for(count, engine::worker_count(count), [&](int i) {
     const auto k = static_cast<std::size_t>(i);
     if (k < lines.size()) {
       const MooringLine& line = *lines[k];
       out[k] = run_one(
-          project, line.name, "line", line.fairlead_b,
+          project, k, line.name, "line", line.fairlead_b,
           [&](const Eigen::Vector3d& top) { return dynamic_mooring_line(project, line, types, input.current, top); },
           input);
     } else {
-      const Riser& riser = project.risers[k - lines.size()];
+      const Riser& riser = *risers[k - lines.size()];
       const RiserDesign design = riser_design(project, riser);
       out[k] = run_one(
-          project, riser.name, "riser", design.hang_off_b,
+          project, k, riser.name, "riser", design.hang_off_b,
           [&](const Eigen::Vector3d& top) { return dynamic_riser(project, design, input.current, top); }, input);
     }
   });

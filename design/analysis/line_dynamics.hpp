@@ -29,6 +29,7 @@
 // line or riser, the time reached and the cause.
 
 #include <Eigen/Core>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -49,11 +50,26 @@ struct LineDynamicsInput {
   std::optional<engine::CurrentProfile> current;              ///< on the lines
   engine::Vector6d static_offset = engine::Vector6d::Zero();  ///< hull equilibrium the lines start from
   double t0_s = 0.0;
-  double dt_s = 0.5;                                ///< sample spacing of `motion`, > 0
-  Eigen::Matrix<double, 6, Eigen::Dynamic> motion;  ///< hull offset (m, rad) at t0 + k dt
-  double ramp_s = 20.0;                             ///< build-up ramp, >= 0
-  long max_steps_between_samples = 500000;          ///< integrator work limit per sample
-  bool include_risers = true;                       ///< risers too (FE with bending, hang-off moving with the hull)
+  double dt_s = 0.5;  ///< spacing of the outputs (and of `motion` when evenly sampled), > 0
+  Eigen::Matrix<double, 6, Eigen::Dynamic> motion;  ///< hull offset (m, rad) at t0 + k dt, or at motion_times_s
+  /// Optional: the times of `motion`'s columns (a history at its own,
+  /// possibly uneven, times: strictly increasing, t0_s among or after the
+  /// first). The outputs are then at t0 + k dt up to the last time.
+  std::vector<double> motion_times_s;
+  double ramp_s = 20.0;                     ///< build-up ramp, >= 0
+  long max_steps_between_samples = 500000;  ///< integrator work limit per sample
+  bool include_risers = true;               ///< risers too (FE with bending, hang-off moving with the hull)
+  /// Only these mooring lines and risers, by name (empty: every intact line
+  /// and, with include_risers, every riser). A name that is neither, or the
+  /// damaged line, is std::invalid_argument (callers check user input first).
+  std::vector<std::string> only;
+  /// Multiplies every integrator tolerance (FeDynamicsOptions): < 1 for a
+  /// reference run, > 0.
+  double tolerance_scale = 1.0;
+  /// Called at every output sample with the line's index in the result (the
+  /// mooring lines, then the risers), the sample's index and the line's state
+  /// (one line's calls come from one thread, in order; lines run in parallel).
+  std::function<void(std::size_t line, std::size_t sample, const engine::FeLineDynamicSnapshot& state)> on_sample;
   /// Waves on the lines (linear kinematics at each element's static
   /// midpoint, engine/environment/fixed_point_wave_kinematics.hpp); null: none.
   std::shared_ptr<const engine::WaveRealization> sea;
@@ -88,7 +104,11 @@ DynamicLineSetup dynamic_mooring_line(const Project& project, const MooringLine&
 DynamicLineSetup dynamic_riser(const Project& project, const RiserDesign& design,
                                const std::optional<engine::CurrentProfile>& current, const Eigen::Vector3d& top_g);
 
-/// Every intact mooring line, then (include_risers) every riser.
+/// The output times of `input` (t0 + k dt over the motion).
+std::vector<double> line_dynamics_output_times(const LineDynamicsInput& input);
+
+/// Every intact mooring line, then (include_risers) every riser; with
+/// `input.only`, those of them.
 std::vector<LineDynamicsSeries> run_line_dynamics(const Project& project, const LineDynamicsInput& input);
 
 }  // namespace spiral::design

@@ -31,4 +31,13 @@ DynamicTensionCheck dynamic_tension_check(const MooringCriteria& criteria, bool 
   return out;
 }
 
+double fairlead_segment_mbl(const ValidatedProject& vp, const std::string& line_name) {
+  for (const MooringLine& line : vp.project.mooring.lines) {
+    if (line.name != line_name || line.segments.empty()) continue;
+    for (const LineTypeProperties& t : vp.line_types)
+      if (t.name == line.segments.back().type) return t.breaking_load_N;
+  }
+  return 0.0;
+}
+
 }  // namespace spiral::design

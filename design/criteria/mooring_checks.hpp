@@ -15,6 +15,7 @@
 // ULS (intact) or ALS (damaged) factors.
 
 #include "design/project/project.hpp"
+#include "design/project/validated_project.hpp"
 
 namespace spiral::design {
 
@@ -31,5 +32,9 @@ struct DynamicTensionCheck {
 };
 DynamicTensionCheck dynamic_tension_check(const MooringCriteria& criteria, bool damaged, double mean_N, double mpm_N,
                                           double mbl_N);
+
+/// MBL of the fairlead (top) segment of a mooring line: the segment the
+/// fairlead tension is checked against; 0 for an unknown line.
+double fairlead_segment_mbl(const ValidatedProject& project, const std::string& line_name);
 
 }  // namespace spiral::design

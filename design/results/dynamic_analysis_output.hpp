@@ -12,17 +12,10 @@
 #include <vector>
 
 #include "design/analysis/dynamic_analysis.hpp"
+#include "design/results/time_series_output.hpp"
 #include "engine/numerics/statistics.hpp"
 
 namespace spiral::design {
-
-/// One column of the time series: its CSV header, its value at every output
-/// time in the column's unit (s, m, deg, N) and how the CSV prints a value.
-struct TimeSeriesColumn {
-  std::string name;
-  std::vector<double> values;
-  const char* csv_format = "{}";  ///< fmt format of one value, e.g. "{:.6g}"
-};
 
 /// The columns of the time series CSV, in its order, at full precision (the
 /// Python API hands them over as arrays).

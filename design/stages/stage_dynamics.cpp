@@ -27,15 +27,6 @@ std::vector<double> row(const Eigen::Matrix<double, 6, Eigen::Dynamic>& m, int d
 
 }  // namespace
 
-double fairlead_segment_mbl(const ValidatedProject& vp, const std::string& line_name) {
-  for (const MooringLine& line : vp.project.mooring.lines) {
-    if (line.name != line_name || line.segments.empty()) continue;
-    for (const LineTypeProperties& t : vp.line_types)
-      if (t.name == line.segments.back().type) return t.breaking_load_N;
-  }
-  return 0.0;
-}
-
 StormChannel summarize_storm_channel(std::string name, std::string unit, std::vector<double> values, double dt_s) {
   StormChannel c;
   c.name = std::move(name);

@@ -89,9 +89,6 @@ StormChannel summarize_storm_channel(std::string name, std::string unit, std::ve
 /// The load case's seed (LoadCase::seed), 1 for still water or an unknown name.
 int case_seed(const Project& project, const std::string& case_name);
 
-/// MBL of the fairlead (top) segment of a mooring line; 0 for an unknown line.
-double fairlead_segment_mbl(const ValidatedProject& project, const std::string& line_name);
-
 /// The stage's view of one finished analysis `result` of `request` (whose
 /// `statics` is the case's static equilibrium): channels, statistics and the
 /// two dynamic checks. The tension channel is the mooring line `tension_line`

@@ -263,6 +263,7 @@ FeLineDynamicSnapshot FeLineDynamics::snapshot() const {
   m.load_state(t, impl_->ida->state(), impl_->ida->state_derivative());
   FeLineDynamicSnapshot snap;
   snap.time_s = t;
+  snap.node_arc_length_m = m.p.mesh.s;
   const auto nn = static_cast<std::size_t>(m.p.n_nodes);
   for (std::size_t i = 0; i < nn; ++i) {
     snap.node_position_m.push_back(m.qw.segment<3>(m.p.r_dof[i]));
@@ -279,8 +280,12 @@ FeLineDynamicSnapshot FeLineDynamics::snapshot() const {
     }
     snap.node_tension_N.push_back(sum / count);
   }
+  fe_detail::NodeBending bending = fe_detail::node_bending(m.p, m.qw);
+  snap.node_curvature_per_m = std::move(bending.curvature_per_m);
+  snap.node_bending_moment_Nm = std::move(bending.moment_Nm);
   if (m.options.end_A != FeEndCondition::free) snap.end_A_force_N = m.end_force(false, m.qw, m.vw, m.aw, t);
   if (m.options.end_B != FeEndCondition::free) snap.end_B_force_N = m.end_force(true, m.qw, m.vw, m.aw, t);
+  snap.touchdown = fe_detail::find_touchdown(m.p, m.qw);
   return snap;
 }
 

@@ -138,11 +138,16 @@ struct FeDynamicsOptions {
 /// The state the caller reads at an output time.
 struct FeLineDynamicSnapshot {
   double time_s = 0.0;
+  std::vector<double> node_arc_length_m;  ///< unstretched, from end A (the mesh of the initial statics)
   std::vector<Eigen::Vector3d> node_position_m;
   std::vector<Eigen::Vector3d> node_velocity_m_per_s;
-  std::vector<double> node_tension_N;  ///< effective tension at the nodes (mean of the adjacent element ends)
+  std::vector<double> node_tension_N;          ///< effective tension at the nodes (mean of the adjacent element ends)
+  std::vector<double> node_curvature_per_m;    ///< κ, mean of the two adjacent element ends (as the statics)
+  std::vector<double> node_bending_moment_Nm;  ///< EI κ
   Eigen::Vector3d end_A_force_N = Eigen::Vector3d::Zero();  ///< force of the line on its end A support
   Eigen::Vector3d end_B_force_N = Eigen::Vector3d::Zero();  ///< force of the line on its end B support
+  /// Last point below the seabed from end A (as FeStaticsResult::touchdown); empty when nothing touches.
+  std::optional<FeTouchdown> touchdown;
 };
 
 /// Mechanical energy of the line (no fluid: kinetic energy of the structural

@@ -397,6 +397,30 @@ Eigen::Vector3d slope(const ancf::ShapeAt& sh, const ElementState& qe) {
   return t;
 }
 
+NodeBending node_bending(const Problem& p, const Eigen::VectorXd& q) {
+  const auto nn = static_cast<std::size_t>(p.n_nodes);
+  NodeBending b;
+  b.curvature_per_m.assign(nn, 0.0);
+  b.moment_Nm.assign(nn, 0.0);
+  std::vector<int> count(nn, 0);
+  for (std::size_t e = 0; e < p.elements.size(); ++e) {
+    const double L = p.elements[e].length_m;
+    const ElementState qe = gather(p, q, e);
+    for (int end = 0; end < 2; ++end) {
+      const std::size_t node = e + static_cast<std::size_t>(end);
+      const double k = curvature(ancf::shape_at(end, L), qe);
+      b.curvature_per_m[node] += k;
+      b.moment_Nm[node] += p.elements[e].EI_Nm2 * k;
+      ++count[node];
+    }
+  }
+  for (std::size_t i = 0; i < nn; ++i) {
+    b.curvature_per_m[i] /= count[i];
+    b.moment_Nm[i] /= count[i];
+  }
+  return b;
+}
+
 std::optional<FeTouchdown> find_touchdown(const Problem& p, const Eigen::VectorXd& q) {
   if (p.load.seabed_stiffness_N_per_m2 <= 0.0) return std::nullopt;
   const double zs = p.load.seabed_z_m;

@@ -116,6 +116,13 @@ Eigen::VectorXd initial_state(Problem& p, const FeLineModel& m, const FeEnvironm
 double curvature(const ancf::ShapeAt& sh, const ElementState& qe);
 Eigen::Vector3d position(const ancf::ShapeAt& sh, const ElementState& qe);
 Eigen::Vector3d slope(const ancf::ShapeAt& sh, const ElementState& qe);
+/// Curvature κ and bending moment EI κ at every node: the mean of the
+/// adjacent element ends (one end at the line's ends).
+struct NodeBending {
+  std::vector<double> curvature_per_m;
+  std::vector<double> moment_Nm;
+};
+NodeBending node_bending(const Problem& p, const Eigen::VectorXd& q);
 /// Last point along the line from A below the seabed (lift-off point).
 std::optional<FeTouchdown> find_touchdown(const Problem& p, const Eigen::VectorXd& q);
 /// Caps every element's EA at cap_N (infinity restores the model's EA).

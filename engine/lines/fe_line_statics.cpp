@@ -31,9 +31,6 @@ FeStaticsResult post_process(const Problem& p, const FeStaticsOptions& o, const 
   r.node_position_m.resize(static_cast<std::size_t>(nn));
   r.node_tension_N.resize(static_cast<std::size_t>(nn));
   r.node_force_residual_N.resize(static_cast<std::size_t>(nn));
-  r.node_curvature_per_m.assign(static_cast<std::size_t>(nn), 0.0);
-  r.node_bending_moment_Nm.assign(static_cast<std::size_t>(nn), 0.0);
-  std::vector<int> count(static_cast<std::size_t>(nn), 0);
   for (std::size_t i = 0; i < static_cast<std::size_t>(nn); ++i) {
     r.node_position_m[i] = q.segment<3>(p.r_dof[i]);
     r.node_force_residual_N[i] = g.segment<3>(p.r_dof[i]);
@@ -48,21 +45,11 @@ FeStaticsResult post_process(const Problem& p, const FeStaticsOptions& o, const 
   }
   for (std::size_t e = 0; e < p.elements.size(); ++e) {
     const double L = p.elements[e].length_m;
-    const ElementState qe = gather(p, q, e);
-    r.element_tension_N.push_back(p.elements[e].EA_N * (slope(ancf::shape_at(0.5, L), qe).norm() - 1.0));
-    for (int end = 0; end < 2; ++end) {
-      const std::size_t node = e + static_cast<std::size_t>(end);
-      const double k = curvature(ancf::shape_at(end, L), qe);
-      r.node_curvature_per_m[node] += k;
-      r.node_bending_moment_Nm[node] += p.elements[e].EI_Nm2 * k;
-      ++count[node];
-    }
+    r.element_tension_N.push_back(p.elements[e].EA_N * (slope(ancf::shape_at(0.5, L), gather(p, q, e)).norm() - 1.0));
   }
-  for (int i = 0; i < nn; ++i) {
-    const auto ui = static_cast<std::size_t>(i);
-    r.node_curvature_per_m[ui] /= count[ui];
-    r.node_bending_moment_Nm[ui] /= count[ui];
-  }
+  NodeBending bending = node_bending(p, q);
+  r.node_curvature_per_m = std::move(bending.curvature_per_m);
+  r.node_bending_moment_Nm = std::move(bending.moment_Nm);
   r.end_A_force_N = r.node_force_residual_N.front();
   r.end_B_force_N = r.node_force_residual_N.back();
   // End tensions: axial components of the end reactions (more accurate than

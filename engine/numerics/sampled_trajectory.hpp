@@ -1,5 +1,5 @@
 #pragma once
-// A point's trajectory through uniformly sampled positions, as a natural
+// A point's trajectory through sampled positions, as a natural
 // cubic spline per coordinate (C²: continuous acceleration, which an implicit
 // integrator driven by it needs — a piecewise-linear or Catmull-Rom
 // interpolant has acceleration jumps at every sample that cut its steps).
@@ -22,12 +22,18 @@ class SampledTrajectory {
  public:
   /// positions[k] at t0 + k·dt; at least 2 samples, dt > 0 (std::invalid_argument otherwise).
   SampledTrajectory(double t0_s, double dt_s, std::vector<Eigen::Vector3d> positions_m);
+  /// positions[k] at times[k] (a motion history at its own, possibly uneven,
+  /// times); at least 2 samples, finite, strictly increasing times, one per
+  /// position (std::invalid_argument otherwise).
+  SampledTrajectory(std::vector<double> times_s, std::vector<Eigen::Vector3d> positions_m);
   /// Outside [t0, t_end]: continued along a straight line with the end velocity (C²).
   TrajectoryPoint at(double t_s) const;
-  double end_time_s() const { return t0_ + dt_ * static_cast<double>(x_.size() - 1); }
+  double start_time_s() const { return times_.empty() ? t0_ : times_.front(); }
+  double end_time_s() const { return times_.empty() ? t0_ + dt_ * static_cast<double>(x_.size() - 1) : times_.back(); }
 
  private:
-  double t0_, dt_;
+  double t0_ = 0.0, dt_ = 0.0;  // uniform samples (times_ empty)
+  std::vector<double> times_;   // uneven samples
   std::vector<Eigen::Vector3d> x_;
   std::vector<Eigen::Vector3d> second_;  // x'' at the samples
 };
