@@ -1,6 +1,13 @@
-// `spiral report`: run a stage's analyses and write its report folder.
+// `spiral report`: run a stage's analyses and write its report folder. The
+// spiral's stages go through the spiral's own runner (design/workflow) and
+// its results store, so a stage reuses what `spiral run` or an earlier report
+// computed; the optimization study runs here.
+#include <unistd.h>
+
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
+#include <optional>
 #include <string>
 
 #include <fmt/format.h>
@@ -9,13 +16,12 @@
 #include "app/exit_codes.hpp"
 #include "app/output_folder.hpp"
 #include "app/report_info.hpp"
+#include "app/version.hpp"
 #include "design/project/request_error.hpp"
 #include "design/project/validated_project.hpp"
 #include "design/optimization/pretension_optimizer.hpp"
 #include "design/optimization/pretension_study.hpp"
-#include "design/stages/advanced_stage.hpp"
-#include "design/stages/intermediate_stage.hpp"
-#include "design/stages/static_stage.hpp"
+#include "design/workflow/spiral_run.hpp"
 #include "report/advanced_stage_report.hpp"
 #include "report/intermediate_stage_report.hpp"
 #include "report/optimization_report.hpp"
@@ -48,21 +54,23 @@ class ReportCommand : public Command {
       pass = result.status == design::OptimizationStatus::optimal;
       solver_failed = !pass;
       document = report::optimization_report(loaded, result, sweep, info);
-    } else if (stage_ == "advanced") {
-      const design::AdvancedStageResults results = design::run_advanced_stage(loaded);
-      pass = results.pass;
-      solver_failed = results.failed_runs > 0;
-      document = report::advanced_stage_report(loaded, results, info);
-      for (const auto& c : results.cases)
-        if (c.error) fmt::print(stderr, "{}: case {}: {}\n", project_file_, c.case_name, *c.error);
-    } else if (stage_ == "intermediate") {
-      const design::IntermediateStageResults results = design::run_intermediate_stage(loaded);
-      pass = results.pass;
-      document = report::intermediate_stage_report(loaded, results, info);
     } else {
-      const design::StaticStageResults results = design::run_static_stage(loaded);
-      pass = results.pass;
-      document = report::static_stage_report(loaded, results, info);
+      // A stage of the spiral, as `spiral run` makes it (design/workflow):
+      // its tasks and those of the stages before it come from the run
+      // folder's results store when they are there, and what is computed is
+      // kept for the next command. No feedback: the project as given.
+      const std::optional<design::StageRun> stage = run_stage();
+      if (!stage) return kExitSolverFailure;
+      pass = stage->pass;
+      solver_failed = stage->tasks_failed > 0 || !stage->failures.empty();
+      report::ReportInfo stage_info = info;
+      stage_info.model_hash = stage->model_hash;
+      if (stage->preliminary)
+        document = report::static_stage_report(loaded, *stage->preliminary, stage_info);
+      else if (stage->intermediate)
+        document = report::intermediate_stage_report(loaded, *stage->intermediate, stage_info);
+      else
+        document = report::advanced_stage_report(loaded, *stage->advanced, stage_info);
     }
     const report::WrittenReport written = report::write_report(document, output_folder(out_, project_file_, stage_));
     fmt::print("{} stage report of '{}' ({}): {}\n", stage_, loaded.project.name, pass ? "PASS" : "FAIL",
@@ -80,6 +88,54 @@ class ReportCommand : public Command {
                    "Stage: preliminary (default), intermediate, advanced (fully coupled verification of the "
                    "critical cases) or optimization (pretension optimization and study)");
     sub.add_option("--out", out_, "Output folder (default: out/<project-stem>/<stage>)");
+    sub.add_option("--run", run_,
+                   "Run folder whose results store (results.sqlite) the stage reuses and adds to (default: "
+                   "out/<project-stem>, as spiral run, when --out is not given; with --out and no --run, a "
+                   "temporary store)");
+    sub.add_option("--jobs", jobs_, "Tasks run at a time (default 0: every core)");
+  }
+
+  /// The requested stage through the spiral's runner; empty (after printing
+  /// why) when it could not finish.
+  std::optional<design::StageRun> run_stage() const {
+    design::SpiralRunOptions options;
+    std::optional<std::filesystem::path> scratch;
+    if (!run_.empty()) {
+      options.out_folder = run_;
+    } else if (out_.empty()) {
+      options.out_folder = std::filesystem::path("out") / std::filesystem::path(project_file_).stem();
+    } else {
+      scratch = std::filesystem::temp_directory_path() / fmt::format("spiral-report-{}", ::getpid());
+      options.out_folder = *scratch;
+    }
+    options.until = stage_;
+    options.feedback = false;
+    options.jobs = jobs_;
+    options.version = kVersion;
+    options.log = [](const std::string& line) {
+      if (!line.starts_with("[")) fmt::print(stderr, "{}\n", line);  // stage lines, not every task
+    };
+    std::optional<design::StageRun> wanted;
+    design::SpiralRunResult result;
+    try {
+      result = design::run_spiral(project_file_, options, [&](const design::StageRun& s) {
+        if (s.stage == stage_) wanted = s;
+      });
+    } catch (...) {
+      if (scratch) std::filesystem::remove_all(*scratch);
+      throw;
+    }
+    if (scratch) std::filesystem::remove_all(*scratch);
+    for (const design::StageRun& s : result.stages)
+      for (const std::string& f : s.failures) fmt::print(stderr, "{}: {} stage: {}\n", project_file_, s.stage, f);
+    if (!wanted || !wanted->completed) {
+      fmt::print(stderr, "{}: the {} stage could not finish (see above); no report written\n", project_file_, stage_);
+      return std::nullopt;
+    }
+    if (!run_.empty() || out_.empty())
+      fmt::print("  results store {} ({} of the stage's {} tasks reused)\n", result.store_file.string(),
+                 wanted->tasks_reused, wanted->tasks);
+    return wanted;
   }
 
   void check_stage(const design::ValidatedProject& loaded) const {
@@ -102,6 +158,8 @@ class ReportCommand : public Command {
 
   std::string stage_ = "preliminary";
   std::string out_;
+  std::string run_;
+  int jobs_ = 0;
 };
 
 }  // namespace

@@ -614,6 +614,13 @@ SpiralRunResult run_spiral(const std::filesystem::path& project_file, const Spir
           }
           const bool progress = !previous || distance < *previous;
           previous = distance;
+          if (!reason.empty() && !options.feedback) {
+            result.findings.push_back(
+                fmt::format("iteration {} fails ({}); no feedback was asked for: the stages run the project as given",
+                            it.number, reason));
+            for (std::string& f : risers) result.findings.push_back(std::move(f));
+            break;
+          }
           if (reason.empty() || !progress) {
             if (!progress)
               result.findings.push_back(fmt::format(

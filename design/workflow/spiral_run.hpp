@@ -63,6 +63,10 @@ struct SpiralRunOptions {
   /// alone, on `jobs` threads. Every rank calls run_spiral alike; rank 0 owns
   /// the store and logs.
   const Cluster* cluster = nullptr;
+  /// Feedback through the pretension optimizer (DESIGN.md §2). Off: the
+  /// project as given, one iteration, failing checks reported as a finding
+  /// (`spiral report` of one stage).
+  bool feedback = true;
 };
 
 /// One stage of one iteration.

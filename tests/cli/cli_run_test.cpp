@@ -118,6 +118,18 @@ TEST(CliRun, Oc4ThroughEveryStageWithReportsAndAStoreThatResults) {
   ASSERT_EQ(again.exit_code, 0) << again.err;
   EXPECT_NE(again.err.find("advanced stage, iteration 1: PASS (2 tasks, 2 from the store"), std::string::npos)
       << again.err;
+
+  // `spiral report` of a stage reads the same store: nothing is computed
+  // again, and the stage's report is written where asked.
+  const auto report_dir = dir / "advanced-report";
+  const CommandResult report = run_spiral("report '" + project.string() + "' --stage advanced --run '" + out.string() +
+                                          "' --out '" + report_dir.string() + "'");
+  ASSERT_EQ(report.exit_code, 0) << report.err;
+  EXPECT_NE(report.out.find("(2 of the stage's 2 tasks reused)"), std::string::npos) << report.out;
+  EXPECT_NE(report.err.find("intermediate stage, iteration 1: PASS (6 tasks, 6 from the store"), std::string::npos)
+      << report.err;
+  EXPECT_TRUE(std::filesystem::exists(report_dir / "report.pdf"));
+  EXPECT_EQ(count_tasks(out / "results.sqlite"), 8);
 }
 
 TEST(CliRun, AKilledRunResumesWithExactlyTheUnfinishedTasks) {
