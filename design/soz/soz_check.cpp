@@ -383,7 +383,7 @@ SozResult run_soz(const ValidatedProject& validated, const SozOptions& options) 
   if (options.model == SozModel::catenary && conditions.current) {
     result.notes.push_back(
         "the catenary screening model carries no current: this zone ignores the case's current on "
-        "the risers (use --model fe)");
+        "the risers (the FE riser model carries it)");
   }
   result.check_wall_s = check_wall_s;
   if (!options.exclude_risers.empty()) {
@@ -401,7 +401,7 @@ SozResult run_soz(const ValidatedProject& validated, const SozOptions& options) 
         })) {
       result.notes.push_back(
           "the catenary screening model carries no current: the zones per case differ by design condition "
-          "only (use --model fe)");
+          "only (the FE riser model carries it)");
     }
     for (std::size_t k = 0; k < result.zones.size(); ++k) {
       SozZone& zone = result.zones[k];
@@ -437,14 +437,14 @@ SozResult run_soz(const ValidatedProject& validated, const SozOptions& options) 
     result.notes.push_back(
         options.zone_per_current
             ? "each case is checked against the zone of its own current and design condition (`zone`), at zero "
-              "mean heave/rotations; use --case NAME for a case's exact zone"
+              "mean heave/rotations; the zone of one load case asked for alone is that case's exact zone"
             : "offset check against the still-water zone (no current on the risers, no mean heave/rotations); "
-              "use --case NAME for a case's own zone");
+              "the zone of one load case asked for alone is that case's own zone");
   }
   if (!cases.empty() && !options.extreme) {
     result.notes.push_back(
-        "offsets are static (mean); --extreme adds the 3-h extreme offsets of the enhanced S-C "
-        "analysis");
+        "offsets are static (mean); the extreme-offset check, when asked for, adds the 3-h extreme "
+        "offsets of the enhanced S-C analysis");
   }
   if (options.extreme) {
     result.notes.push_back(
