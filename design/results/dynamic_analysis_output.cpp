@@ -16,6 +16,18 @@ constexpr double kRadToDeg = 180.0 / std::numbers::pi;
 double dof_scale(int dof) { return dof < 3 ? 1.0 : kRadToDeg; }
 const char* dof_unit(int dof) { return dof < 3 ? "m" : "deg"; }
 
+/// The tension channels of a result, one name per quantity in every output
+/// (analyze, compare, the advanced stage): `tension_<line>_N` is a dynamic FE
+/// line's top tension (the coupled run's, or under the prescribed motion of
+/// --line-dynamics; mooring lines, then risers), `qs_tension_<line>_N` the
+/// quasi-static catenary at the instantaneous fairlead (no current on the line).
+std::vector<std::pair<std::string, const std::vector<double>*>> tension_channels(const DynamicAnalysisResult& r) {
+  std::vector<std::pair<std::string, const std::vector<double>*>> out;
+  for (const auto& t : r.tensions) out.emplace_back("qs_tension_" + t.line + "_N", &t.tension_N);
+  for (const auto& t : r.dynamic_tensions) out.emplace_back("tension_" + t.line + "_N", &t.tension_N);
+  return out;
+}
+
 std::vector<double> row_of(const Eigen::Matrix<double, 6, Eigen::Dynamic>& m, int dof) {
   std::vector<double> out(static_cast<std::size_t>(m.cols()));
   for (Eigen::Index k = 0; k < m.cols(); ++k) out[static_cast<std::size_t>(k)] = m(dof, k) * dof_scale(dof);
@@ -43,9 +55,7 @@ std::vector<TimeSeriesColumn> dynamic_time_series_columns(const DynamicAnalysisR
     for (int d = 0; d < 6; ++d)
       columns.push_back({fmt::format("{}{}_{}", kDofNames[d], suffix, dof_unit(d)), row_of(*m, d), "{:.6g}"});
   }
-  for (const auto& t : r.tensions) columns.push_back({"tension_" + t.line + "_N", t.tension_N, "{:.7g}"});
-  for (const auto& t : r.dynamic_tensions)
-    columns.push_back({"dynamic_tension_" + t.line + "_N", t.tension_N, "{:.7g}"});
+  for (const auto& [name, values] : tension_channels(r)) columns.push_back({name, *values, "{:.7g}"});
   for (const auto& t : r.tensions) {
     for (int axis = 0; axis < 3; ++axis) {
       std::vector<double> values(t.fairlead_g_m.size());
@@ -92,9 +102,7 @@ nlohmann::json dynamic_analysis_to_json(const DynamicAnalysisResult& r, const st
       channels.push_back(channel_json(fmt::format("{}_lf_{}", kDofNames[d], dof_unit(d)), dof_unit(d),
                                       row_of(r.low_frequency, d), dt));
     }
-    for (const auto& t : r.tensions) channels.push_back(channel_json("tension_" + t.line + "_N", "N", t.tension_N, dt));
-    for (const auto& t : r.dynamic_tensions)
-      channels.push_back(channel_json("dynamic_tension_" + t.line + "_N", "N", t.tension_N, dt));
+    for (const auto& [name, values] : tension_channels(r)) channels.push_back(channel_json(name, "N", *values, dt));
   }
   j["channels"] = channels;
   j["timing_s"] = {{"equilibrium", r.timing.equilibrium_s},

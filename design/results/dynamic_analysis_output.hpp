@@ -3,7 +3,9 @@
 //   * time series CSV: one row per output time, columns
 //     time_s, {surge_m, sway_m, heave_m, roll_deg, pitch_deg, yaw_deg} for
 //     the total motion, the same with _lf and _wf suffixes, then
-//     tension_<line>_N for every intact mooring line (docs/output-format.md);
+//     qs_tension_<line>_N (the quasi-static catenary) for every intact mooring
+//     line, tension_<name>_N for every dynamic FE line and riser (coupled, or
+//     --line-dynamics), and the fairlead positions (docs/output-format.md);
 //   * JSON summary: per channel mean/std/min/max, MPM of the 3-h maximum
 //     (Gumbel, Weibull, Rayleigh) and minimum, spectral peak period; the
 //     wall-clock time of each step and the integrator statistics.

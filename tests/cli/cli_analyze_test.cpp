@@ -23,7 +23,7 @@ TEST(CliAnalyze, ScRunWritesCsvAndJson) {
   const std::string csv = read_text(out / "time_series.csv");
   ASSERT_EQ(csv.rfind("time_s,surge_m,sway_m,heave_m,roll_deg,pitch_deg,yaw_deg,surge_lf_m", 0), 0u)
       << csv.substr(0, 200);
-  EXPECT_NE(csv.find(",tension_L1_N"), std::string::npos);
+  EXPECT_NE(csv.find(",qs_tension_L1_N"), std::string::npos);
   EXPECT_NE(csv.find(",fairlead_L3_x_m,fairlead_L3_y_m,fairlead_L3_z_m"), std::string::npos);
   // 1200 s at 0.5 s: 2401 rows + header.
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 2402);
@@ -68,14 +68,14 @@ TEST(CliAnalyze, LineDynamicsWritesDynamicTensions) {
   EXPECT_NE(result.out.find("quasi-static vs dynamic"), std::string::npos) << result.out;
   const std::string csv = read_text(out / "time_series.csv");
   for (const char* line : {"L1", "L2", "L3"})
-    EXPECT_NE(csv.find(std::string(",dynamic_tension_") + line + "_N"), std::string::npos) << line;
+    EXPECT_NE(csv.find(std::string(",tension_") + line + "_N"), std::string::npos) << line;
   const auto doc = nlohmann::json::parse(read_text(out / "summary.json"));
   ASSERT_EQ(doc["line_dynamics_solver"].size(), 3u);
   EXPECT_GT(doc["line_dynamics_solver"][0]["steps"].get<long>(), 0);
   EXPECT_GT(doc["timing_s"]["line_dynamics"].get<double>(), 0.0);
   bool found = false;
   for (const auto& c : doc["channels"]) {
-    if (c["name"] == "dynamic_tension_L2_N") {
+    if (c["name"] == "tension_L2_N") {
       found = true;
       EXPECT_GT(c["mean"].get<double>(), 5e5) << c.dump();  // ~1.1 MN pretension
     }
@@ -97,10 +97,15 @@ TEST(CliAnalyze, CoupledLevelWritesItsSolverAndTensions) {
   EXPECT_EQ(j["level"], "coupled");
   EXPECT_EQ(j["coupled_solver"]["lines"], 3);
   EXPECT_GT(j["coupled_solver"]["steps"].get<long>(), 0);
-  int dynamic = 0;
-  for (const auto& c : j["channels"])
-    if (c["name"].get<std::string>().rfind("dynamic_tension_", 0) == 0) ++dynamic;
+  // One name per quantity: the coupled run's FE tensions are tension_, the
+  // catenary's at the same fairleads qs_tension_ (as in compare).
+  int dynamic = 0, quasi_static = 0;
+  for (const auto& c : j["channels"]) {
+    if (c["name"].get<std::string>().rfind("tension_", 0) == 0) ++dynamic;
+    if (c["name"].get<std::string>().rfind("qs_tension_", 0) == 0) ++quasi_static;
+  }
   EXPECT_EQ(dynamic, 3);
+  EXPECT_EQ(quasi_static, 3);
   std::filesystem::remove_all(out);
 }
 
