@@ -53,14 +53,14 @@ class LinesCommand : public Command {
     request.load_case = case_name_;
     request.motion_times_s = history.time_s;
     request.motion = history.offset;
+    for (const std::string& note : history.notes) request.motion_notes.push_back(motion_file_ + ": " + note);
     request.lines = lines_;
     request.output_step_s = step_s_;
     request.ramp_s = ramp_s_;
     request.waves_on_lines = !no_waves_;
     request.seed = seed_;
     const design::MotionLinesResult result = design::run_motion_lines(loaded, request);
-    nlohmann::json summary = design::motion_lines_to_json(result, loaded, motion_file_);
-    for (const std::string& note : history.notes) summary["notes"].push_back(fmt::format("{}: {}", motion_file_, note));
+    const nlohmann::json summary = design::motion_lines_to_json(result, loaded, motion_file_);
     const std::filesystem::path folder =
         output_folder(out_, project_file_,
                       std::filesystem::path("lines") /

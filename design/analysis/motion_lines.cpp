@@ -114,6 +114,7 @@ MotionLinesResult run_motion_lines(const ValidatedProject& validated, const Moti
   result.damaged_line = damaged;
   result.seed = request.seed.value_or(static_cast<std::uint64_t>(load_case.seed));
   result.ramp_s = request.ramp_s;
+  result.notes = request.motion_notes;
 
   LineDynamicsInput input;
   input.damaged_line = damaged;
@@ -191,6 +192,7 @@ MotionLinesResult run_motion_lines(const ValidatedProject& validated, const Moti
   }
   const std::size_t line_count = result.lines.size();
   input.on_sample = [&](std::size_t index, std::size_t k, const engine::FeLineDynamicSnapshot& state) {
+    if (request.progress && samples > 1) request.progress(static_cast<double>(k) / static_cast<double>(samples - 1));
     if (index < line_count) {
       MooringLineMotionRecord& record = result.lines[index];
       record.fairlead_tension_N[k] = state.end_B_force_N.norm();

@@ -29,6 +29,7 @@
 // named by its request argument), engine::SolverError naming the line.
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -45,12 +46,16 @@ struct MotionLinesRequest {
   std::string load_case;                            ///< current, waves, damaged line and design condition
   std::vector<double> motion_times_s;               ///< strictly increasing, >= 2
   Eigen::Matrix<double, 6, Eigen::Dynamic> motion;  ///< hull offset at each time, m, rad
+  std::vector<std::string> motion_notes;            ///< what the history's reader noted (kept in the result's notes)
   std::vector<std::string> lines;     ///< mooring lines and risers by name (`lines`); empty: every intact one
   double output_step_s = 0.5;         ///< > 0 (`output_step_s`)
   double ramp_s = 20.0;               ///< build-up, >= 0 and shorter than the motion (`ramp_s`)
   bool waves_on_lines = true;         ///< the case's seeded sea on the lines
   std::optional<std::uint64_t> seed;  ///< of the sea; empty: the load case's seed
   double tolerance_scale = 1.0;       ///< integrator tolerances × this (a reference run: < 1)
+  /// Called with the fraction done (0..1) as the lines advance, from their
+  /// threads; may be empty. An exception it throws stops the run.
+  std::function<void(double)> progress;
 };
 
 /// One mooring line's record, one value per output time.

@@ -3,6 +3,8 @@
 // the mapping of spiral's exceptions to Python's. Results cross as the JSON
 // text of docs/output-format.md's documents (the Python half turns them into
 // dicts and numpy arrays) and, for a time series, as numpy arrays.
+#include <numbers>
+
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -18,6 +20,7 @@
 #include <utility>
 #include <vector>
 
+#include "design/import/motion_history.hpp"
 #include "design/project/input_error.hpp"
 #include "design/project/request_error.hpp"
 #include "engine/common/file_format_error.hpp"
@@ -284,6 +287,52 @@ PYBIND11_MODULE(_spiral, m) {
             return py::make_tuple(documents.summary_json, columns_to_numpy(documents.time_series));
           },
           arg("case"), arg("level"), arg("duration"), arg("step"), arg("seed"), arg("line_dynamics"), arg("progress"))
+      .def(
+          "lines",
+          [](ProjectSession& s, const std::string& load_case, const std::optional<std::string>& motion_file,
+             const std::optional<py::array_t<double, py::array::c_style | py::array::forcecast>>& times_s,
+             const std::optional<py::array_t<double, py::array::c_style | py::array::forcecast>>& offsets_m_deg,
+             std::vector<std::string> lines, double step_s, double ramp_s, std::optional<std::uint64_t> seed,
+             bool waves, const py::object& progress) {
+            design::MotionLinesRequest request;  // as `spiral lines` sets it
+            std::string source = "<arrays>";
+            if (motion_file) {
+              const design::MotionHistory history = design::read_motion_history(*motion_file);
+              request.motion_times_s = history.time_s;
+              request.motion = history.offset;
+              for (const std::string& note : history.notes) request.motion_notes.push_back(*motion_file + ": " + note);
+              source = *motion_file;
+            } else {
+              // (N,) times in s, (N, 6) offsets in m and deg: the CSV's units.
+              const auto t = times_s->unchecked<1>();
+              const auto q = offsets_m_deg->unchecked<2>();
+              if (q.shape(0) != t.shape(0) || q.shape(1) != 6)
+                throw design::request_error(s.project(), "motion",
+                                            fmt::format("needs times (N,) and offsets (N, 6), got ({},) and ({}, {})",
+                                                        t.shape(0), q.shape(0), q.shape(1)));
+              request.motion.resize(6, t.shape(0));
+              for (py::ssize_t k = 0; k < t.shape(0); ++k) {
+                request.motion_times_s.push_back(t(k));
+                for (py::ssize_t d = 0; d < 6; ++d)
+                  request.motion(d, k) = q(k, d) * (d < 3 ? 1.0 : std::numbers::pi / 180.0);
+              }
+            }
+            request.load_case = load_case;
+            request.lines = std::move(lines);
+            request.output_step_s = step_s;
+            request.ramp_s = ramp_s;
+            request.seed = seed;
+            request.waves_on_lines = waves;
+            AnalysisDocuments documents = run_interruptible(
+                [&](RunMonitor& monitor) {
+                  request.progress = monitor.hook();
+                  return s.lines(request, source);
+                },
+                progress);
+            return py::make_tuple(documents.summary_json, columns_to_numpy(documents.time_series));
+          },
+          arg("case"), arg("motion_file"), arg("times"), arg("offsets"), arg("lines"), arg("step"), arg("ramp"),
+          arg("seed"), arg("waves"), arg("progress"))
       .def(
           "optimize",
           [](ProjectSession& s, std::optional<std::string> objective, std::optional<std::string> algorithm,

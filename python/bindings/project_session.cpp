@@ -14,6 +14,7 @@
 #include "design/model/mooring_model.hpp"
 #include "design/project/project_edit.hpp"
 #include "design/project/project_loader.hpp"
+#include "design/results/motion_lines_output.hpp"
 #include "design/results/optimization_output.hpp"
 #include "design/results/soz_output.hpp"
 #include "design/results/static_case_output.hpp"
@@ -127,6 +128,12 @@ AnalysisDocuments ProjectSession::analyze(const design::DynamicAnalysisRequest& 
   const design::DynamicAnalysisResult result = design::run_dynamic_analysis(loaded, request);
   return {design::dynamic_analysis_to_json(result, loaded.project.name).dump(),
           design::dynamic_time_series_columns(result)};
+}
+
+AnalysisDocuments ProjectSession::lines(const design::MotionLinesRequest& request, const std::string& motion_file) {
+  const design::ValidatedProject& loaded = validated();
+  const design::MotionLinesResult result = design::run_motion_lines(loaded, request);
+  return {design::motion_lines_to_json(result, loaded, motion_file).dump(), design::motion_lines_columns(result)};
 }
 
 std::string ProjectSession::optimize_json(const design::OptimizationRequest& request) {

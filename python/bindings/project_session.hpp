@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "design/analysis/dynamic_analysis.hpp"
+#include "design/analysis/motion_lines.hpp"
 #include "design/optimization/pretension_optimizer.hpp"
 #include "design/project/validated_project.hpp"
 #include "design/results/dynamic_analysis_output.hpp"
@@ -75,6 +76,9 @@ class ProjectSession {
   std::string soz_json(const design::SozOptions& options);
   /// `spiral analyze`: summary.json and time_series.csv's columns at full precision.
   AnalysisDocuments analyze(const design::DynamicAnalysisRequest& request);
+  /// `spiral lines`: summary.json and time_series.csv's columns at full
+  /// precision; `motion_file` names the history in the summary.
+  AnalysisDocuments lines(const design::MotionLinesRequest& request, const std::string& motion_file);
   /// `spiral optimize --json` (optimization.json).
   std::string optimize_json(const design::OptimizationRequest& request);
 

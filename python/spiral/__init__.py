@@ -218,6 +218,27 @@ class Project:
         document["time_series"] = series
         return document
 
+    def lines_under_motion(self, case, motion, lines=(), step=0.5, ramp=20.0, seed=None, waves=True,
+                           progress=None):
+        """``spiral lines``: every selected mooring line and riser (default: every
+        intact one) as a dynamic FE line with the hull following ``motion``, in
+        ``case``'s current and sea. ``motion`` is a motion file (str or path:
+        docs/lines.md) or a pair ``(times, offsets)``: times (N,) in s and
+        offsets (N, 6) of surge, sway, heave in m and roll, pitch, yaw in deg.
+        The document of ``summary.json`` (``spiral.motion_lines``) with
+        ``time_series``: the columns of ``time_series.csv`` as numpy arrays.
+        ``progress(fraction)`` is called as the lines advance."""
+        if isinstance(motion, (str, os.PathLike)):
+            summary, series = self._session.lines(case, os.fspath(motion), None, None, list(lines), float(step),
+                                                  float(ramp), seed, bool(waves), progress)
+        else:
+            times, offsets = motion
+            summary, series = self._session.lines(case, None, times, offsets, list(lines), float(step), float(ramp),
+                                                  seed, bool(waves), progress)
+        document = _document(summary)
+        document["time_series"] = series
+        return document
+
     def optimize(self, objective=None, algorithm=None, damaged=None, cases=(), max_evaluations=None, threads=0,
                  level="static", duration=10800.0, seed=1, progress=None):
         """``spiral optimize --json``: the pretension optimization
