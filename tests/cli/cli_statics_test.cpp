@@ -35,12 +35,23 @@ TEST(CliStatics, HelpOnEverySubcommand) {
   }
 }
 
-TEST(CliStatics, ValidatesBothScenarios) {
-  for (const char* name : {"oc4-semisubmersible.yaml", "deepwater-fps.yaml"}) {
+TEST(CliStatics, ValidatesEveryScenario) {
+  for (const char* name : {"oc4-semisubmersible.yaml", "deepwater-fps.yaml", "iea15-volturnus-s.yaml"}) {
     const auto result = run_spiral("validate " + scenario(name));
     EXPECT_EQ(result.exit_code, app::kExitOk) << result.err;
     EXPECT_NE(result.out.find("valid"), std::string::npos);
   }
+}
+
+// The VolturnUS-S scenario end to end (its numbers are validated in
+// tests/validation/design/analysis/volturnus_s_published_test.cpp): three
+// identical catenaries at rest, on the seabed.
+TEST(CliStatics, VolturnUsSStaticsRuns) {
+  const auto result = run_spiral("statics --json " + scenario("iea15-volturnus-s.yaml"));
+  ASSERT_EQ(result.exit_code, app::kExitOk) << result.err;
+  const auto doc = nlohmann::json::parse(result.out);
+  ASSERT_EQ(doc["lines"].size(), 3u);
+  for (const auto& line : doc["lines"]) EXPECT_EQ(line["regime"], "touchdown");
 }
 
 TEST(CliStatics, Oc4JsonMatchesMap) {
