@@ -6,7 +6,7 @@
 //
 // Built from the same pieces as the S-C levels, so that the levels differ
 // only in how the lines enter:
-//   * start: the S-C static case (run_static_case, current on the lines) —
+//   * start: the S-C static case (run_static_case, current on every line) —
 //     hull at its equilibrium, each line's FE statics there with the case's
 //     current (design/analysis/line_dynamics.hpp: polyester at its dynamic EA,
 //     seabed damping and friction), risers from their foot to the hang-off;

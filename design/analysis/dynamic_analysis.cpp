@@ -185,8 +185,15 @@ DynamicModel build_dynamic_model(const ValidatedProject& validated, const Dynami
   const Environment& environment = environment_of(project, load_case);
 
   DynamicModel model;
-  model.statics =
-      request.statics ? *request.statics : run_static_case(validated, {request.load_case, std::nullopt, false});
+  // The S-C levels start from the static case with the current on every line
+  // (a stage's quick case is taken when it is that already: no current, or
+  // FE lines only); the uncoupled level from the quick one, its catenaries
+  // without current.
+  StaticCaseRequest statics_request{request.load_case, std::nullopt, false};
+  statics_request.lines_carry_current = request.level != AnalysisLevel::uncoupled;
+  const bool reuse = request.statics && (statics_request.lines_carry_current ? request.statics->current_on_every_line
+                                                                             : !request.statics->lines_carry_current);
+  model.statics = reuse ? *request.statics : run_static_case(validated, statics_request);
   model.timing.equilibrium_s = model.statics.equilibrium_wall_s;
   model.timing.reduction_s = model.statics.stiffness_wall_s;
   model.notes = model.statics.notes;

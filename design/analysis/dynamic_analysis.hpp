@@ -6,11 +6,16 @@
 //                 (build_mooring_model: no current on the lines, no line
 //                 damping or inertia), solved at the instantaneous fairlead
 //                 positions inside the hull equations; risers (if any) as
-//                 their linearization at the static equilibrium of the case.
+//                 their linearization at the static equilibrium of the case
+//                 (the quick static case: each mooring line in its own
+//                 model, so a catenary carries no current).
 //   sc            Corrêa & Jacob's semi-coupled scheme: the coupled static
-//                 equilibrium with current on the lines (run_static_case),
-//                 the line array reduced there to F0 and the 6x6 tangent K,
-//                 the hull integrated from that position with
+//                 equilibrium of hull and lines with the current profile on
+//                 every mooring line and riser (run_static_case with
+//                 lines_carry_current: FE statics with current drag, whatever
+//                 the line's `model`; the quick statics keep the model), the
+//                 line array reduced there to F0 and the 6x6 tangent K, the
+//                 hull integrated from that position with
 //                 F_lines = F0 − K (q − q0).
 //   sc-enhanced   sc plus the lines' damping and added mass at the fairleads
 //                 (line_hydrodynamics.hpp; after Cruces Girón, Corrêa, Jacob
@@ -90,9 +95,11 @@ struct DynamicAnalysisRequest {
   /// Coupled level: the integrator's work limit per output step (IDA
   /// gives up beyond it: a step-size collapse stops the case, not the machine).
   long coupled_max_steps_between_outputs = 500000;
-  /// The S-C static case of this load case when the caller has it already
+  /// The static case of this load case when the caller has it already
   /// (a stage runs every case's statics first); null: solved here. It must be
-  /// run_static_case of `load_case` with its own damaged line.
+  /// run_static_case of `load_case` with its own damaged line. The S-C levels
+  /// solve their own (lines_carry_current) unless this one has the current on
+  /// every line; the uncoupled level takes it unless it has lines_carry_current.
   const StaticCaseResult* statics = nullptr;
   /// Called with the fraction done (0..1) during the dynamics; may be empty.
   std::function<void(double)> progress;

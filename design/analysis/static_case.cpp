@@ -96,15 +96,24 @@ StaticCaseResult run_static_case(const ValidatedProject& validated, const Static
     environment_load = std::move(mean.load);
     result.notes = std::move(mean.notes);
     line_options.current = current_profile_of(*environment);
+    line_options.lines_carry_current = request.lines_carry_current;
     if (line_options.current) {
-      if (std::any_of(project.mooring.lines.begin(), project.mooring.lines.end(),
-                      [](const MooringLine& l) { return l.model == LineModel::catenary; })) {
+      const bool catenaries = std::any_of(
+          project.mooring.lines.begin(), project.mooring.lines.end(),
+          [&](const MooringLine& l) { return l.model == LineModel::catenary && l.name != line_options.excluded_line; });
+      if (catenaries && request.lines_carry_current) {
+        result.notes.push_back(
+            "current on the mooring lines: every mooring line as an FE line with the current drag "
+            "(the S-C static case), whatever its model");
+      } else if (catenaries) {
+        result.current_on_every_line = false;
         result.notes.push_back(
             "current on the mooring lines: lines with model: catenary carry no current drag (risers and "
             "model: fe lines do)");
       }
     }
   }
+  result.lines_carry_current = request.lines_carry_current;
   const HullModel hull = build_hull_model(project);
   LineArrayModel lines = build_line_array(project, line_options);
   if (request.load_case) {

@@ -3,7 +3,9 @@
 // method, DESIGN.md §1): the equilibrium of hull + every line under a load
 // case (intact or with a line removed), then the line array's 6×6 stiffness
 // and force vector at that position, cross-checked by finite differences,
-// with the natural periods of the moored hull.
+// with the natural periods of the moored hull. The S-C levels take it with
+// `lines_carry_current` (the current on every mooring line, FE statics); the
+// quick statics of the preliminary stage keep each line's own model.
 
 #include <array>
 #include <map>
@@ -25,6 +27,11 @@ struct StaticCaseRequest {
   std::optional<std::string> load_case;     ///< none: still water, intact
   std::optional<std::string> damaged_line;  ///< overrides the load case's damaged line
   bool finite_difference_check = false;     ///< also compute K by central differences (12 array solves)
+  /// The S-C levels' static case: when the load case has current, every
+  /// mooring line is an FE line carrying it (LineArrayOptions), whatever its
+  /// `model`. Off: the quick statics of the preliminary stage, each line in
+  /// its own model (a catenary carries no current).
+  bool lines_carry_current = false;
 };
 
 /// Horizontal and rotational offset of the hull reference point.
@@ -55,6 +62,11 @@ struct StaticCaseResult {
   std::vector<LineStaticsRow> lines;  ///< mooring lines
   std::vector<RiserStaticsRow> risers;
   DesignCondition design_condition = DesignCondition::normal;  ///< selects the riser design factor
+  bool lines_carry_current = false;                            ///< the request's flag
+  /// Every line of the array carried the case's current: no current, or every
+  /// mooring line an FE line (`model: fe`, or lines_carry_current). The S-C
+  /// levels take only such a case (build_dynamic_model).
+  bool current_on_every_line = true;
 
   engine::Vector6d line_force = engine::Vector6d::Zero();       ///< F of the line array, N, N·m
   engine::Matrix6d stiffness = engine::Matrix6d::Zero();        ///< analytic K of the line array

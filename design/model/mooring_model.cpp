@@ -134,7 +134,7 @@ LineArrayModel build_line_array(const Project& project, const LineArrayOptions& 
   for (const MooringLine& line : project.mooring.lines) {
     if (line.name == options.excluded_line) continue;
     const double anchor_height_m = std::max(0.0, line.anchor_g.z() + project.site.depth_m);
-    if (line.model == LineModel::fe) {
+    if (line.model == LineModel::fe || (options.lines_carry_current && options.current)) {
       const engine::FeLineModel fe = fe_model_of(project, line, types);
       model.lines.push_back(std::make_unique<engine::FeStaticLine>(
           line.name, line.anchor_g, line.fairlead_b, fe,

@@ -36,6 +36,12 @@ struct LineArrayOptions {
   std::string excluded_line;                      ///< damaged condition: this mooring line is removed
   std::optional<engine::CurrentProfile> current;  ///< acts on FE lines (mooring `model: fe`, risers)
   bool include_risers = true;
+  /// With a `current`: every mooring line is an FE line carrying it, whatever
+  /// its `model` (a catenary has no current drag). The S-C levels' static
+  /// case (Corrêa & Jacob; Cruces Girón et al.): the mean offset and the 6x6
+  /// K are those of the current-loaded lines. Without a current it changes
+  /// nothing: each line keeps its own model (a catenary is exact there).
+  bool lines_carry_current = false;
 };
 
 /// The resolved type named `name`; std::invalid_argument if there is none.
@@ -72,7 +78,8 @@ engine::FeLineModel fe_line_model(const Project& project, const MooringLine& lin
                                   const std::vector<LineTypeProperties>& types);
 
 /// Every line attached to the hull for the coupled static analysis: mooring
-/// lines as catenaries or FE lines (`model`), risers as FE lines with bending.
+/// lines as catenaries or FE lines (`model`; all FE with
+/// `options.lines_carry_current` and a current), risers as FE lines with bending.
 LineArrayModel build_line_array(const Project& project, const LineArrayOptions& options);
 
 }  // namespace spiral::design

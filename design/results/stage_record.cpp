@@ -87,11 +87,12 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(OffsetSummary, horizontal_m, horizontal_pct_d
                                    pitch_deg, yaw_deg)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(NaturalMode, period_s, dominant_dof)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(StaticCaseResult, case_name, environment, integrity, damaged_line, offset,
-                                   offset_summary, lines, risers, design_condition, line_force, stiffness,
-                                   stiffness_finite_difference, stiffness_check_relative_difference, line_stiffness,
-                                   line_force_6dof, hydrostatic_force, environment_force, residual,
-                                   hydrostatic_stiffness, notes, natural_modes, added_mass_included,
-                                   equilibrium_iterations, equilibrium_wall_s, stiffness_wall_s)
+                                   offset_summary, lines, risers, design_condition, lines_carry_current,
+                                   current_on_every_line, line_force, stiffness, stiffness_finite_difference,
+                                   stiffness_check_relative_difference, line_stiffness, line_force_6dof,
+                                   hydrostatic_force, environment_force, residual, hydrostatic_stiffness, notes,
+                                   natural_modes, added_mass_included, equilibrium_iterations, equilibrium_wall_s,
+                                   stiffness_wall_s)
 
 // The stage's mooring overview.
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(RestoringCurve, direction_deg, offset_m, force_N, stopped)

@@ -23,7 +23,9 @@
 
 namespace spiral::design {
 
-inline constexpr int kStageRecordVersion = 1;
+/// 2: StaticCaseResult records whether its lines carried the current (the
+/// S-C levels re-solve a quick case that did not).
+inline constexpr int kStageRecordVersion = 2;
 
 using RecordBytes = std::vector<std::uint8_t>;
 
