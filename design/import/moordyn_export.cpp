@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <set>
 
@@ -168,6 +169,11 @@ class DeckWriter {
   }
 
   void notes() {
+    if (project_.site.seabed.friction_lateral != project_.site.seabed.friction_axial)
+      front_.push_back(
+          fmt::format("spiral note: MoorDyn-C has one isotropic FrictionCoefficient: the axial {} is written, "
+                      "not the lateral {} (MoorDyn-F reads both, mu_kA and mu_kT)",
+                      num(project_.site.seabed.friction_axial), num(project_.site.seabed.friction_lateral)));
     front_.push_back(
         "spiral note: not written: the hull, the environments, load cases, criteria and line groups; "
         "MBL, names and element lengths are in the spiral: lines above");
@@ -210,15 +216,46 @@ class DeckWriter {
     d += "---------------------- OPTIONS -------------------------------------------------\n";
     d += fmt::format("{}  WtrDpth  - water depth (m)\n", num(site.depth_m));
     d += fmt::format("{}  g  - gravity (m/s^2)\n", num(site.gravity_m_per_s2));
-    d += fmt::format("{}  rhoW  - water density (kg/m^3)\n", num(site.water_density_kg_per_m3));
+    // MoorDyn-C and MoorDyn-F name the water density and the friction
+    // differently (MoorDyn docs, "Options"): MoorDyn-C v2.7.1 reads `rho` and
+    // one isotropic `FrictionCoefficient` and skips `rhoW`, `mu_kA`, `mu_kT`
+    // with a warning (their values then silently become its defaults, 1025
+    // and no friction); MoorDyn-F reads those. Both sets are written, so
+    // either program gets every value (each warns about the other's names).
+    d += fmt::format("{}  rho  - water density (kg/m^3), MoorDyn-C\n", num(site.water_density_kg_per_m3));
+    d += fmt::format("{}  rhoW  - water density (kg/m^3), MoorDyn-F\n", num(site.water_density_kg_per_m3));
     d += fmt::format("{}  kBot  - seabed stiffness (Pa/m)\n", num(site.seabed.normal_stiffness_Pa_per_m));
-    d += fmt::format("{}  mu_kA  - seabed friction along the line (-)\n", num(site.seabed.friction_axial));
-    d += fmt::format("{}  mu_kT  - seabed friction across the line (-)\n", num(site.seabed.friction_lateral));
+    d += fmt::format("{}  FrictionCoefficient  - seabed friction, MoorDyn-C (isotropic: the axial one)\n",
+                     num(site.seabed.friction_axial));
+    d += fmt::format("{}  mu_kA  - seabed friction along the line (-), MoorDyn-F\n", num(site.seabed.friction_axial));
+    d +=
+        fmt::format("{}  mu_kT  - seabed friction across the line (-), MoorDyn-F\n", num(site.seabed.friction_lateral));
+    d += fmt::format("{}  dtM  - time step (s): {} of the shortest segment's axial wave transit time\n",
+                     num(time_step_s()), num(kExportTimeStepFraction));
     d += "---------------------- OUTPUTS -------------------------------------------------\n";
     for (std::size_t i = 0; i < line_rows_.size(); ++i) d += fmt::format("FairTen{}\nAnchTen{}\n", i + 1, i + 1);
     d += "END\n";
     d += "------------------------- need this line ---------------------------------------\n";
     return d;
+  }
+
+  /// dtM: MoorDyn-C without one steps at CFL 0.5 of each segment's axial
+  /// period (source/Util/CFL.hpp: 0.5 · 2π l / c, c = √(EA/m)), about 3 l/c,
+  /// beyond its explicit RK2's stability: the exported OC4 deck (10 m
+  /// segments, l/c = 3.9 ms) diverged at 0.14 s with its 12 ms (MoorDyn-C
+  /// v2.7.1, 2026-12-02), and ran stable at 2 ms. Written: that fraction of
+  /// the shortest l/c of any segment (structural mass: the added mass only
+  /// slows the wave), rounded down to one significant digit.
+  double time_step_s() const {
+    double transit_s = std::numeric_limits<double>::infinity();
+    for (const LineRow& l : line_rows_)
+      for (const TypeRow& t : type_rows_)
+        if (t.name == l.type)
+          transit_s = std::min(transit_s, l.length_m / l.segments / std::sqrt(t.EA_N / t.mass_kg_per_m));
+    if (!std::isfinite(transit_s)) return 0.001;
+    const double dt_s = kExportTimeStepFraction * transit_s;
+    const double per_decade = std::pow(10.0, -std::floor(std::log10(dt_s)));  // exact for 10^k, k <= 22
+    return std::floor(dt_s * per_decade) / per_decade;  // digit / 10^k: the double nearest the decimal
   }
 
   const Project& project_;

@@ -14,8 +14,10 @@
 //    body-frame position: OpenFAST's platform reference point is spiral's hull
 //    reference point); a riser from its foot (placed as spiral places it,
 //    design/model/riser_model.hpp) to its hang-off; NumSegs from the FE mesh;
-//  - OPTIONS: WtrDpth, g, rhoW, kBot, the friction coefficients (MoorDyn-F's
-//    mu_kA / mu_kT).
+//  - OPTIONS: WtrDpth, g, the water density and the friction coefficients
+//    under both programs' names (MoorDyn-C: rho, FrictionCoefficient;
+//    MoorDyn-F: rhoW, mu_kA / mu_kT), kBot, and a dtM (MoorDyn-C's own
+//    default step diverges on these decks; see moordyn_export.cpp).
 //
 // What MoorDyn has no place for (MBL, line names, element lengths) goes into
 // the front matter as `spiral:` lines, which MoorDyn ignores and `spiral
@@ -39,5 +41,11 @@ std::string export_moordyn(const Project& project, const std::vector<LineTypePro
 /// each segment's axial mode (MoorDyn docs, "Line Types"; the value of the
 /// NREL OC4 and IEA-15 decks).
 inline constexpr double kExportDampingRatio = -1.0;
+
+/// dtM written: this fraction of the shortest axial wave transit time
+/// l/√(EA/m) of any segment, rounded down to one digit. Checked on the
+/// exported OC4 deck in MoorDyn-C v2.7.1: stable up to 0.5 (2 ms), diverged at
+/// its default ≈ 3.1; NREL's own OC4 deck runs at 0.06 (docs/moordyn.md).
+inline constexpr double kExportTimeStepFraction = 0.2;
 
 }  // namespace spiral::design

@@ -1,5 +1,5 @@
 // The lines under a given motion history (design/analysis/motion_lines.hpp)
-// against independent references, on the OC4-DeepCwind chain L1 (835.5 m of
+// against independent references, on the OC4-DeepCwind chain L1 (835.35 m of
 // 76.6 mm studless chain, 200 m of water) under prescribed surge:
 //
 //  - Convergence: surge 5 m at 100 s + 1 m at 10 s (the MoorDyn comparison of

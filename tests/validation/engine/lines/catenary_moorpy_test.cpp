@@ -9,13 +9,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "engine/lines/catenary.hpp"
 #include "support/expect_near.hpp"
+#include "support/numeric_csv.hpp"
 
 namespace spiral::engine {
 namespace {
@@ -39,23 +38,11 @@ struct MoorPyCase {
 
 std::vector<MoorPyCase> read_cases() {
   const std::string path = std::string(SPIRAL_TEST_DATA_DIR) + "/validation/moorpy/test_catenary_cases.csv";
-  std::ifstream in(path);
-  EXPECT_TRUE(in.good()) << "cannot open " << path;
+  const test::NumericCsv table = test::read_numeric_csv(path);
+  EXPECT_EQ(table.header, "case,XF,ZF,L,EA,W,CB,HF0,VF0,fAH,fAV,fBH,fBV,LBot") << "CSV layout changed";
   std::vector<MoorPyCase> cases;
-  std::string row;
-  bool header_seen = false;
-  while (std::getline(in, row)) {
-    if (row.empty() || row[0] == '#') continue;
-    if (!header_seen) {  // column names
-      EXPECT_EQ(row, "case,XF,ZF,L,EA,W,CB,HF0,VF0,fAH,fAV,fBH,fBV,LBot") << "CSV layout changed";
-      header_seen = true;
-      continue;
-    }
-    std::vector<double> v;
-    std::stringstream ss(row);
-    std::string cell;
-    while (std::getline(ss, cell, ',')) v.push_back(std::stod(cell));
-    EXPECT_EQ(v.size(), 14u) << row;
+  for (const std::vector<double>& v : table.rows) {
+    EXPECT_EQ(v.size(), 14u);
     if (v.size() != 14u) continue;
     cases.push_back(
         {static_cast<int>(v[0]), v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8], v[9], v[10], v[11], v[12], v[13]});
