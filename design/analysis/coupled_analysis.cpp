@@ -6,7 +6,6 @@
 
 #include "design/project/request_error.hpp"
 #include "design/model/environment_loads.hpp"
-#include "design/model/hull_model.hpp"
 #include "design/analysis/line_dynamics.hpp"
 #include "design/model/mooring_model.hpp"
 #include "engine/analysis/coupled_dynamics.hpp"
@@ -57,14 +56,14 @@ DynamicAnalysisResult run_coupled_analysis(const ValidatedProject& validated, co
   DynamicAnalysisRequest sc = request;
   sc.level = AnalysisLevel::semi_coupled;
   DynamicModel model = build_dynamic_model(validated, sc);
-  const LoadCase& load_case = find_load_case(project, request.load_case);
-  const Environment& environment = environment_of(project, load_case);
+  const LoadCase& load_case = *model.case_model.load_case;
+  const Environment& environment = *model.case_model.environment;
 
   DynamicAnalysisResult result = result_of_model(model, request, load_case.name, environment.name);
   result.timing.reduction_s = 0.0;  // set below: the FE lines' statics
   if (model.hull.radiation_memory) {
     model.hull.radiation_memory.reset();
-    model.hull.added_mass = build_hull_model(project).low_frequency_added_mass;
+    model.hull.added_mass = model.case_model.hull->low_frequency_added_mass;
     result.notes.push_back(
         "coupled: the hull's radiation memory is not in the coupled system; the hull takes "
         "A(w_LF) and B_lin there");
@@ -73,10 +72,10 @@ DynamicAnalysisResult run_coupled_analysis(const ValidatedProject& validated, co
   // The lines at the hull's static equilibrium, with the case's current.
   engine::Stopwatch start;
   const std::string damaged = load_case.damaged_line.value_or("");
-  const std::optional<engine::CurrentProfile> current = current_profile_of(environment);
+  const std::optional<engine::CurrentProfile>& current = model.case_model.current;
   const engine::Vector6d q0 = model.statics.offset;
   const engine::HullPose pose0 = engine::pose_from_offset(project.hull.reference_point_g, q0);
-  const std::vector<LineTypeProperties> types = resolve_line_types(project);
+  const std::vector<LineTypeProperties>& types = *model.case_model.line_types;
   std::vector<const MooringLine*> moorings;
   for (const MooringLine& l : project.mooring.lines) {
     if (l.name != damaged) moorings.push_back(&l);
@@ -117,7 +116,7 @@ DynamicAnalysisResult run_coupled_analysis(const ValidatedProject& validated, co
   const auto n_wave = static_cast<Eigen::Index>(std::ceil(request.duration_s / kWaveMotionSample_s)) + 2;
   const Eigen::VectorXd wave_times =
       Eigen::VectorXd::LinSpaced(n_wave, 0.0, kWaveMotionSample_s * static_cast<double>(n_wave - 1));
-  if (auto wf = wave_frequency_motions(validated, model, request, wave_times)) {
+  if (auto wf = wave_frequency_motions(validated, model, wave_times)) {
     options.wave_frequency_motion = ramped_wave_motion(*wf, kWaveMotionSample_s, request.line_dynamics_ramp_s);
     result.wave_frequency_computed = true;
   } else if (environment.waves && model.wave_split_frequency_rad_per_s == 0.0) {
@@ -182,7 +181,7 @@ DynamicAnalysisResult run_coupled_analysis(const ValidatedProject& validated, co
     result.dynamic_tensions.push_back(std::move(t));
   }
   start.restart();
-  if (request.compute_tensions) result.tensions = quasi_static_fairlead_tensions(project, damaged, result.total);
+  if (request.compute_tensions) result.tensions = quasi_static_fairlead_tensions(project, types, damaged, result.total);
   result.timing.tensions_s = start.seconds();
   {
     std::size_t worst = 0;

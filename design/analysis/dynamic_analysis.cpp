@@ -96,30 +96,36 @@ engine::HullSimulationOptions forced_run_options(const DynamicAnalysisRequest& r
   return options;
 }
 
-/// Wave-frequency motions (global, m, rad) at `times` from the .4 RAOs or
-/// from .1 + .3; empty when the project has neither (or no waves).
-std::optional<Eigen::Matrix<double, 6, Eigen::Dynamic>> wave_frequency_motion(const Project& project,
-                                                                              const Environment& environment,
-                                                                              const DynamicModel& model,
-                                                                              const DynamicAnalysisRequest& request,
-                                                                              const Eigen::VectorXd& times) {
+/// The motion RAOs of the hull at the case's static equilibrium: the .4
+/// file, or the .3 excitation through the hull's equation of motion with the
+/// static case's line stiffness; empty without waves or without those files.
+std::shared_ptr<const engine::MotionRaoTable> motion_raos_of(const Project& project, const DynamicModel& model) {
   const auto& hydro = project.hull.hydrodynamics;
-  if (!environment.waves || !hydro || !(hydro->rao_file || hydro->excitation_file)) return std::nullopt;
-  const HullModel hull = build_hull_model(project);
+  const Environment* environment = model.case_model.environment;
+  if (!environment || !environment->waves || !hydro || !(hydro->rao_file || hydro->excitation_file)) return nullptr;
+  const HullModel& hull = *model.case_model.hull;
   const engine::WamitReadOptions read = wamit_options_of(project, *hydro);
-  const engine::MotionRaoTable raos =
+  return std::make_shared<const engine::MotionRaoTable>(
       hydro->rao_file ? engine::read_wamit_4(*hydro->rao_file, read)
                       : engine::motion_raos_from_excitation(
                             engine::read_wamit_3(*hydro->excitation_file, read), *hull.radiation, hull.mass_matrix,
-                            model.hull.linear_damping, hull.statics.hydrostatic_stiffness + model.statics.stiffness);
-  const engine::WaveRealization sea = realize_sea(project, *environment.waves, request.duration_s, request.seed);
+                            model.hull.linear_damping, hull.statics.hydrostatic_stiffness + model.statics.stiffness));
+}
+
+/// Wave-frequency motions (global, m, rad) at `times` from the model's RAOs
+/// on the model's sea; empty when it has no RAOs (no files or no waves).
+std::optional<Eigen::Matrix<double, 6, Eigen::Dynamic>> wave_frequency_motion(const Project& project,
+                                                                              const DynamicModel& model,
+                                                                              const Eigen::VectorXd& times) {
+  if (!model.wave_raos || !model.sea) return std::nullopt;
   const Eigen::Vector3d& ref = project.hull.reference_point_g;
   try {
     const engine::FirstOrderWaveSeries series = engine::prepare_first_order_series(
-        sea, raos, {ref.x() + model.statics.offset(0), ref.y() + model.statics.offset(1), model.statics.offset(5)});
+        *model.sea, *model.wave_raos,
+        {ref.x() + model.statics.offset(0), ref.y() + model.statics.offset(1), model.statics.offset(5)});
     return engine::evaluate_first_order_many(series, times);
   } catch (const engine::TableRangeError& e) {
-    heading_error(project, environment.name, "wave-frequency RAOs (hull.hydrodynamics)", e);
+    heading_error(project, model.case_model.environment->name, "wave-frequency RAOs (hull.hydrodynamics)", e);
   }
 }
 
@@ -143,11 +149,8 @@ engine::WaveRealization realize_sea(const Project& project, const Waves& waves, 
 
 std::optional<Eigen::Matrix<double, 6, Eigen::Dynamic>> wave_frequency_motions(const ValidatedProject& validated,
                                                                                const DynamicModel& model,
-                                                                               const DynamicAnalysisRequest& request,
                                                                                const Eigen::VectorXd& times_s) {
-  const Project& project = validated.project;
-  const LoadCase& load_case = find_load_case(project, request.load_case);
-  return wave_frequency_motion(project, environment_of(project, load_case), model, request, times_s);
+  return wave_frequency_motion(validated.project, model, times_s);
 }
 
 const char* to_string(AnalysisLevel level) {
@@ -181,10 +184,10 @@ DynamicModel build_dynamic_model(const ValidatedProject& validated, const Dynami
                         fmt::format("need duration > 0 s and 0 < output step <= duration, got {} s and {} s",
                                     request.duration_s, request.output_step_s));
   }
-  const LoadCase& load_case = find_load_case(project, request.load_case);
-  const Environment& environment = environment_of(project, load_case);
-
   DynamicModel model;
+  model.case_model = build_case_model(project, request.load_case);
+  const LoadCase& load_case = *model.case_model.load_case;
+  const Environment& environment = *model.case_model.environment;
   // The S-C levels start from the static case with the current on every line
   // (a stage's quick case is taken when it is that already: no current, or
   // FE lines only); the uncoupled level from the quick one, its catenaries
@@ -193,14 +196,14 @@ DynamicModel build_dynamic_model(const ValidatedProject& validated, const Dynami
   statics_request.lines_carry_current = request.level != AnalysisLevel::uncoupled;
   const bool reuse = request.statics && (statics_request.lines_carry_current ? request.statics->current_on_every_line
                                                                              : !request.statics->lines_carry_current);
-  model.statics = reuse ? *request.statics : run_static_case(validated, statics_request);
+  model.statics = reuse ? *request.statics : run_static_case(validated, model.case_model, statics_request);
   model.timing.equilibrium_s = model.statics.equilibrium_wall_s;
   model.timing.reduction_s = model.statics.stiffness_wall_s;
   model.notes = model.statics.notes;
   model.initial_offset = model.statics.offset;
 
   // Hull.
-  const HullModel hull = build_hull_model(project);
+  const HullModel& hull = *model.case_model.hull;
   model.hull.mass = hull.mass_matrix;
   model.hull.added_mass = hull.low_frequency_added_mass;
   model.hull.hydrostatic_stiffness = hull.statics.hydrostatic_stiffness;
@@ -235,13 +238,19 @@ DynamicModel build_dynamic_model(const ValidatedProject& validated, const Dynami
     model.notes.push_back("no hull.hydrodynamics: the hull has no added mass and no wave-frequency motions");
   }
 
+  // Wave-frequency RAOs at this equilibrium: the data files read once for
+  // every use below (the enhanced S-C's first pass, the WF motion, the
+  // coupled level's fairlead motion).
+  model.wave_raos = motion_raos_of(project, model);
+
   // Lines.
   const Eigen::Vector3d reference_point = project.hull.reference_point_g;
   const std::string damaged = load_case.damaged_line.value_or("");
   engine::LinearizedLines linearized{model.statics.line_force, model.statics.stiffness, model.statics.offset,
                                      std::nullopt, std::nullopt};
   if (request.level == AnalysisLevel::uncoupled) {
-    auto mooring = std::make_shared<LineArrayModel>(build_mooring_model(project, damaged));
+    auto mooring =
+        std::make_shared<LineArrayModel>(build_mooring_model(project, *model.case_model.line_types, damaged));
     const engine::HullPose pose_eq = engine::pose_from_offset(reference_point, model.statics.offset);
     // The rest of the array (risers; current drag on model: fe lines) held at
     // its linearization about the S-C equilibrium: F_rest0 − K_rest (q − q0).
@@ -391,8 +400,8 @@ DynamicModel build_dynamic_model(const ValidatedProject& validated, const Dynami
     const engine::HullTimeSeries plain = engine::simulate_hull(model.hull, model.loads, model.initial_offset,
                                                                engine::Vector6d::Zero(), forced_run_options(request));
     Eigen::Matrix<double, 6, Eigen::Dynamic> motion = plain.position;
-    if (const auto wf = wave_frequency_motion(project, environment, model, request, plain.times_s)) motion += *wf;
-    LineArrayModel mooring = build_mooring_model(project, damaged);
+    if (const auto wf = wave_frequency_motion(project, model, plain.times_s)) motion += *wf;
+    LineArrayModel mooring = build_mooring_model(project, *model.case_model.line_types, damaged);
     std::vector<Eigen::Vector3d> fairleads_b;
     for (const auto& line : mooring.lines) fairleads_b.push_back(line->attachment_b());
     const auto covariance =
@@ -431,10 +440,12 @@ DynamicAnalysisResult result_of_model(const DynamicModel& model, const DynamicAn
   return result;
 }
 
-std::vector<TensionSeries> quasi_static_fairlead_tensions(const Project& project, const std::string& damaged_line,
+std::vector<TensionSeries> quasi_static_fairlead_tensions(const Project& project,
+                                                          const std::vector<LineTypeProperties>& types,
+                                                          const std::string& damaged_line,
                                                           const Eigen::Matrix<double, 6, Eigen::Dynamic>& total) {
   std::vector<TensionSeries> tensions;
-  LineArrayModel mooring = build_mooring_model(project, damaged_line);
+  LineArrayModel mooring = build_mooring_model(project, types, damaged_line);
   const Eigen::Index n = total.cols();
   for (const auto& line : mooring.lines)
     tensions.push_back({line->name(), std::vector<double>(n), std::vector<Eigen::Vector3d>(n)});
@@ -504,7 +515,7 @@ DynamicAnalysisResult run_dynamic_analysis(const ValidatedProject& validated, co
         fmt::format("Morison hull: low- and wave-frequency motions integrated together with the member "
                     "loads; split by a zero-phase low-pass at {:.3g} rad/s ({:g} x the lowest wave frequency)",
                     model.wave_split_frequency_rad_per_s, kMorisonSplitFraction));
-  } else if (auto wf = wave_frequency_motion(project, environment, model, request, lf.times_s)) {
+  } else if (auto wf = wave_frequency_motion(project, model, lf.times_s)) {
     result.wave_frequency = std::move(*wf);
     result.wave_frequency_computed = true;
   } else if (environment.waves) {
@@ -519,7 +530,8 @@ DynamicAnalysisResult run_dynamic_analysis(const ValidatedProject& validated, co
   // Quasi-static fairlead tensions at the total motion.
   start.restart();
   if (request.compute_tensions) {
-    result.tensions = quasi_static_fairlead_tensions(project, load_case.damaged_line.value_or(""), result.total);
+    result.tensions = quasi_static_fairlead_tensions(project, *model.case_model.line_types,
+                                                     load_case.damaged_line.value_or(""), result.total);
   }
   result.timing.tensions_s = start.seconds();
 
@@ -527,7 +539,8 @@ DynamicAnalysisResult run_dynamic_analysis(const ValidatedProject& validated, co
     start.restart();
     LineDynamicsInput lines;
     lines.damaged_line = load_case.damaged_line.value_or("");
-    lines.current = current_profile_of(environment);
+    lines.current = model.case_model.current;
+    lines.line_types = model.case_model.line_types;
     lines.static_offset = model.initial_offset;
     lines.t0_s = result.times_s(0);
     lines.dt_s = result.times_s(1) - result.times_s(0);

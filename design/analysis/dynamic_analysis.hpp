@@ -58,6 +58,7 @@
 // (equilibrium, line or integrator failure).
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -126,6 +127,12 @@ struct AnalysisTimings {
 /// The low-frequency model of a case as the hull integrator takes it, with
 /// what it was built from (for tests: free decay, mean offset).
 struct DynamicModel {
+  /// The case's hull, line types and environment, built once for the run and
+  /// shared by its static case, its dynamics and its dynamic lines.
+  CaseModel case_model;
+  /// Wave-frequency motion RAOs at the static equilibrium (.4, or .1 + .3
+  /// with the case's line stiffness); empty without waves or those files.
+  std::shared_ptr<const engine::MotionRaoTable> wave_raos;
   engine::HullDynamicsModel hull;
   engine::HullLoads loads;
   engine::Vector6d initial_offset = engine::Vector6d::Zero();  ///< static equilibrium q0
@@ -185,11 +192,10 @@ struct DynamicAnalysisResult {
   AnalysisTimings timing;
 };
 
-/// Wave-frequency hull motions (global, m, rad) of the request's case at
-/// `times_s`, from the .4 RAOs or .1 + .3; empty without them or without waves.
+/// Wave-frequency hull motions (global, m, rad) of the model's case at
+/// `times_s` on its sea, from its RAOs; empty without them or without waves.
 std::optional<Eigen::Matrix<double, 6, Eigen::Dynamic>> wave_frequency_motions(const ValidatedProject& project,
                                                                                const DynamicModel& model,
-                                                                               const DynamicAnalysisRequest& request,
                                                                                const Eigen::VectorXd& times_s);
 
 /// A result that carries the model's case data, notes and set-up timings
@@ -199,7 +205,9 @@ DynamicAnalysisResult result_of_model(const DynamicModel& model, const DynamicAn
 
 /// Quasi-static fairlead tension of every intact mooring line (catenary) at
 /// each column of `total` (hull offsets, m, rad).
-std::vector<TensionSeries> quasi_static_fairlead_tensions(const Project& project, const std::string& damaged_line,
+std::vector<TensionSeries> quasi_static_fairlead_tensions(const Project& project,
+                                                          const std::vector<LineTypeProperties>& types,
+                                                          const std::string& damaged_line,
                                                           const Eigen::Matrix<double, 6, Eigen::Dynamic>& total);
 
 /// The seeded sea of `waves` over `duration_s` from t = 0 (200 components per

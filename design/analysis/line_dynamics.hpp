@@ -21,7 +21,8 @@
 // static midpoint — fixed_point_wave_kinematics.hpp says why and what it costs),
 // polyester with its dynamic EA at the section's mean static tension
 // (design/project/line_properties.hpp), seabed penalty from site.seabed with contact
-// damping c = c_bot · d (c_bot = 1e5 Pa·s/m, MoorDyn's default) and Coulomb
+// damping c = c_bot · d (c_bot = 1e5 Pa·s/m; MoorDyn-C 2.7's default is 3e5,
+// immaterial on the OC4 chain: tests/data/validation/moordyn-oc4-surge) and Coulomb
 // friction (site.seabed.friction_axial / friction_lateral, regularised below
 // 0.01 m/s). Lines run in parallel on all cores.
 //
@@ -73,6 +74,8 @@ struct LineDynamicsInput {
   /// Waves on the lines (linear kinematics at each element's static
   /// midpoint, engine/environment/fixed_point_wave_kinematics.hpp); null: none.
   std::shared_ptr<const engine::WaveRealization> sea;
+  /// The project's resolved line types (a case model's); null: resolved here.
+  std::shared_ptr<const std::vector<LineTypeProperties>> line_types;
 };
 
 struct LineDynamicsSeries {

@@ -6,10 +6,10 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
 #include "design/project/request_error.hpp"
 #include "design/model/environment_loads.hpp"
-#include "design/model/hull_model.hpp"
 #include "design/model/mooring_model.hpp"
 #include "design/criteria/riser_checks.hpp"
 #include "engine/analysis/fe_static_line.hpp"
@@ -65,16 +65,24 @@ std::vector<NaturalMode> natural_modes(const engine::Matrix6d& stiffness, const 
 
 StaticCaseResult run_static_case(const ValidatedProject& validated, const StaticCaseRequest& request,
                                  RestSolutionCache* cache) {
+  return run_static_case(validated, build_case_model(validated.project, request.load_case), request, cache);
+}
+
+StaticCaseResult run_static_case(const ValidatedProject& validated, const CaseModel& case_model,
+                                 const StaticCaseRequest& request, RestSolutionCache* cache) {
   const Project& project = validated.project;
   StaticCaseResult result;
   result.case_name = "still-water";
   result.environment = "none";
   std::optional<std::string> damaged = request.damaged_line;
-  if (request.load_case) {
-    const LoadCase* it = &find_load_case(project, *request.load_case);
-    result.case_name = it->name;
-    result.environment = it->environment;
-    if (!damaged) damaged = it->damaged_line;
+  if (request.load_case.has_value() != (case_model.load_case != nullptr) ||
+      (request.load_case && *request.load_case != case_model.load_case->name)) {
+    throw std::invalid_argument("run_static_case: the case model is not that of the requested load case");
+  }
+  if (const LoadCase* load_case = case_model.load_case) {
+    result.case_name = load_case->name;
+    result.environment = load_case->environment;
+    if (!damaged) damaged = load_case->damaged_line;
   }
   if (damaged && std::none_of(project.mooring.lines.begin(), project.mooring.lines.end(),
                               [&](const MooringLine& l) { return l.name == *damaged; })) {
@@ -89,13 +97,11 @@ StaticCaseResult run_static_case(const ValidatedProject& validated, const Static
   engine::ExternalLoad environment_load;
   LineArrayOptions line_options;
   line_options.excluded_line = damaged.value_or("");
-  if (request.load_case) {
-    const auto environment = std::find_if(project.environments.begin(), project.environments.end(),
-                                          [&](const Environment& e) { return e.name == result.environment; });
-    MeanEnvironmentLoad mean = mean_environment_load(project, *environment);
+  if (case_model.environment) {
+    MeanEnvironmentLoad mean = mean_environment_load(project, *case_model.environment);
     environment_load = std::move(mean.load);
     result.notes = std::move(mean.notes);
-    line_options.current = current_profile_of(*environment);
+    line_options.current = case_model.current;
     line_options.lines_carry_current = request.lines_carry_current;
     if (line_options.current) {
       const bool catenaries = std::any_of(
@@ -114,14 +120,9 @@ StaticCaseResult run_static_case(const ValidatedProject& validated, const Static
     }
   }
   result.lines_carry_current = request.lines_carry_current;
-  const HullModel hull = build_hull_model(project);
-  LineArrayModel lines = build_line_array(project, line_options);
-  if (request.load_case) {
-    result.design_condition =
-        std::find_if(project.load_cases.begin(), project.load_cases.end(), [&](const LoadCase& c) {
-          return c.name == *request.load_case;
-        })->condition;
-  }
+  const HullModel& hull = *case_model.hull;
+  LineArrayModel lines = build_line_array(project, *case_model.line_types, line_options);
+  if (case_model.load_case) result.design_condition = case_model.load_case->condition;
 
   engine::Stopwatch start;
   if (cache) {

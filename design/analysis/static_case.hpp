@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "design/criteria/riser_checks.hpp"
+#include "design/model/case_model.hpp"
 #include "design/model/riser_model.hpp"
 #include "design/analysis/statics_study.hpp"
 #include "design/project/validated_project.hpp"
@@ -108,5 +109,8 @@ struct RestSolutionCache {
 /// `cache` (optional): rest-position solutions to take and to add to.
 StaticCaseResult run_static_case(const ValidatedProject& project, const StaticCaseRequest& request,
                                  RestSolutionCache* cache = nullptr);
+/// The same on a case model already built for `request.load_case`.
+StaticCaseResult run_static_case(const ValidatedProject& project, const CaseModel& case_model,
+                                 const StaticCaseRequest& request, RestSolutionCache* cache = nullptr);
 
 }  // namespace spiral::design

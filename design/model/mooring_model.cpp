@@ -109,8 +109,12 @@ double pretension_at_rest_N(const Project& project, const MooringLine& line,
 }
 
 LineArrayModel build_mooring_model(const Project& project, const std::string& excluded_line) {
+  return build_mooring_model(project, resolve_line_types(project), excluded_line);
+}
+
+LineArrayModel build_mooring_model(const Project& project, const std::vector<LineTypeProperties>& types,
+                                   const std::string& excluded_line) {
   check_excluded_line(project, excluded_line);
-  const std::vector<LineTypeProperties> types = resolve_line_types(project);
   LineArrayModel model;
   model.reference_point_g = project.hull.reference_point_g;
   for (const MooringLine& line : project.mooring.lines) {
@@ -127,8 +131,12 @@ LineArrayModel build_mooring_model(const Project& project, const std::string& ex
 }
 
 LineArrayModel build_line_array(const Project& project, const LineArrayOptions& options) {
+  return build_line_array(project, resolve_line_types(project), options);
+}
+
+LineArrayModel build_line_array(const Project& project, const std::vector<LineTypeProperties>& types,
+                                const LineArrayOptions& options) {
   check_excluded_line(project, options.excluded_line);
-  const std::vector<LineTypeProperties> types = resolve_line_types(project);
   LineArrayModel model;
   model.reference_point_g = project.hull.reference_point_g;
   for (const MooringLine& line : project.mooring.lines) {

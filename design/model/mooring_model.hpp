@@ -68,7 +68,10 @@ engine::CatenaryLine catenary_of(const Project& project, const MooringLine& line
 /// The mooring lines of the project as quasi-static catenaries (every line,
 /// whatever its `model`: the quick look of `spiral statics`). `excluded_line`,
 /// when not empty, names a line to leave out. Throws std::invalid_argument
-/// for an unknown line name.
+/// for an unknown line name. `types`: the project's resolved line types (a
+/// case model holds them); without them they are resolved here.
+LineArrayModel build_mooring_model(const Project& project, const std::vector<LineTypeProperties>& types,
+                                   const std::string& excluded_line = {});
 LineArrayModel build_mooring_model(const Project& project, const std::string& excluded_line = {});
 
 /// The FE model of one mooring line: per segment its EA, mass, submerged
@@ -80,6 +83,8 @@ engine::FeLineModel fe_line_model(const Project& project, const MooringLine& lin
 /// Every line attached to the hull for the coupled static analysis: mooring
 /// lines as catenaries or FE lines (`model`; all FE with
 /// `options.lines_carry_current` and a current), risers as FE lines with bending.
+LineArrayModel build_line_array(const Project& project, const std::vector<LineTypeProperties>& types,
+                                const LineArrayOptions& options);
 LineArrayModel build_line_array(const Project& project, const LineArrayOptions& options);
 
 }  // namespace spiral::design

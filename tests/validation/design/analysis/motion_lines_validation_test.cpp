@@ -26,6 +26,7 @@
 
 #include "design/analysis/dynamic_analysis.hpp"
 #include "design/analysis/motion_lines.hpp"
+#include "design/model/mooring_model.hpp"
 #include "design/project/validated_project.hpp"
 #include "engine/numerics/statistics.hpp"
 
@@ -106,7 +107,8 @@ TEST(MotionLinesValidation, Oc4ChainUnderVerySlowSurgeFollowsTheElasticCatenary)
   const MotionLinesResult dynamic = run_motion_lines(frictionless, request);
 
   Eigen::Matrix<double, 6, Eigen::Dynamic> at_outputs = dynamic.motion;
-  const std::vector<TensionSeries> catenary = quasi_static_fairlead_tensions(project, "", at_outputs);
+  const std::vector<TensionSeries> catenary =
+      quasi_static_fairlead_tensions(project, resolve_line_types(project), "", at_outputs);
   const auto& fe = dynamic.lines[0].fairlead_tension_N;
   const auto& qs = catenary[0].tension_N;  // L1 is the project's first line
   double low = 1.0, high = -1.0;
