@@ -406,23 +406,22 @@ CoupledTimeSeries simulate_coupled(const HullDynamicsModel& hull, const HullLoad
     } catch (const IntegrationError& e) {
       // Name the part of the system whose local error is largest at the
       // failure: the line whose dynamics made the step collapse, usually.
-      const Eigen::VectorXd err = ida.weighted_local_errors();
+      // Group 0 is the hull, group i + 1 line i (io.error_group_starts).
+      const std::vector<double> err = ida.group_local_errors();
       std::string where = "the hull";
-      double worst = err.head<12>().maxCoeff();
-      for (const LineBlock& b : blocks) {
-        const double e_line = err.segment(b.offset, b.size).maxCoeff();
-        if (e_line > worst) worst = e_line, where = "line " + b.input->name;
+      double worst = err[0];
+      for (std::size_t i = 0; i < blocks.size(); ++i) {
+        if (err[i + 1] > worst) worst = err[i + 1], where = "line " + blocks[i].input->name;
       }
       throw IntegrationError(fmt::format("coupled hull + lines: {}; largest local error in {}", e.what(), where),
                              e.time_reached_s(), e.last_step_s(), e.cvode_flag(), e.diagnostics());
     }
     record(k, t, ida.state(), ida.state_derivative());
-    const Eigen::VectorXd err = ida.weighted_local_errors();
+    const std::vector<double> err = ida.group_local_errors();
     std::size_t worst_part = blocks.size();
-    double worst = err.head<12>().maxCoeff();
+    double worst = err[0];
     for (std::size_t i = 0; i < blocks.size(); ++i) {
-      const double e_line = err.segment(blocks[i].offset, blocks[i].size).maxCoeff();
-      if (e_line > worst) worst = e_line, worst_part = i;
+      if (err[i + 1] > worst) worst = err[i + 1], worst_part = i;
     }
     ++out.step_limiting_outputs[worst_part];
   }

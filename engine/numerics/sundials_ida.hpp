@@ -146,10 +146,11 @@ class IdaIntegrator {
   const Eigen::VectorXd& state() const;
   const Eigen::VectorXd& state_derivative() const;
   IdaStatistics statistics() const;
-  /// |local error estimate| × error weight per state of the last step
-  /// (IDAGetEstLocalErrors, IDAGetErrWeights): which states limit the step,
-  /// or made it collapse.
-  Eigen::VectorXd weighted_local_errors() const;
+  /// Per error group (IdaOptions::error_group_starts; one group without
+  /// them) the largest |local error estimate| × error weight of its states
+  /// at the last step (IDAGetEstLocalErrors, IDAGetErrWeights): which block
+  /// limits the step, or made it collapse. Zeros before the first step.
+  std::vector<double> group_local_errors() const;
 
  private:
   struct Impl;

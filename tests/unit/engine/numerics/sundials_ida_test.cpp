@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/LU>
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -95,6 +96,15 @@ TEST(SundialsIda, OrderTwoStaysStableOnAnUndampedOscillatorAtLargeSteps) {
 class ManyOscillators : public ImplicitSystem {
  public:
   explicit ManyOscillators(int n) : omega_(Eigen::VectorXd::LinSpaced(n, 0.5, 3.0)) {}
+  /// y0, y'0 of every oscillator released at rest from x = 1.
+  std::pair<Eigen::VectorXd, Eigen::VectorXd> released_from_unit_displacement() const {
+    Eigen::VectorXd y0 = Eigen::VectorXd::Zero(2 * omega_.size()), yp0 = Eigen::VectorXd::Zero(2 * omega_.size());
+    for (Eigen::Index i = 0; i < omega_.size(); ++i) {
+      y0[2 * i] = 1.0;
+      yp0[2 * i + 1] = -omega_[i] * omega_[i];
+    }
+    return {y0, yp0};
+  }
   void residual(double, const VectorConstRef& y, const VectorConstRef& yp, VectorRef r) override {
     for (Eigen::Index i = 0; i < omega_.size(); ++i) {
       const double w = omega_[i];
@@ -134,12 +144,7 @@ TEST(SundialsIda, VectorOperationsOnAPoolGiveTheSameSolution) {
     options.absolute_tolerance = 1e-8;
     for (int g = 0; g < 30; ++g) options.error_group_starts.push_back(1000 * g);
     options.vector_pool = pool;
-    Eigen::VectorXd y0 = Eigen::VectorXd::Zero(2 * n), yp0 = Eigen::VectorXd::Zero(2 * n);
-    const Eigen::VectorXd w = Eigen::VectorXd::LinSpaced(n, 0.5, 3.0);
-    for (int i = 0; i < n; ++i) {
-      y0[2 * i] = 1.0;
-      yp0[2 * i + 1] = -w[i] * w[i];
-    }
+    const auto [y0, yp0] = system.released_from_unit_displacement();
     IdaIntegrator ida(system, 0.0, y0, yp0, options);
     ida.advance_to(10.0);
     return std::make_pair(Eigen::VectorXd(ida.state()), ida.statistics().steps);
@@ -151,6 +156,52 @@ TEST(SundialsIda, VectorOperationsOnAPoolGiveTheSameSolution) {
   EXPECT_TRUE(alone == split);
   // And it is the oscillators' motion (the slowest one, to the tolerance's order).
   EXPECT_NEAR(alone[0], damped_oscillator(10.0, 0.5, 0.05), 1e-3);
+}
+
+TEST(SundialsIda, GroupLocalErrorsNameTheBlockThatLimitsTheStep) {
+  // 3,000 oscillators, w from 0.5 to 3 rad/s, in 10 error groups of
+  // increasing frequency. The local error of a BDF step of order q scales
+  // with w^(q+1) x amplitude: the fast groups limit the step, by far.
+  const int n = 3000, groups = 10;
+  ManyOscillators system(n);
+  IdaOptions options;
+  for (int g = 0; g < groups; ++g) options.error_group_starts.push_back(2 * (n / groups) * g);
+  const auto [y0, yp0] = system.released_from_unit_displacement();
+  IdaIntegrator ida(system, 0.0, y0, yp0, options);
+  const std::vector<double> before = ida.group_local_errors();
+  ASSERT_EQ(before.size(), static_cast<std::size_t>(groups));
+  for (double e : before) EXPECT_EQ(e, 0.0);  // no step yet
+
+  for (double t : {1.0, 5.0, 10.0}) {
+    ida.advance_to(t);
+    const std::vector<double> err = ida.group_local_errors();
+    ASSERT_EQ(err.size(), static_cast<std::size_t>(groups));
+    // An accepted step has each group's WRMS error <= 1, so no state of a
+    // group of m states exceeds sqrt(m).
+    for (double e : err) {
+      EXPECT_TRUE(std::isfinite(e));
+      EXPECT_LE(e, std::sqrt(2.0 * n / groups));
+    }
+    std::string values;
+    for (double e : err) values += std::to_string(e) + " ";
+    // Within a group the largest error moves with the oscillators' phases,
+    // so the two fastest groups share the lead (at t = 5 s: 0.46 and 0.32,
+    // the slowest 8e-5).
+    EXPECT_GE(std::max_element(err.begin(), err.end()) - err.begin(), groups - 2) << "at t = " << t << ": " << values;
+    const double slow = *std::max_element(err.begin(), err.begin() + 3);  // w < 1.25 rad/s
+    const double fast = *std::max_element(err.end() - 3, err.end());      // w > 2.25 rad/s
+    EXPECT_GT(fast, 10.0 * slow) << values;
+  }
+}
+
+TEST(SundialsIda, OneGroupWithoutGroupStarts) {
+  Oscillator system(1.0, 0.0);
+  IdaIntegrator ida(system, 0.0, Eigen::Vector3d(1.0, 0.0, 0.0), Eigen::Vector3d(0.0, -1.0, 1.0));
+  ida.advance_to(1.0);
+  const std::vector<double> err = ida.group_local_errors();
+  ASSERT_EQ(err.size(), 1u);
+  EXPECT_GT(err[0], 0.0);
+  EXPECT_LE(err[0], std::sqrt(3.0));
 }
 
 TEST(SundialsIda, RejectsInconsistentSizes) {
