@@ -54,7 +54,10 @@ void read_project(MapReader& r, Project& p, const std::filesystem::path& base_fo
     r.list_of_maps("stages", kOptional, [&](MapReader& s) { p.stages.push_back(read_stage(s)); });
   } else {
     r.child("stages", kOptional);  // known key, for suggestions
-    p.stages = {{"preliminary", {}, {}}, {"intermediate", {}, {}}, {"advanced", {}, {}}};
+    p.stages.assign(3, Stage{});
+    p.stages[0].name = "preliminary";
+    p.stages[1].name = "intermediate";
+    p.stages[2].name = "advanced";
   }
   r.map("optimization", kOptional, [&](MapReader& o) { p.optimization = read_optimization(o); });
 }

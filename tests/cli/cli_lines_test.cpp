@@ -73,10 +73,12 @@ TEST(CliLines, ARiserUnderAnUnevenTabSeparatedHistoryGetsItsCriteria) {
     return nlohmann::json();
   };
   for (const auto& c : riser["criteria"]) {
-    if (c["criterion"] == "max_top_angle")
+    if (c["criterion"] == "max_top_angle") {
       EXPECT_DOUBLE_EQ(c["value"].get<double>(), channel("top_angle_P1_deg")["max"].get<double>());
-    if (c["criterion"] == "min_effective_tension")
+    }
+    if (c["criterion"] == "min_effective_tension") {
       EXPECT_DOUBLE_EQ(c["value"].get<double>(), channel("min_effective_tension_P1_N")["min"].get<double>());
+    }
   }
   EXPECT_TRUE(riser.contains("governing_criterion"));
   EXPECT_TRUE(j["waves_on_lines"].get<bool>());

@@ -122,7 +122,9 @@ TEST(AdvancedStage, AFailedCoupledRunIsRecordedAndTheOtherCasesFinish) {
 
 TEST(AdvancedStage, DurationFromTheProjectElseThreeHours) {
   Project p;
-  p.stages = {{"preliminary", {}, {}}, {"advanced", {}, {}}};
+  p.stages.assign(2, Stage{});
+  p.stages[0].name = "preliminary";
+  p.stages[1].name = "advanced";
   EXPECT_DOUBLE_EQ(advanced_stage_duration(p), kAdvancedStageDuration_s);
   p.stages[1].duration_s = 900.0;
   EXPECT_DOUBLE_EQ(advanced_stage_duration(p), 900.0);
