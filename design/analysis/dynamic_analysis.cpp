@@ -290,7 +290,7 @@ DynamicModel build_dynamic_model(const ValidatedProject& validated, const Dynami
   model.sea = sea;
   std::shared_ptr<const engine::SlowDriftSeries> drift;
   if (environment.waves && project.hull.mean_drift) {
-    const engine::MeanDriftTable table = drift_table_of(project, *project.hull.mean_drift);
+    const engine::MeanDriftTable& table = *model.case_model.drift;
     try {
       drift = std::make_shared<const engine::SlowDriftSeries>(
           engine::prepare_slow_drift(*sea, table,

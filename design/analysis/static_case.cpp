@@ -98,7 +98,7 @@ StaticCaseResult run_static_case(const ValidatedProject& validated, const CaseMo
   LineArrayOptions line_options;
   line_options.excluded_line = damaged.value_or("");
   if (case_model.environment) {
-    MeanEnvironmentLoad mean = mean_environment_load(project, *case_model.environment);
+    MeanEnvironmentLoad mean = mean_environment_load(project, *case_model.environment, case_model.drift);
     environment_load = std::move(mean.load);
     result.notes = std::move(mean.notes);
     line_options.current = case_model.current;

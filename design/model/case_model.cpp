@@ -15,6 +15,8 @@ CaseModel build_case_model(const Project& project, const std::optional<std::stri
   }
   model.hull = std::make_shared<const HullModel>(build_hull_model(project));
   model.line_types = std::make_shared<const std::vector<LineTypeProperties>>(resolve_line_types(project));
+  if (model.environment && model.environment->waves && project.hull.mean_drift)
+    model.drift = std::make_shared<const engine::MeanDriftTable>(drift_table_of(project, *project.hull.mean_drift));
   return model;
 }
 

@@ -1,8 +1,8 @@
 #pragma once
 // What every analysis of one load case is built from, built once per case and
 // shared by its static case, its hull dynamics and its dynamic lines: the
-// hull with its data files read once (.hst, .1), the resolved line types, the
-// case's environment and current. Before it, a coupled run built the hull
+// hull with its data files read once (.hst, .1, and the .12d in waves), the
+// resolved line types, the case's environment and current. Before it, a coupled run built the hull
 // (and read the WAMIT files) up to four times and resolved the line types in
 // four places (issue 13).
 
@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "design/model/hull_model.hpp"
+#include "engine/hull/mean_environmental_loads.hpp"
 #include "design/project/line_properties.hpp"
 #include "design/project/project.hpp"
 #include "engine/environment/current_profile.hpp"
@@ -26,6 +27,9 @@ struct CaseModel {
   std::optional<engine::CurrentProfile> current;  ///< the environment's profile, if it has one
   std::shared_ptr<const HullModel> hull;
   std::shared_ptr<const std::vector<LineTypeProperties>> line_types;
+  /// The hull's mean drift coefficients (hull.mean_drift) when the case has
+  /// waves and the project the data; null otherwise.
+  std::shared_ptr<const engine::MeanDriftTable> drift;
 };
 
 /// The model of `load_case` (none: still water). Throws what

@@ -67,7 +67,8 @@ std::optional<engine::CurrentProfile> current_profile_of(const Environment& envi
   return current_profile_of(*environment.current);
 }
 
-MeanEnvironmentLoad mean_environment_load(const Project& project, const Environment& environment) {
+MeanEnvironmentLoad mean_environment_load(const Project& project, const Environment& environment,
+                                          std::shared_ptr<const engine::MeanDriftTable> drift) {
   MeanEnvironmentLoad result;
   const Hull& hull = project.hull;
 
@@ -100,11 +101,12 @@ MeanEnvironmentLoad mean_environment_load(const Project& project, const Environm
     }
   }
 
-  std::optional<engine::MeanDriftTable> drift_table;
+  std::shared_ptr<const engine::MeanDriftTable> drift_table;
   std::optional<engine::MeanDriftInput> drift_input;
   if (environment.waves) {
     if (hull.mean_drift) {
-      drift_table = drift_table_of(project, *hull.mean_drift);
+      drift_table = drift ? std::move(drift)
+                          : std::make_shared<const engine::MeanDriftTable>(drift_table_of(project, *hull.mean_drift));
       engine::MeanDriftInput input;
       input.spectrum = wave_spectrum_of(*environment.waves);
       input.wave_heading_rad = environment.waves->heading_rad;

@@ -5,6 +5,7 @@
 // Loads that the environment asks for but the project gives no data for are
 // not invented: they are listed in `notes` so the engineer sees what is missing.
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -34,8 +35,10 @@ engine::WaveSpectrum wave_spectrum_of(const Waves& waves);
 /// The hull's mean drift coefficients (from the .12d file or the table).
 /// Throws engine::FileFormatError for a bad .12d file.
 engine::MeanDriftTable drift_table_of(const Project& project, const MeanDrift& drift);
-/// Throws engine::FileFormatError for a bad .12d file.
-MeanEnvironmentLoad mean_environment_load(const Project& project, const Environment& environment);
+/// Throws engine::FileFormatError for a bad .12d file. `drift`: the drift
+/// table already read (a case model's); null: read here when needed.
+MeanEnvironmentLoad mean_environment_load(const Project& project, const Environment& environment,
+                                          std::shared_ptr<const engine::MeanDriftTable> drift = nullptr);
 
 /// A heading outside a table of the hull's data (engine::TableRangeError:
 /// RAOs, drift, coefficients) as the input error it is: at the environment's

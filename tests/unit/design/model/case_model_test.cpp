@@ -11,6 +11,7 @@
 #include <string>
 
 #include "design/analysis/static_case.hpp"
+#include "design/model/environment_loads.hpp"
 #include "design/model/mooring_model.hpp"
 #include "design/project/input_error.hpp"
 #include "design/project/validated_project.hpp"
@@ -51,6 +52,15 @@ TEST(CaseModel, StillWaterHasNoCaseNorEnvironment) {
   EXPECT_EQ(model.environment, nullptr);
   EXPECT_FALSE(model.current.has_value());
   EXPECT_TRUE(model.hull->radiation.has_value());  // the .1 file, read once here
+}
+
+TEST(CaseModel, DriftTableOnlyInWaves) {
+  const ValidatedProject oc4 = load_validated_project(kOc4);
+  const CaseModel sea = build_case_model(oc4.project, std::string("intact-raft-jonswap"));
+  ASSERT_NE(sea.drift, nullptr);  // hull.mean_drift: marin_semi.12d
+  const engine::MeanDriftTable alone = drift_table_of(oc4.project, *oc4.project.hull.mean_drift);
+  EXPECT_EQ(sea.drift->omega_rad_per_s, alone.omega_rad_per_s);
+  EXPECT_EQ(build_case_model(oc4.project, std::string("intact-still-water")).drift, nullptr);
 }
 
 TEST(CaseModel, UnknownCaseIsAnInputError) {
