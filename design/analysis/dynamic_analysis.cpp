@@ -112,23 +112,6 @@ std::shared_ptr<const engine::MotionRaoTable> motion_raos_of(const Project& proj
                             model.hull.linear_damping, hull.statics.hydrostatic_stiffness + model.statics.stiffness));
 }
 
-/// Wave-frequency motions (global, m, rad) at `times` from the model's RAOs
-/// on the model's sea; empty when it has no RAOs (no files or no waves).
-std::optional<Eigen::Matrix<double, 6, Eigen::Dynamic>> wave_frequency_motion(const Project& project,
-                                                                              const DynamicModel& model,
-                                                                              const Eigen::VectorXd& times) {
-  if (!model.wave_raos || !model.sea) return std::nullopt;
-  const Eigen::Vector3d& ref = project.hull.reference_point_g;
-  try {
-    const engine::FirstOrderWaveSeries series = engine::prepare_first_order_series(
-        *model.sea, *model.wave_raos,
-        {ref.x() + model.statics.offset(0), ref.y() + model.statics.offset(1), model.statics.offset(5)});
-    return engine::evaluate_first_order_many(series, times);
-  } catch (const engine::TableRangeError& e) {
-    heading_error(project, model.case_model.environment->name, "wave-frequency RAOs (hull.hydrodynamics)", e);
-  }
-}
-
 }  // namespace
 
 engine::WaveRealization realize_sea(const Project& project, const Waves& waves, double duration_s, std::uint64_t seed) {
@@ -150,7 +133,17 @@ engine::WaveRealization realize_sea(const Project& project, const Waves& waves, 
 std::optional<Eigen::Matrix<double, 6, Eigen::Dynamic>> wave_frequency_motions(const ValidatedProject& validated,
                                                                                const DynamicModel& model,
                                                                                const Eigen::VectorXd& times_s) {
-  return wave_frequency_motion(validated.project, model, times_s);
+  const Project& project = validated.project;
+  if (!model.wave_raos || !model.sea) return std::nullopt;
+  const Eigen::Vector3d& ref = project.hull.reference_point_g;
+  try {
+    const engine::FirstOrderWaveSeries series = engine::prepare_first_order_series(
+        *model.sea, *model.wave_raos,
+        {ref.x() + model.statics.offset(0), ref.y() + model.statics.offset(1), model.statics.offset(5)});
+    return engine::evaluate_first_order_many(series, times_s);
+  } catch (const engine::TableRangeError& e) {
+    heading_error(project, model.case_model.environment->name, "wave-frequency RAOs (hull.hydrodynamics)", e);
+  }
 }
 
 const char* to_string(AnalysisLevel level) {
@@ -400,7 +393,7 @@ DynamicModel build_dynamic_model(const ValidatedProject& validated, const Dynami
     const engine::HullTimeSeries plain = engine::simulate_hull(model.hull, model.loads, model.initial_offset,
                                                                engine::Vector6d::Zero(), forced_run_options(request));
     Eigen::Matrix<double, 6, Eigen::Dynamic> motion = plain.position;
-    if (const auto wf = wave_frequency_motion(project, model, plain.times_s)) motion += *wf;
+    if (const auto wf = wave_frequency_motions(validated, model, plain.times_s)) motion += *wf;
     LineArrayModel mooring = build_mooring_model(project, *model.case_model.line_types, damaged);
     std::vector<Eigen::Vector3d> fairleads_b;
     for (const auto& line : mooring.lines) fairleads_b.push_back(line->attachment_b());
@@ -515,7 +508,7 @@ DynamicAnalysisResult run_dynamic_analysis(const ValidatedProject& validated, co
         fmt::format("Morison hull: low- and wave-frequency motions integrated together with the member "
                     "loads; split by a zero-phase low-pass at {:.3g} rad/s ({:g} x the lowest wave frequency)",
                     model.wave_split_frequency_rad_per_s, kMorisonSplitFraction));
-  } else if (auto wf = wave_frequency_motion(project, model, lf.times_s)) {
+  } else if (auto wf = wave_frequency_motions(validated, model, lf.times_s)) {
     result.wave_frequency = std::move(*wf);
     result.wave_frequency_computed = true;
   } else if (environment.waves) {
