@@ -2,9 +2,9 @@
 // What every analysis of one load case is built from, built once per case and
 // shared by its static case, its hull dynamics and its dynamic lines: the
 // hull with its data files read once (.hst, .1, and the .12d in waves), the
-// resolved line types, the case's environment and current. Before it, a coupled run built the hull
-// (and read the WAMIT files) up to four times and resolved the line types in
-// four places (issue 13).
+// resolved line types, the case's environment and current. Before it, a
+// coupled run built the hull (and read the WAMIT files) up to four times and
+// resolved the line types in four places (issue 13).
 
 #include <memory>
 #include <optional>
@@ -12,10 +12,10 @@
 #include <vector>
 
 #include "design/model/hull_model.hpp"
-#include "engine/hull/mean_environmental_loads.hpp"
 #include "design/project/line_properties.hpp"
 #include "design/project/project.hpp"
 #include "engine/environment/current_profile.hpp"
+#include "engine/hull/mean_environmental_loads.hpp"
 
 namespace spiral::design {
 
