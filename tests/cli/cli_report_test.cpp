@@ -168,7 +168,18 @@ void VerdictNamesTheFailingCasesAndTheGoverningCheck(const CommandResult* result
     }
     failing_cases += fails ? 1 : 0;
   }
-  ASSERT_GT(failing_cases, 0) << "the scenario's riser checks all pass: the verdict test needs a new oracle";
+  if (failing_cases == 0) {
+    // Every riser passes in every case (independent equilibria above); the
+    // mooring code and offset limit pass on this scenario too (the static
+    // stage's own tables), so the title must say PASS and name no failure.
+    for (const auto& row : read_csv(*dir_ / "report" / "tables" / "code-check-summary.csv"))
+      if (row[0] != "Case") {
+        EXPECT_EQ(row.back(), "PASS") << row[0];
+      }
+    EXPECT_NE(title.find(fmt::format("PASS — all {} cases meet", load_cases.size())), std::string::npos) << title;
+    EXPECT_EQ(title.find("FAIL —"), std::string::npos) << title;
+    return;
+  }
   EXPECT_NE(title.find(fmt::format("FAIL — {} of {} cases fail (mooring code: 0, offset limit: 0, riser criteria: {}",
                                    failing_cases, load_cases.size(), failing_cases)),
             std::string::npos)
@@ -231,8 +242,19 @@ TEST(CliReportStages, IntermediateRanksEveryLoadCase) {
     EXPECT_DOUBLE_EQ(score, std::max({tension, offset, riser})) << r[1];
     EXPECT_LE(score, previous) << r[1];
     previous = score;
-    EXPECT_EQ(r[10] == "yes", i <= 3 || r[11] == "FAIL") << r[1];
     EXPECT_GT(tension, 0.0) << r[1];
+  }
+  // Critical: failing, or among the three most severe by any one measure
+  // (tension, offset/SOZ, riser), counted from the table itself.
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    bool top_three = false;
+    for (const int column : {3, 5, 6}) {
+      int above = 0;
+      for (std::size_t j = 1; j < rows.size(); ++j)
+        if (std::stod(rows[j][column]) > std::stod(rows[i][column])) ++above;
+      top_three = top_three || (above < 3 && std::stod(rows[i][column]) > 0.0);
+    }
+    EXPECT_EQ(rows[i][10] == "yes", top_three || rows[i][11] == "FAIL") << rows[i][1];
   }
   // The top case's riser measure against the equilibrium's own riser rows.
   const auto eq = nlohmann::json::parse(
