@@ -216,6 +216,7 @@ void PretensionProblem::build_models() {
   models_.clear();
   models_.reserve(scenarios_.size());
   for (const Scenario& s : scenarios_) models_.emplace_back(project_, hull_, payout_groups_, s);
+  models_started_ = false;
 }
 
 std::string PretensionProblem::governing_riser(std::size_t s, double direction_rad) const {
@@ -275,10 +276,29 @@ std::string PretensionProblem::objective_unit() const {
 ProblemEvaluation PretensionProblem::evaluate(const Eigen::VectorXd& payouts_m, bool with_gradient) {
   ProblemEvaluation out;
   out.responses.resize(scenarios_.size());
-  engine::parallel_for(static_cast<int>(scenarios_.size()), threads_, [&](int s) {
-    out.responses[static_cast<std::size_t>(s)] =
-        models_[static_cast<std::size_t>(s)].evaluate(payouts_m, with_gradient);
-  });
+  const auto evaluate_each = [&](const std::vector<std::size_t>& which) {
+    engine::parallel_for(static_cast<int>(which.size()), threads_, [&](int k) {
+      const std::size_t s = which[static_cast<std::size_t>(k)];
+      out.responses[s] = models_[s].evaluate(payouts_m, with_gradient);
+    });
+  };
+  // The first time, the scenarios the study removed a line from start at
+  // their load case's intact equilibrium (same risers, same current): their
+  // FE risers then start warm instead of cold — a cold riser solve under
+  // current goes through continuations and costs ten warm ones.
+  std::vector<std::size_t> first, then;
+  std::vector<std::size_t> intact_of(scenarios_.size(), scenarios_.size());
+  for (std::size_t s = 0; s < scenarios_.size(); ++s) {
+    if (!models_started_ && scenarios_[s].removed_by_study) {
+      for (std::size_t i = 0; i < scenarios_.size(); ++i)
+        if (scenarios_[i].case_name == scenarios_[s].case_name && !scenarios_[i].removed_by_study) intact_of[s] = i;
+    }
+    (intact_of[s] < scenarios_.size() ? then : first).push_back(s);
+  }
+  evaluate_each(first);
+  for (const std::size_t s : then) models_[s].start_from(models_[intact_of[s]]);
+  evaluate_each(then);
+  models_started_ = true;
   for (std::size_t s = 0; s < scenarios_.size(); ++s) add_scenario_constraints(s, out.responses[s], with_gradient, out);
   if (dynamic_) dynamic_->apply(*this, payouts_m, out);
   return out;

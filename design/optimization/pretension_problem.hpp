@@ -108,6 +108,9 @@ class PretensionProblem {
   std::vector<Scenario> scenarios_;
   std::vector<ZoneOfScenario> zones_;
   std::vector<ScenarioModel> models_;
+  /// False until the models' first evaluation, which starts each scenario
+  /// the study removed a line from at its load case's intact equilibrium.
+  bool models_started_ = false;
   std::unique_ptr<DynamicLevel> dynamic_;
   HullModel hull_;
   std::vector<std::string> findings_, notes_;

@@ -5,6 +5,7 @@
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "design/criteria/mooring_checks.hpp"
 #include "design/model/environment_loads.hpp"
@@ -99,6 +100,11 @@ struct ScenarioModel::Impl {
     }
   }
 
+  bool has_expensive_lines() const {
+    return std::any_of(array.lines.begin() + static_cast<std::ptrdiff_t>(paid.size()), array.lines.end(),
+                       [](const auto& line) { return line->expensive(); });
+  }
+
   bool all_catenary() const {
     return std::all_of(paid.begin(), paid.end(), [](const PaidLine& l) { return l.catenary.has_value(); });
   }
@@ -165,7 +171,26 @@ ScenarioResponse ScenarioModel::evaluate(const Eigen::VectorXd& payouts_m, bool 
   m.install(payouts_m);
   engine::EquilibriumResult eq;
   try {
-    eq = engine::solve_static_equilibrium(m.hull.statics, m.array.lines, m.environment_load, m.last_offset);
+    engine::Vector6d start = m.last_offset;
+    if (m.last_pose && m.stashed.empty() && m.has_expensive_lines()) {
+      // Predictor: the equilibrium first with the FE risers linearized where
+      // they were last solved (microseconds), then the full one from there.
+      // The hull's Newton iterations that follow the mooring's nonlinearity
+      // over a payout change (a damaged hull moves tens of metres) then cost
+      // no riser solves; the full solve only corrects the risers' second-order
+      // force error: one solve at the predicted pose and one or two small
+      // Newton steps, instead of a riser solve at every step of the way.
+      linearize_expensive_lines();
+      try {
+        start =
+            engine::solve_static_equilibrium(m.hull.statics, m.array.lines, m.environment_load, m.last_offset).offset;
+      } catch (const engine::SolverError&) {
+        // The linear risers' equilibrium is only a starting point: without
+        // one, the full solve starts where the last one ended.
+      }
+      restore_expensive_lines();
+    }
+    eq = engine::solve_static_equilibrium(m.hull.statics, m.array.lines, m.environment_load, start);
   } catch (const engine::SolverError& error) {
     throw engine::SolverError(fmt::format("{}: {}", scenario_.label(), error.what()), error.diagnostics());
   }
@@ -268,6 +293,25 @@ ScenarioResponse ScenarioModel::evaluate(const Eigen::VectorXd& payouts_m, bool 
     out.lines.push_back(std::move(r));
   }
   return out;
+}
+
+void ScenarioModel::start_from(const ScenarioModel& source) {
+  Impl& m = *impl_;
+  const Impl& from = *source.impl_;
+  if (!from.last_pose) throw std::logic_error("ScenarioModel::start_from: the source has not been evaluated");
+  // The risers follow the mooring lines in both arrays, in project order.
+  const std::size_t risers = m.array.lines.size() - m.paid.size();
+  if (risers != from.array.lines.size() - from.paid.size())
+    throw std::logic_error("ScenarioModel::start_from: the scenarios have different risers");
+  for (std::size_t j = 0; j < risers; ++j) {
+    auto* line = dynamic_cast<engine::FeStaticLine*>(m.array.lines[m.paid.size() + j].get());
+    const auto* solved = dynamic_cast<const engine::FeStaticLine*>(from.array.lines[from.paid.size() + j].get());
+    if (!line || !solved || !solved->last_result()) continue;
+    line->adopt(from.last_pose->reference_point_g + from.last_pose->rotation * solved->attachment_b(),
+                *solved->last_result());
+  }
+  m.last_offset = from.last_offset;
+  m.last_pose = from.last_pose;
 }
 
 void ScenarioModel::linearize_expensive_lines() {

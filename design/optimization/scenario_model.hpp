@@ -88,6 +88,11 @@ class ScenarioModel {
   /// previous one. Throws engine::SolverError naming the scenario.
   ScenarioResponse evaluate(const Eigen::VectorXd& payouts_m, bool with_gradient);
 
+  /// Starts the next evaluation from `source`'s last equilibrium: its hull
+  /// offset and its risers' FE solutions. `source` must be the same load case
+  /// (same risers, same current) with fewer lines removed, already evaluated.
+  void start_from(const ScenarioModel& source);
+
   /// Replaces every expensive line that is not a variable (the FE risers) by
   /// its linearization about where the last evaluation left it
   /// (engine/analysis/linearized_line.hpp); restore_expensive_lines() puts

@@ -497,8 +497,7 @@ SozResult compute_soz(const Project& project, const std::vector<RiserDesign>& ri
   result.conditions = conditions;
   const int n_directions = static_cast<int>(std::lround(360.0 / options.step_deg));
   for (int k = 0; k < n_directions; ++k) result.directions_deg.push_back(k * options.step_deg);
-  const int hardware = static_cast<int>(std::thread::hardware_concurrency());
-  result.threads = options.threads > 0 ? options.threads : std::max(1, hardware);
+  result.threads = options.threads > 0 ? options.threads : engine::worker_count(std::numeric_limits<int>::max());
 
   // Risers whose zone is another's turned or mirrored are not solved; a
   // riser symmetric about its own plane is solved on one half.

@@ -2,9 +2,8 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
-#include <atomic>
-#include <exception>
-#include <thread>
+
+#include "engine/common/parallel_for.hpp"
 
 namespace spiral::engine {
 
@@ -29,8 +28,10 @@ HullPose perturbed(const HullPose& pose, int dof, double step) {
 
 /// Solves every line at `pose`. Lines are independent (each holds its own
 /// warm start), so when the array has expensive (FE) lines they are shared
-/// out over the hardware threads, each taking the next unsolved line (solve
-/// times differ tenfold between a cold riser and a warm mooring line); the
+/// out over the free hardware threads (engine::worker_count: none while the
+/// scenarios or run tasks around this solve hold every core), each taking the
+/// next unsolved line (solve times differ tenfold between a cold riser and a
+/// warm mooring line); the
 /// order of the results is the order of the lines either way, so the sums
 /// below are deterministic.
 /// force_only: only LineEndResponse::force_g is filled (StaticLine::solve_force).
@@ -46,28 +47,8 @@ std::vector<LineEndResponse> solve_all(std::span<const std::unique_ptr<StaticLin
     }
   };
   const bool any_expensive = std::any_of(lines.begin(), lines.end(), [](const auto& l) { return l->expensive(); });
-  const std::size_t workers =
-      any_expensive ? std::min<std::size_t>(std::max(1u, std::thread::hardware_concurrency()), lines.size()) : 1;
-  if (workers <= 1) {
-    for (std::size_t i = 0; i < lines.size(); ++i) solve_one(i);
-    return ends;
-  }
-  std::vector<std::exception_ptr> errors(workers);
-  std::vector<std::thread> threads;
-  std::atomic<std::size_t> next{0};
-  for (std::size_t w = 0; w < workers; ++w) {
-    threads.emplace_back([&, w] {
-      try {
-        for (std::size_t i = next++; i < lines.size(); i = next++) solve_one(i);
-      } catch (...) {
-        errors[w] = std::current_exception();
-      }
-    });
-  }
-  for (std::thread& t : threads) t.join();
-  for (const std::exception_ptr& error : errors) {
-    if (error) std::rethrow_exception(error);
-  }
+  const int count = static_cast<int>(lines.size());
+  parallel_for(count, any_expensive ? worker_count(count) : 1, [&](int i) { solve_one(static_cast<std::size_t>(i)); });
   return ends;
 }
 
