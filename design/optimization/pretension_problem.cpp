@@ -282,16 +282,20 @@ ProblemEvaluation PretensionProblem::evaluate(const Eigen::VectorXd& payouts_m, 
       out.responses[s] = models_[s].evaluate(payouts_m, with_gradient);
     });
   };
-  // The first time, the scenarios the study removed a line from start at
-  // their load case's intact equilibrium (same risers, same current): their
-  // FE risers then start warm instead of cold — a cold riser solve under
+  // The first time, each scenario with a line removed starts at the
+  // equilibrium of an intact scenario in the same environment (same risers,
+  // same current; the study's own or the load-case matrix's intact case):
+  // its FE risers then start warm instead of cold — a cold riser solve under
   // current goes through continuations and costs ten warm ones.
   std::vector<std::size_t> first, then;
   std::vector<std::size_t> intact_of(scenarios_.size(), scenarios_.size());
+  const auto environment = [&](std::size_t s) {
+    return load_case_named(project_, scenarios_[s].case_name).environment;
+  };
   for (std::size_t s = 0; s < scenarios_.size(); ++s) {
-    if (!models_started_ && scenarios_[s].removed_by_study) {
-      for (std::size_t i = 0; i < scenarios_.size(); ++i)
-        if (scenarios_[i].case_name == scenarios_[s].case_name && !scenarios_[i].removed_by_study) intact_of[s] = i;
+    if (!models_started_ && scenarios_[s].damaged_line) {
+      for (std::size_t i = 0; i < scenarios_.size() && intact_of[s] == scenarios_.size(); ++i)
+        if (!scenarios_[i].damaged_line && environment(i) == environment(s)) intact_of[s] = i;
     }
     (intact_of[s] < scenarios_.size() ? then : first).push_back(s);
   }

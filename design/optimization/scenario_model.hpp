@@ -89,8 +89,8 @@ class ScenarioModel {
   ScenarioResponse evaluate(const Eigen::VectorXd& payouts_m, bool with_gradient);
 
   /// Starts the next evaluation from `source`'s last equilibrium: its hull
-  /// offset and its risers' FE solutions. `source` must be the same load case
-  /// (same risers, same current) with fewer lines removed, already evaluated.
+  /// offset and its risers' FE solutions. `source` must be in the same
+  /// environment (same risers, same current), already evaluated.
   void start_from(const ScenarioModel& source);
 
   /// Replaces every expensive line that is not a variable (the FE risers) by
