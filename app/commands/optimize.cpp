@@ -7,7 +7,9 @@
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <stdexcept>
 #include <string>
+#include <string_view>
 
 #include <fmt/format.h>
 
@@ -71,11 +73,10 @@ class OptimizeCommand : public Command {
       std::map<std::string, double> payouts;
       for (const design::LinePayout& l : result.lines) payouts[l.name] = l.payout_m;
       const std::filesystem::path written = beside(project_file_, "optimized");
-      write_file_atomically(written,
-                            design::with_line_payouts(read_text(project_file_), loaded.project, payouts,
-                                                      design::optimized_project_header(result, project_file_)));
-      fmt::print(stderr, "optimized project: {}\nresults: {}\n", written.string(),
-                 (folder / "optimization.json").string());
+      write_edited_project("optimized project", written, folder / "optimization.json", [&] {
+        return design::with_line_payouts(read_text(project_file_), loaded.project, payouts,
+                                         design::optimized_project_header(result, project_file_));
+      });
     } else {
       fmt::print(stderr, "{}: no feasible pretension: {} by {:.4g}; results: {}\n", project_file_,
                  result.most_violated->describe(), result.most_violated->value,
@@ -95,10 +96,29 @@ class OptimizeCommand : public Command {
     std::map<std::string, double> payouts;
     for (const design::TargetPretensionRow& l : result.lines) payouts[l.line] = l.payout_m;
     const std::filesystem::path written = beside(project_file_, "pretensioned");
-    write_file_atomically(written, design::with_line_payouts(read_text(project_file_), loaded.project, payouts,
-                                                             design::target_pretension_header(project_file_)));
-    fmt::print(stderr, "pretensioned project: {}\n", written.string());
+    write_edited_project("pretensioned project", written, folder / "target_pretension.json", [&] {
+      return design::with_line_payouts(read_text(project_file_), loaded.project, payouts,
+                                       design::target_pretension_header(project_file_));
+    });
     return kExitOk;
+  }
+
+  /// Writes the project with the payouts applied; a variation whose mooring
+  /// is its base file's (`extends`) cannot be edited in place: the payouts
+  /// stay in the results file, and the message says where to apply them.
+  template <class Edit>
+  void write_edited_project(std::string_view label, const std::filesystem::path& written,
+                            const std::filesystem::path& results, const Edit& edit) const {
+    std::string text;
+    try {
+      text = edit();
+    } catch (const std::invalid_argument& error) {
+      fmt::print(stderr, "{}: no {} written: {}; the payouts are in {}\n", project_file_, label, error.what(),
+                 results.string());
+      return;
+    }
+    write_file_atomically(written, text);
+    fmt::print(stderr, "{}: {}\nresults: {}\n", label, written.string(), results.string());
   }
 
   static design::OptimizationObjective objective_of(const std::string& s) {

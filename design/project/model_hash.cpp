@@ -55,15 +55,23 @@ std::string model_hash(const std::filesystem::path& file) {
 }
 
 std::string project_content_hash(const std::filesystem::path& project_file, const Project& project) {
-  YAML::Emitter canonical;
-  try {
-    canonical << YAML::LoadFile(project_file.string());
-  } catch (const YAML::Exception& e) {
-    throw std::runtime_error(fmt::format("{}: cannot read the project file: {}", project_file.string(), e.what()));
-  }
+  const auto canonical_yaml = [](const std::filesystem::path& file) {
+    YAML::Emitter canonical;
+    try {
+      canonical << YAML::LoadFile(file.string());
+    } catch (const YAML::Exception& e) {
+      throw std::runtime_error(fmt::format("{}: cannot read the project file: {}", file.string(), e.what()));
+    }
+    return std::string(canonical.c_str());
+  };
   // Separators keep the parts apart; each data file enters with its name's
   // length and its size so that no two different sets hash alike by joining.
-  std::string content = canonical.c_str();
+  // A variation's base files (`extends`) are part of its model.
+  std::string content = canonical_yaml(project_file);
+  for (const std::string& base : project.base_files) {
+    content += '\x1d';
+    content += canonical_yaml(base);
+  }
   for (const std::filesystem::path& file : data_files(project)) {
     const std::string bytes = file_bytes(file, "data file");
     content += fmt::format("\x1e{}\x1f{}\x1f", file.filename().string(), bytes.size());

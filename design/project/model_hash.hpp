@@ -20,7 +20,8 @@ std::string model_hash(const std::filesystem::path& file);
 
 /// The fingerprint of what a project computes: its YAML tree re-emitted
 /// without comments or layout, and the bytes of every data file it names
-/// (hydrodynamics, hydrostatics, mean drift, panel mesh). A comment edit
+/// (hydrodynamics, hydrostatics, mean drift, panel mesh), and a variation's
+/// base files (`extends`, Project::base_files) the same way. A comment edit
 /// keeps it; an edited value or data file changes it. 16 hex digits. Throws
 /// std::runtime_error naming a file that cannot be read.
 std::string project_content_hash(const std::filesystem::path& project_file, const Project& project);

@@ -533,6 +533,9 @@ struct Optimization {
 struct SourcePosition {
   int line = 1;
   int column = 1;
+  /// The file it was written in when that is not Project::source_file: a
+  /// section the project takes from its base file (`extends`).
+  std::string file;
 };
 
 /// Field path (`mooring.lines[0].anchor`) -> where it was written.
@@ -543,6 +546,9 @@ struct Project {
   std::string name;
   std::optional<std::string> description;
   std::string source_file;  ///< file name as given by the user (or the source name of parsed text)
+  /// The base files of a variation (`extends`), nearest first, as resolved
+  /// from the file that names each; the sections this file does not write come from them.
+  std::vector<std::string> base_files;
   Site site;
   std::vector<LineTypeInput> line_types;
   Mooring mooring;

@@ -102,7 +102,7 @@ std::filesystem::path reference_from(const std::filesystem::path& file, const st
 /// The scalar written at `path` in `text`, as written (quotes included).
 std::string written_scalar(const std::string& text, const Project& project, const std::string& path) {
   const auto position = project.source_map.find(path);
-  if (position == project.source_map.end()) return {};
+  if (position == project.source_map.end() || !position->second.file.empty()) return {};
   const std::size_t at = offset_of(text, position->second.line, position->second.column);
   return text.substr(at, scalar_length(text, at));
 }
@@ -155,6 +155,11 @@ std::string with_field_values(const std::string& text, const Project& project, c
           fmt::format("{}: the file has no value of its own there to replace (a default, or a project built in "
                       "code)",
                       edit.path));
+    if (!position->second.file.empty())
+      throw std::invalid_argument(
+          fmt::format("{}: written in the base file {} (extends), not in {}: edit the base, or give the section in "
+                      "this file",
+                      edit.path, position->second.file, project.source_file));
     const std::size_t at = offset_of(text, position->second.line, position->second.column);
     replacements.push_back({at, scalar_length(text, at), edit.value});
   }
@@ -166,8 +171,11 @@ std::string with_field_values(const std::string& text, const Project& project, c
 
 std::string field_value_text(const std::string& text, const Project& project, const std::string& path) {
   const auto position = project.source_map.find(path);
-  if (position == project.source_map.end())
-    throw std::invalid_argument(fmt::format("{}: the file has no value of its own there (a default applies)", path));
+  if (position == project.source_map.end() || !position->second.file.empty())
+    throw std::invalid_argument(
+        fmt::format("{}: the file has no value of its own there (a default applies, or "
+                    "its base file's, extends)",
+                    path));
   const std::size_t at = offset_of(text, position->second.line, position->second.column);
   return text.substr(at, scalar_length(text, at));
 }

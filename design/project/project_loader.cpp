@@ -9,7 +9,9 @@
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <utility>
 
@@ -22,6 +24,7 @@ namespace {
 using namespace loader_detail;
 
 void read_project(MapReader& r, Project& p, const std::filesystem::path& base_folder) {
+  r.child("extends", kOptional);  // resolved before the sections are read (with_bases)
   if (const auto version_node = r.child("version", kRequired, "format version, 1")) {
     const auto version = to_integer(r.context(), *version_node, "version");
     if (version && *version != kProjectFormatVersion) {
@@ -67,6 +70,92 @@ void read_project(MapReader& r, Project& p, const std::filesystem::path& base_fo
   throw InputError(std::move(issues));
 }
 
+// A chain of variations deeper than this is a mistake, not a design.
+constexpr int kMaxBaseDepth = 8;
+
+void add_issue(Context& ctx, const std::string& file, const YAML::Mark& mark, std::string message,
+               std::string problem) {
+  InputIssue issue;
+  issue.file = file;
+  if (!mark.is_null()) {
+    issue.line = mark.line + 1;
+    issue.column = mark.column + 1;
+  }
+  issue.path = "extends";
+  issue.message = std::move(message);
+  issue.problem = std::move(problem);
+  ctx.issues.push_back(std::move(issue));
+}
+
+/// Top-level section -> the file it was written in.
+using SectionOrigins = std::map<std::string, std::string, std::less<>>;
+
+/// `root` (the map of `file`) with the sections of its base file (`extends`,
+/// a path relative to `file`'s folder) that it does not write itself, and so
+/// on down the chain — a variation file in the manner of OrcaFlex's
+/// BaseFile: whole top-level sections are replaced, never merged inside.
+/// `origins` names each section's file; `bases` collects the base files,
+/// nearest first. Problems with the chain are issues at the `extends` that
+/// names the base; a base's own problems are the base file's.
+YAML::Node with_bases(const YAML::Node& root, const std::string& file, Context& ctx, SectionOrigins& origins,
+                      std::vector<std::string>& bases, std::vector<std::filesystem::path>& chain) {
+  for (const auto& entry : root) origins[entry.first.Scalar()] = file;
+  const YAML::Node extends = root["extends"];
+  if (!extends) return root;
+  if (!extends.IsScalar() || extends.Scalar().empty()) {
+    add_issue(ctx, file, extends.Mark(), fmt::format("expected the base project file, got {}", describe(extends)),
+              "wrong_type");
+    return root;
+  }
+  std::filesystem::path base = extends.Scalar();
+  if (base.is_relative()) base = std::filesystem::path(file).parent_path() / base;
+  std::error_code ec;
+  const std::filesystem::path canonical = std::filesystem::weakly_canonical(base, ec);
+  if (std::find(chain.begin(), chain.end(), canonical) != chain.end()) {
+    add_issue(ctx, file, extends.Mark(), fmt::format("{} extends itself through its bases (a cycle)", base.string()),
+              "extends_cycle");
+    return root;
+  }
+  if (static_cast<int>(chain.size()) > kMaxBaseDepth) {
+    add_issue(ctx, file, extends.Mark(), fmt::format("more than {} base files in a chain", kMaxBaseDepth),
+              "extends_depth");
+    return root;
+  }
+  // A regular file only: a device or FIFO could be read forever.
+  std::ifstream in(base, std::ios::binary);
+  if (!in || !std::filesystem::is_regular_file(base, ec)) {
+    add_issue(ctx, file, extends.Mark(), fmt::format("base project file not found: {}", base.string()), "missing_file");
+    return root;
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  YAML::Node base_root;
+  try {
+    base_root = YAML::Load(text.str());
+  } catch (const YAML::ParserException& e) {
+    add_issue(ctx, base.string(), e.mark, fmt::format("YAML syntax error: {}", e.msg), "yaml_syntax");
+    return root;
+  }
+  if (!base_root.IsMap()) {
+    add_issue(ctx, base.string(), base_root.Mark(),
+              fmt::format("a base project file is a map of sections, got {}", describe(base_root)), "wrong_type");
+    return root;
+  }
+  bases.push_back(base.string());
+  chain.push_back(canonical);
+  SectionOrigins base_origins;
+  const YAML::Node base_tree = with_bases(base_root, base.string(), ctx, base_origins, bases, chain);
+  YAML::Node merged(YAML::NodeType::Map);
+  for (const auto& entry : base_tree) {
+    const std::string key = entry.first.Scalar();
+    if (key == "extends" || root[key]) continue;
+    merged[key] = entry.second;
+    origins[key] = base_origins[key];
+  }
+  for (const auto& entry : root) merged[entry.first.Scalar()] = entry.second;
+  return merged;
+}
+
 }  // namespace
 
 Project parse_project(std::string_view yaml_text, std::string source_name,
@@ -92,8 +181,18 @@ Project parse_project(std::string_view yaml_text, std::string source_name,
   Project project;
   project.source_file = source_name;
   {
+    SectionOrigins origins;
+    std::error_code ec;
+    std::vector<std::filesystem::path> chain{std::filesystem::weakly_canonical(source_name, ec)};
+    root = with_bases(root, source_name, ctx, origins, project.base_files, chain);
+    if (!ctx.issues.empty()) throw_issues(std::move(ctx.issues));
+    for (const auto& [section, file] : origins)
+      if (file != source_name) ctx.section_files[section] = file;
+  }
+  {
     MapReader reader(ctx, root, "");
-    read_project(reader, project, data_folder.value_or(std::filesystem::path(source_name).parent_path()));
+    // Data files are found from the file that holds the hull section.
+    read_project(reader, project, data_folder.value_or(std::filesystem::path(ctx.file_of("hull")).parent_path()));
   }  // the reader reports unknown top-level keys here
   if (!ctx.issues.empty()) throw_issues(std::move(ctx.issues));
   project.source_map = std::move(ctx.positions);

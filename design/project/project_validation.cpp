@@ -19,6 +19,7 @@ InputIssue make_issue(const Project& project, const std::string& path, std::stri
     if (const auto it = project.source_map.find(at); it != project.source_map.end()) {
       issue.line = it->second.line;
       issue.column = it->second.column;
+      if (!it->second.file.empty()) issue.file = it->second.file;
       break;
     }
     const auto cut = at.find_last_of(".[");

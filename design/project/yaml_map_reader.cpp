@@ -8,9 +8,15 @@
 
 namespace spiral::design::loader_detail {
 
+const std::string& Context::file_of(std::string_view path) const {
+  const std::string_view section = path.substr(0, path.find_first_of(".["));
+  const auto it = section_files.find(section);
+  return it == section_files.end() ? file : it->second;
+}
+
 void Context::add(const YAML::Mark& mark, std::string path, std::string message, std::string problem) {
   InputIssue issue;
-  issue.file = file;
+  issue.file = file_of(path);
   if (!mark.is_null()) {
     issue.line = mark.line + 1;
     issue.column = mark.column + 1;
@@ -22,7 +28,9 @@ void Context::add(const YAML::Mark& mark, std::string path, std::string message,
 }
 
 void Context::record(const std::string& path, const YAML::Mark& mark) {
-  if (!mark.is_null()) positions[path] = SourcePosition{mark.line + 1, mark.column + 1};
+  if (mark.is_null()) return;
+  const std::string& in = file_of(path);
+  positions[path] = SourcePosition{mark.line + 1, mark.column + 1, in == file ? std::string() : in};
 }
 
 std::string describe(const YAML::Node& node) {

@@ -17,6 +17,7 @@
 #include <fmt/format.h>
 
 #include <cstddef>
+#include <map>
 #include <numbers>
 #include <optional>
 #include <string>
@@ -40,6 +41,12 @@ struct Context {
   std::string file;
   std::vector<InputIssue> issues;
   SourceMap positions;
+  /// Top-level section -> the file it comes from, for the sections a
+  /// variation takes from its base file (`extends`); the rest are `file`'s.
+  std::map<std::string, std::string, std::less<>> section_files;
+
+  /// The file the field at `path` was written in.
+  const std::string& file_of(std::string_view path) const;
 
   void add(const YAML::Mark& mark, std::string path, std::string message, std::string problem);
   void record(const std::string& path, const YAML::Mark& mark);
