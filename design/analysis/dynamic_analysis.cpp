@@ -189,7 +189,8 @@ DynamicModel build_dynamic_model(const ValidatedProject& validated, const Dynami
   statics_request.lines_carry_current = request.level != AnalysisLevel::uncoupled;
   const bool reuse = request.statics && (statics_request.lines_carry_current ? request.statics->current_on_every_line
                                                                              : !request.statics->lines_carry_current);
-  model.statics = reuse ? *request.statics : run_static_case(validated, model.case_model, statics_request);
+  model.statics =
+      reuse ? *request.statics : run_static_case(validated, model.case_model, statics_request, request.rest_solutions);
   model.timing.equilibrium_s = model.statics.equilibrium_wall_s;
   model.timing.reduction_s = model.statics.stiffness_wall_s;
   model.notes = model.statics.notes;

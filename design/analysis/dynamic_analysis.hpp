@@ -102,6 +102,10 @@ struct DynamicAnalysisRequest {
   /// solve their own (lines_carry_current) unless this one has the current on
   /// every line; the uncoupled level takes it unless it has lines_carry_current.
   const StaticCaseResult* statics = nullptr;
+  /// FE line solutions at the rest position shared with other analyses of the
+  /// same model (a stage's storms): the S-C static case solved here takes and
+  /// adds to them. May be null.
+  RestSolutionCache* rest_solutions = nullptr;
   /// Called with the fraction done (0..1) during the dynamics; may be empty.
   std::function<void(double)> progress;
 };

@@ -135,11 +135,16 @@ StaticCaseResult run_static_case(const ValidatedProject& validated, const CaseMo
       auto* fe = dynamic_cast<engine::FeStaticLine*>(line.get());
       if (!fe) continue;
       fe_lines.push_back(fe);
-      const auto it = cache->solutions.find({result.environment, fe->name()});
-      if (it != cache->solutions.end())
-        fe->adopt(rest.reference_point_g + rest.rotation * fe->attachment_b(), it->second);
+      std::optional<engine::FeStaticsResult> solved;
+      {
+        const std::lock_guard lock(cache->mutex);
+        const auto it = cache->solutions.find({result.environment, fe->name()});
+        if (it != cache->solutions.end()) solved = it->second;
+      }
+      if (solved) fe->adopt(rest.reference_point_g + rest.rotation * fe->attachment_b(), std::move(*solved));
     }
     engine::evaluate_line_array(lines.lines, rest);
+    const std::lock_guard lock(cache->mutex);
     for (engine::FeStaticLine* fe : fe_lines)
       cache->solutions.try_emplace({result.environment, fe->name()}, *fe->last_result());
   }

@@ -9,6 +9,7 @@
 
 #include <array>
 #include <map>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <utility>
@@ -99,8 +100,12 @@ struct StaticCaseResult {
 /// rest position, by environment and line name, for the static cases of one
 /// project: a case whose environment was solved before (e.g. the damaged case
 /// of an intact one) starts from them instead of solving every line cold
-/// again, with identical results. Not shared between threads.
+/// again, with identical results (the adopted solution is the one a cold
+/// solve at the rest position returns). Shared by the tasks of one stage of
+/// one model (a spiral run's static cases, its storms): the lines' models
+/// must be the same for every case that uses it. Thread-safe.
 struct RestSolutionCache {
+  std::mutex mutex;
   std::map<std::pair<std::string, std::string>, engine::FeStaticsResult> solutions;
 };
 

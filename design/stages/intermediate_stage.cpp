@@ -20,9 +20,10 @@ const char* to_string(RankingMeasure measure) {
   return "?";
 }
 
-StageDynamics run_case_storm(const ValidatedProject& vp, const StaticStageResults& statics, std::size_t case_index) {
+StageDynamics run_case_storm(const ValidatedProject& vp, const StaticStageResults& statics, std::size_t case_index,
+                             RestSolutionCache* rest_solutions) {
   return run_stage_dynamics(vp, statics.cases[case_index], AnalysisLevel::semi_coupled_enhanced,
-                            statics.soz ? &*statics.soz : nullptr, "every case of the matrix");
+                            statics.soz ? &*statics.soz : nullptr, "every case of the matrix", rest_solutions);
 }
 
 std::size_t intermediate_critical_cases(const Project& project) {
@@ -88,10 +89,11 @@ IntermediateStageResults run_intermediate_stage(const ValidatedProject& vp) {
   std::vector<CaseStorm> storms(n);
   const int threads = engine::worker_count(static_cast<int>(n));
   engine::Stopwatch storms_start;
+  RestSolutionCache rest_solutions;  // the storms' S-C static cases sharing an environment
   engine::parallel_for(static_cast<int>(n), threads, [&](int i) {
     CaseStorm& s = storms[static_cast<std::size_t>(i)];
     s.case_index = static_cast<std::size_t>(i) + 1;
-    s.storm = run_case_storm(vp, statics, s.case_index);
+    s.storm = run_case_storm(vp, statics, s.case_index, &rest_solutions);
   });
   const double storms_wall_s = storms_start.seconds();
   IntermediateStageResults out =

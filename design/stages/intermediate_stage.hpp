@@ -64,9 +64,10 @@ struct IntermediateStageResults {
 };
 
 /// The storm of the load case `case_index` of `statics.cases` (≥ 1), from
-/// its static equilibrium, against the still-water zone. Throws as run_dynamic_analysis.
-StageDynamics run_case_storm(const ValidatedProject& project, const StaticStageResults& statics,
-                             std::size_t case_index);
+/// its static equilibrium, against the still-water zone; `rest_solutions`
+/// shared by the stage's storms (may be null). Throws as run_dynamic_analysis.
+StageDynamics run_case_storm(const ValidatedProject& project, const StaticStageResults& statics, std::size_t case_index,
+                             RestSolutionCache* rest_solutions = nullptr);
 
 /// One load case's storm: `case_index` into the stage's statics.cases (≥ 1).
 struct CaseStorm {

@@ -58,7 +58,7 @@ int case_seed(const Project& project, const std::string& case_name) {
 }
 
 StageDynamics run_stage_dynamics(const ValidatedProject& vp, const StaticCaseResult& statics, AnalysisLevel level,
-                                 const SozResult* zone, std::string selection) {
+                                 const SozResult* zone, std::string selection, RestSolutionCache* rest_solutions) {
   engine::Stopwatch start;
   DynamicAnalysisRequest request;
   request.load_case = statics.case_name;
@@ -67,6 +67,7 @@ StageDynamics run_stage_dynamics(const ValidatedProject& vp, const StaticCaseRes
   request.output_step_s = kStormOutputStep_s;
   request.seed = case_seed(vp.project, statics.case_name);
   request.statics = &statics;
+  request.rest_solutions = rest_solutions;
   const DynamicAnalysisResult r = run_dynamic_analysis(vp, request);
   StageDynamics out = summarize_stage_dynamics(vp, statics, request, r, zone, std::move(selection));
   out.wall_s = start.seconds();

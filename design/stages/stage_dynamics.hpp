@@ -102,8 +102,10 @@ StageDynamics summarize_stage_dynamics(const ValidatedProject& project, const St
 
 /// Runs the analysis of `statics.case_name` at `level` (3 h, 0.5 s, seed 1),
 /// reusing `statics` as its static equilibrium. `zone`: the platform SOZ for
-/// the extreme-offset check (none: no check). Throws as run_dynamic_analysis.
+/// the extreme-offset check (none: no check). `rest_solutions`: shared with
+/// the stage's other storms (DynamicAnalysisRequest). Throws as run_dynamic_analysis.
 StageDynamics run_stage_dynamics(const ValidatedProject& project, const StaticCaseResult& statics, AnalysisLevel level,
-                                 const SozResult* zone, std::string selection);
+                                 const SozResult* zone, std::string selection,
+                                 RestSolutionCache* rest_solutions = nullptr);
 
 }  // namespace spiral::design

@@ -177,14 +177,20 @@ StaticParts static_parts(const RunContext& ctx, const Iteration& it, StageRun& s
   TaskBatch batch(stage.stage, it.number);
   const std::size_t overview =
       batch.add<MooringOverview>(identity(it, "mooring-overview"), [&vp] { return run_mooring_overview(vp); });
+  // Cases sharing an environment (a matrix heading intact and with each line
+  // removed) solve its FE lines at rest once; the results are those of cold
+  // solves (static_case.hpp), whichever task runs first.
+  RestSolutionCache rest_solutions;
   std::vector<std::size_t> cases;
   cases.push_back(batch.add<StaticCaseResult>(
       identity(it, "static-case", "still-water", "", 0, "finite_difference_check"),
-      [&vp] { return run_stage_static_case(vp, std::nullopt); }, describe_static_case));
+      [&vp, &rest_solutions] { return run_stage_static_case(vp, std::nullopt, &rest_solutions); },
+      describe_static_case));
   for (const LoadCase& lc : p.load_cases) {
     const std::string name = lc.name;
     cases.push_back(batch.add<StaticCaseResult>(
-        identity(it, "static-case", name), [&vp, name] { return run_stage_static_case(vp, name); },
+        identity(it, "static-case", name),
+        [&vp, name, &rest_solutions] { return run_stage_static_case(vp, name, &rest_solutions); },
         describe_static_case));
   }
   std::optional<std::size_t> soz;
@@ -295,9 +301,11 @@ StageRun run_intermediate(const RunContext& ctx, const Iteration& it) {
   StaticStageResults statics = reduce_parts(it, parts, options);
   TaskBatch batch(stage.stage, it.number);
   const ValidatedProject& vp = *it.project;
+  RestSolutionCache rest_solutions;  // the storms' S-C static cases sharing an environment
   for (std::size_t i = 1; i < statics.cases.size(); ++i) {
     batch.add<StageDynamics>(
-        storm_identity(it, statics.cases[i].case_name), [&vp, &statics, i] { return run_case_storm(vp, statics, i); },
+        storm_identity(it, statics.cases[i].case_name),
+        [&vp, &statics, i, &rest_solutions] { return run_case_storm(vp, statics, i, &rest_solutions); },
         describe_storm);
   }
   engine::Stopwatch storms_start;
