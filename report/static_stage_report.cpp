@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <numeric>
 #include <cmath>
 #include <numbers>
 
@@ -334,13 +335,29 @@ Figure offsets_figure(const design::StaticStageResults& r, const design::Project
   for (const auto& c : r.cases) extent = std::max(extent, c.offset.head<2>().norm());
   if (p.criteria.max_offset_pct_depth)
     extent = std::max(extent, *p.criteria.max_offset_pct_depth / 100.0 * p.site.depth_m);
+  // A label per point is unreadable beyond a few dozen cases (a load-case
+  // matrix of hundreds): then only the largest offsets are numbered, and the
+  // offsets table holds every case.
+  constexpr std::size_t kAllLabelled = 24, kLargestLabelled = 8;
+  std::vector<std::size_t> labelled(r.cases.size());
+  std::iota(labelled.begin(), labelled.end(), std::size_t{0});
+  const bool every_case = r.cases.size() <= kAllLabelled;
+  if (!every_case) {
+    std::stable_sort(labelled.begin(), labelled.end(), [&](std::size_t a, std::size_t b) {
+      return r.cases[a].offset.head<2>().norm() > r.cases[b].offset.head<2>().norm();
+    });
+    labelled.resize(kLargestLabelled);
+    std::sort(labelled.begin(), labelled.end());
+  }
+  for (const auto& c : r.cases) {
+    pts.x.push_back(c.offset.x());
+    pts.y.push_back(c.offset.y());
+  }
   std::vector<std::pair<Eigen::Vector2d, std::string>> groups;
   std::string key;
-  for (std::size_t i = 0; i < r.cases.size(); ++i) {
+  for (const std::size_t i : labelled) {
     const Eigen::Vector2d xy = r.cases[i].offset.head<2>();
-    pts.x.push_back(xy.x());
-    pts.y.push_back(xy.y());
-    key += fmt::format("{}{} {}", i ? "; " : "", i + 1, r.cases[i].case_name);
+    key += fmt::format("{}{} {}", key.empty() ? "" : "; ", i + 1, r.cases[i].case_name);
     auto it = std::find_if(groups.begin(), groups.end(),
                            [&](const auto& g) { return (g.first - xy).norm() < 0.03 * extent; });
     if (it == groups.end())
@@ -348,6 +365,9 @@ Figure offsets_figure(const design::StaticStageResults& r, const design::Project
     else
       it->second += fmt::format(",{}", i + 1);
   }
+  if (!every_case)
+    key = fmt::format("the {} largest offsets of the {} cases are numbered (every case is in the offsets table): {}",
+                      kLargestLabelled, r.cases.size(), key);
   for (const auto& [xy, label] : groups) plot.labels.push_back({xy.x(), xy.y(), label});
   plot.series.push_back(pts);
   if (p.criteria.max_offset_pct_depth) {
