@@ -73,20 +73,6 @@ void read_project(MapReader& r, Project& p, const std::filesystem::path& base_fo
 // A chain of variations deeper than this is a mistake, not a design.
 constexpr int kMaxBaseDepth = 8;
 
-void add_issue(Context& ctx, const std::string& file, const YAML::Mark& mark, std::string message,
-               std::string problem) {
-  InputIssue issue;
-  issue.file = file;
-  if (!mark.is_null()) {
-    issue.line = mark.line + 1;
-    issue.column = mark.column + 1;
-  }
-  issue.path = "extends";
-  issue.message = std::move(message);
-  issue.problem = std::move(problem);
-  ctx.issues.push_back(std::move(issue));
-}
-
 /// Top-level section -> the file it was written in.
 using SectionOrigins = std::map<std::string, std::string, std::less<>>;
 
@@ -103,8 +89,8 @@ YAML::Node with_bases(const YAML::Node& root, const std::string& file, Context& 
   const YAML::Node extends = root["extends"];
   if (!extends) return root;
   if (!extends.IsScalar() || extends.Scalar().empty()) {
-    add_issue(ctx, file, extends.Mark(), fmt::format("expected the base project file, got {}", describe(extends)),
-              "wrong_type");
+    ctx.add_in(file, extends.Mark(), "extends",
+               fmt::format("expected the base project file, got {}", describe(extends)), "wrong_type");
     return root;
   }
   std::filesystem::path base = extends.Scalar();
@@ -112,19 +98,20 @@ YAML::Node with_bases(const YAML::Node& root, const std::string& file, Context& 
   std::error_code ec;
   const std::filesystem::path canonical = std::filesystem::weakly_canonical(base, ec);
   if (std::find(chain.begin(), chain.end(), canonical) != chain.end()) {
-    add_issue(ctx, file, extends.Mark(), fmt::format("{} extends itself through its bases (a cycle)", base.string()),
-              "extends_cycle");
+    ctx.add_in(file, extends.Mark(), "extends",
+               fmt::format("{} extends itself through its bases (a cycle)", base.string()), "extends_cycle");
     return root;
   }
   if (static_cast<int>(chain.size()) > kMaxBaseDepth) {
-    add_issue(ctx, file, extends.Mark(), fmt::format("more than {} base files in a chain", kMaxBaseDepth),
-              "extends_depth");
+    ctx.add_in(file, extends.Mark(), "extends", fmt::format("more than {} base files in a chain", kMaxBaseDepth),
+               "extends_depth");
     return root;
   }
   // A regular file only: a device or FIFO could be read forever.
   std::ifstream in(base, std::ios::binary);
   if (!in || !std::filesystem::is_regular_file(base, ec)) {
-    add_issue(ctx, file, extends.Mark(), fmt::format("base project file not found: {}", base.string()), "missing_file");
+    ctx.add_in(file, extends.Mark(), "extends", fmt::format("base project file not found: {}", base.string()),
+               "missing_file");
     return root;
   }
   std::ostringstream text;
@@ -133,12 +120,12 @@ YAML::Node with_bases(const YAML::Node& root, const std::string& file, Context& 
   try {
     base_root = YAML::Load(text.str());
   } catch (const YAML::ParserException& e) {
-    add_issue(ctx, base.string(), e.mark, fmt::format("YAML syntax error: {}", e.msg), "yaml_syntax");
+    ctx.add_in(base.string(), e.mark, "extends", fmt::format("YAML syntax error: {}", e.msg), "yaml_syntax");
     return root;
   }
   if (!base_root.IsMap()) {
-    add_issue(ctx, base.string(), base_root.Mark(),
-              fmt::format("a base project file is a map of sections, got {}", describe(base_root)), "wrong_type");
+    ctx.add_in(base.string(), base_root.Mark(), "extends",
+               fmt::format("a base project file is a map of sections, got {}", describe(base_root)), "wrong_type");
     return root;
   }
   bases.push_back(base.string());

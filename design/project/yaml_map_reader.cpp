@@ -15,8 +15,14 @@ const std::string& Context::file_of(std::string_view path) const {
 }
 
 void Context::add(const YAML::Mark& mark, std::string path, std::string message, std::string problem) {
+  std::string in_file = file_of(path);  // before `path` is moved from
+  add_in(std::move(in_file), mark, std::move(path), std::move(message), std::move(problem));
+}
+
+void Context::add_in(std::string in_file, const YAML::Mark& mark, std::string path, std::string message,
+                     std::string problem) {
   InputIssue issue;
-  issue.file = file_of(path);
+  issue.file = std::move(in_file);
   if (!mark.is_null()) {
     issue.line = mark.line + 1;
     issue.column = mark.column + 1;

@@ -49,6 +49,8 @@ struct Context {
   const std::string& file_of(std::string_view path) const;
 
   void add(const YAML::Mark& mark, std::string path, std::string message, std::string problem);
+  /// The same, in `in_file` (a base file's own problems, `extends`).
+  void add_in(std::string in_file, const YAML::Mark& mark, std::string path, std::string message, std::string problem);
   void record(const std::string& path, const YAML::Mark& mark);
 };
 
