@@ -178,8 +178,12 @@ Project parse_project(std::string_view yaml_text, std::string source_name,
   }
   {
     MapReader reader(ctx, root, "");
-    // Data files are found from the file that holds the hull section.
-    read_project(reader, project, data_folder.value_or(std::filesystem::path(ctx.file_of("hull")).parent_path()));
+    // Data files resolve from the file that holds the hull section: a base's
+    // hull from the base's folder; this file's from `data_folder` when given
+    // (a spiral-run iteration file written elsewhere), else its own folder.
+    const std::string& hull_file = ctx.file_of("hull");
+    const std::filesystem::path hull_folder = std::filesystem::path(hull_file).parent_path();
+    read_project(reader, project, hull_file == source_name ? data_folder.value_or(hull_folder) : hull_folder);
   }  // the reader reports unknown top-level keys here
   if (!ctx.issues.empty()) throw_issues(std::move(ctx.issues));
   project.source_map = std::move(ctx.positions);

@@ -21,8 +21,9 @@ namespace spiral::design {
 
 /// Reads and parses `file`. Relative data-file references resolve against
 /// `data_folder`, by default the folder of `file` (a spiral iteration's
-/// project, written in the run folder, keeps the original's references).
-/// Throws InputError (naming the file) when it cannot be read or when the
+/// project, written in the run folder, keeps the original's references); a
+/// hull section taken from a base file (`extends`) resolves from the base's
+/// folder. Throws InputError (naming the file) when it cannot be read or when the
 /// text is not a valid project.
 Project load_project(const std::filesystem::path& file,
                      const std::optional<std::filesystem::path>& data_folder = std::nullopt);

@@ -14,18 +14,14 @@
 #include "design/project/project_loader.hpp"
 #include "design/project/validated_project.hpp"
 #include "support/project_fixture.hpp"
+#include "support/temp_folder.hpp"
 
 namespace spiral::design {
 namespace {
 
 namespace fs = std::filesystem;
 
-fs::path fresh_folder(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / (name + "-" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path fresh_folder(const std::string& name) { return test::fresh_temp_folder(name); }
 
 void write(const fs::path& file, const std::string& text) {
   fs::create_directories(file.parent_path());
@@ -109,6 +105,11 @@ TEST(ProjectVariation, DataFilesResolveFromTheFileThatHoldsTheHull) {
   const Project p = load_project(dir / "studies" / "variation.yaml");
   ASSERT_TRUE(p.hull.hydrostatics_file.has_value());
   EXPECT_EQ(fs::weakly_canonical(*p.hull.hydrostatics_file), fs::weakly_canonical(dir / "platform" / "hull.hst"));
+  // A data folder given for the variation (a spiral-run iteration file
+  // written elsewhere) is for its own sections, not for the base's hull.
+  const Project elsewhere = load_project(dir / "studies" / "variation.yaml", dir / "run");
+  EXPECT_EQ(fs::weakly_canonical(*elsewhere.hull.hydrostatics_file),
+            fs::weakly_canonical(dir / "platform" / "hull.hst"));
   fs::remove_all(dir);
 }
 
