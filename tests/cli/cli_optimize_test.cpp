@@ -10,6 +10,7 @@
 
 #include "app/exit_codes.hpp"
 #include "support/run_command.hpp"
+#include "support/temp_folder.hpp"
 
 namespace spiral::test {
 namespace {
@@ -53,13 +54,7 @@ std::string oc4_optimization_text(const std::string& optimization, bool one_grou
 }
 
 /// A folder of its own per test, holding the project (the optimized file is written beside it).
-std::filesystem::path fresh_folder(const std::string& name) {
-  const auto dir =
-      std::filesystem::temp_directory_path() / ("spiral-optimize-" + std::to_string(::getpid()) + "-" + name);
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir;
-}
+std::filesystem::path fresh_folder(const std::string& name) { return fresh_temp_folder("spiral-optimize-" + name); }
 
 std::filesystem::path write_project(const std::filesystem::path& dir, const std::string& text) {
   const auto file = dir / "oc4.yaml";

@@ -17,18 +17,14 @@
 
 #include "app/exit_codes.hpp"
 #include "support/run_command.hpp"
+#include "support/temp_folder.hpp"
 
 namespace spiral::test {
 namespace {
 
 namespace fs = std::filesystem;
 
-fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / (name + "-" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path fresh_dir(const std::string& name) { return fresh_temp_folder(name); }
 
 class CliReport : public ::testing::Test {
  protected:

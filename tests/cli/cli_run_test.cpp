@@ -16,17 +16,12 @@
 #include <thread>
 
 #include "support/run_command.hpp"
+#include "support/temp_folder.hpp"
 
 namespace spiral::test {
 namespace {
 
-std::filesystem::path temp_folder(const std::string& name) {
-  const auto dir =
-      std::filesystem::temp_directory_path() / ("spiral-cli-run-" + name + "-" + std::to_string(::getpid()));
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir;
-}
+std::filesystem::path temp_folder(const std::string& name) { return fresh_temp_folder("spiral-cli-run-" + name); }
 
 /// The OC4 scenario with absolute data paths and 60-s coupled runs.
 std::filesystem::path oc4_project(const std::filesystem::path& dir) {

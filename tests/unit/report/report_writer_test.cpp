@@ -8,6 +8,8 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "support/temp_folder.hpp"
+
 namespace spiral::report {
 namespace {
 
@@ -31,12 +33,7 @@ ReportDocument small_document() {
   return doc;
 }
 
-fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / (name + "-" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path fresh_dir(const std::string& name) { return test::fresh_temp_folder(name); }
 
 bool has_leftovers(const fs::path& dir) {
   for (const auto& entry : fs::directory_iterator(dir)) {

@@ -12,16 +12,12 @@
 #include <limits>
 
 #include "design/results/output_error.hpp"
+#include "support/temp_folder.hpp"
 
 namespace spiral::design {
 namespace {
 
-std::filesystem::path temp_folder(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / ("spiral-store-" + name + "-" + std::to_string(::getpid()));
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir;
-}
+std::filesystem::path temp_folder(const std::string& name) { return test::fresh_temp_folder("spiral-store-" + name); }
 
 TaskResult sample_task(const std::string& case_name, TaskStatus status) {
   TaskResult t;
