@@ -543,24 +543,37 @@ Section stiffness_section(const design::StaticStageResults& r, const design::Pro
         fmt::format("Cross-check by central finite differences of the line forces: ‖K − K_fd‖/‖K_fd‖ = {:.2e}.",
                     *c.stiffness_check_relative_difference)});
   }
-  Table periods{"natural-periods",
-                fmt::format("Undamped natural periods of the moored hull (s) and their dominant DOF{}.",
-                            c.added_mass_included ? ", added mass included" : ", without added mass"),
-                {"Case", "Mode 1", "Mode 2", "Mode 3", "Mode 4", "Mode 5", "Mode 6"},
-                {}};
-  for (const auto& cs : r.cases) {
-    std::vector<TableCell> row{text(cs.case_name)};
-    for (std::size_t m = 0; m < 6; ++m) {
-      if (m < cs.natural_modes.size()) {
-        row.push_back({fmt::format("{:.1f} {}", cs.natural_modes[m].period_s, cs.natural_modes[m].dominant_dof),
-                       cs.natural_modes[m].period_s, CellStatus::none});
-      } else {
-        row.push_back(text("–"));
+  auto periods_table = [&](const char* id, const std::string& caption,
+                           std::vector<design::NaturalMode> design::StaticCaseResult::*modes) {
+    Table periods{id, caption, {"Case", "Mode 1", "Mode 2", "Mode 3", "Mode 4", "Mode 5", "Mode 6"}, {}};
+    for (const auto& cs : r.cases) {
+      const std::vector<design::NaturalMode>& list = cs.*modes;
+      std::vector<TableCell> row{text(cs.case_name)};
+      for (std::size_t m = 0; m < 6; ++m) {
+        if (m < list.size()) {
+          row.push_back(
+              {fmt::format("{:.1f} {}", list[m].period_s, list[m].dominant_dof), list[m].period_s, CellStatus::none});
+        } else {
+          row.push_back(text("–"));
+        }
       }
+      periods.rows.push_back(std::move(row));
     }
-    periods.rows.push_back(std::move(row));
+    return periods;
+  };
+  s.blocks.emplace_back(
+      periods_table("natural-periods",
+                    fmt::format("Undamped natural periods of the moored hull (s) and their dominant DOF{}.",
+                                c.added_mass_included ? ", added mass included" : ", without added mass"),
+                    &design::StaticCaseResult::natural_modes));
+  if (std::any_of(r.cases.begin(), r.cases.end(),
+                  [](const design::StaticCaseResult& cs) { return cs.dynamic_stiffness_lines > 0; })) {
+    s.blocks.emplace_back(periods_table(
+        "natural-periods-dynamic",
+        "The same with the polyester at its dynamic EA for the motions about each equilibrium (the "
+        "static-dynamic convention of DNV-OS-E301 ch. 2 sec. 2 [2.4]): the periods the storms oscillate at.",
+        &design::StaticCaseResult::dynamic_natural_modes));
   }
-  s.blocks.emplace_back(periods);
   s.blocks.emplace_back(restoring_figure(r, p));
   for (const auto& curve : r.restoring) {
     if (curve.stopped) {

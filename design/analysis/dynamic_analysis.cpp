@@ -240,7 +240,7 @@ DynamicModel build_dynamic_model(const ValidatedProject& validated, const Dynami
   // Lines.
   const Eigen::Vector3d reference_point = project.hull.reference_point_g;
   const std::string damaged = load_case.damaged_line.value_or("");
-  engine::LinearizedLines linearized{model.statics.line_force, model.statics.stiffness, model.statics.offset,
+  engine::LinearizedLines linearized{model.statics.line_force, model.statics.dynamic_stiffness, model.statics.offset,
                                      std::nullopt, std::nullopt};
   if (request.level == AnalysisLevel::uncoupled) {
     auto mooring =
@@ -272,6 +272,13 @@ DynamicModel build_dynamic_model(const ValidatedProject& validated, const Dynami
         });
   } else {
     model.loads.lines = linearized;
+    if (model.statics.dynamic_stiffness_lines > 0) {
+      model.notes.push_back(
+          fmt::format("polyester: the mean position is the equilibrium on the static EA; the motions about it see "
+                      "the dynamic EA at each segment's mean tension ({} lines; DNV-OS-E301 ch. 2 sec. 2 [2.4]), as "
+                      "the coupled level's FE lines",
+                      model.statics.dynamic_stiffness_lines));
+    }
   }
 
   // External force.

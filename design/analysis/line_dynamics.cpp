@@ -87,16 +87,12 @@ DynamicLineSetup dynamic_mooring_line(const Project& project, const MooringLine&
           fmt::format("line {}: FE statics at the static equilibrium failed: {}", line.name, message));
   }
   // Polyester: the dynamic EA at each section's mean static tension.
-  const std::vector<int> node_section = engine::node_sections(model, setup.statics);
+  std::vector<LineTypeProperties> segment_types;
+  for (const LineSegment& segment : line.segments) segment_types.push_back(find_type(types, segment.type));
+  const std::vector<double> incremental_EA = incremental_axial_stiffness_N(
+      segment_types, engine::node_sections(model, setup.statics), setup.statics.node_tension_N);
   for (std::size_t s = 0; s < model.sections.size(); ++s) {
-    const LineTypeProperties& type = find_type(types, line.segments[s].type);
-    if (type.kind != LineKind::polyester) continue;
-    double sum = 0.0;
-    int count = 0;
-    for (std::size_t i = 0; i < node_section.size(); ++i) {
-      if (node_section[i] == static_cast<int>(s)) sum += setup.statics.node_tension_N[i], ++count;
-    }
-    model.sections[s].EA_dynamic_N = dynamic_axial_stiffness_N(type, count > 0 ? sum / count : 0.0);
+    if (segment_types[s].kind == LineKind::polyester) model.sections[s].EA_dynamic_N = incremental_EA[s];
   }
   return setup;
 }

@@ -190,6 +190,27 @@ StaticCaseResult run_static_case(const ValidatedProject& validated, const CaseMo
                                  kResultProfilePointsPerSegment));
   }
   result.lines = line_statics_rows(lines, states);
+  result.dynamic_stiffness = array.stiffness;
+  for (std::size_t i = 0; i < lines.designs.size(); ++i) {
+    const std::vector<LineTypeProperties>& types = lines.designs[i].segment_types;
+    if (std::none_of(types.begin(), types.end(), [](const LineTypeProperties& t) {
+          return t.kind == LineKind::polyester && dynamic_axial_stiffness_N(t, 0.0) != t.axial_stiffness_N;
+        }))
+      continue;
+    std::vector<int> point_segment;
+    std::vector<double> point_tension;
+    for (const engine::LineProfilePoint& point : states[i].profile) {
+      point_segment.push_back(point.segment);
+      point_tension.push_back(point.tension_N);
+    }
+    const engine::LineContribution& at = array.lines[i];
+    const Eigen::Matrix3d k = lines.lines[i]->incremental_stiffness_g(
+        at.attachment_g, incremental_axial_stiffness_N(types, point_segment, point_tension));
+    result.dynamic_stiffness +=
+        engine::attachment_stiffness_6x6(k, at.end.force_g, at.attachment_g - equilibrium.pose.reference_point_g) -
+        at.stiffness;
+    ++result.dynamic_stiffness_lines;
+  }
   for (std::size_t r = 0; r < lines.risers.size(); ++r) {
     // The equilibrium left every riser solved at the final pose.
     const auto& riser = static_cast<const engine::FeStaticLine&>(*lines.lines[lines.designs.size() + r]);
@@ -203,6 +224,10 @@ StaticCaseResult run_static_case(const ValidatedProject& validated, const CaseMo
   result.added_mass_included = hull.radiation.has_value() || hull.morison.has_value();
   result.natural_modes = natural_modes(hull.statics.hydrostatic_stiffness + result.stiffness,
                                        hull.mass_matrix + hull.low_frequency_added_mass);
+  result.dynamic_natural_modes = result.dynamic_stiffness_lines == 0
+                                     ? result.natural_modes
+                                     : natural_modes(hull.statics.hydrostatic_stiffness + result.dynamic_stiffness,
+                                                     hull.mass_matrix + hull.low_frequency_added_mass);
   return result;
 }
 

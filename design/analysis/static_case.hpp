@@ -75,6 +75,14 @@ struct StaticCaseResult {
   std::optional<engine::Matrix6d> stiffness_finite_difference;  ///< central differences
   std::optional<double> stiffness_check_relative_difference;    ///< ‖K − K_fd‖ / ‖K_fd‖
   std::vector<engine::Matrix6d> line_stiffness;                 ///< per line: mooring lines, then risers
+  /// The line array's K for the motions about this mean position: every
+  /// polyester segment at its dynamic EA at its mean tension, the mean state
+  /// itself on the static EA (the static–dynamic convention of DNV-OS-E301
+  /// ch. 2 sec. 2 [2.4]; engine::StaticLine::incremental_stiffness_g). Equal
+  /// to `stiffness` without polyester. The S-C levels' hull dynamics take it,
+  /// as the coupled level's FE lines carry their motions on the dynamic EA.
+  engine::Matrix6d dynamic_stiffness = engine::Matrix6d::Zero();
+  int dynamic_stiffness_lines = 0;  ///< mooring lines whose EA differs in dynamic_stiffness
   /// Per line, same order: its 6-DOF force on the hull (about the displaced
   /// reference point, global axes); they sum to line_force, as the
   /// line_stiffness sum to stiffness.
@@ -89,6 +97,9 @@ struct StaticCaseResult {
   std::vector<std::string> notes;
 
   std::vector<NaturalMode> natural_modes;  ///< ascending period
+  /// The same with dynamic_stiffness: the periods the S-C and coupled
+  /// dynamics oscillate at (equal to natural_modes without polyester).
+  std::vector<NaturalMode> dynamic_natural_modes;
   bool added_mass_included = false;
 
   int equilibrium_iterations = 0;

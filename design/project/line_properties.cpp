@@ -391,6 +391,29 @@ double dynamic_axial_stiffness_N(const LineTypeProperties& properties, double me
   return (a + b * mean_load_pct_mbl) * mbl;
 }
 
+std::vector<double> incremental_axial_stiffness_N(const std::vector<LineTypeProperties>& segment_types,
+                                                  const std::vector<int>& point_segment,
+                                                  const std::vector<double>& point_tension_N) {
+  if (point_segment.size() != point_tension_N.size())
+    throw std::invalid_argument("incremental_axial_stiffness_N: one tension per point");
+  std::vector<double> EA_N;
+  for (std::size_t s = 0; s < segment_types.size(); ++s) {
+    const LineTypeProperties& type = segment_types[s];
+    if (type.kind != LineKind::polyester) {
+      EA_N.push_back(type.axial_stiffness_N);
+      continue;
+    }
+    double sum = 0.0;
+    int count = 0;
+    for (std::size_t i = 0; i < point_segment.size(); ++i) {
+      if (point_segment[i] == static_cast<int>(s)) sum += point_tension_N[i], ++count;
+    }
+    // A slack stretch (compressive effective tension at a node) loads nothing.
+    EA_N.push_back(dynamic_axial_stiffness_N(type, count > 0 ? std::max(0.0, sum / count) : 0.0));
+  }
+  return EA_N;
+}
+
 const char* to_string(LineKind kind) {
   switch (kind) {
     case LineKind::chain:

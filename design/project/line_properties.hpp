@@ -9,6 +9,7 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace spiral::design {
 
@@ -73,6 +74,17 @@ LineTypeProperties resolve_line_type(const LineTypeInput& input, double water_de
 /// Polyester: EA_dyn = (a + b * L_m) * MBL with L_m = 100 * mean_tension_N / MBL (% MBL).
 /// Throws std::invalid_argument if mean_tension_N < 0 or is not finite.
 double dynamic_axial_stiffness_N(const LineTypeProperties& properties, double mean_tension_N);
+
+/// The EA that carries the strain changes about a line's static state, per
+/// segment (anchor first): a polyester segment's dynamic EA at its mean
+/// tension (the mean over the state's points in that segment), every other
+/// segment's own EA — the static–dynamic convention (DNV-OS-E301 ch. 2
+/// sec. 2 [2.4]: mean state on the static EA, motions about it on the
+/// dynamic one). point_segment[i] is the segment of the point whose
+/// effective tension is point_tension_N[i] (a catenary profile, FE nodes).
+std::vector<double> incremental_axial_stiffness_N(const std::vector<LineTypeProperties>& segment_types,
+                                                  const std::vector<int>& point_segment,
+                                                  const std::vector<double>& point_tension_N);
 
 const char* to_string(LineKind kind);
 const char* to_string(ChainGrade grade);

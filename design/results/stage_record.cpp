@@ -91,8 +91,8 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(StaticCaseResult, case_name, environment, int
                                    current_on_every_line, line_force, stiffness, stiffness_finite_difference,
                                    stiffness_check_relative_difference, line_stiffness, line_force_6dof,
                                    hydrostatic_force, environment_force, residual, hydrostatic_stiffness, notes,
-                                   natural_modes, added_mass_included, equilibrium_iterations, equilibrium_wall_s,
-                                   stiffness_wall_s)
+                                   natural_modes, dynamic_stiffness, dynamic_stiffness_lines, dynamic_natural_modes,
+                                   added_mass_included, equilibrium_iterations, equilibrium_wall_s, stiffness_wall_s)
 
 // The stage's mooring overview.
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(RestoringCurve, direction_deg, offset_m, force_N, stopped)

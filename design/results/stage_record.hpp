@@ -25,7 +25,9 @@ namespace spiral::design {
 
 /// 2: StaticCaseResult records whether its lines carried the current (the
 /// S-C levels re-solve a quick case that did not).
-inline constexpr int kStageRecordVersion = 2;
+/// 3: StaticCaseResult has the dynamic stiffness (polyester's dynamic EA)
+/// and its natural modes; the S-C storms use it.
+inline constexpr int kStageRecordVersion = 3;
 
 using RecordBytes = std::vector<std::uint8_t>;
 

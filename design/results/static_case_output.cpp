@@ -94,9 +94,11 @@ nlohmann::json static_case_to_json(const StaticCaseResult& r, const std::string&
                       {"force_6dof", six(r.line_force_6dof.at(contribution))},
                       {"profile", riser_profile_json(row.profile)}});
   }
-  nlohmann::json modes = nlohmann::json::array();
-  for (const NaturalMode& m : r.natural_modes)
-    modes.push_back({{"period_s", m.period_s}, {"dominant_dof", m.dominant_dof}});
+  auto modes_json = [](const std::vector<NaturalMode>& list) {
+    nlohmann::json modes = nlohmann::json::array();
+    for (const NaturalMode& m : list) modes.push_back({{"period_s", m.period_s}, {"dominant_dof", m.dominant_dof}});
+    return modes;
+  };
   const OffsetSummary& o = r.offset_summary;
   nlohmann::json doc = {
       {"format", "spiral.static_case"},
@@ -121,7 +123,10 @@ nlohmann::json static_case_to_json(const StaticCaseResult& r, const std::string&
       {"environment_force_6dof", six(r.environment_force)},
       {"residual_6dof", six(r.residual)},
       {"hydrostatic_stiffness_6x6", six_by_six(r.hydrostatic_stiffness)},
-      {"natural_modes", modes},
+      {"natural_modes", modes_json(r.natural_modes)},
+      {"dynamic_stiffness_6x6", six_by_six(r.dynamic_stiffness)},
+      {"dynamic_stiffness_lines", r.dynamic_stiffness_lines},
+      {"dynamic_natural_modes", modes_json(r.dynamic_natural_modes)},
       {"notes", r.notes},
       {"added_mass_included", r.added_mass_included},
       {"lines", lines},

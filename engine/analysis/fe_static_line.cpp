@@ -104,4 +104,14 @@ LineState FeStaticLine::state(const Eigen::Vector3d& attachment_g, int /*points_
   return state;
 }
 
+Eigen::Matrix3d FeStaticLine::incremental_stiffness_g(const Eigen::Vector3d& attachment_g,
+                                                      const std::vector<double>& incremental_EA_N) {
+  const FeStaticsResult& r = solve_at(attachment_g, false);
+  try {
+    return -fe_line_incremental_end_B_stiffness(model_, environment_, r, incremental_EA_N);
+  } catch (const SolverError& error) {
+    throw SolverError(fmt::format("line '{}': {}", name_, error.what()), error.diagnostics());
+  }
+}
+
 }  // namespace spiral::engine

@@ -38,6 +38,9 @@ class FeStaticLine final : public StaticLine {
   /// same environment). Throws
   /// std::invalid_argument if its mesh size differs from this model's.
   void adopt(const Eigen::Vector3d& attachment_g, FeStaticsResult solution);
+  /// fe_line_incremental_end_B_stiffness at the solve there; one EA per section.
+  Eigen::Matrix3d incremental_stiffness_g(const Eigen::Vector3d& attachment_g,
+                                          const std::vector<double>& incremental_EA_N) override;
   void reset() override {
     last_.reset();
     warm_.reset();

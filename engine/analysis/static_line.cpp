@@ -114,4 +114,13 @@ LineState CatenaryStaticLine::state(const Eigen::Vector3d& attachment_g, int poi
   return state;
 }
 
+Eigen::Matrix3d CatenaryStaticLine::incremental_stiffness_g(const Eigen::Vector3d& attachment_g,
+                                                            const std::vector<double>& incremental_EA_N) {
+  const Plane plane = plane_of(attachment_g);
+  const CatenaryGeometry geometry{plane.span_m, attachment_g.z() - anchor_g_.z(), anchor_height_above_seabed_m_};
+  solve_in_plane(plane, geometry.vertical_span_m, options_);
+  const Eigen::Matrix2d tangent = catenary_incremental_tangent(line_, geometry, last_, incremental_EA_N);
+  return catenary_fairlead_stiffness(tangent, last_.fairlead_horizontal_N, plane.span_m, plane.direction_g);
+}
+
 }  // namespace spiral::engine

@@ -10,6 +10,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -69,6 +70,18 @@ class StaticLine {
   /// Solves the line at `attachment_g` and returns its whole state, with
   /// `points_per_segment` + 1 profile points on each segment (ends included).
   virtual LineState state(const Eigen::Vector3d& attachment_g, int points_per_segment) = 0;
+  /// The 3×3 stiffness K = −dF/dx of the line solved at `attachment_g` when
+  /// the strain changes from that state are carried by `incremental_EA_N`
+  /// (one per segment or section, bottom first) instead of the static EA:
+  /// fibre ropes' static–dynamic convention (the mean state on the static
+  /// EA, the motions about it on the dynamic one; DNV-OS-E301 ch. 2 sec. 2
+  /// [2.4]). Default, for a line with no axial model of its own (a
+  /// linearization): solve(attachment_g).stiffness_g.
+  virtual Eigen::Matrix3d incremental_stiffness_g(const Eigen::Vector3d& attachment_g,
+                                                  const std::vector<double>& incremental_EA_N) {
+    (void)incremental_EA_N;
+    return solve(attachment_g).stiffness_g;
+  }
   /// Forgets the warm start (the next solve starts cold).
   virtual void reset() = 0;
   /// Whether one solve costs milliseconds (FE) rather than microseconds
@@ -86,6 +99,9 @@ class CatenaryStaticLine final : public StaticLine {
   const Eigen::Vector3d& attachment_b() const override { return attachment_b_; }
   LineEndResponse solve(const Eigen::Vector3d& attachment_g) override;
   LineState state(const Eigen::Vector3d& attachment_g, int points_per_segment) override;
+  /// Exact (catenary_incremental_tangent); one EA per segment.
+  Eigen::Matrix3d incremental_stiffness_g(const Eigen::Vector3d& attachment_g,
+                                          const std::vector<double>& incremental_EA_N) override;
   void reset() override { warm_start_.reset(); }
 
   /// The line, its last solution and the horizontal direction (anchor ->

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 #include <string>
 
 #include "engine/lines/catenary_spans.hpp"
@@ -471,6 +472,31 @@ CatenarySolution solve_catenary(const CatenaryLine& line, const CatenaryGeometry
     fill_catenary_profile(line, geometry, options.profile_points_per_segment, solution);
   }
   return solution;
+}
+
+Eigen::Matrix2d catenary_incremental_tangent(const CatenaryLine& line, const CatenaryGeometry& geometry,
+                                             const CatenarySolution& solution,
+                                             const std::vector<double>& incremental_EA_N) {
+  if (incremental_EA_N.size() != line.segments.size()) {
+    throw std::invalid_argument(fmt::format("catenary_incremental_tangent: {} incremental EA for {} segments",
+                                            incremental_EA_N.size(), line.segments.size()));
+  }
+  CatenaryLine incremental = line;
+  for (std::size_t i = 0; i < incremental_EA_N.size(); ++i) {
+    if (!(std::isfinite(incremental_EA_N[i]) && incremental_EA_N[i] > 0.0)) {
+      throw std::invalid_argument(fmt::format(
+          "catenary_incremental_tangent: incremental_EA_N[{}] must be > 0 N, got {}", i, incremental_EA_N[i]));
+    }
+    incremental.segments[i].EA_N = incremental_EA_N[i];
+  }
+  // The slack-vertical state has no (H, V) Jacobian to take (H = 0); its
+  // tangent is the hanging part's, which the caller's static one already is.
+  if (solution.regime == CatenaryRegime::slack_vertical || !(solution.fairlead_horizontal_N > 0.0))
+    return solution.tangent_stiffness;
+  const LineView view = check_inputs(incremental, geometry, CatenaryOptions{});
+  const SpanEvaluation e = detail::evaluate_spans(view, solution.fairlead_horizontal_N, solution.fairlead_vertical_N);
+  const Eigen::Matrix2d tangent = e.jacobian.inverse();
+  return tangent.allFinite() ? tangent : solution.tangent_stiffness;
 }
 
 }  // namespace spiral::engine

@@ -125,4 +125,25 @@ CatenarySolution solve_catenary(const CatenaryLine& line, const CatenaryGeometry
                                 const CatenaryOptions& options = {},
                                 const std::optional<CatenaryGuess>& warm_start = std::nullopt);
 
+/// The line's in-plane tangent d(H_F, V_F)/d(XF, ZF) at `solution` when the
+/// strain *changes* from that state are carried by `incremental_EA_N` (one per
+/// segment, anchor first) instead of each segment's EA: the static–dynamic
+/// two-stiffness convention for fibre ropes (DNV-OS-E301 ch. 2 sec. 2 [2.4]
+/// and DNV-RP-E305 §2.4: the mean state with the static, post-installation
+/// EA; the motions about it with the dynamic EA). The spans are geometric
+/// terms independent of EA plus elastic stretches linear in 1/EA (Irvine
+/// 1981 eqs. 1.43–1.44; the laid pieces likewise): the Jacobian at the same
+/// (H, V) with the incremental EA in the elastic terms is the tangent of
+/// N = N_s + EA_inc (ε − ε_s) but for one term, the turning of the fixed
+/// part of the stretch, ε_s (1 − EA_s/EA_inc), with the line's direction;
+/// it is left out, an error of that relative size on the geometric part
+/// (≈ 3e-3 of it for 1 % static strain and EA_inc = 1.65 EA_s; 1e-4 of K
+/// on a taut polyester leg against the FE line's exact tangent,
+/// tests/validation/engine/lines/two_stiffness_tangent_test.cpp).
+/// A slack-vertical state (H = 0) returns the solution's own tangent.
+/// Throws std::invalid_argument for a size mismatch or an EA that is not > 0.
+Eigen::Matrix2d catenary_incremental_tangent(const CatenaryLine& line, const CatenaryGeometry& geometry,
+                                             const CatenarySolution& solution,
+                                             const std::vector<double>& incremental_EA_N);
+
 }  // namespace spiral::engine

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include <fmt/format.h>
@@ -18,6 +19,30 @@ namespace spiral::engine {
 namespace {
 
 using namespace fe_detail;
+
+/// Static condensation of the assembled Jacobian onto end B's position DOFs,
+/// K = J_bb − J_bf J_ff⁻¹ J_fb: d(end-B force)/d(end-B position) with every
+/// free DOF re-equilibrated. Leaves `jac` factorised with the prescribed rows
+/// as identity rows (a warm start's tangent); empty if J_ff is singular.
+std::optional<Eigen::Matrix3d> condense_on_end_B(const Problem& p, BandMatrix& jac) {
+  const int b0 = p.r_dof.back();
+  Eigen::Matrix<double, 3, Eigen::Dynamic> rows_b(3, p.n_dofs);
+  rows_b.setZero();
+  Eigen::MatrixXd cols_b = Eigen::MatrixXd::Zero(p.n_dofs, 3);
+  for (int k = 0; k < 3; ++k) {
+    for (int j = 0; j < p.n_dofs; ++j) {
+      if (jac.in_band(b0 + k, j)) rows_b(k, j) = jac.at(b0 + k, j);
+      if (jac.in_band(j, b0 + k) && !is_fixed(p, j)) cols_b(j, k) = jac.at(j, b0 + k);
+    }
+  }
+  for (int i = 0; i < p.n_dofs; ++i) {
+    if (is_fixed(p, i)) jac.set_identity_row(i);
+  }
+  const Eigen::Matrix3d k_bb = rows_b.middleCols<3>(b0);
+  if (!jac.factorize()) return std::nullopt;
+  for (int k = 0; k < 3; ++k) jac.solve_in_place(cols_b.col(k));
+  return Eigen::Matrix3d(k_bb - rows_b * cols_b);
+}
 
 FeStaticsResult post_process(const Problem& p, const FeStaticsOptions& o, const Eigen::VectorXd& q, Tangent& t) {
   FeStaticsResult r;
@@ -59,25 +84,9 @@ FeStaticsResult post_process(const Problem& p, const FeStaticsOptions& o, const 
   r.touchdown = find_touchdown(p, q);
 
   if (o.compute_end_B_stiffness) {
-    // Static condensation: K = J_bb − J_bf J_ff⁻¹ J_fb (b: end-B position DOFs).
-    const int b0 = p.r_dof.back();
-    Eigen::Matrix<double, 3, Eigen::Dynamic> rows_b(3, p.n_dofs);
-    rows_b.setZero();
-    Eigen::MatrixXd cols_b = Eigen::MatrixXd::Zero(p.n_dofs, 3);
-    for (int k = 0; k < 3; ++k) {
-      for (int j = 0; j < p.n_dofs; ++j) {
-        if (jac.in_band(b0 + k, j)) rows_b(k, j) = jac.at(b0 + k, j);
-        if (jac.in_band(j, b0 + k) && !is_fixed(p, j)) cols_b(j, k) = jac.at(j, b0 + k);
-      }
-    }
-    for (int i = 0; i < p.n_dofs; ++i) {
-      if (is_fixed(p, i)) jac.set_identity_row(i);
-    }
-    Eigen::Matrix3d k_bb = rows_b.middleCols<3>(b0);
     ++t.evaluations;
-    if (jac.factorize()) {
-      for (int k = 0; k < 3; ++k) jac.solve_in_place(cols_b.col(k));
-      r.end_B_stiffness_N_per_m = k_bb - rows_b * cols_b;
+    if (auto k = condense_on_end_B(p, jac)) {
+      r.end_B_stiffness_N_per_m = *k;
       r.tangent = std::move(tangent);  // at the converged state
     }
   } else if (t.valid) {
@@ -224,6 +233,59 @@ FeStaticsResult solve_fe_line_statics(const FeLineModel& model, const FeEnvironm
   r.residual_N = last.residual_N;
   r.force_scale_N = last.scale_N;
   return r;
+}
+
+Eigen::Matrix3d fe_line_incremental_end_B_stiffness(const FeLineModel& model, const FeEnvironment& environment,
+                                                    const FeStaticsResult& solution,
+                                                    const std::vector<double>& incremental_EA_N) {
+  if (incremental_EA_N.size() != model.sections.size()) {
+    invalid(fmt::format("incremental_EA_N: needs one value per section ({}), got {}", model.sections.size(),
+                        incremental_EA_N.size()));
+  }
+  for (std::size_t i = 0; i < incremental_EA_N.size(); ++i) {
+    if (!(std::isfinite(incremental_EA_N[i]) && incremental_EA_N[i] > 0.0))
+      invalid(fmt::format("incremental_EA_N[{}]: must be > 0 N, got {}", i, incremental_EA_N[i]));
+  }
+  if (solution.node_position_m.size() < 2) invalid("solution: not a static solution (no nodes)");
+  const FeLineEnds ends{solution.node_position_m.front(), solution.node_position_m.back()};
+  validate(model, environment, ends, FeStaticsOptions{});
+  Problem p = make_problem(model, environment, ends);
+  if (solution.state.size() != p.n_dofs)
+    invalid(
+        fmt::format("solution.state: needs {} entries (this model's mesh), got {}", p.n_dofs, solution.state.size()));
+  set_node_arc_lengths(p, solution.node_arc_length_m);
+  Eigen::VectorXd g(p.n_dofs);
+  BandMatrix jac;
+  assemble(p, solution.state, g, &jac);
+  // The axial force N(ε) enters the element as −∫ S_k' N t ds; its tangent's
+  // material part is dN/dε t tᵀ (ancf::strain_energy_hessian: EA t tᵀ plus
+  // the geometric N/|r'| (I − t tᵀ)). With N = N_s + EA_inc (ε − ε_s) the
+  // geometric part is unchanged at the state itself and the material part
+  // gains (EA_inc − EA) t tᵀ at every Gauss point.
+  for (std::size_t e = 0; e < p.elements.size(); ++e) {
+    const double delta_EA = incremental_EA_N[static_cast<std::size_t>(p.mesh.section[e])] - p.elements[e].EA_N;
+    if (delta_EA == 0.0) continue;
+    const auto blocks = element_blocks(p, e);
+    const ElementState qe = gather(p, solution.state, e);
+    const double L = p.elements[e].length_m;
+    for (std::size_t gp = 0; gp < ancf::kGaussXi.size(); ++gp) {
+      const ancf::ShapeAt sh = ancf::shape_at(ancf::kGaussXi[gp], L);
+      const Eigen::Vector3d t = slope(sh, qe).normalized();
+      const Eigen::Matrix3d k_point = (ancf::kGaussW[gp] * L * delta_EA) * (t * t.transpose());
+      for (int k = 0; k < 4; ++k) {
+        for (int j = 0; j < 4; ++j) {
+          const double c = sh.dS[static_cast<std::size_t>(k)] * sh.dS[static_cast<std::size_t>(j)];
+          for (int x = 0; x < 3; ++x)
+            for (int y = 0; y < 3; ++y)
+              jac.at(blocks[static_cast<std::size_t>(k)] + x, blocks[static_cast<std::size_t>(j)] + y) -=
+                  c * k_point(x, y);
+        }
+      }
+    }
+  }
+  const std::optional<Eigen::Matrix3d> k = condense_on_end_B(p, jac);
+  if (!k) throw SolverError("FE line statics: the incremental tangent is singular (a section without stiffness?)");
+  return *k;
 }
 
 }  // namespace spiral::engine

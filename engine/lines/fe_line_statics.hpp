@@ -245,4 +245,17 @@ inline void warm_start_from(FeStaticsOptions& options, const FeStaticsResult& pr
 FeStaticsResult solve_fe_line_statics(const FeLineModel& model, const FeEnvironment& environment,
                                       const FeLineEnds& ends, const FeStaticsOptions& options = {});
 
+/// d(end_B_force_N)/d(end_B_m) at `solution` (a static solution of `model` in
+/// `environment`) when the strain changes from that state are carried by
+/// `incremental_EA_N` (one per section, end A first) instead of each
+/// section's EA: the static–dynamic two-stiffness convention for fibre ropes
+/// (DNV-OS-E301 ch. 2 sec. 2 [2.4], DNV-RP-E305 §2.4; see
+/// catenary_incremental_tangent). The state and its forces are the static
+/// ones; sign as FeStaticsResult::end_B_stiffness_N_per_m (equal to it when
+/// every incremental EA is the section's EA). Throws SolverError on invalid
+/// input.
+Eigen::Matrix3d fe_line_incremental_end_B_stiffness(const FeLineModel& model, const FeEnvironment& environment,
+                                                    const FeStaticsResult& solution,
+                                                    const std::vector<double>& incremental_EA_N);
+
 }  // namespace spiral::engine

@@ -79,6 +79,14 @@ std::string stiffness_table(const StaticCaseResult& r, const std::string& projec
                                              : "rigid body only — no added mass given, so the periods are too short");
     for (const NaturalMode& m : r.natural_modes) out += fmt::format("  {:>8.2f} s  {}\n", m.period_s, m.dominant_dof);
   }
+  if (r.dynamic_stiffness_lines > 0) {
+    out += fmt::format(
+        "\nWith the dynamic EA of the polyester ({} lines) for the motions about this equilibrium (the S-C "
+        "and coupled dynamics):\n",
+        r.dynamic_stiffness_lines);
+    for (const NaturalMode& m : r.dynamic_natural_modes)
+      out += fmt::format("  {:>8.2f} s  {}\n", m.period_s, m.dominant_dof);
+  }
   return out;
 }
 

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <iostream>
 #include <numbers>
 
@@ -134,6 +135,48 @@ TEST(StaticCase, ScStaticCaseWithoutCurrentIsTheQuickCase) {
   for (std::size_t i = 0; i < sc.lines.size(); ++i) {
     EXPECT_EQ(sc.lines[i].fairlead_tension_N, quick.lines[i].fairlead_tension_N) << sc.lines[i].name;
   }
+}
+
+// Polyester's static–dynamic convention (DNV-OS-E301 ch. 2 sec. 2 [2.4]):
+// the default scenario's 16 chain–polyester–chain legs at rest, their
+// motions about the equilibrium on EA_d = (16 + 0.35 L_m) MBL ≈ 1.6 EA_s.
+// A taut leg's horizontal stiffness is mostly elastic, so K_surge grows by
+// most of that ratio, and the surge period shrinks by its square root; the
+// FE lines (model: fe) give the same K to the catenary's stated
+// approximation of its dynamic tangent (ε_s (1 − EA_s/EA_d) ≈ 4e-3 of the
+// geometric part; tests/validation/engine/lines/two_stiffness_tangent_test).
+// OC4's chains have one EA: the dynamic K is the static one, bit for bit.
+TEST(StaticCase, PolyesterMotionsAboutTheMeanSeeTheDynamicEA) {
+  const ValidatedProject fps = load_validated_project(std::string(SPIRAL_SOURCE_DIR) + "/scenarios/deepwater-fps.yaml");
+  const auto rest = run_static_case(fps, {std::nullopt, std::nullopt, false});
+  EXPECT_EQ(rest.dynamic_stiffness_lines, 16);
+  const double ratio = rest.dynamic_stiffness(0, 0) / rest.stiffness(0, 0);
+  std::cout << "K_surge dynamic / static " << ratio << "\n";
+  EXPECT_GT(ratio, 1.3);
+  EXPECT_LT(ratio, 16.0 / 13.0 + 0.35 * 100.0 * 0.15 / 13.0);  // below the EA ratio at 15 % MBL
+  auto period = [](const std::vector<NaturalMode>& modes, const char* dof) {
+    for (const NaturalMode& m : modes)
+      if (m.dominant_dof == dof) return m.period_s;
+    return 0.0;
+  };
+  EXPECT_LT(period(rest.dynamic_natural_modes, "surge"), period(rest.natural_modes, "surge") / std::sqrt(1.2));
+  EXPECT_NEAR(period(rest.dynamic_natural_modes, "heave"), period(rest.natural_modes, "heave"),
+              0.01 * period(rest.natural_modes, "heave"))
+      << "heave is the hull's hydrostatics";
+
+  auto all_fe = fps;
+  for (auto& line : all_fe.project.mooring.lines) line.model = LineModel::fe;
+  const auto fe = run_static_case(all_fe, {std::nullopt, std::nullopt, false});
+  EXPECT_EQ(fe.dynamic_stiffness_lines, 16);
+  const Eigen::Matrix3d translation_fe = fe.dynamic_stiffness.topLeftCorner<3, 3>();
+  const Eigen::Matrix3d translation = rest.dynamic_stiffness.topLeftCorner<3, 3>();
+  EXPECT_LE((translation_fe - translation).norm(), 4e-3 * translation.norm());
+
+  const auto oc4 =
+      run_static_case(load_validated_project(std::string(SPIRAL_SOURCE_DIR) + "/scenarios/oc4-semisubmersible.yaml"),
+                      {std::nullopt, std::nullopt, false});
+  EXPECT_EQ(oc4.dynamic_stiffness_lines, 0);
+  EXPECT_EQ(oc4.dynamic_stiffness, oc4.stiffness);
 }
 
 TEST(StaticCase, LoadsWithoutDataAreNoted) {
