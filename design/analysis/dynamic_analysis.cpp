@@ -408,7 +408,8 @@ DynamicModel build_dynamic_model(const ValidatedProject& validated, const Dynami
     const auto covariance =
         engine::fairlead_velocity_covariance(fairleads_b, reference_point, motion, request.output_step_s);
     const LineHydrodynamicsResult lines =
-        line_hydrodynamics(mooring, engine::pose_from_offset(reference_point, model.statics.offset), covariance, rho_w);
+        line_hydrodynamics(mooring, engine::pose_from_offset(reference_point, model.statics.offset), covariance, rho_w,
+                           model.case_model.current ? &*model.case_model.current : nullptr);
     linearized.added_mass = lines.added_mass;
     linearized.damping = lines.damping;
     model.line_added_mass = lines.added_mass;
@@ -416,11 +417,10 @@ DynamicModel build_dynamic_model(const ValidatedProject& validated, const Dynami
     model.loads.lines = linearized;
     model.timing.reduction_s += start.seconds();
     model.notes.push_back(
-        "sc-enhanced: line damping and added mass from the quasi-static line shape derivative "
-        "(normal Morison drag "
-        "linearized on the fairlead velocities of a first sc run, sqrt(8/pi) sigma); current on "
-        "the lines and line "
-        "dynamics neglected in these matrices");
+        "sc-enhanced: mooring-line damping and added mass from the quasi-static line shape derivative "
+        "(normal Morison drag linearized on the fairlead velocities of a first sc run, sqrt(8/pi) sigma, "
+        "and about the current at each node); the current's effect on the line shape, the risers' "
+        "damping and line dynamics neglected in these matrices");
   }
   return model;
 }

@@ -26,14 +26,21 @@
 // 3) Fairlead matrices A_f = sum J_jᵀ a_j J_j, B_f = sum J_jᵀ b_j J_j, mapped
 //    to the hull by the fairlead arm a (global): delta x_f = du − [a×] dtheta,
 //    T = [I, −[a×]], A_6 = Tᵀ A_f T, B_6 = Tᵀ B_f T, summed over the lines.
-// Limits: the in-line (tangential) drag and inertia, current on the lines,
-// and the lines' own dynamic amplification (important for deep-water lines
-// at wave frequency) are neglected; the result is symmetric positive
-// semi-definite by construction.
+//    With a current, the drag is linearized about the normal current at
+//    the node instead (drag_linearization in the .cpp: the steady drag's
+//    slope 2|u_c| along it, |u_c| across it for a current large against
+//    sigma): a line in a 1.5 m/s current is damped several times more than
+//    by its own motion.
+// Limits: the in-line (tangential) drag and inertia, the current's effect
+// on the line's shape, the risers' damping, and the lines' own dynamic
+// amplification (important for deep-water lines at wave frequency) are
+// neglected; the result is symmetric positive semi-definite by
+// construction.
 #include <vector>
 
 #include "design/model/mooring_model.hpp"
 #include "engine/analysis/line_array.hpp"
+#include "engine/environment/current_profile.hpp"
 
 namespace spiral::design {
 
@@ -45,8 +52,10 @@ struct LineHydrodynamicsResult {
 
 /// `model` holds catenary mooring lines only (build_mooring_model);
 /// `fairlead_velocity_covariance` one 3x3 (m²/s², global) per line of model.
+/// `current`: the case's profile (nullptr: none).
 LineHydrodynamicsResult line_hydrodynamics(LineArrayModel& model, const engine::HullPose& pose,
                                            const std::vector<Eigen::Matrix3d>& fairlead_velocity_covariance,
-                                           double water_density_kg_per_m3);
+                                           double water_density_kg_per_m3,
+                                           const engine::CurrentProfile* current = nullptr);
 
 }  // namespace spiral::design
