@@ -3,12 +3,16 @@
 // 100-yr current profile on every mooring line (Corrêa & Jacob's scheme; issue
 // 17 §1): its mean offset and 6x6 K are those of the current-loaded FE lines,
 // i.e. of the same scenario with every line `model: fe`, while the quick
-// statics (`spiral equilibrium`) keep the catenaries without current.
+// statics (`spiral equilibrium`) keep the catenaries without current. The
+// coupled level starts from it and, under the current alone, stays there:
+// the mean load on the polyester's static EA, as the codes take it.
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <iostream>
 
+#include "design/analysis/coupled_analysis.hpp"
 #include "design/analysis/static_case.hpp"
 
 namespace spiral::design {
@@ -65,6 +69,48 @@ TEST(ScCurrentStatics, DeepwaterStillWaterScCaseIsTheQuickCase) {
   EXPECT_EQ(sc.offset, quick.offset);
   EXPECT_EQ(sc.stiffness, quick.stiffness);
   EXPECT_EQ(sc.line_force, quick.line_force);
+}
+
+// The default scenario under its 100-yr current alone (no waves, no wind):
+// the coupled run (hull + 16 FE mooring lines + 12 FE risers, the polyester
+// on N = N_s + EA_d (eps - eps_s)) stays at the FE-line static equilibrium.
+// Before the coupled level started from that equilibrium it settled at
+// 37.0 m against the statics' 41.9 m, carrying the line drag on the dynamic
+// EA. Tolerance: a run started at rest in a steady load moves only by the
+// integrator's error (position tolerance 1e-4 m per step) and the FE lines'
+// static residual (1e-10 of their force scale): 1 cm on the hull, 0.1 % on
+// the fairlead tensions, three orders below the 4.8 m the wrong EA made.
+TEST(ScCurrentStatics, DeepwaterCoupledRunUnderTheCurrentAloneStaysAtTheStaticEquilibrium) {
+  ValidatedProject project = load_validated_project(kDeepwater);
+  Environment current_only;
+  for (const Environment& e : project.project.environments)
+    if (e.name == "survival-100yr-0deg") current_only = e;
+  current_only.name = "current-only";
+  current_only.waves.reset();
+  current_only.wind.reset();
+  ASSERT_TRUE(current_only.current);
+  project.project.environments.push_back(current_only);
+  project.project.load_cases.push_back({"current-only", "current-only", std::nullopt, DesignCondition::extreme});
+
+  const StaticCaseResult sc = solve(project, "current-only", true);
+  DynamicAnalysisRequest request;
+  request.load_case = "current-only";
+  request.level = AnalysisLevel::coupled;
+  request.duration_s = 200.0;
+  request.output_step_s = 2.0;
+  request.compute_tensions = false;
+  const DynamicAnalysisResult coupled = run_coupled_analysis(project, request);
+  double drift_m = 0.0;
+  for (Eigen::Index k = 0; k < coupled.low_frequency.cols(); ++k)
+    drift_m = std::max(drift_m, (coupled.low_frequency.col(k).head<3>() - sc.offset.head<3>()).norm());
+  std::cout << "current only: static surge " << sc.offset(0) << " m, coupled drifts at most " << drift_m
+            << " m from it over " << request.duration_s << " s\n";
+  EXPECT_LT(drift_m, 0.01);
+  ASSERT_EQ(coupled.dynamic_tensions.size(), sc.lines.size() + sc.risers.size());
+  for (std::size_t i = 0; i < sc.lines.size(); ++i) {
+    const double end = coupled.dynamic_tensions[i].tension_N.back();
+    EXPECT_NEAR(end, sc.lines[i].fairlead_tension_N, 1e-3 * sc.lines[i].fairlead_tension_N) << sc.lines[i].name;
+  }
 }
 
 }  // namespace
