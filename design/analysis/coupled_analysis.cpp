@@ -61,13 +61,6 @@ DynamicAnalysisResult run_coupled_analysis(const ValidatedProject& validated, co
 
   DynamicAnalysisResult result = result_of_model(model, request, load_case.name, environment.name);
   result.timing.reduction_s = 0.0;  // set below: the FE lines' statics
-  if (model.hull.radiation_memory) {
-    model.hull.radiation_memory.reset();
-    model.hull.added_mass = model.case_model.hull->low_frequency_added_mass;
-    result.notes.push_back(
-        "coupled: the hull's radiation memory is not in the coupled system; the hull takes "
-        "A(w_LF) and B_lin there");
-  }
 
   // The lines at the hull's static equilibrium, with the case's current.
   engine::Stopwatch start;

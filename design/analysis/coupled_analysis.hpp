@@ -13,9 +13,8 @@
 //   * hull: M + A(w_LF), B_lin, quadratic damping, C_hydro, F_hs0 and the
 //     same external low-frequency force (slow drift, wind with gusts,
 //     current on the hull, or the Morison members) on the same seeded
-//     realizations as the S-C run of that seed; with `radiation: memory` the
-//     coupled run keeps A(w_LF) (a note says so: the memory is not in the
-//     coupled system);
+//     realizations as the S-C run of that seed; with `radiation: memory`,
+//     A(inf) and the retardation kernel as the S-C hull;
 //   * wave-frequency motion: the S-C level's RAO motion (same seed),
 //     superposed on the hull state at the fairleads (built up over the
 //     request's line_dynamics_ramp_s), so that the lines move with LF + WF

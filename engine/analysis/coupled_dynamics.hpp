@@ -51,9 +51,13 @@
 //  * at an output time the end force comes from the end element's own wave
 //    kinematics (evaluate_point), not from every element's.
 //
-// Not modelled: the hull's radiation memory (Cummins) — the hull takes
-// A(ω_LF) and B_lin (a model with a kernel is rejected). Waves on the lines
-// come from the lines' environments (FeDynamicEnvironment::sea / waves).
+// Radiation memory (Cummins 1962), when the hull model has a kernel: the
+// hull takes A(inf) and the convolution of hull_dynamics.hpp, on a velocity
+// history the driver extends at each output time by cubic Hermite
+// interpolation of IDA's velocities and accelerations (the run stops at its
+// outputs only); inside an output step the newest velocities are joined
+// linearly. Waves on the lines come from the lines' environments
+// (FeDynamicEnvironment::sea / waves).
 
 #include <Eigen/Core>
 #include <functional>
@@ -130,7 +134,7 @@ struct CoupledTimeSeries {
 /// lines from their static solutions). `loads.lines` must be a
 /// LinearizedLines (usually all zero: the FE lines replace it; non-zero it
 /// adds, e.g., lines left out of the FE set). Throws std::invalid_argument
-/// for bad options or a model with radiation memory, SolverError for a line
+/// for bad options, SolverError for a line
 /// that cannot start (named), IntegrationError (time reached, cause) when
 /// the integration fails.
 CoupledTimeSeries simulate_coupled(const HullDynamicsModel& hull, const HullLoads& loads,

@@ -37,7 +37,32 @@ Vector6d radiation_memory_force(const RetardationKernel& kernel, const VelocityH
     if (i + 1 >= n_kernel) return i + 1 == n_kernel ? kernel.at_index(i) : Matrix6d::Zero();
     return (1.0 - a) * kernel.at_index(i) + a * kernel.at_index(i + 1);
   };
-  mu += 0.5 * s * (kernel.at_index(0) * velocity + kernel_at(0) * history.velocities.col(last));
+  if (s <= dt) {
+    mu += 0.5 * s * (kernel.at_index(0) * velocity + kernel_at(0) * history.velocities.col(last));
+  } else {
+    // A history that lags by more than a step (the coupled driver stores it
+    // at its output times): the velocity is joined linearly across [0, s],
+    // and the trapezoid follows the kernel's grid inside it.
+    const Vector6d newest = history.velocities.col(last);
+    auto term = [&](double tau) -> Vector6d {
+      const double u = tau / dt;
+      const auto i = static_cast<Eigen::Index>(std::floor(u));
+      if (i + 1 >= n_kernel) return Vector6d::Zero();
+      const Matrix6d k = (1.0 - (u - static_cast<double>(i))) * kernel.at_index(i) +
+                         (u - static_cast<double>(i)) * kernel.at_index(i + 1);
+      return k * (velocity + (tau / s) * (newest - velocity));
+    };
+    double tau = 0.0;
+    Vector6d f_tau = kernel.at_index(0) * velocity;
+    for (Eigen::Index i = 1; static_cast<double>(i) * dt < s; ++i) {
+      const double next = static_cast<double>(i) * dt;
+      const Vector6d f_next = term(next);
+      mu += 0.5 * (next - tau) * (f_tau + f_next);
+      tau = next;
+      f_tau = f_next;
+    }
+    mu += 0.5 * (s - tau) * (f_tau + kernel_at(0) * newest);
+  }
   // Trapezoid over the stored samples, up to t_max or the start of the history.
   // Sample j sits at tau_j = s + j dt <= t_max.
   const Eigen::Index j_max = std::min(last, n_kernel - 1 - m - (a > 0.0 ? 1 : 0));

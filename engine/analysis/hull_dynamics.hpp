@@ -105,8 +105,11 @@ struct VelocityHistory {
 
 /// The radiation memory force mu(t) = int_0^t_max K(tau) q'(t − tau) dtau by
 /// the trapezoidal rule on the history grid, with q'(t) = the current
-/// velocity and K between table points linearly interpolated. Cost per call:
-/// about n_kernel × 36 multiply-adds (a 60 s kernel at 0.1 s: ~2e4).
+/// velocity and K between table points linearly interpolated. Between t and
+/// the newest stored sample the velocity is joined linearly (one trapezoid
+/// when that is at most a step, the kernel's grid inside a longer gap).
+/// Cost per call: about n_kernel × 36 multiply-adds (a 60 s kernel at 0.1 s:
+/// ~2e4).
 Vector6d radiation_memory_force(const RetardationKernel& kernel, const VelocityHistory& history, double t_s,
                                 const Vector6d& velocity);
 
