@@ -555,7 +555,7 @@ DynamicAnalysisResult run_dynamic_analysis(const ValidatedProject& validated, co
                     "prescribed at the fairleads and hang-offs, built up over the "
                     "first {:g} s; current on the lines{}",
                     request.line_dynamics_ramp_s,
-                    model.sea ? " and linear wave kinematics at each element's static midpoint" : ""));
+                    model.sea ? " and linear wave kinematics at each element's midpoint (to 0.5 m)" : ""));
   }
   return result;
 }

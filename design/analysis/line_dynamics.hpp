@@ -17,8 +17,9 @@
 // build-up transient.
 //
 // Per line: Morison drag and added mass on the velocity relative to the
-// current and the waves (input.sea: linear kinematics held at each element's
-// static midpoint — fixed_point_wave_kinematics.hpp says why and what it costs),
+// current and the waves (input.sea: linear kinematics at a point per element
+// that follows its midpoint to 0.5 m — fixed_point_wave_kinematics.hpp says
+// why and what it costs),
 // polyester with its dynamic EA at the section's mean static tension
 // (design/project/line_properties.hpp), seabed penalty from site.seabed with contact
 // damping c = c_bot · d (c_bot = 1e5 Pa·s/m; MoorDyn-C 2.7's default is 3e5,

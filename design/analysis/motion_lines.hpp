@@ -11,8 +11,8 @@
 // cubic spline through the fairlead positions at the history's own times
 // (continuous velocity and acceleration), built up from the pose of the
 // first sample by a quintic ramp. The lines see the load case's current and,
-// unless switched off, the case's seeded sea (linear wave kinematics at each
-// element's static midpoint). The sea of a seed is the one `spiral analyze`
+// unless switched off, the case's seeded sea (linear wave kinematics at a
+// point per element that follows its midpoint to 0.5 m). The sea of a seed is the one `spiral analyze`
 // makes for the same case, seed and duration: a motion written by analyze
 // meets the waves that made it; a motion from another program meets a sea of
 // the same spectrum but not its phases (a note says so).

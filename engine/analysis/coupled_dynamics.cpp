@@ -452,6 +452,7 @@ CoupledTimeSeries simulate_coupled(const HullDynamicsModel& hull, const HullLoad
     system.extend_history(out.times_s[k - 1], out.velocity.col(k - 1), previous_acceleration, t, out.velocity.col(k),
                           ida.state_derivative().segment<6>(6));
     previous_acceleration = ida.state_derivative().segment<6>(6);
+    system.for_each_line([&](LineBlock& b) { b.line.follow_elements(ida.state().segment(b.offset, b.line.n)); });
     const std::vector<double> err = ida.group_local_errors();
     std::size_t worst_part = blocks.size();
     double worst = err[0];

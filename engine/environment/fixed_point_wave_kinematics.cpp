@@ -26,35 +26,43 @@ FixedPointWaveKinematics::FixedPointWaveKinematics(std::shared_ptr<const WaveRea
     cos_heading_.push_back(c[j].cos_heading);
     sin_heading_.push_back(c[j].sin_heading);
   }
-  const double log_cutoff = std::log(cutoff);
+  log_cutoff_ = std::log(cutoff);
   points_.resize(points.size());
-  for (std::size_t p = 0; p < points.size(); ++p) {
-    const Eigen::Vector3d& x = points[p];
-    Point& out = points_[p];
-    if (x.z() >= 0.0) continue;  // above the still-water level: no kinematics (see the header)
-    // e^{k z} >= cutoff  <=>  k <= ln(cutoff) / z: a prefix of the sorted components.
-    const double k_max = log_cutoff / x.z();
-    while (out.count < order_.size() && c[order_[out.count]].wavenumber_rad_per_m <= k_max) ++out.count;
-    out.horizontal_c.resize(out.count);
-    out.horizontal_s.resize(out.count);
-    out.vertical_c.resize(out.count);
-    out.vertical_s.resize(out.count);
-    max_count_ = std::max(max_count_, out.count);
-    out.elevation_c.resize(out.count);
-    out.elevation_s.resize(out.count);
-    out.z_m = x.z();
-    for (std::size_t j = 0; j < out.count; ++j) {
-      const WaveComponent& w = c[order_[j]];
-      const WaveProfiles f = wave_profiles(w, x.z(), sea_->water_depth_m);
-      const double psi = w.phase_rad - w.kx_rad_per_m * x.x() - w.ky_rad_per_m * x.y();
-      const double aw = w.amplitude_m * w.omega_rad_per_s;
-      out.horizontal_c[j] = aw * f.ch_over_sh * std::cos(psi);
-      out.horizontal_s[j] = aw * f.ch_over_sh * std::sin(psi);
-      out.vertical_c[j] = aw * f.sh_over_sh * std::cos(psi);
-      out.vertical_s[j] = aw * f.sh_over_sh * std::sin(psi);
-      out.elevation_c[j] = w.amplitude_m * std::cos(psi);
-      out.elevation_s[j] = w.amplitude_m * std::sin(psi);
-    }
+  for (std::size_t p = 0; p < points.size(); ++p) set_point(points_[p], points[p]);
+}
+
+void FixedPointWaveKinematics::move_point(std::size_t point, const Eigen::Vector3d& position) {
+  if (point >= points_.size()) throw std::out_of_range("fixed-point wave kinematics: no such point");
+  points_[point] = Point{};
+  set_point(points_[point], position);
+}
+
+void FixedPointWaveKinematics::set_point(Point& out, const Eigen::Vector3d& x) {
+  const auto& c = sea_->components;
+  out.position_m = x;
+  out.z_m = x.z();
+  if (x.z() >= 0.0) return;  // above the still-water level: no kinematics (see the header)
+  // e^{k z} >= cutoff  <=>  k <= ln(cutoff) / z: a prefix of the sorted components.
+  const double k_max = log_cutoff_ / x.z();
+  while (out.count < order_.size() && c[order_[out.count]].wavenumber_rad_per_m <= k_max) ++out.count;
+  out.horizontal_c.resize(out.count);
+  out.horizontal_s.resize(out.count);
+  out.vertical_c.resize(out.count);
+  out.vertical_s.resize(out.count);
+  max_count_ = std::max(max_count_, out.count);
+  out.elevation_c.resize(out.count);
+  out.elevation_s.resize(out.count);
+  for (std::size_t j = 0; j < out.count; ++j) {
+    const WaveComponent& w = c[order_[j]];
+    const WaveProfiles f = wave_profiles(w, x.z(), sea_->water_depth_m);
+    const double psi = w.phase_rad - w.kx_rad_per_m * x.x() - w.ky_rad_per_m * x.y();
+    const double aw = w.amplitude_m * w.omega_rad_per_s;
+    out.horizontal_c[j] = aw * f.ch_over_sh * std::cos(psi);
+    out.horizontal_s[j] = aw * f.ch_over_sh * std::sin(psi);
+    out.vertical_c[j] = aw * f.sh_over_sh * std::cos(psi);
+    out.vertical_s[j] = aw * f.sh_over_sh * std::sin(psi);
+    out.elevation_c[j] = w.amplitude_m * std::cos(psi);
+    out.elevation_s[j] = w.amplitude_m * std::sin(psi);
   }
 }
 

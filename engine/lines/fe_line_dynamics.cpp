@@ -246,7 +246,10 @@ FeLineDynamics::~FeLineDynamics() = default;
 FeLineDynamics::FeLineDynamics(FeLineDynamics&&) noexcept = default;
 FeLineDynamics& FeLineDynamics::operator=(FeLineDynamics&&) noexcept = default;
 
-void FeLineDynamics::advance_to(double t_s) { impl_->ida->advance_to(t_s); }
+void FeLineDynamics::advance_to(double t_s) {
+  impl_->ida->advance_to(t_s);
+  impl_->line.follow_elements(impl_->ida->state().head(impl_->line.n));
+}
 double FeLineDynamics::time_s() const { return impl_->ida->time_s(); }
 IdaStatistics FeLineDynamics::statistics() const { return impl_->ida->statistics(); }
 

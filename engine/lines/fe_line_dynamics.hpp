@@ -87,8 +87,9 @@ struct FeDynamicEnvironment {
   double seabed_damping_N_s_per_m2 = 0.0;   ///< per m of line per m/s vertical, in contact, >= 0
   double friction_velocity_m_per_s = 0.01;  ///< full friction above this sliding speed, > 0
   WaveKinematicsFn waves;                   ///< empty: no waves (a point-wise field)
-  /// A wave realization acting on the line: linear kinematics at each
-  /// element's static midpoint (engine/environment/fixed_point_wave_kinematics.hpp),
+  /// A wave realization acting on the line: linear kinematics at a point per
+  /// element, moved to its midpoint at an output time when the element has
+  /// drifted 0.5 m from it (engine/environment/fixed_point_wave_kinematics.hpp),
   /// added to `waves` if both are given. Null: none.
   std::shared_ptr<const WaveRealization> sea;
   /// The sea's kinematics built up from 0 by a quintic ramp over this time

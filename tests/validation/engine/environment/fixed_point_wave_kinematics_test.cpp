@@ -88,16 +88,21 @@ TEST(FixedPointWaveKinematics, SteepRegularWaveIsWheelerStretched) {
   // Without the stretching the difference would be k η ≈ 0.15 of a ω near the surface.
 }
 
-TEST(FixedPointWaveKinematics, ShortCrestedSeaWithinTheCutoff) {
+/// Hs 8 m, Tp 12 s, cos-2s spreading over 5 directions, 1800 m deep, 1 h.
+std::shared_ptr<const WaveRealization> short_crested_sea(std::uint64_t seed) {
   WaveRealizationInput in;
   in.spectrum = make_jonswap_spectrum({8.0, 12.0, 3.3});
-  in.seed = 7;
+  in.seed = seed;
   in.duration_s = 3600.0;
   in.components_per_direction = 100;
   in.spreading = DirectionalSpreading{SpreadingForm::cos_2s, 2.0};
   in.direction_count = 5;
   in.water_depth_m = 1800.0;
-  auto sea = std::make_shared<const WaveRealization>(make_wave_realization(in));
+  return std::make_shared<const WaveRealization>(make_wave_realization(in));
+}
+
+TEST(FixedPointWaveKinematics, ShortCrestedSeaWithinTheCutoff) {
+  const auto sea = short_crested_sea(7);
   const std::vector<Eigen::Vector3d> points = {{0.0, 0.0, -10.0}, {-40.0, 25.0, -150.0}};
   const FixedPointWaveKinematics kin(sea, points, 1e-3);
   // Left out: components with e^{kz} < 1e-3, each at most 1e-3 of its
@@ -114,6 +119,30 @@ TEST(FixedPointWaveKinematics, ShortCrestedSeaWithinTheCutoff) {
       EXPECT_GT(ref.velocity_m_per_s.norm(), 0.0);
     }
   }
+}
+
+// A moved point is the point built there: the same amplitudes, so the same
+// kinematics bit for bit, whether it moves deeper (fewer components reach
+// it), shallower (more: the time phases cover them) or out of the water.
+TEST(FixedPointWaveKinematics, AMovedPointIsThePointBuiltThere) {
+  const auto sea = short_crested_sea(3);
+  FixedPointWaveKinematics moving(sea, {{0.0, 0.0, -120.0}, {10.0, 0.0, -30.0}});
+  const std::vector<Eigen::Vector3d> targets = {{3.0, -2.0, -8.0}, {12.5, 1.0, -300.0}};
+  moving.move_point(0, targets[0]);
+  moving.move_point(1, targets[1]);
+  const FixedPointWaveKinematics built(sea, targets);
+  EXPECT_EQ(moving.position(0), targets[0]);
+  std::vector<Eigen::Vector3d> u1, a1, u2, a2;
+  for (double t : {50.0, 1234.5}) {
+    moving.evaluate(t, u1, a1);
+    built.evaluate(t, u2, a2);
+    for (std::size_t p = 0; p < targets.size(); ++p) {
+      EXPECT_EQ(u1[p], u2[p]) << p;
+      EXPECT_EQ(a1[p], a2[p]) << p;
+    }
+  }
+  moving.move_point(1, {0.0, 0.0, 2.0});
+  EXPECT_TRUE(moving.still(1));
 }
 
 TEST(FixedPointWaveKinematics, DryAndDeepPointsAreStill) {

@@ -18,6 +18,7 @@
 #include "engine/lines/catenary.hpp"
 #include "engine/lines/fe_line_dynamics.hpp"
 #include "engine/lines/fe_line_statics.hpp"
+#include "engine/numerics/sampled_trajectory.hpp"
 
 namespace spiral::engine {
 namespace {
@@ -147,11 +148,8 @@ TEST(TwoStiffnessTangent, FeLineDynamicsCarriesASlowDisplacementOnTheDynamicEA) 
   FeDynamicsOptions options;
   const Eigen::Vector3d rest = st.node_position_m.back();
   options.end_B_motion = [&](double t) {
-    const double tau = std::min(t / kRamp_s, 1.0);
-    const double r = tau * tau * tau * (10.0 - 15.0 * tau + 6.0 * tau * tau);
-    const double dr = tau < 1.0 ? 30.0 * tau * tau * (1.0 - tau) * (1.0 - tau) / kRamp_s : 0.0;
-    const double ddr = tau < 1.0 ? 60.0 * tau * (1.0 - tau) * (1.0 - 2.0 * tau) / (kRamp_s * kRamp_s) : 0.0;
-    return EndKinematics{rest + r * delta, dr * delta, ddr * delta};
+    const RampValue r = smooth_ramp(t, kRamp_s);
+    return EndKinematics{rest + r.value * delta, r.rate_per_s * delta, r.rate2_per_s2 * delta};
   };
   FeLineDynamics dynamics(model, environment, st, options);
   Eigen::Vector3d mean_force = Eigen::Vector3d::Zero();
