@@ -35,7 +35,12 @@
 // on the line's shape, the risers' damping, and the lines' own dynamic
 // amplification (important for deep-water lines at wave frequency) are
 // neglected; the result is symmetric positive semi-definite by
-// construction.
+// construction. The risers were tried the same way (FE lines in the
+// current, their quasi-static shape derivative) and not kept: a 2,000 m SCR
+// does not follow its hang-off quasi-statically down its length, the
+// derivative overstates the deep part's motion, and the default scenario's
+// lc1 came out over-damped (surge std 15 % below coupled, against 4.5 %
+// above without them; docs/decisions/enhanced-sc-accuracy.md).
 #include <vector>
 
 #include "design/model/mooring_model.hpp"
