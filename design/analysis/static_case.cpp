@@ -194,7 +194,8 @@ StaticCaseResult run_static_case(const ValidatedProject& validated, const CaseMo
   for (std::size_t i = 0; i < lines.designs.size(); ++i) {
     const std::vector<LineTypeProperties>& types = lines.designs[i].segment_types;
     if (std::none_of(types.begin(), types.end(), [](const LineTypeProperties& t) {
-          return t.kind == LineKind::polyester && dynamic_axial_stiffness_N(t, 0.0) != t.axial_stiffness_N;
+          return t.kind == LineKind::polyester &&
+                 (t.dynamic_stiffness_mbl[0] != 0.0 || t.dynamic_stiffness_mbl[1] != 0.0);
         }))
       continue;
     std::vector<int> point_segment;
