@@ -193,11 +193,7 @@ StaticCaseResult run_static_case(const ValidatedProject& validated, const CaseMo
   result.dynamic_stiffness = array.stiffness;
   for (std::size_t i = 0; i < lines.designs.size(); ++i) {
     const std::vector<LineTypeProperties>& types = lines.designs[i].segment_types;
-    if (std::none_of(types.begin(), types.end(), [](const LineTypeProperties& t) {
-          return t.kind == LineKind::polyester &&
-                 (t.dynamic_stiffness_mbl[0] != 0.0 || t.dynamic_stiffness_mbl[1] != 0.0);
-        }))
-      continue;
+    if (std::none_of(types.begin(), types.end(), has_dynamic_axial_stiffness)) continue;
     std::vector<int> point_segment;
     std::vector<double> point_tension;
     for (const engine::LineProfilePoint& point : states[i].profile) {

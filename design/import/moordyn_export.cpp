@@ -82,7 +82,7 @@ class DeckWriter {
           fmt::format("spiral note: line type {}: its explicit submerged weight {} N/m is not MoorDyn's "
                       "(m - rho pi/4 d^2) g = {} N/m",
                       token(t.name), num(t.submerged_weight_N_per_m), num(w_moordyn)));
-    if (t.dynamic_stiffness_mbl[0] != 0.0 || t.dynamic_stiffness_mbl[1] != 0.0)
+    if (has_dynamic_axial_stiffness(t))
       front_.push_back(
           fmt::format("spiral note: line type {}: static EA only; spiral's dynamic stiffness "
                       "({} + {} x mean load % MBL) x MBL is not written",

@@ -378,10 +378,8 @@ double dynamic_axial_stiffness_N(const LineTypeProperties& properties, double me
     throw std::invalid_argument("dynamic_axial_stiffness_N: line type '" + properties.name +
                                 "': mean tension must be >= 0 (N), got " + fmt_double(mean_tension_N));
   }
+  if (!has_dynamic_axial_stiffness(properties)) return properties.axial_stiffness_N;
   const auto& [a, b] = properties.dynamic_stiffness_mbl;
-  if (properties.kind != LineKind::polyester || (a == 0.0 && b == 0.0)) {
-    return properties.axial_stiffness_N;
-  }
   const double mbl = properties.breaking_load_N;
   if (!(mbl > 0.0)) {
     throw std::invalid_argument("dynamic_axial_stiffness_N: line type '" + properties.name +
@@ -389,6 +387,11 @@ double dynamic_axial_stiffness_N(const LineTypeProperties& properties, double me
   }
   const double mean_load_pct_mbl = 100.0 * mean_tension_N / mbl;
   return (a + b * mean_load_pct_mbl) * mbl;
+}
+
+bool has_dynamic_axial_stiffness(const LineTypeProperties& properties) {
+  const auto& [a, b] = properties.dynamic_stiffness_mbl;
+  return properties.kind == LineKind::polyester && (a != 0.0 || b != 0.0);
 }
 
 std::vector<double> incremental_axial_stiffness_N(const std::vector<LineTypeProperties>& segment_types,

@@ -75,6 +75,10 @@ LineTypeProperties resolve_line_type(const LineTypeInput& input, double water_de
 /// Throws std::invalid_argument if mean_tension_N < 0 or is not finite.
 double dynamic_axial_stiffness_N(const LineTypeProperties& properties, double mean_tension_N);
 
+/// Whether the type has a dynamic EA of its own (polyester with a non-zero
+/// `dynamic_stiffness_mbl`); otherwise dynamic_axial_stiffness_N is the static EA.
+bool has_dynamic_axial_stiffness(const LineTypeProperties& properties);
+
 /// The EA that carries the strain changes about a line's static state, per
 /// segment (anchor first): a polyester segment's dynamic EA at its mean
 /// tension (the mean over the state's points in that segment), every other

@@ -100,7 +100,6 @@ class CoupledSystem final : public ImplicitSystem {
       history_.velocities.setZero(
           6, static_cast<Eigen::Index>(std::ceil((options.output_times_s.back() - options.start_time_s) / dt)) + 2);
       history_.count = 1;  // at rest at the start (the coupled run starts from rest)
-      history_ptr_ = &history_;
     }
   }
 
@@ -113,7 +112,7 @@ class CoupledSystem final : public ImplicitSystem {
   /// step (interpolation error ~ (w h)^4 / 384: 1e-6 at 17 s and 0.5 s).
   void extend_history(double t0, const Vector6d& v0, const Vector6d& a0, double t1, const Vector6d& v1,
                       const Vector6d& a1) {
-    if (!history_ptr_) return;
+    if (!eq_.model.radiation_memory) return;
     const double dt = history_.time_step_s, h = t1 - t0;
     for (;;) {
       const double t = history_.start_time_s + static_cast<double>(history_.count) * dt;
@@ -126,6 +125,8 @@ class CoupledSystem final : public ImplicitSystem {
   }
 
   std::vector<LineBlock>& blocks() { return blocks_; }
+  /// The radiation memory's velocity history, or null for a hull without one.
+  const VelocityHistory* history() const { return eq_.model.radiation_memory ? &history_ : nullptr; }
   WorkerPool& pool() { return pool_; }
   const HullEquations& hull() const { return eq_; }
 
@@ -163,7 +164,7 @@ class CoupledSystem final : public ImplicitSystem {
       b.force_N = b.line.end_B_force_of_residual();
     });
     const Vector6d q = y.head<6>(), q_dot = y.segment<6>(6);
-    Vector6d net = hull_generalized_force(eq_, t, q, q_dot, history_ptr_);
+    Vector6d net = hull_generalized_force(eq_, t, q, q_dot, history());
     for (const LineBlock& b : blocks_) net += b.at.jacobian.transpose() * b.force_N;
     r.head<6>() = yp.head<6>() - q_dot;
     r.segment<6>(6) = eq_.total_mass * yp.segment<6>(6) - net;
@@ -247,14 +248,14 @@ class CoupledSystem final : public ImplicitSystem {
   // Newton matrix needs no more than a few digits).
   void hull_tangents(double t, const VectorConstRef& y) {
     const Vector6d q = y.head<6>(), q_dot = y.segment<6>(6);
-    const Vector6d f0 = hull_generalized_force(eq_, t, q, q_dot, history_ptr_);
+    const Vector6d f0 = hull_generalized_force(eq_, t, q, q_dot, history());
     for (int k = 0; k < 6; ++k) {
       const double hq = k < 3 ? 1e-5 : 1e-7, hv = k < 3 ? 1e-5 : 1e-7;
       Vector6d qp = q, vp = q_dot;
       qp[k] += hq;
       vp[k] += hv;
-      hull_K_.col(k) = -(hull_generalized_force(eq_, t, qp, q_dot, history_ptr_) - f0) / hq;
-      hull_B_.col(k) = -(hull_generalized_force(eq_, t, q, vp, history_ptr_) - f0) / hv;
+      hull_K_.col(k) = -(hull_generalized_force(eq_, t, qp, q_dot, history()) - f0) / hq;
+      hull_B_.col(k) = -(hull_generalized_force(eq_, t, q, vp, history()) - f0) / hv;
     }
   }
 
@@ -309,8 +310,7 @@ class CoupledSystem final : public ImplicitSystem {
   Eigen::PartialPivLU<Matrix6d> hull_lu_;
   std::vector<std::size_t> schedule_;  // for_each_line's order (empty: as given)
   VelocityHistory history_;            // the radiation memory's, written between outputs only
-  const VelocityHistory* history_ptr_ = nullptr;
-  WorkerPool pool_;  // last: its threads stop before the blocks go
+  WorkerPool pool_;                    // last: its threads stop before the blocks go
 };
 
 void validate(const HullDynamicsModel& hull, const HullLoads& loads, const std::vector<CoupledLine>& lines,
