@@ -2,6 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <array>
+#include <bit>
+#include <cstring>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <stdexcept>
@@ -48,10 +51,127 @@ struct adl_serializer<Eigen::Matrix<double, Rows, Cols, Options, MaxRows, MaxCol
   }
 };
 
+/// A profile's points as columns (struct of arrays), each a CBOR byte string
+/// of native doubles. A static case holds hundreds of points per line and
+/// riser: as one map per point (keys repeated, a JSON value per number) its
+/// record was 2.7 MB and took 0.1 s to read, which made resuming the
+/// 161-case matrix cost half a minute. Doubles stay bit for bit.
+template <class Point>
+struct ProfileColumn {
+  const char* name;
+  double (*get)(const Point&);
+  void (*set)(Point&, double);
+};
+
+template <class Point, std::size_t N>
+json profile_to_json(const std::vector<Point>& points, const std::array<ProfileColumn<Point>, N>& columns) {
+  static_assert(std::endian::native == std::endian::little, "records store little-endian doubles");
+  json j{{"points", points.size()}};
+  for (const ProfileColumn<Point>& column : columns) {
+    std::vector<std::uint8_t> bytes(points.size() * sizeof(double));
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const double value = column.get(points[i]);
+      std::memcpy(bytes.data() + i * sizeof(double), &value, sizeof(double));
+    }
+    j[column.name] = json::binary(std::move(bytes));
+  }
+  return j;
+}
+
+template <class Point, std::size_t N>
+std::vector<Point> profile_from_json(const json& j, const std::array<ProfileColumn<Point>, N>& columns) {
+  std::vector<Point> points(j.at("points").get<std::size_t>());
+  for (const ProfileColumn<Point>& column : columns) {
+    const std::vector<std::uint8_t>& bytes = j.at(column.name).get_binary();
+    if (bytes.size() != points.size() * sizeof(double))
+      throw std::runtime_error(fmt::format("profile column '{}' of the wrong length", column.name));
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      double value = 0.0;
+      std::memcpy(&value, bytes.data() + i * sizeof(double), sizeof(double));
+      column.set(points[i], value);
+    }
+  }
+  return points;
+}
+
+using LinePoint = spiral::engine::LineProfilePoint;
+inline constexpr std::array<ProfileColumn<LinePoint>, 7> kLineProfileColumns{{
+    {"x_m", [](const LinePoint& p) { return p.position_g.x(); }, [](LinePoint& p, double v) { p.position_g.x() = v; }},
+    {"y_m", [](const LinePoint& p) { return p.position_g.y(); }, [](LinePoint& p, double v) { p.position_g.y() = v; }},
+    {"z_m", [](const LinePoint& p) { return p.position_g.z(); }, [](LinePoint& p, double v) { p.position_g.z() = v; }},
+    {"arc_length_m", [](const LinePoint& p) { return p.arc_length_m; },
+     [](LinePoint& p, double v) { p.arc_length_m = v; }},
+    {"tension_N", [](const LinePoint& p) { return p.tension_N; }, [](LinePoint& p, double v) { p.tension_N = v; }},
+    {"segment", [](const LinePoint& p) { return double(p.segment); },
+     [](LinePoint& p, double v) { p.segment = static_cast<int>(v); }},
+    {"on_seabed", [](const LinePoint& p) { return p.on_seabed ? 1.0 : 0.0; },
+     [](LinePoint& p, double v) { p.on_seabed = v != 0.0; }},
+}};
+
+using RiserPoint = spiral::design::RiserProfilePoint;
+inline constexpr std::array<ProfileColumn<RiserPoint>, 14> kRiserProfileColumns{{
+    {"x_m", [](const RiserPoint& p) { return p.position_g.x(); },
+     [](RiserPoint& p, double v) { p.position_g.x() = v; }},
+    {"y_m", [](const RiserPoint& p) { return p.position_g.y(); },
+     [](RiserPoint& p, double v) { p.position_g.y() = v; }},
+    {"z_m", [](const RiserPoint& p) { return p.position_g.z(); },
+     [](RiserPoint& p, double v) { p.position_g.z() = v; }},
+    {"arc_length_m", [](const RiserPoint& p) { return p.arc_length_m; },
+     [](RiserPoint& p, double v) { p.arc_length_m = v; }},
+    {"section", [](const RiserPoint& p) { return double(p.section); },
+     [](RiserPoint& p, double v) { p.section = static_cast<int>(v); }},
+    {"on_seabed", [](const RiserPoint& p) { return p.on_seabed ? 1.0 : 0.0; },
+     [](RiserPoint& p, double v) { p.on_seabed = v != 0.0; }},
+    {"effective_tension_N", [](const RiserPoint& p) { return p.effective_tension_N; },
+     [](RiserPoint& p, double v) { p.effective_tension_N = v; }},
+    {"wall_tension_N", [](const RiserPoint& p) { return p.wall_tension_N; },
+     [](RiserPoint& p, double v) { p.wall_tension_N = v; }},
+    {"bending_moment_N_m", [](const RiserPoint& p) { return p.bending_moment_N_m; },
+     [](RiserPoint& p, double v) { p.bending_moment_N_m = v; }},
+    {"curvature_per_m", [](const RiserPoint& p) { return p.curvature_per_m; },
+     [](RiserPoint& p, double v) { p.curvature_per_m = v; }},
+    // Presence and value of each optional in two columns: a NaN stress stays a NaN.
+    {"has_von_mises_Pa", [](const RiserPoint& p) { return p.von_mises_Pa ? 1.0 : 0.0; },
+     [](RiserPoint& p, double v) {
+       if (v != 0.0) p.von_mises_Pa = 0.0;
+     }},
+    {"von_mises_Pa", [](const RiserPoint& p) { return p.von_mises_Pa.value_or(0.0); },
+     [](RiserPoint& p, double v) {
+       if (p.von_mises_Pa) p.von_mises_Pa = v;
+     }},
+    {"has_von_mises_utilization", [](const RiserPoint& p) { return p.von_mises_utilization ? 1.0 : 0.0; },
+     [](RiserPoint& p, double v) {
+       if (v != 0.0) p.von_mises_utilization = 0.0;
+     }},
+    {"von_mises_utilization", [](const RiserPoint& p) { return p.von_mises_utilization.value_or(0.0); },
+     [](RiserPoint& p, double v) {
+       if (p.von_mises_utilization) p.von_mises_utilization = v;
+     }},
+}};
+
+template <>
+struct adl_serializer<std::vector<LinePoint>> {
+  static void to_json(json& j, const std::vector<LinePoint>& points) {
+    j = profile_to_json(points, kLineProfileColumns);
+  }
+  static void from_json(const json& j, std::vector<LinePoint>& points) {
+    points = profile_from_json(j, kLineProfileColumns);
+  }
+};
+
+template <>
+struct adl_serializer<std::vector<RiserPoint>> {
+  static void to_json(json& j, const std::vector<RiserPoint>& points) {
+    j = profile_to_json(points, kRiserProfileColumns);
+  }
+  static void from_json(const json& j, std::vector<RiserPoint>& points) {
+    points = profile_from_json(j, kRiserProfileColumns);
+  }
+};
+
 }  // namespace nlohmann
 
 namespace spiral::engine {
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(LineProfilePoint, position_g, arc_length_m, tension_N, segment, on_seabed)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(CurrentProfile, z_m, speed_m_per_s, heading_rad)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(ChannelMoments, mean, std_dev, minimum, maximum, skewness, kurtosis, samples)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Spectrum, frequency_rad_s, density, frequency_step_rad_s, segments)
@@ -76,9 +196,6 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(LineStaticsRow, name, fairlead_tension_N, fai
                                    utilization, governing_segment_type, regime, iterations, profile)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(StaticsResult, offset, lines, hull_force, wall_time_s)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(RiserCriterionCheck, criterion, value, limit, unit, utilization, passes)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(RiserProfilePoint, position_g, arc_length_m, section, on_seabed, effective_tension_N,
-                                   wall_tension_N, bending_moment_N_m, curvature_per_m, von_mises_Pa,
-                                   von_mises_utilization)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(RiserStaticsRow, name, kind, top_tension_N, top_angle_deg, flex_joint_rotation_deg,
                                    touchdown_distance_m, min_effective_tension_N, min_effective_tension_arc_m,
                                    max_curvature_per_m, min_bending_radius_m, max_von_mises_utilization,

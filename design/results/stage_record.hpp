@@ -27,7 +27,9 @@ namespace spiral::design {
 /// S-C levels re-solve a quick case that did not).
 /// 3: StaticCaseResult has the dynamic stiffness (polyester's dynamic EA)
 /// and its natural modes; the S-C storms use it.
-inline constexpr int kStageRecordVersion = 3;
+/// 4: line and riser profiles as columns of doubles (a static case's record
+/// 2.7 MB → a fraction, read without a JSON value per number).
+inline constexpr int kStageRecordVersion = 4;
 
 using RecordBytes = std::vector<std::uint8_t>;
 

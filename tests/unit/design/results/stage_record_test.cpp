@@ -65,6 +65,55 @@ TEST(StageRecord, NonFiniteValuesSurvive) {
   EXPECT_EQ(back.offset_checks[0].offset_m, 0.1);
 }
 
+TEST(StageRecord, ProfilesKeepEveryPointAndEveryOptional) {
+  StaticCaseResult result;
+  LineStaticsRow line;
+  line.name = "L1";
+  for (int i = 0; i < 3; ++i) {
+    engine::LineProfilePoint p;
+    p.position_g = Eigen::Vector3d(0.1 * i, -1.0 / 3.0, -200.0 + i);
+    p.arc_length_m = 10.0 * i;
+    p.tension_N = 1.0e6 + i;
+    p.segment = i;
+    p.on_seabed = i == 0;
+    line.profile.push_back(p);
+  }
+  result.lines.push_back(line);
+  RiserStaticsRow riser;
+  riser.name = "E1";
+  RiserProfilePoint flexible;  // no stress: the optionals stay empty
+  flexible.section = 2;
+  flexible.curvature_per_m = 1.0e-3;
+  RiserProfilePoint steel;
+  steel.von_mises_Pa = std::numeric_limits<double>::quiet_NaN();
+  steel.von_mises_utilization = 0.0;  // present and zero, not absent
+  steel.wall_tension_N = -5.0;
+  riser.profile = {flexible, steel};
+  result.risers.push_back(riser);
+
+  const StaticCaseResult back = decode_record<StaticCaseResult>(encode_record(result));
+  ASSERT_EQ(back.lines.at(0).profile.size(), 3u);
+  for (int i = 0; i < 3; ++i) {
+    const engine::LineProfilePoint& p = back.lines[0].profile[i];
+    EXPECT_EQ(p.position_g, line.profile[i].position_g);
+    EXPECT_EQ(p.arc_length_m, line.profile[i].arc_length_m);
+    EXPECT_EQ(p.tension_N, line.profile[i].tension_N);
+    EXPECT_EQ(p.segment, i);
+    EXPECT_EQ(p.on_seabed, i == 0);
+  }
+  ASSERT_EQ(back.risers.at(0).profile.size(), 2u);
+  EXPECT_EQ(back.risers[0].profile[0].section, 2);
+  EXPECT_EQ(back.risers[0].profile[0].curvature_per_m, 1.0e-3);
+  EXPECT_FALSE(back.risers[0].profile[0].von_mises_Pa.has_value());
+  EXPECT_FALSE(back.risers[0].profile[0].von_mises_utilization.has_value());
+  ASSERT_TRUE(back.risers[0].profile[1].von_mises_Pa.has_value());
+  EXPECT_TRUE(std::isnan(*back.risers[0].profile[1].von_mises_Pa));
+  ASSERT_TRUE(back.risers[0].profile[1].von_mises_utilization.has_value());
+  EXPECT_EQ(*back.risers[0].profile[1].von_mises_utilization, 0.0);
+  EXPECT_EQ(back.risers[0].profile[1].wall_tension_N, -5.0);
+  expect_exact_round_trip(result);
+}
+
 TEST(StageRecord, ARecordOfAnotherTypeIsRefused) {
   SozResult zone;
   const RecordBytes bytes = encode_record(zone);
