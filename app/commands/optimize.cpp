@@ -74,8 +74,7 @@ class OptimizeCommand : public Command {
       for (const design::LinePayout& l : result.lines) payouts[l.name] = l.payout_m;
       const std::filesystem::path written = beside(project_file_, "optimized");
       write_edited_project("optimized project", written, folder / "optimization.json", [&] {
-        return design::with_line_payouts(read_text(project_file_), loaded.project, payouts,
-                                         design::optimized_project_header(result, project_file_));
+        return with_payouts(loaded.project, payouts, design::optimized_project_header(result, project_file_));
       });
     } else {
       fmt::print(stderr, "{}: no feasible pretension: {} by {:.4g}; results: {}\n", project_file_,
@@ -97,15 +96,24 @@ class OptimizeCommand : public Command {
     for (const design::TargetPretensionRow& l : result.lines) payouts[l.line] = l.payout_m;
     const std::filesystem::path written = beside(project_file_, "pretensioned");
     write_edited_project("pretensioned project", written, folder / "target_pretension.json", [&] {
-      return design::with_line_payouts(read_text(project_file_), loaded.project, payouts,
-                                       design::target_pretension_header(project_file_));
+      return with_payouts(loaded.project, payouts, design::target_pretension_header(project_file_));
     });
     return kExitOk;
   }
 
-  /// Writes the project with the payouts applied; a variation whose mooring
-  /// is its base file's (`extends`) cannot be edited in place: the payouts
-  /// stay in the results file, and the message says where to apply them.
+  /// The project file with the payouts, to be written beside it: edited in
+  /// place, or — a variation whose mooring is its base file's — a variation
+  /// of it that writes the mooring with the payouts.
+  std::string with_payouts(const design::Project& project, const std::map<std::string, double>& payouts,
+                           const std::string& header) const {
+    if (design::mooring_from_base_file(project))
+      return design::mooring_variation_with_payouts(project, payouts, header,
+                                                    std::filesystem::path(project_file_).filename().string());
+    return design::with_line_payouts(read_text(project_file_), project, payouts, header);
+  }
+
+  /// Writes the project with the payouts applied; when it cannot be written
+  /// the payouts stay in the results file, and the message says why.
   template <class Edit>
   void write_edited_project(std::string_view label, const std::filesystem::path& written,
                             const std::filesystem::path& results, const Edit& edit) const {

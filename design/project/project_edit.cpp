@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <fstream>
 #include <functional>
 #include <regex>
 #include <sstream>
@@ -144,9 +145,10 @@ std::string difference(const Project& edited, const Project& written) {
   return {};
 }
 
-}  // namespace
-
-std::string with_field_values(const std::string& text, const Project& project, const std::vector<FieldEdit>& edits) {
+/// `text`, the file `file` of the project ("": the project's own file), with
+/// each edit's scalar replaced in place.
+std::string edited_in_place(const std::string& text, const Project& project, const std::vector<FieldEdit>& edits,
+                            const std::string& file) {
   std::vector<Edit> replacements;
   for (const FieldEdit& edit : edits) {
     const auto position = project.source_map.find(edit.path);
@@ -155,11 +157,12 @@ std::string with_field_values(const std::string& text, const Project& project, c
           fmt::format("{}: the file has no value of its own there to replace (a default, or a project built in "
                       "code)",
                       edit.path));
-    if (!position->second.file.empty())
+    if (position->second.file != file)
       throw std::invalid_argument(
           fmt::format("{}: written in the base file {} (extends), not in {}: edit the base, or give the section in "
                       "this file",
-                      edit.path, position->second.file, project.source_file));
+                      edit.path, position->second.file.empty() ? project.source_file : position->second.file,
+                      file.empty() ? project.source_file : file));
     const std::size_t at = offset_of(text, position->second.line, position->second.column);
     replacements.push_back({at, scalar_length(text, at), edit.value});
   }
@@ -169,19 +172,8 @@ std::string with_field_values(const std::string& text, const Project& project, c
   return out;
 }
 
-std::string field_value_text(const std::string& text, const Project& project, const std::string& path) {
-  const auto position = project.source_map.find(path);
-  if (position == project.source_map.end() || !position->second.file.empty())
-    throw std::invalid_argument(
-        fmt::format("{}: the file has no value of its own there (a default applies, or "
-                    "its base file's, extends)",
-                    path));
-  const std::size_t at = offset_of(text, position->second.line, position->second.column);
-  return text.substr(at, scalar_length(text, at));
-}
-
-std::string with_line_payouts(const std::string& text, const Project& project,
-                              const std::map<std::string, double>& payouts_m, const std::string& header) {
+/// The length edits of the payouts: each line's top (fairlead-end) segment.
+std::vector<FieldEdit> payout_edits(const Project& project, const std::map<std::string, double>& payouts_m) {
   std::vector<FieldEdit> edits;
   for (const auto& entry : payouts_m) {
     // Not a structured binding: clang 14 (Debian 12's, the fuzz build's) cannot capture one in a lambda.
@@ -196,11 +188,82 @@ std::string with_line_payouts(const std::string& text, const Project& project,
     edits.push_back({fmt::format("mooring.lines[{}].segments[{}].length", line_index, top),
                      fmt::format("{:.4f}", it->segments[top].length_m + payout)});
   }
-  const std::string out = with_field_values(text, project, edits);
-  std::ostringstream commented;
+  return edits;
+}
+
+std::string commented(const std::string& header) {
+  std::ostringstream out;
   std::istringstream lines(header);
-  for (std::string line; std::getline(lines, line);) commented << (line.empty() ? "#" : "# " + line) << '\n';
-  return commented.str() + out;
+  for (std::string line; std::getline(lines, line);) out << (line.empty() ? "#" : "# " + line) << '\n';
+  return out.str();
+}
+
+/// The top-level `key:` section of a YAML text, from its key line to the
+/// next top-level key (trailing blank and comment lines left to the next).
+std::string top_level_section(const std::string& text, const std::string& key) {
+  std::istringstream in(text);
+  std::vector<std::string> lines;
+  bool inside = false;
+  for (std::string line; std::getline(in, line);) {
+    const bool top_level = !line.empty() && line[0] != ' ' && line[0] != '\t' && line[0] != '#' && line[0] != '\r';
+    if (top_level) {
+      if (inside) break;
+      inside = line.rfind(key + ":", 0) == 0;
+    }
+    if (inside) lines.push_back(line);
+  }
+  while (!lines.empty() && (lines.back().find_first_not_of(" \t\r") == std::string::npos ||
+                            lines.back()[lines.back().find_first_not_of(" \t\r")] == '#'))
+    lines.pop_back();
+  if (lines.empty()) throw std::invalid_argument(fmt::format("{}: no top-level section in the file", key));
+  std::string out;
+  for (const std::string& line : lines) out += line + '\n';
+  return out;
+}
+
+}  // namespace
+
+std::string with_field_values(const std::string& text, const Project& project, const std::vector<FieldEdit>& edits) {
+  return edited_in_place(text, project, edits, "");
+}
+
+std::string field_value_text(const std::string& text, const Project& project, const std::string& path) {
+  const auto position = project.source_map.find(path);
+  if (position == project.source_map.end() || !position->second.file.empty())
+    throw std::invalid_argument(
+        fmt::format("{}: the file has no value of its own there (a default applies, or "
+                    "its base file's, extends)",
+                    path));
+  const std::size_t at = offset_of(text, position->second.line, position->second.column);
+  return text.substr(at, scalar_length(text, at));
+}
+
+bool mooring_from_base_file(const Project& project) {
+  const auto position = project.source_map.find("mooring.lines[0].segments[0].length");
+  return position != project.source_map.end() && !position->second.file.empty();
+}
+
+std::string with_line_payouts(const std::string& text, const Project& project,
+                              const std::map<std::string, double>& payouts_m, const std::string& header) {
+  return commented(header) + with_field_values(text, project, payout_edits(project, payouts_m));
+}
+
+std::string mooring_variation_with_payouts(const Project& project, const std::map<std::string, double>& payouts_m,
+                                           const std::string& header, const std::string& extends) {
+  if (!mooring_from_base_file(project))
+    throw std::invalid_argument(
+        fmt::format("{}: writes its own mooring section: edit it in place", project.source_file));
+  const std::string base = project.source_map.at("mooring.lines[0].segments[0].length").file;
+  std::ifstream in(base, std::ios::binary);
+  if (!in) throw std::invalid_argument(fmt::format("{}: the base file that writes the mooring cannot be read", base));
+  std::ostringstream base_text;
+  base_text << in.rdbuf();
+  const std::string edited = edited_in_place(base_text.str(), project, payout_edits(project, payouts_m), base);
+  return commented(header) +
+         commented(fmt::format("A variation of {}: its mooring section as {} writes it, with the payouts applied; "
+                               "every other section is the base's.",
+                               extends, base)) +
+         fmt::format("extends: {}\n\n", yaml_string(extends)) + top_level_section(edited, "mooring");
 }
 
 std::string edited_project_text(const std::string& text, const Project& original, const Project& edited,

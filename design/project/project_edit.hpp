@@ -38,6 +38,20 @@ std::string field_value_text(const std::string& text, const Project& project, co
 std::string with_line_payouts(const std::string& text, const Project& project,
                               const std::map<std::string, double>& payouts_m, const std::string& header);
 
+/// Whether the project's mooring section comes from a base file (`extends`),
+/// where with_line_payouts cannot reach it.
+bool mooring_from_base_file(const Project& project);
+
+/// For a variation whose mooring section is its base's: a new variation file
+/// that `extends` the project file (the path written as is: relative to the
+/// new file's folder, or absolute) and writes the mooring section as the
+/// base writes it — comments and layout kept — with each payout applied in
+/// place as with_line_payouts does, `header` first. Every other section
+/// stays the project's. Throws std::invalid_argument when the project writes
+/// its own mooring, a line is unknown, or the base cannot be read.
+std::string mooring_variation_with_payouts(const Project& project, const std::map<std::string, double>& payouts_m,
+                                           const std::string& header, const std::string& extends);
+
 /// The project file of `edited`, a project loaded from `text` as `original`
 /// and changed in memory (the Python API), to be written at `target`: the
 /// segment lengths and line types that differ are written in place, lengths

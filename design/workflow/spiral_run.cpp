@@ -529,15 +529,22 @@ std::optional<Iteration> feedback(const RunContext& ctx, const Iteration& it, co
                                          next.number, std::filesystem::absolute(data_folder).string());
   std::string text;
   try {
-    std::string written = read_text(it.project_file);
-    // A variation's base is named relative to the variation: the iteration
-    // file, written elsewhere, names it absolutely.
-    if (!vp.project.base_files.empty()) {
-      written = with_field_values(
-          written, vp.project,
-          {{"extends", fmt::format("\"{}\"", std::filesystem::absolute(vp.project.base_files.front()).string())}});
+    if (mooring_from_base_file(vp.project)) {
+      // A variation whose mooring is its base's: the iteration is a variation
+      // of this iteration's file that writes the mooring with the payouts.
+      text = mooring_variation_with_payouts(vp.project, step.payouts_m, header,
+                                            std::filesystem::absolute(it.project_file).string());
+    } else {
+      std::string written = read_text(it.project_file);
+      // A variation's base is named relative to the variation: the iteration
+      // file, written elsewhere, names it absolutely.
+      if (!vp.project.base_files.empty()) {
+        written = with_field_values(
+            written, vp.project,
+            {{"extends", fmt::format("\"{}\"", std::filesystem::absolute(vp.project.base_files.front()).string())}});
+      }
+      text = with_line_payouts(written, vp.project, step.payouts_m, header);
     }
-    text = with_line_payouts(written, vp.project, step.payouts_m, header);
   } catch (const std::invalid_argument& error) {
     // The lengths are the base file's (a variation that does not write its
     // mooring): the payouts stand as the optimizer's advice, not applied.

@@ -175,16 +175,22 @@ TEST(CliRun, AKilledRunResumesWithExactlyTheUnfinishedTasks) {
   EXPECT_EQ(numbers(store), numbers(whole / "results.sqlite"));
 }
 
-// The feedback iteration end to end: OC4 with an offset limit of 0.5 % of
-// depth fails in the storm case, the optimizer hauls the chains in, the
-// second iteration passes, and the summary report shows both.
-TEST(CliRun, TheSummaryReportShowsTheFeedbackIterations) {
-  const auto dir = temp_folder("feedback");
+/// OC4 with an offset limit of 0.5 % of depth, which its storm case exceeds.
+std::filesystem::path oc4_project_failing_its_offset_limit(const std::filesystem::path& dir) {
   const auto project = oc4_project(dir);
   std::string text = read_text(project);
   const std::string limit = "max_offset_pct_depth: 10.0";
   text.replace(text.find(limit), limit.size(), "max_offset_pct_depth: 0.5");
   std::ofstream(project) << text;
+  return project;
+}
+
+// The feedback iteration end to end: OC4 with an offset limit of 0.5 % of
+// depth fails in the storm case, the optimizer hauls the chains in, the
+// second iteration passes, and the summary report shows both.
+TEST(CliRun, TheSummaryReportShowsTheFeedbackIterations) {
+  const auto dir = temp_folder("feedback");
+  const auto project = oc4_project_failing_its_offset_limit(dir);
   const auto out = dir / "out";
   const CommandResult r = run_spiral("run '" + project.string() + "' --out '" + out.string() + "' --until preliminary");
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -198,6 +204,27 @@ TEST(CliRun, TheSummaryReportShowsTheFeedbackIterations) {
   EXPECT_TRUE(std::filesystem::exists(out / "iterations" / "iteration-2.yaml"));
   // The written iteration is a valid project (its data found from the original folder).
   EXPECT_NE(read_text(out / "iterations" / "iteration-2.yaml").find("spiral run iteration 2"), std::string::npos);
+}
+
+// The same feedback on a variation file whose mooring is its base's: the
+// iteration is a variation of the variation that writes the mooring with
+// the payouts (the shipped matrix scenario is such a file).
+TEST(CliRun, AVariationWhoseMooringIsTheBasesIsFedBackToo) {
+  const auto dir = temp_folder("feedback-variation");
+  oc4_project_failing_its_offset_limit(dir);
+  const auto variation = dir / "variation.yaml";
+  std::ofstream(variation) << "version: 1\nextends: oc4.yaml\nname: OC4 variation\n";
+  const auto out = dir / "out";
+  const CommandResult r =
+      run_spiral("run '" + variation.string() + "' --out '" + out.string() + "' --until preliminary");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("preliminary  iteration 2  PASS"), std::string::npos) << r.out;
+  const std::string iteration = read_text(out / "iterations" / "iteration-2.yaml");
+  EXPECT_NE(iteration.find("extends: " + std::filesystem::absolute(variation).string()), std::string::npos)
+      << iteration;
+  EXPECT_NE(iteration.find("\nmooring:"), std::string::npos) << iteration;
+  EXPECT_EQ(iteration.find("\nhull:"), std::string::npos) << iteration;
+  EXPECT_NE(read_text(out / "summary" / "tables" / "spiral-payouts-2.csv").find("L1"), std::string::npos);
 }
 
 TEST(CliRun, ASolverFailureIsRecordedReportedAndExitsThree) {

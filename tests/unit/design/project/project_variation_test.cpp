@@ -149,6 +149,46 @@ TEST(ProjectVariation, AnEditOfAFieldTheBaseWroteIsRefusedNamingTheBase) {
   fs::remove_all(dir);
 }
 
+TEST(ProjectVariation, PayoutsOfABaseMooringMakeAVariationOfTheVariation) {
+  const fs::path dir = fresh_folder("spiral-variation-payouts");
+  // A second line and comments in the base's mooring, the hull section after it.
+  const std::string base = replace(replace(kMinimal, "        - {type: c, length: 550.0}\n",
+                                           "        - {type: c, length: 300.0}   # bottom chain\n"
+                                           "        - {type: c, length: 250.0}   # top chain\n"
+                                           "    - name: L2   # the second line\n"
+                                           "      anchor: {radius: 500.0, azimuth_deg: 180.0}\n"
+                                           "      fairlead: [-10.0, 0.0, -10.0]\n"
+                                           "      segments:\n"
+                                           "        - {type: c, length: 550.0}\n"),
+                                   "hull:\n", "# the hull\nhull:\n");
+  write(dir / "base.yaml", base);
+  write(dir / "variation.yaml", kVariation);
+  const Project p = load_project(dir / "variation.yaml");
+  ASSERT_TRUE(mooring_from_base_file(p));
+  EXPECT_FALSE(mooring_from_base_file(load_project(dir / "base.yaml")));
+  const std::string text =
+      mooring_variation_with_payouts(p, {{"L1", -2.5}, {"L2", 1.25}}, "made by a test", "variation.yaml");
+  EXPECT_EQ(text.rfind("# made by a test\n", 0), 0u) << text;
+  EXPECT_NE(text.find("extends: variation.yaml\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("{type: c, length: 247.5000}   # top chain"), std::string::npos) << text;
+  EXPECT_NE(text.find("{type: c, length: 300.0}   # bottom chain"), std::string::npos) << text;
+  EXPECT_NE(text.find("- name: L2   # the second line"), std::string::npos) << text;
+  EXPECT_EQ(text.find("hull"), std::string::npos) << "only the mooring section is written:\n" << text;
+  write(dir / "variation.optimized.yaml", text);
+  const Project q = load_project(dir / "variation.optimized.yaml");
+  ASSERT_EQ(q.mooring.lines.size(), 2u);
+  EXPECT_EQ(q.mooring.lines[0].segments[1].length_m, 247.5);
+  EXPECT_EQ(q.mooring.lines[0].segments[0].length_m, 300.0);
+  EXPECT_EQ(q.mooring.lines[1].segments[0].length_m, 551.25);
+  EXPECT_EQ(q.load_cases.size(), 2u);  // the variation's own section, through the chain
+  EXPECT_EQ(q.name, "variation");
+  EXPECT_FALSE(mooring_from_base_file(q));  // the next feedback edits it in place
+  // A project that writes its own mooring is edited in place, not wrapped.
+  EXPECT_THROW(mooring_variation_with_payouts(q, {{"L1", 1.0}}, "", "x.yaml"), std::invalid_argument);
+  EXPECT_THROW(mooring_variation_with_payouts(p, {{"L9", 1.0}}, "", "variation.yaml"), std::invalid_argument);
+  fs::remove_all(dir);
+}
+
 TEST(ProjectVariation, TheShippedMatrixScenarioHas157Cases) {
   const ValidatedProject p =
       load_validated_project(std::string(SPIRAL_SOURCE_DIR) + "/scenarios/deepwater-fps-matrix.yaml");
