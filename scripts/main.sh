@@ -11,7 +11,8 @@
 # feedback when the offsets or tensions fail. Every task is kept in
 # out/deepwater-fps/results.sqlite: running this again resumes and finishes
 # in seconds. Then the pretension optimization report of the five cases of
-# ref §2.8 (scenarios/deepwater-fps.yaml) with its trade-off study.
+# ref §2.8 (scenarios/deepwater-fps.yaml) with its trade-off study, both
+# tasks kept in the same store.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
@@ -19,4 +20,4 @@ scenario=scenarios/deepwater-fps-matrix.yaml
 ./build/app/spiral validate "$scenario"
 ./build/app/spiral run "$scenario" --out out/deepwater-fps || [ $? -eq 3 ]  # 3: a solver failed; reports written
 ./build/app/spiral results out/deepwater-fps
-./build/app/spiral report scenarios/deepwater-fps.yaml --stage optimization --out out/deepwater-fps/optimization
+./build/app/spiral report scenarios/deepwater-fps.yaml --stage optimization --run out/deepwater-fps --out out/deepwater-fps/optimization

@@ -46,14 +46,24 @@ class ReportCommand : public Command {
     bool solver_failed = false;
     if (stage_ == "optimization") {
       // The project's optimization, and the study of all groups together
-      // (11 points) for the trade-off plot.
-      const design::OptimizationResult result = design::optimize_pretension(loaded, {});
-      design::PretensionStudyRequest study;
-      study.points = 11;
-      const design::PretensionStudyResult sweep = design::run_pretension_study(loaded, study);
-      pass = result.status == design::OptimizationStatus::optimal;
+      // (11 points) for the trade-off plot: two tasks of the run folder's
+      // store, as the stages' are.
+      std::optional<std::filesystem::path> scratch;
+      const design::SpiralRunOptions options = store_options(scratch);
+      design::OptimizationStudy stored;
+      try {
+        stored = design::run_optimization_study(project_file_, options, 11);
+      } catch (...) {
+        if (scratch) std::filesystem::remove_all(*scratch);
+        throw;
+      }
+      if (scratch)
+        std::filesystem::remove_all(*scratch);
+      else
+        fmt::print("  results store {} ({} of the 2 tasks reused)\n", stored.store_file.string(), stored.tasks_reused);
+      pass = stored.optimization.status == design::OptimizationStatus::optimal;
       solver_failed = !pass;
-      document = report::optimization_report(loaded, result, sweep, info);
+      document = report::optimization_report(loaded, stored.optimization, stored.study, info);
     } else {
       // A stage of the spiral, as `spiral run` makes it (design/workflow):
       // its tasks and those of the stages before it come from the run
@@ -97,9 +107,10 @@ class ReportCommand : public Command {
 
   /// The requested stage through the spiral's runner; empty (after printing
   /// why) when it could not finish.
-  std::optional<design::StageRun> run_stage() const {
+  /// The run folder whose store the command reuses (--run; out/<stem> when
+  /// --out is not given), or a temporary one it removes (`scratch`).
+  design::SpiralRunOptions store_options(std::optional<std::filesystem::path>& scratch) const {
     design::SpiralRunOptions options;
-    std::optional<std::filesystem::path> scratch;
     if (!run_.empty()) {
       options.out_folder = run_;
     } else if (out_.empty()) {
@@ -108,10 +119,16 @@ class ReportCommand : public Command {
       scratch = std::filesystem::temp_directory_path() / fmt::format("spiral-report-{}", ::getpid());
       options.out_folder = *scratch;
     }
-    options.until = stage_;
-    options.feedback = false;
     options.jobs = jobs_;
     options.version = kVersion;
+    return options;
+  }
+
+  std::optional<design::StageRun> run_stage() const {
+    std::optional<std::filesystem::path> scratch;
+    design::SpiralRunOptions options = store_options(scratch);
+    options.until = stage_;
+    options.feedback = false;
     options.log = [](const std::string& line) {
       if (!line.starts_with("[")) fmt::print(stderr, "{}\n", line);  // stage lines, not every task
     };

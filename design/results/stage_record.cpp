@@ -280,6 +280,14 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(OptimizationResult, project, objective, algor
                                    before, after, lines, history, active, objective_gradient, most_violated, findings,
                                    notes, zone_conservatism_m, zones, evaluations, wall_s, zone_wall_s)
 
+// The pretension study of the optimization report.
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(PretensionStudyPoint, payout_m, pretension_N, max_offset_m, max_soz_ratio_intact,
+                                   max_soz_ratio_damaged, max_utilization_intact, max_utilization_damaged,
+                                   worst_constraint, worst_constraint_name, feasible)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(PretensionSweep, name, lines, points, feasible_m)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(PretensionStudyResult, project, scenarios, sweeps, notes, optimum_payouts_m,
+                                   optimum_status, evaluations, wall_s)
+
 namespace {
 
 template <class T>
@@ -290,6 +298,7 @@ constexpr const char* record_type() {
   if constexpr (std::is_same_v<T, StageDynamics>) return "storm";
   if constexpr (std::is_same_v<T, CriticalCaseVerification>) return "verification";
   if constexpr (std::is_same_v<T, OptimizationResult>) return "optimization";
+  if constexpr (std::is_same_v<T, PretensionStudyResult>) return "pretension-study";
 }
 
 template <class T>
@@ -306,6 +315,7 @@ RecordBytes encode_record(const SozResult& value) { return encode(value); }
 RecordBytes encode_record(const StageDynamics& value) { return encode(value); }
 RecordBytes encode_record(const CriticalCaseVerification& value) { return encode(value); }
 RecordBytes encode_record(const OptimizationResult& value) { return encode(value); }
+RecordBytes encode_record(const PretensionStudyResult& value) { return encode(value); }
 
 template <class T>
 T decode_record(std::span<const std::uint8_t> bytes) {
@@ -327,5 +337,6 @@ template SozResult decode_record<SozResult>(std::span<const std::uint8_t>);
 template StageDynamics decode_record<StageDynamics>(std::span<const std::uint8_t>);
 template CriticalCaseVerification decode_record<CriticalCaseVerification>(std::span<const std::uint8_t>);
 template OptimizationResult decode_record<OptimizationResult>(std::span<const std::uint8_t>);
+template PretensionStudyResult decode_record<PretensionStudyResult>(std::span<const std::uint8_t>);
 
 }  // namespace spiral::design

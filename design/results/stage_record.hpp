@@ -16,6 +16,7 @@
 
 #include "design/analysis/static_case.hpp"
 #include "design/optimization/pretension_optimizer.hpp"
+#include "design/optimization/pretension_study.hpp"
 #include "design/soz/soz.hpp"
 #include "design/stages/advanced_stage.hpp"
 #include "design/stages/stage_dynamics.hpp"
@@ -39,6 +40,7 @@ RecordBytes encode_record(const SozResult& value);
 RecordBytes encode_record(const StageDynamics& value);
 RecordBytes encode_record(const CriticalCaseVerification& value);
 RecordBytes encode_record(const OptimizationResult& value);
+RecordBytes encode_record(const PretensionStudyResult& value);
 
 /// Decodes a record of type T. Throws std::runtime_error when the bytes are
 /// not a record of this version and type (a damaged or older store).

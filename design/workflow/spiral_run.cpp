@@ -476,17 +476,22 @@ std::string payouts_json(const std::map<std::string, double>& payouts) {
   return out + "}";
 }
 
+/// The iteration's pretension optimization as a task of `batch`.
+std::size_t add_optimization(TaskBatch& batch, const Iteration& it, int jobs) {
+  OptimizationRequest request;
+  request.threads = jobs;
+  return batch.add<OptimizationResult>(
+      identity(it, "optimization", "", "static", 0, "project"),
+      [project = it.project, request] { return optimize_pretension(*project, request); }, describe_optimization);
+}
+
 /// Runs the optimizer on the iteration (a stored task) and, when it finds
 /// payouts that change the mooring, writes the next iteration's project.
 std::optional<Iteration> feedback(const RunContext& ctx, const Iteration& it, const std::filesystem::path& data_folder,
                                   FeedbackStep& step, SpiralRunResult& result) {
   const ValidatedProject& vp = *it.project;
   TaskBatch batch("preliminary", it.number);
-  OptimizationRequest request;
-  request.threads = ctx.jobs;
-  const std::size_t task = batch.add<OptimizationResult>(
-      identity(it, "optimization", "", "static", 0, "project"),
-      [&vp, request] { return optimize_pretension(vp, request); }, describe_optimization);
+  const std::size_t task = add_optimization(batch, it, ctx.jobs);
   StageRun scratch;  // the optimizer's task counts in the store, not in a stage
   scratch.stage = "preliminary";
   run_batch(ctx, batch, scratch, "optimizer");
@@ -589,6 +594,34 @@ std::vector<std::string> spiral_stages(const Project& project, const std::option
     if (until && name == *until) break;
   }
   return stages;
+}
+
+OptimizationStudy run_optimization_study(const std::filesystem::path& project_file, const SpiralRunOptions& options,
+                                         int study_points) {
+  Iteration it;
+  it.project_file = project_file;
+  it.project = std::make_shared<const ValidatedProject>(load_validated_project(project_file));
+  it.model_hash = project_content_hash(project_file, it.project->project);
+  ResultsStore store(results_store_file(options.out_folder), options.fresh);
+  RunContext ctx{&store, options};
+  ctx.jobs = options.jobs > 0 ? options.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  TaskBatch batch("optimization", it.number);
+  const std::size_t optimization = add_optimization(batch, it, ctx.jobs);
+  PretensionStudyRequest request;
+  request.points = study_points;
+  request.problem.threads = ctx.jobs;
+  const std::size_t study = batch.add<PretensionStudyResult>(
+      identity(it, "pretension-study", "", "static", 0, fmt::format("groups=all points={}", study_points)),
+      [project = it.project, request] { return run_pretension_study(*project, request); });
+  StageRun scratch;  // counts only
+  scratch.stage = "optimization";
+  // One at a time: each task already spreads its scenarios over the jobs.
+  run_batch(ctx, batch, scratch, "tasks", 1);
+  for (const std::size_t task : {optimization, study})
+    if (batch.error(task))
+      throw engine::SolverError(fmt::format("{}: {}", task_name(batch.identity(task)), *batch.error(task)));
+  return {*batch.value<OptimizationResult>(optimization), *batch.value<PretensionStudyResult>(study), batch.reused(),
+          store.file()};
 }
 
 SpiralRunResult run_spiral(const std::filesystem::path& project_file, const SpiralRunOptions& options,

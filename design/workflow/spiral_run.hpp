@@ -39,6 +39,7 @@
 #include <vector>
 
 #include "design/optimization/pretension_optimizer.hpp"
+#include "design/optimization/pretension_study.hpp"
 #include "design/project/validated_project.hpp"
 #include "design/stages/advanced_stage.hpp"
 #include "design/stages/intermediate_stage.hpp"
@@ -114,6 +115,23 @@ struct SpiralRunResult {
 /// be written, engine::FileFormatError for a malformed data file.
 SpiralRunResult run_spiral(const std::filesystem::path& project_file, const SpiralRunOptions& options,
                            const std::function<void(const StageRun&)>& stage_done = {});
+
+/// The project's pretension optimization (as the preliminary stage's
+/// feedback runs it on the project as given: the same stored task) and its
+/// pretension study of every group together over `study_points` points —
+/// `spiral report --stage optimization` — as tasks of the run folder's
+/// results store: a second call on the same project takes both from it.
+struct OptimizationStudy {
+  OptimizationResult optimization;
+  PretensionStudyResult study;
+  int tasks_reused = 0;  ///< of the two
+  std::filesystem::path store_file;
+};
+
+/// Throws as run_spiral; a solver failure of either task as
+/// engine::SolverError with its stored message.
+OptimizationStudy run_optimization_study(const std::filesystem::path& project_file, const SpiralRunOptions& options,
+                                         int study_points);
 
 /// The stages the project asks for (its stages[] names among kSpiralStages,
 /// else all three), up to `until`. Throws InputError for an unknown `until`.

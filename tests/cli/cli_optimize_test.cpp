@@ -189,5 +189,23 @@ TEST(CliReportOptimization, WritesTheOptimizationReport) {
   std::filesystem::remove_all(dir);
 }
 
+// With a run folder the optimization and the study are tasks of its results
+// store: a second report takes both from it and writes the same tables.
+TEST(CliReportOptimization, ASecondReportTakesBothTasksFromTheStore) {
+  const auto dir = fresh_folder("report-store");
+  const auto project = write_project(dir, oc4_optimization_text("  objective: min_max_offset\n  cases: [current]\n"));
+  const std::string command = "report --stage optimization '" + project.string() + "' --run '" +
+                              (dir / "run").string() + "' --out '" + (dir / "report").string();
+  const auto first = run_spiral(command + "1'");
+  ASSERT_EQ(first.exit_code, app::kExitOk) << first.err << first.out;
+  EXPECT_NE(first.out.find("(0 of the 2 tasks reused)"), std::string::npos) << first.out;
+  const auto second = run_spiral(command + "2'");
+  ASSERT_EQ(second.exit_code, app::kExitOk) << second.err << second.out;
+  EXPECT_NE(second.out.find("(2 of the 2 tasks reused)"), std::string::npos) << second.out;
+  for (const char* table : {"tables/payouts.csv", "tables/scenarios.csv"})
+    EXPECT_EQ(read_text(dir / "report1" / table), read_text(dir / "report2" / table)) << table;
+  std::filesystem::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace spiral::test
