@@ -132,8 +132,17 @@ Matrix6d morison_added_mass(const MorisonHull& hull, double rho) {
   return A;
 }
 
+std::complex<double> maccamy_fuchs_factor(double x) {
+  if (!(x > 0.0)) throw std::invalid_argument(fmt::format("MacCamy-Fuchs factor: kR must be > 0, got {}", x));
+  // J1' = J0 − J1/x, Y1' = Y0 − Y1/x (Abramowitz & Stegun 9.1.27).
+  const double dJ1 = std::cyl_bessel_j(0.0, x) - std::cyl_bessel_j(1.0, x) / x;
+  const double dY1 = std::cyl_neumann(0.0, x) - std::cyl_neumann(1.0, x) / x;
+  const std::complex<double> i(0.0, 1.0);
+  return -2.0 * i / (kPi * x * x * std::complex<double>(dJ1, -dY1));
+}
+
 Vector6cd morison_excitation(const MorisonHull& hull, const Seawater& water, std::optional<double> depth, double omega,
-                             double heading) {
+                             double heading, MorisonDiffraction diffraction) {
   if (!(omega > 0.0)) {
     throw std::invalid_argument(fmt::format("Morison excitation: frequency must be > 0 rad/s, got {}", omega));
   }
@@ -167,23 +176,70 @@ Vector6cd morison_excitation(const MorisonHull& hull, const Seawater& water, std
     const Eigen::Vector3d im = r.cross(Eigen::Vector3d(F.imag()));
     X.tail<3>() += re.cast<std::complex<double>>() + std::complex<double>(0.0, 1.0) * im.cast<std::complex<double>>();
   };
+  const bool maccamy_fuchs = diffraction == MorisonDiffraction::maccamy_fuchs;
+  // A member within 1e-6 rad of the vertical is a column for the correction.
+  const auto vertical = [](const Eigen::Vector3d& axis) { return std::abs(axis.z()) > 1.0 - 1e-12; };
   for (const MorisonStrip& s : hull.strips) {
     if (!s.submerged_at_rest) continue;
     const Flow f = flow_at(s.center_b);
     const Vector3cd t = s.axis_b.cast<std::complex<double>>();
     const Vector3cd a_n = f.acceleration - t * t.dot(f.acceleration);  // t real: dot = t^T a
     const double mass = rho * (1.0 + s.added_mass_coefficient) * 0.25 * kPi * s.diameter_m * s.diameter_m * s.length_m;
-    add(s.center_b, mass * a_n);
+    const std::complex<double> scale =
+        maccamy_fuchs && vertical(s.axis_b) ? maccamy_fuchs_factor(0.5 * k * s.diameter_m) : 1.0;
+    add(s.center_b, scale * mass * a_n);
   }
   for (const MorisonEndFace& face : hull.faces) {
     if (!face.submerged_at_rest) continue;
     const Flow f = flow_at(face.center_b);
     const Vector3cd n = face.inward_normal_b.cast<std::complex<double>>();
-    const double area = kPi * face.radius_m * face.radius_m;
-    const double end_mass = rho * face.added_mass_coefficient * (2.0 / 3.0) * kPi * std::pow(face.radius_m, 3);
-    add(face.center_b, f.pressure * area * n + end_mass * n * n.dot(f.acceleration));
+    const double R = face.radius_m;
+    const double area = kPi * R * R;
+    const double end_mass = rho * face.added_mass_coefficient * (2.0 / 3.0) * kPi * std::pow(R, 3);
+    if (maccamy_fuchs && vertical(face.inward_normal_b)) {
+      // The incident pressure p_c e^{−i k·ξ} over the disc |ξ| <= R about the
+      // centre: ∫ dA = π R² 2 J1(kR)/(kR), ∫ ξ dA = −2π i R² J2(kR)/k ê
+      // (ê = (cos β, sin β, 0), the direction of propagation; Abramowitz &
+      // Stegun 9.1.21 for the integral over the angle). The first moment
+      // gives the face a moment (∫ p ξ dA) × n about its centre. The end
+      // added-mass inertia takes the same disc average of the incident
+      // acceleration (at the centre alone it would cancel the averaged
+      // pressure earlier still).
+      const double x = k * R;
+      const double mean = 2.0 * std::cyl_bessel_j(1.0, x) / x;
+      const Eigen::Vector3d e(cb, sb, 0.0);
+      const std::complex<double> first_moment =
+          -2.0 * kPi * std::complex<double>(0.0, 1.0) * R * R * std::cyl_bessel_j(2.0, x) / k;
+      add(face.center_b, mean * (f.pressure * area * n + end_mass * n * n.dot(f.acceleration)));
+      const Eigen::Vector3d arm = e.cross(face.inward_normal_b);
+      X.tail<3>() += f.pressure * first_moment * arm.cast<std::complex<double>>();
+    } else {
+      add(face.center_b, f.pressure * area * n + end_mass * n * n.dot(f.acceleration));
+    }
   }
   return X;
+}
+
+WaveTransferTable morison_excitation_table(const MorisonHull& hull, const Seawater& water, std::optional<double> depth,
+                                           const std::vector<double>& omegas, const std::vector<double>& headings,
+                                           MorisonDiffraction diffraction, const std::string& file) {
+  WaveTransferTable table;
+  table.quantity = TransferQuantity::excitation;
+  table.omega_rad_per_s = omegas;
+  table.headings_rad = headings;
+  table.file = file;
+  const auto rows = static_cast<Eigen::Index>(headings.size());
+  const auto cols = static_cast<Eigen::Index>(omegas.size());
+  for (auto& v : table.values) v = Eigen::MatrixXcd::Zero(rows, cols);
+  table.dof_present.fill(true);
+  for (Eigen::Index h = 0; h < rows; ++h) {
+    for (Eigen::Index w = 0; w < cols; ++w) {
+      const Vector6cd X = morison_excitation(hull, water, depth, omegas[static_cast<std::size_t>(w)],
+                                             headings[static_cast<std::size_t>(h)], diffraction);
+      for (int dof = 0; dof < 6; ++dof) table.values[static_cast<std::size_t>(dof)](h, w) = X(dof);
+    }
+  }
+  return table;
 }
 
 MorisonLoad morison_load(const MorisonHull& hull, const MorisonFlow& flow, const Eigen::Vector3d& reference_g,

@@ -26,7 +26,9 @@
 // strip model has no radiation damping and no free-surface memory: at short
 // waves (kR > ~0.3) diffraction (MacCamy & Fuchs 1954) lowers and shifts the
 // inertia force and the model over-predicts it (measured against HAMS in
-// tests/validation/engine/hull/morison_hull_test.cpp).
+// tests/validation/engine/hull/morison_hull_test.cpp); the first-order
+// excitation can take the MacCamy–Fuchs correction of the columns
+// (MorisonDiffraction).
 //
 // Linear (frequency-domain) quantities use the geometry at rest up to the
 // mean water level z = 0 (global z): added mass and first-order excitation
@@ -114,13 +116,50 @@ MorisonHull make_morison_hull(const MorisonHullInput& input);
 /// velocity at r.
 Matrix6d morison_added_mass(const MorisonHull& hull, double water_density_kg_per_m3);
 
+/// How the first-order excitation treats members that are large against the
+/// wave length.
+enum class MorisonDiffraction {
+  /// Strip theory as it is: good for kR < ~0.3 (the long-wave limit).
+  none,
+  /// Vertical members (columns): each strip's inertia force scaled by the
+  /// MacCamy–Fuchs factor of its radius (maccamy_fuchs_factor), and each
+  /// horizontal end face loaded by the incident pressure integrated over the
+  /// disc instead of taken at its centre (force × 2 J1(kR)/(kR), and the
+  /// moment of the pressure's variation across it). Other members and the
+  /// faces' added-mass inertia keep strip theory. The large columns of a
+  /// semi-submersible are what this is for: the strip model over-predicts
+  /// their inertia by tens of per cent at wave frequencies.
+  maccamy_fuchs,
+};
+
+/// MacCamy & Fuchs (1954): the horizontal wave force per unit length on a
+/// vertical circular cylinder of radius R in linear waves over its long-wave
+/// value (Morison inertia with C_M = 2), in the WAMIT e^{iwt} convention:
+///   r(kR) = −2i / (π (kR)² H1'(kR)*),  H1' = J1' + i Y1'   (Hankel, first kind)
+/// (conjugate of the e^{−iwt} form 2i / (π (kR)² H1'(kR)), Chakrabarti,
+/// Hydrodynamics of Offshore Structures, 1987, §6.5). |r| → 1 and arg r → 0
+/// as kR → 0; |r| = 2/(π (kR)² |H1'|) is C_M(kR)/2, and r lags the long-wave
+/// force by atan(J1'/Y1'). Throws std::invalid_argument for kR <= 0.
+std::complex<double> maccamy_fuchs_factor(double k_times_radius);
+
 /// First-order wave excitation per unit amplitude (N/m, N m/m) in the WAMIT
 /// convention (F = Re{X A e^{iwt}}, phase relative to the wave at the
 /// reference point), hull at rest, parts below z = 0: inertia
 /// rho (1 + Ca) A ds a_n per strip, pressure and end added-mass inertia per
-/// face. heading_rad: direction of propagation in the body frame.
+/// face, with the diffraction correction asked for. heading_rad: direction of
+/// propagation in the body frame.
 Vector6cd morison_excitation(const MorisonHull& hull, const Seawater& water, std::optional<double> water_depth_m,
-                             double omega_rad_per_s, double heading_rad);
+                             double omega_rad_per_s, double heading_rad,
+                             MorisonDiffraction diffraction = MorisonDiffraction::none);
+
+/// The excitation on a grid (frequencies ascending and > 0, headings
+/// ascending), as a `.3` file would give it (wamit_3.hpp), `file` naming its
+/// origin for messages.
+WaveTransferTable morison_excitation_table(const MorisonHull& hull, const Seawater& water,
+                                           std::optional<double> water_depth_m,
+                                           const std::vector<double>& omega_rad_per_s,
+                                           const std::vector<double>& headings_rad, MorisonDiffraction diffraction,
+                                           const std::string& file);
 
 /// What the time-domain load needs besides the hull.
 struct MorisonFlow {

@@ -5,7 +5,10 @@
 //    finite depth; the time-domain load against the linear excitation in a
 //    small regular wave, and the drag of a steady current;
 //  - the HAMS cylinder (shared/data/hydro/cylinder-buoy Buoy.1/.3) against the
-//    Morison model in long waves, and the expected divergence at short waves.
+//    Morison model in long waves, the expected divergence at short waves, and
+//    the MacCamy–Fuchs correction over the whole range;
+//  - the MacCamy–Fuchs factor against tabulated Bessel values, and a
+//    bottom-mounted column against MacCamy & Fuchs's total force.
 
 #include "engine/hull/morison_hull.hpp"
 
@@ -299,6 +302,93 @@ TEST(MorisonHull, HamsCylinderExcitationInLongWavesIsMorison) {
   const std::size_t last = x.omega_rad_per_s.size() - 1;
   const Vector6cd M = morison_excitation(hull, {kRho, kG}, std::nullopt, x.omega_rad_per_s[last], 0.0);
   EXPECT_GT(std::abs(M(0)) / std::abs(X(0, last)), 1.3);
+
+  // With the MacCamy–Fuchs column factor and the disc-averaged bottom
+  // pressure, over the whole range (kR up to 1.28; a truncated cylinder of
+  // draft 1.8 R, for which MacCamy–Fuchs, the solution of a bottom-mounted
+  // column, is an approximation): surge within 15 % of HAMS (−13.3 % at
+  // 6 rad/s; strip theory alone +41 %) and its phase within 3 deg (2.3).
+  // Heave is strip theory's with the pressure averaged over the disc: within
+  // 10 % up to kR = 0.5 (3.8 rad/s: −9.3 %, strip theory −6.3 %); beyond,
+  // the constant end added mass (the file's at 0.2 rad/s) cancels the
+  // pressure too early in both (0.37 and 0.44 of the file's at 5.6 rad/s):
+  // a limit of the member model this does not lift.
+  double worst_surge = 0.0, worst_phase = 0.0, worst_heave = 0.0;
+  for (std::size_t i = 0; i < x.omega_rad_per_s.size(); ++i) {
+    const Vector6cd D = morison_excitation(hull, {kRho, kG}, std::nullopt, x.omega_rad_per_s[i], 0.0,
+                                           MorisonDiffraction::maccamy_fuchs);
+    worst_surge = std::max(worst_surge, std::abs(std::abs(D(0)) / std::abs(X(0, i)) - 1.0));
+    worst_phase = std::max(worst_phase, std::abs(std::arg(D(0)) - std::arg(X(0, i))));
+    if (x.omega_rad_per_s[i] <= 3.8 + 1e-9)
+      worst_heave = std::max(worst_heave, std::abs(std::abs(D(2)) / std::abs(X(2, i)) - 1.0));
+  }
+  RecordProperty("hams_maccamy_fuchs_worst_surge_rel", std::to_string(worst_surge));
+  RecordProperty("hams_maccamy_fuchs_worst_surge_phase_deg", std::to_string(worst_phase * 180.0 / kPi));
+  RecordProperty("hams_maccamy_fuchs_worst_heave_rel", std::to_string(worst_heave));
+  std::cout << "MacCamy-Fuchs vs HAMS: surge " << worst_surge << " phase " << worst_phase * 180.0 / kPi << " deg heave "
+            << worst_heave << "\n";
+  EXPECT_LT(worst_surge, 0.15);
+  EXPECT_LT(worst_phase, 3.0 * kPi / 180.0);
+  EXPECT_LT(worst_heave, 0.10);
+}
+
+// The MacCamy–Fuchs factor against Bessel values of Abramowitz & Stegun
+// Table 9.1 at kR = 1 (J0 0.7651976866, J1 0.4400505857, Y0 0.0882569642,
+// Y1 −0.7812128213): C_M = 4 / (π |H1'|) = 1.3717 and a lag of
+// atan(J1'/Y1') = 20.5 deg; and its long-wave limit 1 − O((kR)²).
+TEST(MorisonHull, MacCamyFuchsFactorIsTheTabulatedBesselForm) {
+  const double dJ1 = 0.7651976866 - 0.4400505857, dY1 = 0.0882569642 + 0.7812128213;
+  const std::complex<double> r = maccamy_fuchs_factor(1.0);
+  EXPECT_NEAR(2.0 * std::abs(r), 4.0 / (kPi * std::hypot(dJ1, dY1)), 1e-9);
+  EXPECT_NEAR(2.0 * std::abs(r), 1.3717, 1e-4);
+  EXPECT_NEAR(std::arg(r), -std::atan(dJ1 / dY1), 1e-9);  // a lag in the e^{iwt} convention
+  const std::complex<double> small = maccamy_fuchs_factor(0.01);
+  EXPECT_NEAR(std::abs(small), 1.0, 1e-3);
+  EXPECT_NEAR(std::arg(small), 0.0, 1e-3);
+  EXPECT_THROW(maccamy_fuchs_factor(0.0), std::invalid_argument);
+}
+
+// A bottom-mounted column (no end faces) in finite depth: the strip sum with
+// the factor is MacCamy & Fuchs's total force 4 ρ g tanh(kh) / (k² H1'(kR)*)
+// (per unit amplitude, e^{iwt}; the strip midpoint rule on the cosh profile
+// errs by (k ds)²/24: 2.2e-4 at 1.2 rad/s with 0.5 m strips).
+TEST(MorisonHull, BottomMountedColumnCarriesTheMacCamyFuchsTotalForce) {
+  const double h = 30.0, R = 8.0;
+  MorisonMember m;
+  m.end_a_b = {0.0, 0.0, -h};
+  m.end_b_b = {0.0, 0.0, 5.0};
+  m.diameter_m = 2.0 * R;
+  m.added_mass_coefficient = 1.0;
+  MorisonHullInput in;
+  in.members = {m};
+  in.strip_length_m = 0.5;
+  const MorisonHull hull = make_morison_hull(in);
+  for (const double w : {0.4, 0.8, 1.2}) {
+    const double k = solve_dispersion({w, h, kG}).wavenumber_rad_per_m;
+    const double x = k * R;
+    const double dJ1 = std::cyl_bessel_j(0.0, x) - std::cyl_bessel_j(1.0, x) / x;
+    const double dY1 = std::cyl_neumann(0.0, x) - std::cyl_neumann(1.0, x) / x;
+    const std::complex<double> exact = 4.0 * kRho * kG * std::tanh(k * h) / (k * k * std::complex<double>(dJ1, -dY1));
+    const Vector6cd X = morison_excitation(hull, {kRho, kG}, h, w, 0.0, MorisonDiffraction::maccamy_fuchs);
+    const double midpoint_rule = std::pow(k * 0.5, 2) / 24.0;
+    EXPECT_LT(std::abs(X(0) - exact) / std::abs(exact), 1.2 * midpoint_rule) << "w = " << w << ", kR = " << x;
+    EXPECT_LT(std::abs(X(1)), 1e-9 * std::abs(exact));
+  }
+}
+
+// Heading 90 deg turns the load: sway carries what surge carried.
+TEST(MorisonHull, ExcitationTableIsTheExcitationAtEachNode) {
+  const MorisonHull hull = column_hull();
+  const std::vector<double> w{0.3, 0.6, 0.9}, beta{0.0, kPi / 2.0};
+  const WaveTransferTable t =
+      morison_excitation_table(hull, {kRho, kG}, kDepth_m, w, beta, MorisonDiffraction::maccamy_fuchs, "columns");
+  ASSERT_EQ(t.values[0].rows(), 2);
+  ASSERT_EQ(t.values[0].cols(), 3);
+  for (std::size_t j = 0; j < w.size(); ++j) {
+    const Vector6cd X = morison_excitation(hull, {kRho, kG}, kDepth_m, w[j], 0.0, MorisonDiffraction::maccamy_fuchs);
+    EXPECT_EQ(t.values[0](0, static_cast<Eigen::Index>(j)), X(0));
+    EXPECT_NEAR(std::abs(t.values[1](1, static_cast<Eigen::Index>(j))), std::abs(X(0)), 1e-9 * std::abs(X(0)));
+  }
 }
 
 }  // namespace
