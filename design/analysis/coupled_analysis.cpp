@@ -114,8 +114,8 @@ DynamicAnalysisResult run_coupled_analysis(const ValidatedProject& validated, co
     result.wave_frequency_computed = true;
   } else if (environment.waves && model.wave_split_frequency_rad_per_s == 0.0) {
     result.notes.push_back(
-        "no wave-frequency motions: the project gives no hull.hydrodynamics.excitation_file (.3) "
-        "or rao_file (.4); the fairleads follow the low-frequency motion only");
+        "no wave-frequency motions: the project gives no hull.hydrodynamics.excitation_file (.3), "
+        "rao_file (.4) or excitation: morison_maccamy_fuchs; the fairleads follow the low-frequency motion only");
   }
   result.timing.wave_frequency_s = start.seconds();
 

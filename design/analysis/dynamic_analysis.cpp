@@ -97,19 +97,23 @@ engine::HullSimulationOptions forced_run_options(const DynamicAnalysisRequest& r
 }
 
 /// The motion RAOs of the hull at the case's static equilibrium: the .4
-/// file, or the .3 excitation through the hull's equation of motion with the
-/// static case's line stiffness; empty without waves or without those files.
+/// file, or the excitation (.3, or the Morison members') through the hull's
+/// equation of motion with the static case's line stiffness; empty without
+/// waves or without an excitation.
 std::shared_ptr<const engine::MotionRaoTable> motion_raos_of(const Project& project, const DynamicModel& model) {
   const auto& hydro = project.hull.hydrodynamics;
   const Environment* environment = model.case_model.environment;
-  if (!environment || !environment->waves || !hydro || !(hydro->rao_file || hydro->excitation_file)) return nullptr;
+  if (!environment || !environment->waves || !has_wave_excitation(project)) return nullptr;
   const HullModel& hull = *model.case_model.hull;
   const engine::WamitReadOptions read = wamit_options_of(project, *hydro);
+  if (hydro->rao_file)
+    return std::make_shared<const engine::MotionRaoTable>(engine::read_wamit_4(*hydro->rao_file, read));
+  const engine::ExcitationTable excitation = hydro->excitation_file
+                                                 ? engine::read_wamit_3(*hydro->excitation_file, read)
+                                                 : morison_excitation_of(project, *hull.radiation);
   return std::make_shared<const engine::MotionRaoTable>(
-      hydro->rao_file ? engine::read_wamit_4(*hydro->rao_file, read)
-                      : engine::motion_raos_from_excitation(
-                            engine::read_wamit_3(*hydro->excitation_file, read), *hull.radiation, hull.mass_matrix,
-                            model.hull.linear_damping, hull.statics.hydrostatic_stiffness + model.statics.stiffness));
+      engine::motion_raos_from_excitation(excitation, *hull.radiation, hull.mass_matrix, model.hull.linear_damping,
+                                          hull.statics.hydrostatic_stiffness + model.statics.stiffness));
 }
 
 }  // namespace
@@ -521,8 +525,8 @@ DynamicAnalysisResult run_dynamic_analysis(const ValidatedProject& validated, co
     result.wave_frequency_computed = true;
   } else if (environment.waves) {
     result.notes.push_back(
-        "no wave-frequency motions: the project gives no hull.hydrodynamics.excitation_file (.3) "
-        "or rao_file (.4); "
+        "no wave-frequency motions: the project gives no hull.hydrodynamics.excitation_file (.3), "
+        "rao_file (.4) or excitation: morison_maccamy_fuchs; "
         "motions are low-frequency only");
   }
   result.total = result.low_frequency + result.wave_frequency;

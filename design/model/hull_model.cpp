@@ -1,5 +1,6 @@
 #include "design/model/hull_model.hpp"
 
+#include <numbers>
 #include <stdexcept>
 
 #include "engine/hull/wamit_hst.hpp"
@@ -15,6 +16,22 @@ engine::WamitReadOptions wamit_options_of(const Project& project, const HullHydr
   options.period_scale = h.period_scale;
   options.water = {project.site.water_density_kg_per_m3, project.site.gravity_m_per_s2};
   return options;
+}
+
+bool has_wave_excitation(const Project& project) {
+  const auto& h = project.hull.hydrodynamics;
+  return h && h->model == HullHydrodynamicsModel::bem &&
+         (h->rao_file || h->excitation_file || h->excitation == ExcitationSource::morison_maccamy_fuchs);
+}
+
+engine::ExcitationTable morison_excitation_of(const Project& project, const engine::HydroCoefficients& radiation) {
+  constexpr int kHeadings = 36;
+  std::vector<double> headings(kHeadings);
+  for (int i = 0; i < kHeadings; ++i) headings[static_cast<std::size_t>(i)] = 2.0 * std::numbers::pi * i / kHeadings;
+  return engine::morison_excitation_table(
+      morison_hull_of(project), {project.site.water_density_kg_per_m3, project.site.gravity_m_per_s2},
+      project.site.depth_m, radiation.omega_rad_per_s, headings, engine::MorisonDiffraction::maccamy_fuchs,
+      "hull.geometry (Morison members, MacCamy-Fuchs)");
 }
 
 engine::MorisonHull morison_hull_of(const Project& project) {

@@ -29,6 +29,16 @@ struct HullModel {
   std::optional<engine::MorisonHull> morison;
 };
 
+/// Whether a BEM hull has a first-order wave excitation: a .4 or .3 file,
+/// or `excitation: morison_maccamy_fuchs` (its wave-frequency motions).
+bool has_wave_excitation(const Project& project);
+
+/// The first-order excitation of the Morison members of hull.geometry with
+/// the MacCamy–Fuchs correction (`excitation: morison_maccamy_fuchs`), at
+/// the BEM radiation's frequencies and every 10 deg of heading (a spread
+/// sea's components come from any direction), body frame.
+engine::ExcitationTable morison_excitation_of(const Project& project, const engine::HydroCoefficients& radiation);
+
 /// The Morison members of hull.geometry: each column a vertical member with
 /// end faces, each pontoon a member without (closed by the columns it joins),
 /// strips of hydrodynamics.strip_length (1 m without hydrodynamics).

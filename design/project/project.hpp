@@ -142,6 +142,11 @@ enum class RadiationModel { low_frequency, memory };
 /// Where the hull's hydrodynamic loads come from: WAMIT-format files of a BEM
 /// code, or a Morison member model built from hull.geometry.
 enum class HullHydrodynamicsModel { bem, morison };
+
+/// Where a BEM hull's first-order wave excitation comes from: the
+/// excitation_file / rao_file (none given: no wave-frequency motion), or the
+/// Morison members of hull.geometry with the MacCamy–Fuchs correction.
+enum class ExcitationSource { files, morison_maccamy_fuchs };
 /// Frequency-dependent hull hydrodynamics from WAMIT-format files, and the
 /// hull's viscous damping (docs/project-format.md, "Hull hydrodynamics").
 struct HullHydrodynamics {
@@ -151,7 +156,11 @@ struct HullHydrodynamics {
   double ulen_m = 1.0;                                   ///< WAMIT ULEN, > 0
   double period_scale = 1.0;                             ///< periods multiplied by this (frequencies divided), > 0
   std::optional<std::filesystem::path> excitation_file;  ///< WAMIT .3 (first-order excitation)
-  std::optional<std::filesystem::path> rao_file;         ///< WAMIT .4 (motion RAOs)
+  /// bem without a .3 or .4: the first-order excitation from the Morison
+  /// members of hull.geometry with the MacCamy–Fuchs correction of the
+  /// columns (engine/hull/morison_hull.hpp), through the BEM radiation.
+  ExcitationSource excitation = ExcitationSource::files;
+  std::optional<std::filesystem::path> rao_file;  ///< WAMIT .4 (motion RAOs)
   /// Diagonal viscous damping, surge..yaw: N s/m (translations), N m s/rad (rotations), >= 0.
   Eigen::Matrix<double, 6, 1> linear_damping = Eigen::Matrix<double, 6, 1>::Zero();
   /// Quadratic damping per DOF, N s^2/m^2, N m s^2/rad^2, >= 0.

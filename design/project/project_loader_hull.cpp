@@ -67,12 +67,15 @@ HullHydrodynamics read_hull_hydrodynamics(MapReader& r, const std::filesystem::p
       {"period", FrequencyColumnKind::period}, {"angular_frequency", FrequencyColumnKind::angular_frequency}};
   static const EnumTable<HullHydrodynamicsModel> kModels = {{"bem", HullHydrodynamicsModel::bem},
                                                             {"morison", HullHydrodynamicsModel::morison}};
+  static const EnumTable<ExcitationSource> kExcitationSources = {
+      {"files", ExcitationSource::files}, {"morison_maccamy_fuchs", ExcitationSource::morison_maccamy_fuchs}};
   static const EnumTable<RadiationModel> kRadiationModels = {{"low_frequency", RadiationModel::low_frequency},
                                                              {"memory", RadiationModel::memory}};
   // Keys of one model only: given with the other, key_not_applicable.
-  static constexpr std::string_view kBemKeys[] = {
-      "radiation_file", "frequency_column",     "ulen",      "period_scale",    "excitation_file",
-      "rao_file",       "added_mass_frequency", "radiation", "memory_duration", "memory_time_step"};
+  static constexpr std::string_view kBemKeys[] = {"radiation_file",       "frequency_column", "ulen",
+                                                  "period_scale",         "excitation_file",  "rao_file",
+                                                  "added_mass_frequency", "radiation",        "memory_duration",
+                                                  "memory_time_step",     "excitation"};
   static constexpr std::string_view kMorisonKeys[] = {"strip_length"};
   HullHydrodynamics h;
   assign(h.model, r.enumeration("model", kModels, kOptional));
@@ -95,6 +98,7 @@ HullHydrodynamics read_hull_hydrodynamics(MapReader& r, const std::filesystem::p
     assign(h.period_scale, r.number("period_scale", "-", kOptional));
     if (const auto file = r.text("excitation_file", kOptional)) h.excitation_file = resolve(*file, base_folder);
     if (const auto file = r.text("rao_file", kOptional)) h.rao_file = resolve(*file, base_folder);
+    assign(h.excitation, r.enumeration("excitation", kExcitationSources, kOptional));
     h.added_mass_frequency_rad_per_s = r.number("added_mass_frequency", "rad/s", kOptional);
     assign(h.radiation, r.enumeration("radiation", kRadiationModels, kOptional));
     assign(h.memory_duration_s, r.number("memory_duration", "s", kOptional));

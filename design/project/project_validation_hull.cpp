@@ -113,6 +113,18 @@ void check_hull_hydrodynamics(Reporter& r, const Hull& hull) {
     }
   } else {
     check_file(r, at + ".radiation_file", h.radiation_file);
+    if (h.excitation == ExcitationSource::morison_maccamy_fuchs) {
+      if (h.excitation_file || h.rao_file) {
+        r.fail(at + ".excitation", "excitation_source_conflict",
+               fmt::format("morison_maccamy_fuchs computes the excitation from hull.geometry; the {} gives it too: "
+                           "keep one",
+                           h.excitation_file ? "excitation_file" : "rao_file"));
+      }
+      if (!hull.geometry || (hull.geometry->columns.empty() && hull.geometry->pontoons.empty())) {
+        r.fail(at + ".excitation", "morison_needs_geometry",
+               "morison_maccamy_fuchs builds the members from hull.geometry, which has none");
+      }
+    }
   }
   if (h.excitation_file) check_file(r, at + ".excitation_file", *h.excitation_file);
   if (h.rao_file) check_file(r, at + ".rao_file", *h.rao_file);

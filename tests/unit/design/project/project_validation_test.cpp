@@ -429,6 +429,23 @@ TEST(ProjectValidation, RadiationMemoryKeysParseAndTheDurationMustExceedTheStep)
                 "hull.hydrodynamics.memory_duration");
 }
 
+TEST(ProjectValidation, MorisonExcitationOfABemHullNeedsGeometryAndNoExcitationFile) {
+  const std::string hull_line = "  waterplane_inertia: [1.0e5, 1.0e5]\n";
+  const std::string radiation = std::string(SPIRAL_SOURCE_DIR) + "/scenarios/data/hydro/oc4-semi/marin_semi.1";
+  const std::string hydro = "  hydrodynamics: {radiation_file: " + radiation + ", excitation: morison_maccamy_fuchs}\n";
+  const std::string geometry =
+      "  geometry:\n    columns: [{center: [0, 0], z_bottom: -25, z_top: 10, diameter: 22.6}]\n";
+  const std::string text = replace(kMinimal, hull_line, hull_line + hydro + geometry);
+  EXPECT_EQ(parse_project(text, "test.yaml").hull.hydrodynamics->excitation, ExcitationSource::morison_maccamy_fuchs);
+  EXPECT_TRUE(check(text).empty()) << all(check(text));
+  expect_single(check(replace(kMinimal, hull_line, hull_line + hydro)), "morison_needs_geometry",
+                "hull.hydrodynamics.excitation");
+  expect_single(check(replace(text, "excitation: morison_maccamy_fuchs",
+                              "excitation: morison_maccamy_fuchs, excitation_file: " + radiation)),
+                "excitation_source_conflict", "hull.hydrodynamics.excitation");
+  EXPECT_THROW(parse_project(replace(text, "morison_maccamy_fuchs", "morison"), "t.yaml"), InputError);
+}
+
 TEST(ProjectValidation, MorisonHullNeedsGeometryAndTakesNoBemKeys) {
   const std::string hull_line = "  waterplane_inertia: [1.0e5, 1.0e5]\n";
   const std::string geometry =
