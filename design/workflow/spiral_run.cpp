@@ -551,8 +551,9 @@ std::optional<Iteration> feedback(const RunContext& ctx, const Iteration& it, co
       text = with_line_payouts(written, vp.project, step.payouts_m, header);
     }
   } catch (const std::invalid_argument& error) {
-    // The lengths are the base file's (a variation that does not write its
-    // mooring): the payouts stand as the optimizer's advice, not applied.
+    // The payouts cannot be written (a length with no position of its own
+    // in the file, a base file that cannot be read): they stand as the
+    // optimizer's advice, not applied.
     result.findings.push_back(fmt::format(
         "iteration {}: the optimized payouts cannot be applied to {}: {}; the spiral goes on with the mooring as "
         "it is",
