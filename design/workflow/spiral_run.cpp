@@ -597,15 +597,33 @@ std::vector<std::string> spiral_stages(const Project& project, const std::option
   return stages;
 }
 
-OptimizationStudy run_optimization_study(const std::filesystem::path& project_file, const SpiralRunOptions& options,
-                                         int study_points) {
+namespace {
+
+/// Iteration 1: the project as given. Throws InputError for a bad project
+/// or a negative job count.
+Iteration project_as_given(const std::filesystem::path& project_file, const SpiralRunOptions& options) {
   Iteration it;
   it.project_file = project_file;
   it.project = std::make_shared<const ValidatedProject>(load_validated_project(project_file));
+  if (options.jobs < 0)
+    throw request_error(it.project->project, "jobs", fmt::format("must be >= 0, got {}", options.jobs));
   it.model_hash = project_content_hash(project_file, it.project->project);
+  return it;
+}
+
+/// Tasks at a time: the option, or every core.
+int job_count(const SpiralRunOptions& options) {
+  return options.jobs > 0 ? options.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+}
+
+}  // namespace
+
+OptimizationStudy run_optimization_study(const std::filesystem::path& project_file, const SpiralRunOptions& options,
+                                         int study_points) {
+  const Iteration it = project_as_given(project_file, options);
   ResultsStore store(results_store_file(options.out_folder), options.fresh);
   RunContext ctx{&store, options};
-  ctx.jobs = options.jobs > 0 ? options.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  ctx.jobs = job_count(options);
   TaskBatch batch("optimization", it.number);
   const std::size_t optimization = add_optimization(batch, it, ctx.jobs);
   PretensionStudyRequest request;
@@ -627,20 +645,15 @@ OptimizationStudy run_optimization_study(const std::filesystem::path& project_fi
 
 SpiralRunResult run_spiral(const std::filesystem::path& project_file, const SpiralRunOptions& options,
                            const std::function<void(const StageRun&)>& stage_done) {
-  Iteration it;
-  it.project_file = project_file;
-  it.project = std::make_shared<const ValidatedProject>(load_validated_project(project_file));
+  Iteration it = project_as_given(project_file, options);
   const std::vector<std::string> stages = spiral_stages(it.project->project, options.until);
-  if (options.jobs < 0)
-    throw request_error(it.project->project, "jobs", fmt::format("must be >= 0, got {}", options.jobs));
-  it.model_hash = project_content_hash(project_file, it.project->project);
   const std::filesystem::path data_folder = project_file.parent_path();
 
   const bool root = options.cluster == nullptr || options.cluster->rank() == 0;
   std::unique_ptr<ResultsStore> store =
       root ? std::make_unique<ResultsStore>(results_store_file(options.out_folder), options.fresh) : nullptr;
   RunContext ctx{store.get(), options};
-  ctx.jobs = options.jobs > 0 ? options.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  ctx.jobs = job_count(options);
   SpiralRunResult result;
   result.store_file = results_store_file(options.out_folder);
   if (store) {
