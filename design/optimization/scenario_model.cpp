@@ -30,16 +30,6 @@ Eigen::Matrix3d skew(const Eigen::Vector3d& a) {
   return s;
 }
 
-/// ω = T d(roll, pitch, yaw) for R = Rz(yaw) Ry(pitch) Rx(roll): the global
-/// angular displacement of Euler-angle increments.
-Eigen::Matrix3d euler_rate_to_global(const Eigen::Vector3d& roll_pitch_yaw) {
-  const double cp = std::cos(roll_pitch_yaw(1)), sp = std::sin(roll_pitch_yaw(1));
-  const double cy = std::cos(roll_pitch_yaw(2)), sy = std::sin(roll_pitch_yaw(2));
-  Eigen::Matrix3d t;
-  t << cy * cp, -sy, 0.0, sy * cp, cy, 0.0, -sp, 0.0, 1.0;
-  return t;
-}
-
 /// A mooring line of the scenario and how to rebuild it at a payout.
 struct PaidLine {
   std::size_t project_index = 0;
@@ -132,20 +122,6 @@ struct ScenarioModel::Impl {
     }
   }
 
-  engine::Matrix6d environment_stiffness(const engine::Vector6d& offset) const {
-    // Central differences of a function evaluation; steps as for the
-    // line-array check (line_array.hpp: FiniteDifferenceSteps).
-    engine::Matrix6d k = engine::Matrix6d::Zero();
-    for (int j = 0; j < 6; ++j) {
-      const double h = j < 3 ? 1e-2 : 1e-4;
-      engine::Vector6d plus = offset, minus = offset;
-      plus(j) += h;
-      minus(j) -= h;
-      k.col(j) = -(environment_load(plus) - environment_load(minus)) / (2.0 * h);
-    }
-    return k;
-  }
-
   GoverningPoint governing_point(std::size_t k, const std::vector<engine::LineProfilePoint>& profile) const {
     GoverningPoint out;
     const MooringLineDesign& design = array.designs[k];
@@ -182,15 +158,19 @@ ScenarioResponse ScenarioModel::evaluate(const Eigen::VectorXd& payouts_m, bool 
       // Newton steps, instead of a riser solve at every step of the way.
       linearize_expensive_lines();
       try {
-        start =
-            engine::solve_static_equilibrium(m.hull.statics, m.array.lines, m.environment_load, m.last_offset).offset;
+        start = engine::solve_static_equilibrium(m.hull.statics, m.array.lines, m.environment_load, m.last_offset,
+                                                 {.stiffness_at_solution = false})
+                    .offset;
       } catch (const engine::SolverError&) {
         // The linear risers' equilibrium is only a starting point: without
         // one, the full solve starts where the last one ended.
       }
       restore_expensive_lines();
     }
-    eq = engine::solve_static_equilibrium(m.hull.statics, m.array.lines, m.environment_load, start);
+    // The K at the solution serves the analytic gradient only (catenaries
+    // alone); the FE risers then skip a factorisation each.
+    eq = engine::solve_static_equilibrium(m.hull.statics, m.array.lines, m.environment_load, start,
+                                          {.stiffness_at_solution = with_gradient});
   } catch (const engine::SolverError& error) {
     throw engine::SolverError(fmt::format("{}: {}", scenario_.label(), error.what()), error.diagnostics());
   }
@@ -214,16 +194,13 @@ ScenarioResponse ScenarioModel::evaluate(const Eigen::VectorXd& payouts_m, bool 
       rhs.col(m.paid[k].group).head<3>() += df;
       rhs.col(m.paid[k].group).tail<3>() += arm.cross(df);
     }
-    // The equilibrium's unknowns are the offset with roll, pitch, yaw
-    // (hydrostatics and environment are functions of them); the line-array K
-    // is per small global rotation ω = T(angles) d(roll, pitch, yaw).
-    engine::Matrix6d to_global = engine::Matrix6d::Identity();
-    to_global.bottomRightCorner<3, 3>() = euler_rate_to_global(eq.offset.tail<3>());
+    // dq/dΔL in the equilibrium's unknowns (offset with roll, pitch, yaw),
+    // then as translations and small global rotations.
     const engine::Matrix6d k_total =
-        m.hull.statics.hydrostatic_stiffness + eq.lines.stiffness * to_global + m.environment_stiffness(eq.offset);
+        engine::equilibrium_tangent(m.hull.statics, eq.lines.stiffness, m.environment_load, eq.offset);
     const Eigen::Matrix<double, 6, Eigen::Dynamic> d_offset = k_total.partialPivLu().solve(rhs);
     out.d_horizontal_offset = d_offset.topRows<2>();
-    dq = to_global * d_offset;  // translations and small global rotations
+    dq = engine::offset_increment_to_global(eq.offset) * d_offset;
   }
 
   for (std::size_t k = 0; k < m.paid.size(); ++k) {
@@ -322,7 +299,7 @@ void ScenarioModel::linearize_expensive_lines() {
     std::unique_ptr<engine::StaticLine>& line = m.array.lines[k];
     if (m.stashed[k] || !line->expensive()) continue;
     const Eigen::Vector3d at = m.last_pose->reference_point_g + m.last_pose->rotation * line->attachment_b();
-    const engine::LineEndResponse response = line->solve(at);  // the stored solution: no new solve
+    const engine::LineEndResponse response = line->linearization(at);  // the stored solution: no new solve
     auto linear = std::make_unique<engine::LinearizedStaticLine>(line->name(), line->attachment_b(), at, response);
     m.stashed[k] = std::move(line);
     line = std::move(linear);

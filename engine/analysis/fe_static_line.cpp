@@ -39,7 +39,19 @@ FeStaticLine::FeStaticLine(std::string name, Eigen::Vector3d end_A_g, Eigen::Vec
       options_(std::move(options)) {}
 
 const FeStaticsResult& FeStaticLine::solve_at(const Eigen::Vector3d& attachment_g, bool stiffness) {
-  if (last_ && attachment_g == last_attachment_g_ && (last_has_stiffness_ || !stiffness)) return *last_;
+  if (last_ && attachment_g == last_attachment_g_) {
+    if (stiffness && !last_->has_end_B_stiffness) {
+      try {
+        last_ = with_end_B_stiffness(model_, environment_, std::move(*last_));
+      } catch (const SolverError& error) {
+        last_.reset();
+        throw SolverError(fmt::format("line '{}': {}", name_, error.what()), error.diagnostics());
+      }
+      recent_stiffness_ = last_->end_B_stiffness_N_per_m;
+      warm_ = std::make_shared<const FeStaticsResult>(*last_);
+    }
+    return *last_;
+  }
   // A failed trial (e.g. a hull line-search step too far) leaves the warm
   // start at the last converged solution, not at a cold start.
   FeStaticsOptions options = options_;
@@ -52,7 +64,7 @@ const FeStaticsResult& FeStaticLine::solve_at(const Eigen::Vector3d& attachment_
     throw SolverError(fmt::format("line '{}': {}", name_, error.what()), error.diagnostics());
   }
   last_attachment_g_ = attachment_g;
-  last_has_stiffness_ = stiffness;
+  if (last_->has_end_B_stiffness) recent_stiffness_ = last_->end_B_stiffness_N_per_m;
   warm_ = std::make_shared<const FeStaticsResult>(*last_);
   return *last_;
 }
@@ -64,7 +76,7 @@ void FeStaticLine::adopt(const Eigen::Vector3d& attachment_g, FeStaticsResult so
   }
   last_ = std::move(solution);
   last_attachment_g_ = attachment_g;
-  last_has_stiffness_ = true;
+  if (last_->has_end_B_stiffness) recent_stiffness_ = last_->end_B_stiffness_N_per_m;
   warm_ = std::make_shared<const FeStaticsResult>(*last_);
 }
 
@@ -81,6 +93,16 @@ LineEndResponse FeStaticLine::solve(const Eigen::Vector3d& attachment_g) {
 
 Eigen::Vector3d FeStaticLine::solve_force(const Eigen::Vector3d& attachment_g) {
   return solve_at(attachment_g, false).end_B_force_N;
+}
+
+LineEndResponse FeStaticLine::linearization(const Eigen::Vector3d& attachment_g) {
+  if (!recent_stiffness_) return solve(attachment_g);
+  LineEndResponse response;
+  response.force_g = solve_force(attachment_g);
+  response.stiffness_g = -*recent_stiffness_;
+  response.top_tension_N = response.force_g.norm();
+  response.iterations = last_->iterations;
+  return response;
 }
 
 LineState FeStaticLine::state(const Eigen::Vector3d& attachment_g, int /*points_per_segment*/) {

@@ -29,9 +29,11 @@ class FeStaticLine final : public StaticLine {
   LineEndResponse solve(const Eigen::Vector3d& attachment_g) override;
   /// Without the end-B stiffness (its Jacobian factorisation is most of a warm solve).
   Eigen::Vector3d solve_force(const Eigen::Vector3d& attachment_g) override;
+  /// The force there and the end-B stiffness of the last solve that computed one.
+  LineEndResponse linearization(const Eigen::Vector3d& attachment_g) override;
   /// The FE nodes are the profile (`points_per_segment` is not used: the mesh sets the resolution).
   LineState state(const Eigen::Vector3d& attachment_g, int points_per_segment) override;
-  /// Takes `solution` (with its end-B stiffness) as this line's solve at
+  /// Takes `solution` (with its end-B stiffness, if it has one) as this line's solve at
   /// `attachment_g`, as if solved there: the next solve at that attachment
   /// returns it, others start warm from it. It must come from a line with the
   /// same model, environment and anchor (e.g. another case's line with the
@@ -44,6 +46,7 @@ class FeStaticLine final : public StaticLine {
   void reset() override {
     last_.reset();
     warm_.reset();
+    recent_stiffness_.reset();
   }
   bool expensive() const override { return true; }
   /// The full FE solution of the last solve (curvature, bending moment per node).
@@ -64,8 +67,8 @@ class FeStaticLine final : public StaticLine {
 
   std::optional<FeStaticsResult> last_;  ///< of the last solve; empty after a failure
   Eigen::Vector3d last_attachment_g_ = Eigen::Vector3d::Zero();
-  bool last_has_stiffness_ = false;
-  std::shared_ptr<const FeStaticsResult> warm_;  ///< last converged solve (the warm start)
+  std::optional<Eigen::Matrix3d> recent_stiffness_;  ///< end-B stiffness of the last solve that computed one
+  std::shared_ptr<const FeStaticsResult> warm_;      ///< last converged solve (the warm start)
 };
 
 }  // namespace spiral::engine

@@ -36,14 +36,18 @@ HullPose perturbed(const HullPose& pose, int dof, double step) {
 /// below are deterministic.
 /// force_only: only LineEndResponse::force_g is filled (StaticLine::solve_force).
 std::vector<LineEndResponse> solve_all(std::span<const std::unique_ptr<StaticLine>> lines, const HullPose& pose,
-                                       bool force_only = false) {
+                                       LineArrayQuantities quantities = LineArrayQuantities::force_and_stiffness) {
   std::vector<LineEndResponse> ends(lines.size());
   const auto solve_one = [&](std::size_t i) {
     const Eigen::Vector3d attachment_g = pose.reference_point_g + pose.rotation * lines[i]->attachment_b();
-    if (force_only) {
-      ends[i].force_g = lines[i]->solve_force(attachment_g);
-    } else {
-      ends[i] = lines[i]->solve(attachment_g);
+    switch (quantities) {
+      case LineArrayQuantities::force:
+        ends[i].force_g = lines[i]->solve_force(attachment_g);
+        ends[i].top_tension_N = ends[i].force_g.norm();
+        break;
+      case LineArrayQuantities::force_and_stiffness:
+        ends[i] = lines[i]->solve(attachment_g);
+        break;
     }
   };
   const bool any_expensive = std::any_of(lines.begin(), lines.end(), [](const auto& l) { return l->expensive(); });
@@ -54,7 +58,7 @@ std::vector<LineEndResponse> solve_all(std::span<const std::unique_ptr<StaticLin
 
 Vector6d array_force(std::span<const std::unique_ptr<StaticLine>> lines, const HullPose& pose) {
   Vector6d force = Vector6d::Zero();
-  const std::vector<LineEndResponse> ends = solve_all(lines, pose, true);
+  const std::vector<LineEndResponse> ends = solve_all(lines, pose, LineArrayQuantities::force);
   for (std::size_t i = 0; i < lines.size(); ++i) {
     const Eigen::Vector3d arm = pose.rotation * lines[i]->attachment_b();
     force.head<3>() += ends[i].force_g;
@@ -82,10 +86,12 @@ Matrix6d attachment_stiffness_6x6(const Eigen::Matrix3d& K_f, const Eigen::Vecto
   return k;
 }
 
-LineArrayResponse evaluate_line_array(std::span<const std::unique_ptr<StaticLine>> lines, const HullPose& pose) {
+LineArrayResponse evaluate_line_array(std::span<const std::unique_ptr<StaticLine>> lines, const HullPose& pose,
+                                      LineArrayQuantities quantities) {
   LineArrayResponse response;
+  response.has_stiffness = quantities != LineArrayQuantities::force;
   response.lines.reserve(lines.size());
-  std::vector<LineEndResponse> ends = solve_all(lines, pose);
+  std::vector<LineEndResponse> ends = solve_all(lines, pose, quantities);
   for (std::size_t i = 0; i < lines.size(); ++i) {
     LineContribution c;
     const Eigen::Vector3d arm = pose.rotation * lines[i]->attachment_b();
@@ -93,7 +99,7 @@ LineArrayResponse evaluate_line_array(std::span<const std::unique_ptr<StaticLine
     c.end = std::move(ends[i]);
     c.force.head<3>() = c.end.force_g;
     c.force.tail<3>() = arm.cross(c.end.force_g);
-    c.stiffness = attachment_stiffness_6x6(c.end.stiffness_g, c.end.force_g, arm);
+    if (response.has_stiffness) c.stiffness = attachment_stiffness_6x6(c.end.stiffness_g, c.end.force_g, arm);
     response.force += c.force;
     response.stiffness += c.stiffness;
     response.lines.push_back(std::move(c));

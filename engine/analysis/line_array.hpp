@@ -41,6 +41,7 @@ struct LineContribution {
 struct LineArrayResponse {
   Vector6d force = Vector6d::Zero();      ///< N, N·m
   Matrix6d stiffness = Matrix6d::Zero();  ///< analytic tangent, N/m, N/rad, N·m/m, N·m/rad
+  bool has_stiffness = true;              ///< false: forces only (LineArrayQuantities::force), stiffness zero
   std::vector<LineContribution> lines;    ///< in the order given
 };
 
@@ -54,8 +55,14 @@ struct LineArrayResponse {
 Matrix6d attachment_stiffness_6x6(const Eigen::Matrix3d& K_f, const Eigen::Vector3d& force_g,
                                   const Eigen::Vector3d& arm_g);
 
-/// Solves every line at `pose` and sums force and analytic stiffness.
-LineArrayResponse evaluate_line_array(std::span<const std::unique_ptr<StaticLine>> lines, const HullPose& pose);
+/// What evaluate_line_array computes: the stiffness of an FE line costs a
+/// factorisation of its Jacobian at the solution, often most of a warm solve.
+enum class LineArrayQuantities { force_and_stiffness, force };
+
+/// Solves every line at `pose` and sums force and (unless asked for the force
+/// only) analytic stiffness.
+LineArrayResponse evaluate_line_array(std::span<const std::unique_ptr<StaticLine>> lines, const HullPose& pose,
+                                      LineArrayQuantities quantities = LineArrayQuantities::force_and_stiffness);
 
 /// Perturbation sizes of the finite-difference stiffness. Large against the
 /// line solvers' closure tolerance (1e-9 m) so that round-off stays below

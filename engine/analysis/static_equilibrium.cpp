@@ -7,6 +7,8 @@
 #include <Eigen/LU>
 #include <fmt/format.h>
 
+#include "engine/common/rigid_body.hpp"
+
 namespace spiral::engine {
 
 namespace {
@@ -25,7 +27,7 @@ struct Evaluation {
 
 Evaluation evaluate(const HullStaticModel& hull, std::span<const std::unique_ptr<StaticLine>> lines,
                     const ExternalLoad& external_load, const Eigen::Vector3d& position_g,
-                    const Eigen::Matrix3d& rotation) {
+                    const Eigen::Matrix3d& rotation, LineArrayQuantities quantities) {
   Evaluation e;
   e.pose = {position_g, rotation};
   e.offset.head<3>() = position_g - hull.reference_point_at_rest_g;
@@ -34,7 +36,7 @@ Evaluation evaluate(const HullStaticModel& hull, std::span<const std::unique_ptr
   // a panel or member model; yaw and surge/sway do not change them).
   e.hydrostatic = hull.rest_force - hull.hydrostatic_stiffness * e.offset;
   e.external = external_load ? external_load(e.offset) : Vector6d::Zero();
-  e.lines = evaluate_line_array(lines, e.pose);
+  e.lines = evaluate_line_array(lines, e.pose, quantities);
   e.residual = e.hydrostatic + e.external + e.lines.force;
   return e;
 }
@@ -45,6 +47,31 @@ double merit(const Vector6d& residual, double force_ref, double moment_ref) {
 
 }  // namespace
 
+Matrix6d external_load_stiffness(const ExternalLoad& external_load, const Vector6d& offset) {
+  Matrix6d k = Matrix6d::Zero();
+  if (!external_load) return k;
+  for (int j = 0; j < 6; ++j) {
+    const double h = j < 3 ? 1e-2 : 1e-4;
+    Vector6d plus = offset, minus = offset;
+    plus(j) += h;
+    minus(j) -= h;
+    k.col(j) = -(external_load(plus) - external_load(minus)) / (2.0 * h);
+  }
+  return k;
+}
+
+Matrix6d offset_increment_to_global(const Vector6d& offset) {
+  Matrix6d t = Matrix6d::Identity();
+  t.bottomRightCorner<3, 3>() = euler_rate_to_global(offset.tail<3>());
+  return t;
+}
+
+Matrix6d equilibrium_tangent(const HullStaticModel& hull, const Matrix6d& line_stiffness,
+                             const ExternalLoad& external_load, const Vector6d& offset) {
+  return hull.hydrostatic_stiffness + line_stiffness * offset_increment_to_global(offset) +
+         external_load_stiffness(external_load, offset);
+}
+
 Eigen::Vector3d roll_pitch_yaw(const Eigen::Matrix3d& r) {
   return {std::atan2(r(2, 1), r(2, 2)), -std::asin(std::clamp(r(2, 0), -1.0, 1.0)), std::atan2(r(1, 0), r(0, 0))};
 }
@@ -54,7 +81,8 @@ EquilibriumResult solve_static_equilibrium(const HullStaticModel& hull,
                                            const ExternalLoad& external_load, const Vector6d& initial_offset,
                                            const EquilibriumOptions& options) {
   const HullPose start = pose_from_offset(hull.reference_point_at_rest_g, initial_offset);
-  Evaluation current = evaluate(hull, lines, external_load, start.reference_point_g, start.rotation);
+  Evaluation current =
+      evaluate(hull, lines, external_load, start.reference_point_g, start.rotation, LineArrayQuantities::force);
 
   double arm_ref_m = 1.0;
   for (const auto& line : lines) arm_ref_m = std::max(arm_ref_m, line->attachment_b().norm());
@@ -73,23 +101,40 @@ EquilibriumResult solve_static_equilibrium(const HullStaticModel& hull,
       scaled.head<3>() /= force_ref_N;
       scaled.tail<3>() /= moment_ref_Nm;
       scaled.cwiseAbs().maxCoeff(&worst);
+      // Where the search ended and which line carried the most there: a load
+      // beyond the mooring's capacity shows as a far offset and a line far
+      // above its pretension.
+      std::string most_loaded;
+      std::size_t most = 0;
+      for (std::size_t i = 1; i < current.lines.lines.size(); ++i) {
+        if (current.lines.lines[i].end.top_tension_N > current.lines.lines[most].end.top_tension_N) most = i;
+      }
+      if (!current.lines.lines.empty()) {
+        most_loaded = fmt::format("; most loaded line '{}' at {:.4g} kN", lines[most]->name(),
+                                  current.lines.lines[most].end.top_tension_N / 1e3);
+      }
       throw SolverError(fmt::format("static equilibrium did not converge in {} iterations: largest residual in "
-                                    "{} ({:.4g} {}); the hull may have no equilibrium under this load (lines "
-                                    "too slack or too few to hold it) — check the environment and pretensions",
-                                    iteration, kDofNames[worst], current.residual(worst), worst < 3 ? "N" : "N·m"),
+                                    "{} ({:.4g} {}) at a horizontal offset of {:.1f} m{}; the hull may have no "
+                                    "equilibrium under this load (lines too slack or too few to hold it) — check "
+                                    "the environment and pretensions",
+                                    iteration, kDofNames[worst], current.residual(worst), worst < 3 ? "N" : "N·m",
+                                    current.offset.head<2>().norm(), most_loaded),
                         {iteration, current_merit, "relative"});
     }
     ++iteration;
 
-    const Matrix6d tangent = hull.hydrostatic_stiffness + current.lines.stiffness;
-    const Eigen::FullPivLU<Matrix6d> lu(tangent);
+    // At the accepted pose: the lines' solutions are kept, an FE line only
+    // factorises its Jacobian for the exact stiffness.
+    if (!current.lines.has_stiffness) current.lines = evaluate_line_array(lines, current.pose);
+    const Eigen::FullPivLU<Matrix6d> lu(
+        equilibrium_tangent(hull, current.lines.stiffness, external_load, current.offset));
     if (!lu.isInvertible()) {
       throw SolverError(
           "static equilibrium: the hull has no stiffness in at least one DOF (no hydrostatic or "
           "line restoring, e.g. yaw without mooring lines); add lines or hydrostatics",
           {iteration, current_merit, "relative"});
     }
-    Vector6d step = lu.solve(current.residual);
+    Vector6d step = offset_increment_to_global(current.offset) * lu.solve(current.residual);
     const double translation = step.head<3>().norm();
     const double rotation = step.tail<3>().norm();
     double scale = 1.0;
@@ -107,7 +152,8 @@ EquilibriumResult solve_static_equilibrium(const HullStaticModel& hull,
       Eigen::Matrix3d rotation_step = Eigen::Matrix3d::Identity();
       if (angle > 0.0) rotation_step = Eigen::AngleAxisd(angle, step.tail<3>() / angle).toRotationMatrix();
       try {
-        Evaluation trial = evaluate(hull, lines, external_load, position, rotation_step * current.pose.rotation);
+        Evaluation trial = evaluate(hull, lines, external_load, position, rotation_step * current.pose.rotation,
+                                    LineArrayQuantities::force);
         if (merit(trial.residual, force_ref_N, moment_ref_Nm) < current_merit || halving == kMaxLineSearchHalvings) {
           current = std::move(trial);
           accepted = true;
@@ -125,6 +171,9 @@ EquilibriumResult solve_static_equilibrium(const HullStaticModel& hull,
       step *= 0.5;
     }
   }
+
+  if (options.stiffness_at_solution && !current.lines.has_stiffness)
+    current.lines = evaluate_line_array(lines, current.pose);
 
   EquilibriumResult result;
   result.offset = current.offset;

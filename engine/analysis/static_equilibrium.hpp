@@ -4,10 +4,14 @@
 // position where hydrostatics, gravity, the mean environmental loads and the
 // line forces balance.
 //
-// Newton's method on the 6 DOF with the analytic tangent K_hydro + K_lines
-// (line_array.hpp), a backtracking line search on a scaled residual, and
-// step limits; the attitude is updated by composing small global rotations,
-// so large yaw is exact.
+// Newton's method on the 6 DOF with the tangent K_hydro + K_lines (analytic,
+// line_array.hpp) + K_external (central differences of the mean
+// environmental load, which turns with the hull's yaw: without it Newton
+// converges only linearly, ≈ 1e-2 per iteration on the default FPS in its
+// current), a backtracking line search on a scaled residual, and step
+// limits; the attitude is updated by composing small global rotations, so
+// large yaw is exact. Trial poses solve the lines' forces only; their
+// stiffness is computed where a Newton step needs it.
 
 #include <functional>
 #include <memory>
@@ -38,6 +42,10 @@ struct EquilibriumOptions {
   double relative_tolerance = 1e-9;
   double max_translation_step_m = 25.0;  ///< per Newton step
   double max_rotation_step_rad = 0.05;   ///< per Newton step (≈ 2.9°)
+  /// EquilibriumResult::lines with the stiffness at the solution (false: the
+  /// forces only there, when the caller needs no K: the FE lines then skip a
+  /// factorisation each).
+  bool stiffness_at_solution = true;
 };
 
 struct EquilibriumResult {
@@ -58,6 +66,25 @@ EquilibriumResult solve_static_equilibrium(const HullStaticModel& hull,
                                            const ExternalLoad& external_load,
                                            const Vector6d& initial_offset = Vector6d::Zero(),
                                            const EquilibriumOptions& options = {});
+
+/// −d(external load)/d(offset) by central differences (steps 1 cm and 1e-4
+/// rad, as FiniteDifferenceSteps of the line array: truncation below 1e-8 of
+/// a load that varies over metres and degrees). Zero for an empty function.
+Matrix6d external_load_stiffness(const ExternalLoad& external_load, const Vector6d& offset);
+
+/// The equilibrium's Jacobian −dR/dq in its unknowns q = offset (x, y, z,
+/// roll, pitch, yaw) at `offset`: hydrostatics and the mean environmental
+/// load are functions of the angles, the line array's analytic K
+/// (`line_stiffness`) is per small global rotation ω = T(angles) d(angles)
+/// (euler_rate_to_global), so K_h + K_env + K_lines·diag(I, T). Without T the
+/// Newton converges linearly once the hull has turned (roll/pitch mixed by the
+/// yaw: a ratio of ≈ 0.2 per iteration at 12° of yaw).
+Matrix6d equilibrium_tangent(const HullStaticModel& hull, const Matrix6d& line_stiffness,
+                             const ExternalLoad& external_load, const Vector6d& offset);
+
+/// diag(I, T(angles)): an increment of the offset (translations, Euler
+/// angles) as translations and a small global rotation.
+Matrix6d offset_increment_to_global(const Vector6d& offset);
 
 /// Roll, pitch, yaw (rad) of a rotation matrix, R = Rz(yaw)·Ry(pitch)·Rx(roll).
 Eigen::Vector3d roll_pitch_yaw(const Eigen::Matrix3d& rotation);

@@ -67,6 +67,11 @@ class StaticLine {
   /// The force of the line on the hull alone (N, global), for finite
   /// differences: a line may skip its stiffness. Default: solve().force_g.
   virtual Eigen::Vector3d solve_force(const Eigen::Vector3d& attachment_g) { return solve(attachment_g).force_g; }
+  /// The force at `attachment_g` with a tangent stiffness from this or a
+  /// recent nearby solve (not necessarily at `attachment_g`): the line
+  /// linearized for a predictor, where an exact K is not worth a new
+  /// factorisation. Default: solve().
+  virtual LineEndResponse linearization(const Eigen::Vector3d& attachment_g) { return solve(attachment_g); }
   /// Solves the line at `attachment_g` and returns its whole state, with
   /// `points_per_segment` + 1 profile points on each segment (ends included).
   virtual LineState state(const Eigen::Vector3d& attachment_g, int points_per_segment) = 0;

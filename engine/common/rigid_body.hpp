@@ -21,6 +21,17 @@ inline Eigen::Matrix3d rotation_matrix(const Eigen::Vector3d& roll_pitch_yaw_rad
       .toRotationMatrix();
 }
 
+/// ω = T(angles) d(roll, pitch, yaw) for R = Rz(yaw)·Ry(pitch)·Rx(roll): the
+/// small global rotation of Euler-angle increments, columns Rz Ry e_x, Rz e_y,
+/// e_z (Fossen 2011, §2.2.1, in the global frame). Singular at pitch ±90°.
+inline Eigen::Matrix3d euler_rate_to_global(const Eigen::Vector3d& roll_pitch_yaw_rad) {
+  const double cp = std::cos(roll_pitch_yaw_rad(1)), sp = std::sin(roll_pitch_yaw_rad(1));
+  const double cy = std::cos(roll_pitch_yaw_rad(2)), sy = std::sin(roll_pitch_yaw_rad(2));
+  Eigen::Matrix3d t;
+  t << cy * cp, -sy, 0.0, sy * cp, cy, 0.0, -sp, 0.0, 1.0;
+  return t;
+}
+
 /// Global position of a body-frame point for a hull whose reference point sits
 /// at `reference_point_g` at rest and is displaced by `offset` (6 DOF, m and rad).
 inline Eigen::Vector3d body_point_to_global(const Eigen::Vector3d& reference_point_g, const Vector6d& offset,

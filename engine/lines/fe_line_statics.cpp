@@ -87,6 +87,7 @@ FeStaticsResult post_process(const Problem& p, const FeStaticsOptions& o, const 
     ++t.evaluations;
     if (auto k = condense_on_end_B(p, jac)) {
       r.end_B_stiffness_N_per_m = *k;
+      r.has_end_B_stiffness = true;
       r.tangent = std::move(tangent);  // at the converged state
     }
   } else if (t.valid) {
@@ -94,6 +95,21 @@ FeStaticsResult post_process(const Problem& p, const FeStaticsOptions& o, const 
     r.tangent = std::move(tangent);
   }
   return r;
+}
+
+/// The problem `solution` (a converged static solution of `model` in
+/// `environment`) was solved on: its ends, mesh and node arc lengths.
+Problem problem_of_solution(const FeLineModel& model, const FeEnvironment& environment,
+                            const FeStaticsResult& solution) {
+  if (solution.node_position_m.size() < 2) invalid("solution: not a static solution (no nodes)");
+  const FeLineEnds ends{solution.node_position_m.front(), solution.node_position_m.back()};
+  validate(model, environment, ends, FeStaticsOptions{});
+  Problem p = make_problem(model, environment, ends);
+  if (solution.state.size() != p.n_dofs)
+    invalid(
+        fmt::format("solution.state: needs {} entries (this model's mesh), got {}", p.n_dofs, solution.state.size()));
+  set_node_arc_lengths(p, solution.node_arc_length_m);
+  return p;
 }
 
 }  // namespace
@@ -235,6 +251,22 @@ FeStaticsResult solve_fe_line_statics(const FeLineModel& model, const FeEnvironm
   return r;
 }
 
+FeStaticsResult with_end_B_stiffness(const FeLineModel& model, const FeEnvironment& environment,
+                                     FeStaticsResult solution) {
+  if (solution.has_end_B_stiffness) return solution;
+  Problem p = problem_of_solution(model, environment, solution);
+  auto tangent = std::make_shared<FeLineTangent>();
+  Eigen::VectorXd g(p.n_dofs);
+  assemble(p, solution.state, g, &tangent->lu);
+  const std::optional<Eigen::Matrix3d> k = condense_on_end_B(p, tangent->lu);
+  if (!k) throw SolverError("FE line statics: the tangent at the solution is singular (a section without stiffness?)");
+  ++solution.jacobian_evaluations;
+  solution.end_B_stiffness_N_per_m = *k;
+  solution.has_end_B_stiffness = true;
+  solution.tangent = std::move(tangent);
+  return solution;
+}
+
 Eigen::Matrix3d fe_line_incremental_end_B_stiffness(const FeLineModel& model, const FeEnvironment& environment,
                                                     const FeStaticsResult& solution,
                                                     const std::vector<double>& incremental_EA_N) {
@@ -246,14 +278,7 @@ Eigen::Matrix3d fe_line_incremental_end_B_stiffness(const FeLineModel& model, co
     if (!(std::isfinite(incremental_EA_N[i]) && incremental_EA_N[i] > 0.0))
       invalid(fmt::format("incremental_EA_N[{}]: must be > 0 N, got {}", i, incremental_EA_N[i]));
   }
-  if (solution.node_position_m.size() < 2) invalid("solution: not a static solution (no nodes)");
-  const FeLineEnds ends{solution.node_position_m.front(), solution.node_position_m.back()};
-  validate(model, environment, ends, FeStaticsOptions{});
-  Problem p = make_problem(model, environment, ends);
-  if (solution.state.size() != p.n_dofs)
-    invalid(
-        fmt::format("solution.state: needs {} entries (this model's mesh), got {}", p.n_dofs, solution.state.size()));
-  set_node_arc_lengths(p, solution.node_arc_length_m);
+  Problem p = problem_of_solution(model, environment, solution);
   Eigen::VectorXd g(p.n_dofs);
   BandMatrix jac;
   assemble(p, solution.state, g, &jac);

@@ -211,6 +211,7 @@ struct FeStaticsResult {
   /// (static condensation of the Jacobian). The hull stiffness contribution
   /// is its negative.
   Eigen::Matrix3d end_B_stiffness_N_per_m = Eigen::Matrix3d::Zero();
+  bool has_end_B_stiffness = false;  ///< end_B_stiffness_N_per_m computed (FeStaticsOptions::compute_end_B_stiffness)
   /// Last contact point along the line from A (lift-off point, z = z_seabed);
   /// empty when nothing touches. With a penalty seabed it lies ≈ √(H/k)
   /// beyond the rigid-seabed touchdown point (H: horizontal tension).
@@ -244,6 +245,16 @@ inline void warm_start_from(FeStaticsOptions& options, const FeStaticsResult& pr
 /// field and value) and on non-convergence (iterations, residual in N, hint).
 FeStaticsResult solve_fe_line_statics(const FeLineModel& model, const FeEnvironment& environment,
                                       const FeLineEnds& ends, const FeStaticsOptions& options = {});
+
+/// `solution` (converged by solve_fe_line_statics on `model` in `environment`
+/// without compute_end_B_stiffness) completed with its end-B stiffness and
+/// the factorised tangent at its own state, bit for bit what the same solve
+/// with compute_end_B_stiffness returns: no Newton step, the state is kept
+/// (a caller that first needed only the force, then the stiffness at the
+/// same ends, gets the results of one solve with both). Throws SolverError
+/// when the tangent is singular.
+FeStaticsResult with_end_B_stiffness(const FeLineModel& model, const FeEnvironment& environment,
+                                     FeStaticsResult solution);
 
 /// d(end_B_force_N)/d(end_B_m) at `solution` (a static solution of `model` in
 /// `environment`) when the strain changes from that state are carried by

@@ -202,7 +202,8 @@ TEST(StaticCase, LoadTheMooringCannotHoldFailsNamingWhatAndHowFar) {
     run_static_case(oc4_with_current(30.0), {"current-case", std::nullopt, false});
     FAIL() << "expected SolverError";
   } catch (const engine::SolverError& error) {
-    // Which analysis, how far it got, which line stopped it, what to check.
+    // Which analysis, how far it got, which line stopped it (or carried the
+    // most where the search gave up), what to check.
     const std::string text = error.what();
     EXPECT_NE(text.find("static equilibrium"), std::string::npos) << text;
     EXPECT_NE(text.find("line 'L"), std::string::npos) << text;

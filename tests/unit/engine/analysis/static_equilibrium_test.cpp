@@ -99,6 +99,46 @@ TEST(StaticEquilibrium, DamagedLineMovesTheHullAwayAndLoadsTheNeighbour) {
   EXPECT_LT(damaged.residual.head<3>().norm(), kBalance * damaged.force_reference_N);
 }
 
+// A mean environmental load that turns with the hull (wind, current and drift
+// coefficients are tables in the relative heading): its stiffness belongs in
+// the Newton tangent, or the yaw converges only linearly, at the ratio of the
+// load's yaw stiffness to the mooring's. Here a weathervaning moment
+// M_z = M0 sin 2(β − ψ) with 2 M0 of the order of the 6 lines' yaw stiffness.
+TEST(StaticEquilibrium, LoadThatTurnsWithTheHullConvergesQuadratically) {
+  auto hull = test::oc4_hull_statics();
+  hull.rest_force(2) *= 2.0;  // six lines hang twice the OC4 mooring load
+  const auto lines = clustered_lines();
+  const double beta = 30.0 * std::numbers::pi / 180.0;
+  const double yaw_stiffness_Nm_per_rad = solve_static_equilibrium(hull, lines, nullptr).lines.stiffness(5, 5);
+  const double m0_Nm = 0.4 * yaw_stiffness_Nm_per_rad;
+  const ExternalLoad weathervaning = [&](const Vector6d& offset) {
+    Vector6d load = Vector6d::Zero();
+    load(0) = -2.0e5;
+    load(5) = m0_Nm * std::sin(2.0 * (beta - offset(5)));
+    return load;
+  };
+  // The central differences against the analytic dM_z/dψ = −2 M0 cos 2(β − ψ):
+  // truncation (1e-4 rad)² / 6 × 4 relative.
+  Vector6d at = Vector6d::Zero();
+  at(5) = 0.1;
+  EXPECT_NEAR(external_load_stiffness(weathervaning, at)(5, 5), 2.0 * m0_Nm * std::cos(2.0 * (beta - 0.1)),
+              1e-7 * m0_Nm);
+  const auto result = solve_static_equilibrium(hull, lines, weathervaning);
+  EXPECT_LT(result.residual.norm(), kBalance * result.force_reference_N * 40.868);
+  EXPECT_GT(result.offset(5), 0.15);  // turned 12.5° towards β
+  // From 1 m and 1° off the solution (inside the step caps), Newton's
+  // quadratic rate: 3 iterations measured (8 while the tangent left out the
+  // Euler-angle map T of the turned hull, a roll/pitch ratio of 0.2 per
+  // iteration). A tangent without the load's stiffness would contract the
+  // yaw error by 1 − (K + K_env)/K ≈ −0.66 per iteration: 40 iterations.
+  Vector6d start = result.offset;
+  start(0) += 1.0;
+  start(5) += std::numbers::pi / 180.0;
+  const auto again = solve_static_equilibrium(hull, lines, weathervaning, start);
+  EXPECT_LE(again.iterations, 4);
+  EXPECT_NEAR(again.offset(5), result.offset(5), 1e-8);
+}
+
 TEST(StaticEquilibrium, NoYawStiffnessIsReported) {
   std::vector<std::unique_ptr<StaticLine>> none;
   auto hull = test::oc4_hull_statics();

@@ -161,6 +161,36 @@ TEST(FeStatics, WarmStartReturnsTheSameEquilibriumAtOnce) {
   EXPECT_LT((again.end_B_force_N - first.end_B_force_N).norm(), kBalanceTolerance * first.end_B_force_N.norm());
 }
 
+// A caller that needs the force first and the end-B stiffness later at the
+// same ends (the hull's line search, then its Newton step) completes the
+// force-only solution instead of solving again: the same numbers, bit for bit,
+// as one solve with the stiffness, and the same warm start for the next solve.
+TEST(FeStatics, StiffnessCompletedAfterAForceOnlySolveIsTheSolveWithIt) {
+  FeEnvironment env = seabed(1e7);
+  env.current = {{-200.0, {0.0, 0.5, 0.0}}, {0.0, {0.0, 1.0, 0.0}}};
+  FeStaticsOptions force_only;
+  force_only.compute_end_B_stiffness = false;
+  const auto forces = solve_fe_line_statics(oc4_model(), env, kOc4Ends, force_only);
+  ASSERT_FALSE(forces.has_end_B_stiffness);
+  const auto completed = with_end_B_stiffness(oc4_model(), env, forces);
+  const auto both = solve_fe_line_statics(oc4_model(), env, kOc4Ends);
+  ASSERT_TRUE(both.has_end_B_stiffness);
+  EXPECT_TRUE(completed.has_end_B_stiffness);
+  EXPECT_EQ(completed.state, both.state);
+  EXPECT_EQ(completed.end_B_force_N, both.end_B_force_N);
+  EXPECT_EQ(completed.end_B_stiffness_N_per_m, both.end_B_stiffness_N_per_m);
+  EXPECT_EQ(completed.jacobian_evaluations, both.jacobian_evaluations);
+
+  const FeLineEnds moved{kOc4Ends.end_A_m, kOc4Ends.end_B_m + Eigen::Vector3d(3.0, 1.0, 0.0)};
+  FeStaticsOptions from_completed, from_both;
+  warm_start_from(from_completed, completed);
+  warm_start_from(from_both, both);
+  const auto next_completed = solve_fe_line_statics(oc4_model(), env, moved, from_completed);
+  const auto next_both = solve_fe_line_statics(oc4_model(), env, moved, from_both);
+  EXPECT_EQ(next_completed.end_B_force_N, next_both.end_B_force_N);
+  EXPECT_EQ(next_completed.iterations, next_both.iterations);
+}
+
 template <typename F>
 std::string error_of(F&& f) {
   try {
