@@ -125,6 +125,7 @@ PretensionProblem::PretensionProblem(const ValidatedProject& validated, const Op
     options.model = stage.soz.model == StageSozModel::fe ? SozModel::fe : SozModel::catenary;
     options.step_deg = stage.soz.step_deg;
     options.threads = request.threads;
+    options.zones_only = true;  // the scenarios below are the cases' equilibria
     const SozResult soz = run_soz(validated, options);
     zone_wall_s_ = start.seconds();
     // The zone each case is checked against: its own (current, condition),

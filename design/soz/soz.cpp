@@ -478,7 +478,7 @@ void validate_soz_options(const Project& project, const SozOptions& o) {
       throw request_error(project, "duration_s", fmt::format("must be > 0 s, got {} s", o.extreme->duration_s),
                           "soz_duration_positive");
     }
-    if (!o.offset_check && !o.load_case) {
+    if ((!o.offset_check || o.zones_only) && !o.load_case) {
       throw request_error(project, "extreme",
                           "the extreme offsets are part of the offset check, which this request turns off",
                           "soz_extreme_needs_check");

@@ -114,6 +114,10 @@ struct SozOptions {
   /// the still-water zone). False: every case against the still-water zone.
   bool zone_per_current = true;
   bool offset_check = true;  ///< run the load cases' static equilibria and check them
+  /// With offset_check: the zones of the cases' currents and design
+  /// conditions only, without the cases' equilibria and checks (the
+  /// pretension optimizer solves the cases itself).
+  bool zones_only = false;
   /// Also the extreme offsets: the enhanced S-C time-domain analysis of every
   /// checked load case (soz_check.cpp). None: static (mean) offsets only.
   std::optional<SozExtremeOptions> extreme;

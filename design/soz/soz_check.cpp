@@ -319,8 +319,11 @@ SozResult run_soz(const ValidatedProject& validated, const SozOptions& options) 
   // --case) the mean heave/rotations the zone is computed at.
   std::vector<StaticCaseResult> cases;
   RestSolutionCache rest_solutions;  // cases sharing an environment solve its lines once
-  for (const std::string& name : case_names)
-    cases.push_back(run_static_case(validated, {name, std::nullopt, false}, &rest_solutions));
+  const bool zones_only = options.zones_only && !options.load_case;
+  if (!zones_only) {
+    for (const std::string& name : case_names)
+      cases.push_back(run_static_case(validated, {name, std::nullopt, false}, &rest_solutions));
+  }
   // Extreme offsets: one enhanced S-C storm per case, the cases in parallel
   // (each analysis is a function of its inputs; results go to their slots).
   std::vector<DynamicAnalysisResult> runs(options.extreme ? case_names.size() : 0);
@@ -366,7 +369,7 @@ SozResult run_soz(const ValidatedProject& validated, const SozOptions& options) 
   const bool zone_per_current = !designs.empty() && !options.load_case && options.zone_per_current;
   const bool ignore_current = options.model == SozModel::catenary;
   std::vector<SozZone> zones;
-  std::vector<int> zone_of_case(cases.size(), -1);
+  std::vector<int> zone_of_case(case_names.size(), -1);
   if (zone_per_current) zone_of_case = zones_of_cases(project, case_names, options.condition, ignore_current, zones);
   const auto zone_count = static_cast<double>(zones.size() + 1);  // the result's own zone is zone 0
   const auto zone_options = [&](std::size_t zone) {

@@ -143,5 +143,28 @@ TEST(SozCheck, EachCaseIsCheckedAgainstTheZoneOfItsOwnCurrent) {
   for (const OffsetCheck& check : still.offset_checks) EXPECT_EQ(check.zone, "still-water");
 }
 
+// The pretension optimizer solves the cases itself and needs their zones
+// only: zones_only gives the same zones, bit for bit, without the cases'
+// equilibria and checks.
+TEST(SozCheck, ZonesOnlyGivesTheCasesZonesWithoutTheirEquilibria) {
+  const ValidatedProject p = two_risers_three_cases();
+  SozOptions o;
+  o.step_deg = 45.0;
+  const SozResult checked = run_soz(p, o);
+  o.zones_only = true;
+  const SozResult zones = run_soz(p, o);
+  EXPECT_TRUE(zones.offset_checks.empty());
+  ASSERT_EQ(zones.zones.size(), checked.zones.size());
+  for (std::size_t k = 0; k < zones.zones.size(); ++k) {
+    EXPECT_EQ(zones.zones[k].name, checked.zones[k].name);
+    EXPECT_EQ(zones.zones[k].cases, checked.zones[k].cases);
+    EXPECT_EQ(zones.zones[k].platform.allowable_offset_m, checked.zones[k].platform.allowable_offset_m);
+  }
+  EXPECT_EQ(zones.platform.allowable_offset_m, checked.platform.allowable_offset_m);
+  // The extreme offsets are part of the check: asking for them too is an error.
+  o.extreme = SozExtremeOptions{600.0, 1};
+  EXPECT_THROW(run_soz(p, o), InputError);
+}
+
 }  // namespace
 }  // namespace spiral::design
