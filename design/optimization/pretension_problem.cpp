@@ -301,6 +301,13 @@ ProblemEvaluation PretensionProblem::evaluate(const Eigen::VectorXd& payouts_m, 
     (intact_of[s] < scenarios_.size() ? then : first).push_back(s);
   }
   evaluate_each(first);
+  // The intact scenarios' riser stiffness once, for the damaged scenarios'
+  // predictors (each would otherwise factorise every riser again).
+  std::vector<std::size_t> sources;
+  for (const std::size_t s : then)
+    if (std::find(sources.begin(), sources.end(), intact_of[s]) == sources.end()) sources.push_back(intact_of[s]);
+  engine::parallel_for(static_cast<int>(sources.size()), threads_,
+                       [&](int k) { models_[sources[static_cast<std::size_t>(k)]].complete_expensive_lines(); });
   for (const std::size_t s : then) models_[s].start_from(models_[intact_of[s]]);
   evaluate_each(then);
   models_started_ = true;

@@ -291,6 +291,15 @@ void ScenarioModel::start_from(const ScenarioModel& source) {
   m.last_pose = from.last_pose;
 }
 
+void ScenarioModel::complete_expensive_lines() {
+  Impl& m = *impl_;
+  if (!m.last_pose) throw std::logic_error("ScenarioModel::complete_expensive_lines: not evaluated");
+  for (std::size_t k = m.paid.size(); k < m.array.lines.size(); ++k) {
+    engine::StaticLine& line = *m.array.lines[k];
+    if (line.expensive()) line.solve(m.last_pose->reference_point_g + m.last_pose->rotation * line.attachment_b());
+  }
+}
+
 void ScenarioModel::linearize_expensive_lines() {
   Impl& m = *impl_;
   if (!m.last_pose) evaluate(Eigen::VectorXd::Zero(static_cast<Eigen::Index>(m.groups.size())), false);

@@ -92,6 +92,10 @@ class ScenarioModel {
   /// offset and its risers' FE solutions. `source` must be in the same
   /// environment (same risers, same current), already evaluated.
   void start_from(const ScenarioModel& source);
+  /// Gives the risers' last solutions their end stiffness (no new solve:
+  /// engine::with_end_B_stiffness), so that the scenarios that start_from
+  /// this one linearize them without a factorisation each.
+  void complete_expensive_lines();
 
   /// Replaces every expensive line that is not a variable (the FE risers) by
   /// its linearization about where the last evaluation left it
