@@ -38,19 +38,22 @@ FeStaticLine::FeStaticLine(std::string name, Eigen::Vector3d end_A_g, Eigen::Vec
       environment_(std::move(environment)),
       options_(std::move(options)) {}
 
+const FeStaticsResult& FeStaticLine::keep(const Eigen::Vector3d& attachment_g, FeStaticsResult solution) {
+  if (solution.has_end_B_stiffness) recent_stiffness_ = solution.end_B_stiffness_N_per_m;
+  last_ = std::make_shared<const FeStaticsResult>(std::move(solution));
+  last_attachment_g_ = attachment_g;
+  warm_ = last_;
+  return *last_;
+}
+
 const FeStaticsResult& FeStaticLine::solve_at(const Eigen::Vector3d& attachment_g, bool stiffness) {
   if (last_ && attachment_g == last_attachment_g_) {
-    if (stiffness && !last_->has_end_B_stiffness) {
-      try {
-        last_ = with_end_B_stiffness(model_, environment_, std::move(*last_));
-      } catch (const SolverError& error) {
-        last_.reset();
-        throw SolverError(fmt::format("line '{}': {}", name_, error.what()), error.diagnostics());
-      }
-      recent_stiffness_ = last_->end_B_stiffness_N_per_m;
-      warm_ = std::make_shared<const FeStaticsResult>(*last_);
+    if (!stiffness || last_->has_end_B_stiffness) return *last_;
+    try {
+      return keep(attachment_g, with_end_B_stiffness(model_, environment_, *last_));
+    } catch (const SolverError& error) {
+      throw SolverError(fmt::format("line '{}': {}", name_, error.what()), error.diagnostics());
     }
-    return *last_;
   }
   // A failed trial (e.g. a hull line-search step too far) leaves the warm
   // start at the last converged solution, not at a cold start.
@@ -59,14 +62,10 @@ const FeStaticsResult& FeStaticLine::solve_at(const Eigen::Vector3d& attachment_
   if (warm_) warm_start_from(options, *warm_);
   last_.reset();
   try {
-    last_ = solve_fe_line_statics(model_, environment_, {end_A_g_, attachment_g}, options);
+    return keep(attachment_g, solve_fe_line_statics(model_, environment_, {end_A_g_, attachment_g}, options));
   } catch (const SolverError& error) {
     throw SolverError(fmt::format("line '{}': {}", name_, error.what()), error.diagnostics());
   }
-  last_attachment_g_ = attachment_g;
-  if (last_->has_end_B_stiffness) recent_stiffness_ = last_->end_B_stiffness_N_per_m;
-  warm_ = std::make_shared<const FeStaticsResult>(*last_);
-  return *last_;
 }
 
 void FeStaticLine::adopt(const Eigen::Vector3d& attachment_g, FeStaticsResult solution) {
@@ -74,10 +73,7 @@ void FeStaticLine::adopt(const Eigen::Vector3d& attachment_g, FeStaticsResult so
     throw std::invalid_argument(fmt::format("line '{}': adopted solution has {} nodes, the model {}", name_,
                                             solution.node_arc_length_m.size(), fe_line_mesh(model_).size()));
   }
-  last_ = std::move(solution);
-  last_attachment_g_ = attachment_g;
-  if (last_->has_end_B_stiffness) recent_stiffness_ = last_->end_B_stiffness_N_per_m;
-  warm_ = std::make_shared<const FeStaticsResult>(*last_);
+  keep(attachment_g, std::move(solution));
 }
 
 LineEndResponse FeStaticLine::solve(const Eigen::Vector3d& attachment_g) {

@@ -50,7 +50,7 @@ class FeStaticLine final : public StaticLine {
   }
   bool expensive() const override { return true; }
   /// The full FE solution of the last solve (curvature, bending moment per node).
-  const std::optional<FeStaticsResult>& last_result() const { return last_; }
+  const FeStaticsResult* last_result() const { return last_.get(); }
   const FeLineModel& model() const { return model_; }
   const Eigen::Vector3d& end_A_g() const { return end_A_g_; }
 
@@ -64,11 +64,15 @@ class FeStaticLine final : public StaticLine {
   /// Solves at attachment_g unless last_ already holds that solution (with
   /// the stiffness if `stiffness`).
   const FeStaticsResult& solve_at(const Eigen::Vector3d& attachment_g, bool stiffness);
+  /// Makes `solution` (converged at `attachment_g`) the last solve and the warm start.
+  const FeStaticsResult& keep(const Eigen::Vector3d& attachment_g, FeStaticsResult solution);
 
-  std::optional<FeStaticsResult> last_;  ///< of the last solve; empty after a failure
+  std::shared_ptr<const FeStaticsResult> last_;  ///< of the last solve; empty after a failure
   Eigen::Vector3d last_attachment_g_ = Eigen::Vector3d::Zero();
   std::optional<Eigen::Matrix3d> recent_stiffness_;  ///< end-B stiffness of the last solve that computed one
-  std::shared_ptr<const FeStaticsResult> warm_;      ///< last converged solve (the warm start)
+  /// The last converged solve (the warm start): last_ itself, or kept
+  /// through a failed solve.
+  std::shared_ptr<const FeStaticsResult> warm_;
 };
 
 }  // namespace spiral::engine
