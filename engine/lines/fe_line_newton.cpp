@@ -49,8 +49,7 @@ NewtonOutcome newton(const Problem& p, const FeStaticsOptions& o, Eigen::VectorX
   NewtonOutcome out;
   int short_steps = 0;
   Eigen::VectorXd g(p.n_dofs), g_trial(p.n_dofs), q_trial(p.n_dofs), dq(p.n_dofs);
-  if (t.lu.size() != p.n_dofs) t.valid = false;
-  BandMatrix& jac = t.lu;
+  if (t.factor().size() != p.n_dofs) t.valid = false;
   // Step limits: nodes move at most a tenth of the line length, slopes change
   // by at most 0.5 per step (keeps |r'| away from 0, where the strain measure
   // and the tangent are undefined).
@@ -96,7 +95,7 @@ NewtonOutcome newton(const Problem& p, const FeStaticsOptions& o, Eigen::VectorX
       polishing = true;
       // Chord step with the kept factorisation.
       newton_rhs(g, dq);
-      jac.solve_in_place(dq);
+      t.factor().solve_in_place(dq);
       if (dq.allFinite() && step_limit(dq) >= 1.0) {
         q_trial = q + dq;
         if (assemble(p, q_trial, g_trial, nullptr) && merit(p, g_trial) <= kChordContraction * kChordContraction * m0) {
@@ -111,6 +110,7 @@ NewtonOutcome newton(const Problem& p, const FeStaticsOptions& o, Eigen::VectorX
       polishing = false;
     }
     if (out.converged) return out;  // polished as far as chord steps go
+    BandMatrix& jac = t.own();
     if (!assemble(p, q, g, &jac)) return out;
     ++t.evaluations;
     for (int i = 0; i < p.n_dofs; ++i) {

@@ -5,6 +5,7 @@
 // driver (fe_line_newton) and the entry point (fe_line_statics).
 
 #include <array>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -73,7 +74,17 @@ struct Problem {
 /// re-solves, and seeded from a warm start (modified Newton, see
 /// fe_line_newton.cpp). valid: lu holds a factorisation usable for a step.
 struct Tangent {
+  /// The factorisation chord steps use: the warm start's (borrowed, not
+  /// copied: a band LU is most of a solve's memory traffic) until the solve
+  /// factorises a Jacobian of its own.
+  const BandMatrix& factor() const { return borrowed ? borrowed->lu : lu; }
+  /// The matrix to assemble and factorise a fresh Jacobian into.
+  BandMatrix& own() {
+    borrowed.reset();
+    return lu;
+  }
   BandMatrix lu;
+  std::shared_ptr<const FeLineTangent> borrowed;
   bool valid = false;
   /// Chord steps allowed: in warm-started solves only. A cold solve goes
   /// through continuations (seabed stiffness, current, axial stiffness)

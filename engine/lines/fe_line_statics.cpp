@@ -90,6 +90,8 @@ FeStaticsResult post_process(const Problem& p, const FeStaticsOptions& o, const 
       r.has_end_B_stiffness = true;
       r.tangent = std::move(tangent);  // at the converged state
     }
+  } else if (t.valid && t.borrowed) {
+    r.tangent = t.borrowed;  // chord steps only: the warm start's, shared
   } else if (t.valid) {
     tangent->lu = std::move(t.lu);  // of an iterate near the converged state
     r.tangent = std::move(tangent);
@@ -129,7 +131,7 @@ FeStaticsResult solve_fe_line_statics(const FeLineModel& model, const FeEnvironm
   Tangent t;
   t.chord_steps = options.warm_start_state.has_value();
   if (options.warm_start_state && options.warm_start_tangent && options.warm_start_tangent->lu.size() == p.n_dofs) {
-    t.lu = options.warm_start_tangent->lu;
+    t.borrowed = options.warm_start_tangent;
     t.valid = true;
   }
   NewtonOutcome last;
