@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include <Eigen/Geometry>
 #include <Eigen/LU>
 #include <fmt/format.h>
 
 #include "engine/common/rigid_body.hpp"
+#include "engine/common/table_range_error.hpp"
 
 namespace spiral::engine {
 
@@ -50,12 +52,30 @@ double merit(const Vector6d& residual, double force_ref, double moment_ref) {
 Matrix6d external_load_stiffness(const ExternalLoad& external_load, const Vector6d& offset) {
   Matrix6d k = Matrix6d::Zero();
   if (!external_load) return k;
+  // The load at `offset` itself is defined; a step may leave its table (a
+  // relative heading at the edge of a coefficient table): then a one-sided
+  // difference on the side that stays in it (first order, h/2 of curvature).
+  const auto load_at = [&](const Vector6d& at) -> std::optional<Vector6d> {
+    try {
+      return external_load(at);
+    } catch (const TableRangeError&) {
+      return std::nullopt;
+    }
+  };
+  std::optional<Vector6d> centre;
   for (int j = 0; j < 6; ++j) {
     const double h = j < 3 ? 1e-2 : 1e-4;
     Vector6d plus = offset, minus = offset;
     plus(j) += h;
     minus(j) -= h;
-    k.col(j) = -(external_load(plus) - external_load(minus)) / (2.0 * h);
+    const std::optional<Vector6d> up = load_at(plus), down = load_at(minus);
+    if (up && down) {
+      k.col(j) = -(*up - *down) / (2.0 * h);
+      continue;
+    }
+    if (!centre) centre = external_load(offset);
+    if (up) k.col(j) = -(*up - *centre) / h;
+    if (down) k.col(j) = -(*centre - *down) / h;
   }
   return k;
 }

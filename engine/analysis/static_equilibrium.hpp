@@ -70,6 +70,9 @@ EquilibriumResult solve_static_equilibrium(const HullStaticModel& hull,
 /// −d(external load)/d(offset) by central differences (steps 1 cm and 1e-4
 /// rad, as FiniteDifferenceSteps of the line array: truncation below 1e-8 of
 /// a load that varies over metres and degrees). Zero for an empty function.
+/// Where a step leaves the load's table (TableRangeError, e.g. a relative
+/// heading at the edge of a coefficient table), a one-sided difference; a
+/// column whose both steps leave it is zero.
 Matrix6d external_load_stiffness(const ExternalLoad& external_load, const Vector6d& offset);
 
 /// The equilibrium's Jacobian −dR/dq in its unknowns q = offset (x, y, z,

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "engine/analysis/static_equilibrium.hpp"
+#include "engine/common/table_range_error.hpp"
 #include "support/oc4_mooring.hpp"
 
 namespace spiral::engine {
@@ -137,6 +138,28 @@ TEST(StaticEquilibrium, LoadThatTurnsWithTheHullConvergesQuadratically) {
   const auto again = solve_static_equilibrium(hull, lines, weathervaning, start);
   EXPECT_LE(again.iterations, 4);
   EXPECT_NEAR(again.offset(5), result.offset(5), 1e-8);
+}
+
+// A coefficient table ends at some relative heading: at a hull yaw just
+// inside its edge the tangent's central difference would step off it; the
+// one-sided difference on the inside stands in (first order: h/2 of the
+// second derivative).
+TEST(StaticEquilibrium, LoadStiffnessAtTheEdgeOfItsTableIsOneSided) {
+  constexpr double kEdge_rad = 0.2, kM0_Nm = 1e7;
+  const ExternalLoad table = [&](const Vector6d& offset) {
+    if (offset(5) > kEdge_rad) throw TableRangeError("relative heading outside the table");
+    Vector6d load = Vector6d::Zero();
+    load(5) = kM0_Nm * std::sin(2.0 * offset(5));
+    return load;
+  };
+  Vector6d at = Vector6d::Zero();
+  at(5) = kEdge_rad - 5e-5;  // the +1e-4 rad step leaves the table
+  const double analytic = -2.0 * kM0_Nm * std::cos(2.0 * at(5));
+  const double second = 4.0 * kM0_Nm * std::sin(2.0 * at(5));  // |d²M/dψ²|
+  EXPECT_NEAR(external_load_stiffness(table, at)(5, 5), analytic, 0.5e-4 * second + 1e-9 * kM0_Nm);
+  EXPECT_THROW(table(at + Vector6d::Unit(5) * 1e-4), TableRangeError);
+  at(5) = 0.1;  // inside: central
+  EXPECT_NEAR(external_load_stiffness(table, at)(5, 5), -2.0 * kM0_Nm * std::cos(0.2), 1e-7 * kM0_Nm);
 }
 
 TEST(StaticEquilibrium, NoYawStiffnessIsReported) {
