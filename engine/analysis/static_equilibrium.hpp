@@ -4,11 +4,13 @@
 // position where hydrostatics, gravity, the mean environmental loads and the
 // line forces balance.
 //
-// Newton's method on the 6 DOF with the tangent K_hydro + K_lines (analytic,
-// line_array.hpp) + K_external (central differences of the mean
-// environmental load, which turns with the hull's yaw: without it Newton
+// Newton's method on the 6 DOF (offset with roll, pitch, yaw) with the
+// tangent K_hydro + K_external + K_lines·diag(I, T) (equilibrium_tangent):
+// K_lines analytic per small global rotation (line_array.hpp), mapped to the
+// Euler angles by T; K_external by central differences of the mean
+// environmental load, which turns with the hull's yaw (without it Newton
 // converges only linearly, ≈ 1e-2 per iteration on the default FPS in its
-// current), a backtracking line search on a scaled residual, and step
+// current). A backtracking line search on a scaled residual, and step
 // limits; the attitude is updated by composing small global rotations, so
 // large yaw is exact. Trial poses solve the lines' forces only; their
 // stiffness is computed where a Newton step needs it.
