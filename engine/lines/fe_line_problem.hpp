@@ -72,7 +72,7 @@ struct Problem {
 /// The factorised Jacobian the Newton iterations step with (workspace of one
 /// solve): kept across iterations, continuation stages and touchdown
 /// re-solves, and seeded from a warm start (modified Newton, see
-/// fe_line_newton.cpp). valid: lu holds a factorisation usable for a step.
+/// fe_line_newton.cpp). valid: factor() is a factorisation usable for a step.
 struct Tangent {
   /// The factorisation chord steps use: the warm start's (borrowed, not
   /// copied: a band LU is most of a solve's memory traffic) until the solve
