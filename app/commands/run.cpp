@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <set>
 #include <string>
 
 #include <fmt/format.h>
@@ -67,6 +68,7 @@ class RunCommand : public Command {
     if (cluster) fmt::print(stderr, "spiral run on {} MPI ranks\n", cluster->size());
     const report::ReportInfo info = report_info(project_file_);
     std::vector<std::string> written;
+    std::set<std::string> reported_stages;
     const auto stage_done = [&](const design::StageRun& stage) {
       if (!stage.completed) return;  // nothing to report; the summary says why
       const design::ValidatedProject& vp = *stage.project;
@@ -79,7 +81,12 @@ class RunCommand : public Command {
         document = report::intermediate_stage_report(vp, *stage.intermediate, stage_info);
       else
         document = report::advanced_stage_report(vp, *stage.advanced, stage_info);
-      const report::WrittenReport report = report::write_report(document, folder / stage.stage);
+      // A stage that runs again in a feedback iteration keeps the earlier
+      // iteration's report beside its own.
+      const std::string subfolder = reported_stages.insert(stage.stage).second
+                                        ? stage.stage
+                                        : fmt::format("{}-iteration-{}", stage.stage, stage.iteration);
+      const report::WrittenReport report = report::write_report(document, folder / subfolder);
       written.push_back(fmt::format("{} (iteration {}): {}", stage.stage, stage.iteration, report.pdf.string()));
     };
     const design::SpiralRunResult result = design::run_spiral(project_file_, options, stage_done);

@@ -384,7 +384,9 @@ StageRun run_advanced(const RunContext& ctx, const Iteration& it, const Intermed
 }
 
 /// Why the preliminary stage asks for the optimizer; empty when it does not.
-std::string feedback_reason(const Stage* settings, const StaticStageResults& r) {
+/// The project's request (stages[].optimize) is met by one optimization:
+/// after it (`request_met`) only failing checks make another iteration.
+std::string feedback_reason(const Stage* settings, const StaticStageResults& r, bool request_met) {
   int code = 0, limit = 0, zone = 0;
   for (const CaseCheck& c : r.checks) {
     code += c.lines_pass ? 0 : 1;
@@ -399,7 +401,8 @@ std::string feedback_reason(const Stage* settings, const StaticStageResults& r) 
     parts.push_back(fmt::format("the dynamic tension of {} fails", r.dynamics->case_name));
   if (r.dynamics && r.dynamics->extreme_offset && !r.dynamics->extreme_offset->passes)
     parts.push_back(fmt::format("the extreme offset of {} leaves the SOZ", r.dynamics->case_name));
-  if (parts.empty() && settings && settings->optimize) parts.push_back("the project asks (stages[].optimize)");
+  if (parts.empty() && settings && settings->optimize && !request_met)
+    parts.push_back("the project asks (stages[].optimize)");
   std::string reason;
   for (const std::string& p : parts) reason += (reason.empty() ? "" : "; ") + p;
   return reason;
@@ -685,12 +688,20 @@ SpiralRunResult run_spiral(const std::filesystem::path& project_file, const Spir
       if (name == "preliminary") {
         const Stage* settings = stage_settings(it.project->project, name);
         const int max_iterations = settings ? settings->max_iterations : Stage{}.max_iterations;
-        std::optional<std::pair<int, double>> previous;
+        // The iteration nearest to passing so far: a feedback iteration
+        // that is not nearer ends the feedback, and the spiral goes on with it.
+        struct Nearest {
+          Iteration iteration;
+          std::pair<int, double> distance;
+          std::vector<std::string> riser_findings;
+        };
+        std::optional<Nearest> nearest;
         while (true) {
           StageRun stage = run_preliminary(ctx, it);
           const bool completed = stage.completed;
-          const std::string reason =
-              completed ? feedback_reason(stage_settings(it.project->project, name), *stage.preliminary) : "";
+          const std::string reason = completed ? feedback_reason(stage_settings(it.project->project, name),
+                                                                 *stage.preliminary, !result.feedback.empty())
+                                               : "";
           const std::pair<int, double> distance =
               completed ? feedback_distance(*stage.preliminary) : std::pair<int, double>{0, 0.0};
           std::vector<std::string> risers =
@@ -700,8 +711,6 @@ SpiralRunResult run_spiral(const std::filesystem::path& project_file, const Spir
             go_on = false;
             break;
           }
-          const bool progress = !previous || distance < *previous;
-          previous = distance;
           if (!reason.empty() && !options.feedback) {
             result.findings.push_back(
                 fmt::format("iteration {} fails ({}); no feedback was asked for: the stages run the project as given",
@@ -709,15 +718,21 @@ SpiralRunResult run_spiral(const std::filesystem::path& project_file, const Spir
             for (std::string& f : risers) result.findings.push_back(std::move(f));
             break;
           }
-          if (reason.empty() || !progress) {
-            if (!progress)
-              result.findings.push_back(fmt::format(
-                  "iteration {}: the optimizer's payouts did not bring the failing checks closer ({} failing, worst "
-                  "{:.3f}); the spiral goes on with this mooring",
-                  it.number, distance.first, distance.second));
+          if (reason.empty()) {
             for (std::string& f : risers) result.findings.push_back(std::move(f));
             break;
           }
+          if (nearest && !(distance < nearest->distance)) {
+            result.findings.push_back(fmt::format(
+                "iteration {}: the optimizer's payouts did not bring the failing checks closer ({} failing, worst "
+                "{:.3f}; iteration {}: {} failing, worst {:.3f}); the spiral goes on with iteration {}",
+                it.number, distance.first, distance.second, nearest->iteration.number, nearest->distance.first,
+                nearest->distance.second, nearest->iteration.number));
+            it = std::move(nearest->iteration);
+            for (std::string& f : nearest->riser_findings) result.findings.push_back(std::move(f));
+            break;
+          }
+          nearest = Nearest{it, distance, risers};
           if (it.number >= max_iterations) {
             result.findings.push_back(
                 fmt::format("iteration {} still fails ({}) after {} iteration(s), the stage's max_iterations",

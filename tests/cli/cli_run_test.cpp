@@ -204,6 +204,11 @@ TEST(CliRun, TheSummaryReportShowsTheFeedbackIterations) {
   EXPECT_TRUE(std::filesystem::exists(out / "iterations" / "iteration-2.yaml"));
   // The written iteration is a valid project (its data found from the original folder).
   EXPECT_NE(read_text(out / "iterations" / "iteration-2.yaml").find("spiral run iteration 2"), std::string::npos);
+  // Each iteration's stage report is kept: the second does not overwrite the first.
+  EXPECT_TRUE(std::filesystem::exists(out / "preliminary" / "report.pdf"));
+  EXPECT_TRUE(std::filesystem::exists(out / "preliminary-iteration-2" / "report.pdf"));
+  EXPECT_NE(r.out.find("preliminary (iteration 2): " + (out / "preliminary-iteration-2").string()), std::string::npos)
+      << r.out;
 }
 
 // The same feedback on a variation file whose mooring is its base's: the

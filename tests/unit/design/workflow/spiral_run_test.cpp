@@ -226,6 +226,29 @@ TEST(SpiralRun, FeedbackOptimizesTheFailingOffsetAndTheNextIterationPasses) {
   EXPECT_EQ(again.stages[1].model_hash, r.stages[1].model_hash);
 }
 
+TEST(SpiralRun, AnOptimizationTheProjectAsksForRunsOnceOnAPassingDesign) {
+  // OC4 passes its preliminary checks as given; stages[].optimize asks for
+  // the optimizer anyway (max SOZ margin). One optimization, one more
+  // iteration that passes, and no third: the request is met, nothing fails.
+  const auto project = oc4_variant("asked", "  - {name: preliminary}", "  - {name: preliminary, optimize: true}");
+  SpiralRunOptions options;
+  options.out_folder = project.parent_path() / "out";
+  options.until = "preliminary";
+  const SpiralRunResult r = run_spiral(project, options);
+  ASSERT_EQ(r.stages.size(), 2u);
+  EXPECT_TRUE(r.stages[0].pass) << r.stages[0].governing;
+  EXPECT_TRUE(r.stages[1].pass) << r.stages[1].governing;
+  EXPECT_EQ(r.stages[1].iteration, 2);
+  ASSERT_EQ(r.feedback.size(), 1u);
+  EXPECT_NE(r.feedback[0].reason.find("the project asks"), std::string::npos) << r.feedback[0].reason;
+  EXPECT_TRUE(r.feedback[0].applied);
+  ASSERT_TRUE(r.feedback[0].optimization);
+  // The optimizer improved what it was asked for.
+  EXPECT_LT(r.feedback[0].optimization->objective_best, r.feedback[0].optimization->objective_start);
+  for (const std::string& f : r.findings) EXPECT_EQ(f.find("did not bring"), std::string::npos) << f;
+  EXPECT_TRUE(r.pass);
+}
+
 TEST(SpiralRun, EveryStormOfACaseUsesItsSeed) {
   const auto project = oc4_variant("seed", "{name: intact-raft-jonswap, environment: raft-jonswap}",
                                    "{name: intact-raft-jonswap, environment: raft-jonswap, seed: 3}");
