@@ -2,8 +2,11 @@
 
 #include <fmt/format.h>
 
+#include <numbers>
+
 #include "design/project/project_validation.hpp"
 #include "engine/environment/wind.hpp"
+#include "engine/hull/mean_drift_headings.hpp"
 #include "engine/hull/mean_environmental_loads.hpp"
 #include "engine/hull/wamit_12d.hpp"
 
@@ -17,7 +20,10 @@ engine::CoefficientTable table_of(const HullLoadCoefficients& c) {
 
 }  // namespace
 
-engine::MeanDriftTable drift_table_of(const Project& project, const MeanDrift& drift) {
+namespace {
+
+/// The data as given: the .12d file's diagonal or the project's table.
+engine::MeanDriftTable drift_data_of(const Project& project, const MeanDrift& drift) {
   if (const auto* file = std::get_if<MeanDriftFile>(&drift)) {
     return engine::read_wamit_12d_mean_drift(file->file, project.site.water_density_kg_per_m3,
                                              project.site.gravity_m_per_s2, file->ulen_m, file->period_scale);
@@ -41,6 +47,21 @@ engine::MeanDriftTable drift_table_of(const Project& project, const MeanDrift& d
     table.coefficient[static_cast<std::size_t>(dof)] = Eigen::MatrixXd::Zero(
         static_cast<Eigen::Index>(t.frequencies_rad_per_s.size()), static_cast<Eigen::Index>(t.headings_rad.size()));
   }
+  return table;
+}
+
+}  // namespace
+
+engine::MeanDriftTable drift_table_of(const Project& project, const MeanDrift& drift) {
+  const MeanDriftHeadings& rule = project.hull.mean_drift_headings;
+  engine::MeanDriftTable table = drift_data_of(project, drift);
+  try {
+    table = engine::with_symmetry_images(table, {rule.symmetry_rotations, rule.symmetry_mirror_xz});
+  } catch (const std::invalid_argument& e) {
+    throw InputError({make_issue(project, "hull.mean_drift.symmetry", "mean_drift_symmetry", e.what())});
+  }
+  if (rule.wave_frame_fill_max_span_rad)
+    table = engine::filled_in_wave_frame(table, {.max_span_rad = *rule.wave_frame_fill_max_span_rad});
   return table;
 }
 
@@ -114,6 +135,19 @@ MeanEnvironmentLoad mean_environment_load(const Project& project, const Environm
         input.spreading = engine::DirectionalSpreading{engine::SpreadingForm::cos_2s, *environment.waves->spreading_s};
       }
       drift_input = input;
+      // The heading rule is the project's choice; every result it enters says so.
+      const MeanDriftHeadings& rule = hull.mean_drift_headings;
+      if (rule.symmetry_rotations > 1 || rule.symmetry_mirror_xz) {
+        result.notes.push_back(fmt::format(
+            "mean drift: the data's headings extended by the hull's {}-fold symmetry{} (hull.mean_drift.symmetry)",
+            rule.symmetry_rotations, rule.symmetry_mirror_xz ? " with the x-z plane as a mirror" : ""));
+      }
+      if (rule.wave_frame_fill_max_span_rad) {
+        result.notes.push_back(
+            fmt::format("mean drift: interpolated in the wave frame across gaps between headings up to {:.0f} deg, an "
+                        "approximation (hull.mean_drift.wave_frame_fill)",
+                        *rule.wave_frame_fill_max_span_rad * 180.0 / std::numbers::pi));
+      }
     } else {
       result.notes.push_back(
           fmt::format("waves Hs {:.1f} m: no hull.mean_drift in the project, mean wave drift not modelled",

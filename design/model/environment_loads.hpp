@@ -21,7 +21,7 @@ namespace spiral::design {
 struct MeanEnvironmentLoad {
   /// Load on the hull (N, N·m, global axes) at a hull offset (yaw matters).
   engine::ExternalLoad load;
-  std::vector<std::string> notes;  ///< loads not modelled, and why
+  std::vector<std::string> notes;  ///< loads not modelled, and why; the mean drift's heading rule
 };
 
 /// The environment's current as an engine profile (global, direction of propagation).
@@ -32,8 +32,11 @@ std::optional<engine::CurrentProfile> current_profile_of(const Environment& envi
 /// The environment's sea spectrum.
 engine::WaveSpectrum wave_spectrum_of(const Waves& waves);
 
-/// The hull's mean drift coefficients (from the .12d file or the table).
-/// Throws engine::FileFormatError for a bad .12d file.
+/// The hull's mean drift coefficients (from the .12d file or the table),
+/// with the images of the hull's declared symmetry and the wave-frame fill
+/// the project asks for (hull.mean_drift_headings). Throws
+/// engine::FileFormatError for a bad .12d file, InputError
+/// (mean_drift_symmetry) for data that contradict the declared symmetry.
 engine::MeanDriftTable drift_table_of(const Project& project, const MeanDrift& drift);
 /// Throws engine::FileFormatError for a bad .12d file. `drift`: the drift
 /// table already read (a case model's); null: read here when needed.

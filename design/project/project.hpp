@@ -191,6 +191,20 @@ struct MeanDriftTable {
 
 using MeanDrift = std::variant<MeanDriftFile, MeanDriftTable>;
 
+/// How the mean drift data serve wave headings they do not hold
+/// (`hull.mean_drift.symmetry`, `hull.mean_drift.wave_frame_fill`;
+/// engine/hull/mean_drift_headings.hpp). Both are the project's explicit
+/// choice: without them a heading outside the data is an input error.
+struct MeanDriftHeadings {
+  /// The hull maps onto itself turned by 360°/n (`symmetry.rotations`, ≥ 1).
+  int symmetry_rotations = 1;
+  /// The hull maps onto itself under y → −y (`symmetry.mirror_xz`).
+  bool symmetry_mirror_xz = false;
+  /// Wave-frame interpolation across gaps between headings no wider than
+  /// this (`wave_frame_fill.max_span_deg`, in (0, 360]); absent: none.
+  std::optional<double> wave_frame_fill_max_span_rad;
+};
+
 /// Morison coefficients of a member (hydrodynamics.model: morison), on its
 /// diameter, normal to its axis (DNV-RP-C205 §6.2; defaults: engine/hull/morison_hull.hpp).
 struct MemberCoefficients {
@@ -251,6 +265,7 @@ struct Hull {
   std::optional<WindCoefficients> wind_coefficients;
   std::optional<HullLoadCoefficients> current_coefficients;
   std::optional<MeanDrift> mean_drift;
+  MeanDriftHeadings mean_drift_headings;           ///< read inside hull.mean_drift
   std::optional<HullHydrodynamics> hydrodynamics;  ///< absent: no added mass, no WF motions
   std::optional<HullGeometry> geometry;
 };

@@ -26,6 +26,20 @@ void read_load_coefficients(MapReader& r, HullLoadCoefficients& c) {
   assign(c.yaw_m3, r.numbers("yaw", "m^3", kRequired));
 }
 
+/// `symmetry: {rotations, mirror_xz}` and `wave_frame_fill: {max_span_deg}`,
+/// beside either form of the data.
+MeanDriftHeadings read_mean_drift_headings(MapReader& r) {
+  MeanDriftHeadings h;
+  r.map("symmetry", kOptional, [&](MapReader& s) {
+    assign(h.symmetry_rotations, s.integer("rotations", kOptional));
+    assign(h.symmetry_mirror_xz, s.boolean("mirror_xz", kOptional));
+  });
+  r.map("wave_frame_fill", kOptional, [&](MapReader& f) {
+    if (const auto span = f.angle("max_span", kRequired)) h.wave_frame_fill_max_span_rad = *span;
+  });
+  return h;
+}
+
 /// Either `{file, ulen}` (WAMIT .12d) or a table `{headings_deg, frequencies,
 /// surge, sway, yaw}`; the presence of `file` chooses.
 MeanDrift read_mean_drift(MapReader& r, const std::filesystem::path& base_folder) {
@@ -184,7 +198,10 @@ Hull read_hull(MapReader& r, const std::filesystem::path& base_folder) {
     read_load_coefficients(w, c);
     hull.current_coefficients = c;
   });
-  r.map("mean_drift", kOptional, [&](MapReader& d) { hull.mean_drift = read_mean_drift(d, base_folder); });
+  r.map("mean_drift", kOptional, [&](MapReader& d) {
+    hull.mean_drift_headings = read_mean_drift_headings(d);
+    hull.mean_drift = read_mean_drift(d, base_folder);
+  });
   r.map("hydrodynamics", kOptional,
         [&](MapReader& d) { hull.hydrodynamics = read_hull_hydrodynamics(d, base_folder); });
   r.map("geometry", kOptional, [&](MapReader& g) { hull.geometry = read_hull_geometry(g, base_folder); });

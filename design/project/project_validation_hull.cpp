@@ -2,6 +2,9 @@
 // coefficient and mean drift tables, hydrodynamics and member geometry
 // (project_validation_checks.hpp).
 
+#include <fmt/format.h>
+
+#include <numbers>
 #include <utility>
 #include <variant>
 
@@ -185,6 +188,16 @@ void check_hull(const Project& p, Reporter& r) {
     check_load_coefficients(r, "hull.current_coefficients", *h.current_coefficients);
   }
   if (h.mean_drift) {
+    const MeanDriftHeadings& rule = h.mean_drift_headings;
+    if (rule.symmetry_rotations < 1 || rule.symmetry_rotations > 360) {
+      r.fail("hull.mean_drift.symmetry.rotations", "hull_value_positive",
+             fmt::format("must be 1 (none) to 360, the n of an n-fold symmetry, got {}", rule.symmetry_rotations));
+    }
+    if (const auto& span = rule.wave_frame_fill_max_span_rad;
+        span && !(*span > 0.0 && *span <= 2.0 * std::numbers::pi + 1e-12)) {
+      r.fail("hull.mean_drift.wave_frame_fill.max_span_deg", "hull_value_positive",
+             fmt::format("must be in (0, 360] deg, got {} deg", *span * 180.0 / std::numbers::pi));
+    }
     if (const auto* f = std::get_if<MeanDriftFile>(&*h.mean_drift)) {
       check_file(r, "hull.mean_drift.file", f->file);
       positive(r, "hull.mean_drift.ulen", f->ulen_m, "m", "hull_value_positive");

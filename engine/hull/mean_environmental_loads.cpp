@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 
@@ -33,9 +34,29 @@ struct Bracket {
   double t = 0.0;
 };
 
+Bracket heading_bracket_in_range(const std::vector<double>& h, double beta, const char* table_name);
+
 // Heading rule documented in the header: periodic when the wrap-around gap is
-// no larger than the largest interior gap, otherwise no extrapolation.
-Bracket heading_bracket(const std::vector<double>& h, double beta, const char* table_name) {
+// no larger than the largest interior gap, otherwise no extrapolation; a
+// table may narrow the gaps it interpolates across (MeanDriftTable).
+Bracket heading_bracket(const std::vector<double>& h, double beta, const char* table_name,
+                        double max_gap_rad = std::numeric_limits<double>::infinity()) {
+  const Bracket b = heading_bracket_in_range(h, beta, table_name);
+  if (b.j0 == b.j1) return b;
+  const double gap = b.j1 > b.j0 ? h[b.j1] - h[b.j0] : h[b.j1] + kTwoPi - h[b.j0];
+  if (gap <= max_gap_rad + kHeadingTolerance_rad) return b;
+  // Within the heading rule's hold of a tabulated heading: that heading.
+  if (b.t * gap <= kHeadingEndHold_rad) return {b.j0, b.j0, 0.0};
+  if ((1.0 - b.t) * gap <= kHeadingEndHold_rad) return {b.j1, b.j1, 0.0};
+  constexpr double deg = 180.0 / std::numbers::pi;
+  throw TableRangeError(fmt::format(
+      "{}: relative heading {:.6g} deg lies between the tabulated headings {:.6g} and {:.6g} deg, a gap of {:.6g} "
+      "deg wider than the {:.6g} deg the table interpolates across (its data's own spacing: a symmetry image is "
+      "not interpolated to; a wave-frame fill can cover the gap)",
+      table_name, wrap_0_2pi(beta) * deg, h[b.j0] * deg, h[b.j1] * deg, gap * deg, max_gap_rad * deg));
+}
+
+Bracket heading_bracket_in_range(const std::vector<double>& h, double beta, const char* table_name) {
   const std::size_t n = h.size();
   const double first = h.front();
   const double last = h.back();
@@ -187,6 +208,8 @@ void validate_mean_drift_table(const MeanDriftTable& t) {
   if (t.headings_rad.back() - t.headings_rad.front() > kTwoPi + kHeadingTolerance_rad) {
     throw std::invalid_argument("mean drift table: headings span more than 2 pi rad");
   }
+  if (!(t.max_interpolation_gap_rad >= 0.0))
+    throw std::invalid_argument("mean drift table: the widest gap interpolated across must be >= 0 rad");
   bool any = false;
   for (std::size_t i = 0; i < 6; ++i) {
     if (!t.present[i]) continue;
@@ -227,8 +250,9 @@ Vector6d mean_drift_coefficients(const MeanDriftTable& table, double omega, doub
   validate_mean_drift_table(table);
   require_finite(omega, "mean drift: frequency", "rad/s");
   require_finite(relative_heading_rad, "mean drift: relative heading", "rad");
-  return interpolate_drift(table, frequency_bracket(table.omega_rad_per_s, omega),
-                           heading_bracket(table.headings_rad, relative_heading_rad, "mean drift table"));
+  return interpolate_drift(
+      table, frequency_bracket(table.omega_rad_per_s, omega),
+      heading_bracket(table.headings_rad, relative_heading_rad, "mean drift table", table.max_interpolation_gap_rad));
 }
 
 MeanDriftResult mean_wave_drift_load(const MeanDriftTable& table, const MeanDriftInput& in) {
@@ -269,7 +293,8 @@ MeanDriftResult mean_wave_drift_load(const MeanDriftTable& table, const MeanDrif
 
   for (const SpreadingDirection& dir : r.directions) {
     if (dir.weight == 0.0) continue;
-    const Bracket fb = heading_bracket(table.headings_rad, dir.heading_rad - in.hull_yaw_rad, "mean drift table");
+    const Bracket fb = heading_bracket(table.headings_rad, dir.heading_rad - in.hull_yaw_rad, "mean drift table",
+                                       table.max_interpolation_gap_rad);
     // Faltinsen (1990) ch. 5 / Newman (1974): F = 2 int S(w) D(w, beta) dw.
     Vector6d integral = Vector6d::Zero();
     for (Eigen::Index i = 0; i < nodes; ++i) {

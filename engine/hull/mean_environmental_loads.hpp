@@ -61,6 +61,7 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -115,6 +116,13 @@ struct MeanDriftTable {
   /// coefficient[i](k, j) at omega[k], heading[j]: N/m^2 (i = 0..2), N m/m^2 (i = 3..5)
   std::array<Eigen::MatrixXd, 6> coefficient;
   std::array<bool, 6> present{};  ///< DOFs for which data exist (others are zero)
+  /// The widest gap between neighbouring headings the loads interpolate
+  /// across, rad; a relative heading inside a wider gap (more than the
+  /// heading rule's 0.5° from its ends) is a TableRangeError. Infinite for a
+  /// table as read; a table extended by the hull's symmetry keeps its data's
+  /// own gaps (mean_drift_headings.hpp), so the images do not silently widen
+  /// what the data interpolate.
+  double max_interpolation_gap_rad = std::numeric_limits<double>::infinity();
 };
 
 /// Throws std::invalid_argument for an inconsistent table.

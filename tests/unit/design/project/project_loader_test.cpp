@@ -472,6 +472,32 @@ TEST(ProjectLoader, MeanDriftFileResolvesAgainstTheProjectFolder) {
   EXPECT_DOUBLE_EQ(std::get<MeanDriftFile>(*q.hull.mean_drift).ulen_m, 1.0);
 }
 
+TEST(ProjectLoader, MeanDriftHeadingRuleIsTheProjectsExplicitChoice) {
+  // Absent: no symmetry, no fill (a heading outside the data is an input error).
+  const auto plain =
+      parse_project(replace(kMinimal, kWaterplane, kWaterplane + "  mean_drift: {file: hull.12d}\n"), "p.yaml");
+  EXPECT_EQ(plain.hull.mean_drift_headings.symmetry_rotations, 1);
+  EXPECT_FALSE(plain.hull.mean_drift_headings.symmetry_mirror_xz);
+  EXPECT_FALSE(plain.hull.mean_drift_headings.wave_frame_fill_max_span_rad);
+  const auto d3 =
+      parse_project(replace(kMinimal, kWaterplane,
+                            kWaterplane + "  mean_drift: {file: hull.12d, symmetry: {rotations: 3, mirror_xz: true}, "
+                                          "wave_frame_fill: {max_span_deg: 120.0}}\n"),
+                    "p.yaml");
+  EXPECT_EQ(d3.hull.mean_drift_headings.symmetry_rotations, 3);
+  EXPECT_TRUE(d3.hull.mean_drift_headings.symmetry_mirror_xz);
+  ASSERT_TRUE(d3.hull.mean_drift_headings.wave_frame_fill_max_span_rad);
+  EXPECT_NEAR(*d3.hull.mean_drift_headings.wave_frame_fill_max_span_rad, 2.0 * std::numbers::pi / 3.0, 1e-12);
+  // A fill without its span, and an unknown key of the symmetry, say where.
+  const auto issues = issues_of(
+      replace(kMinimal, kWaterplane,
+              kWaterplane + "  mean_drift: {file: hull.12d, symmetry: {rotation: 3}, wave_frame_fill: {}}\n"));
+  ASSERT_EQ(issues.size(), 2u);
+  EXPECT_EQ(issues[0].path, "hull.mean_drift.symmetry.rotation");
+  EXPECT_EQ(issues[1].problem, "missing_key");
+  EXPECT_EQ(issues[1].path, "hull.mean_drift.wave_frame_fill.max_span_deg");
+}
+
 TEST(ProjectLoader, MeanDriftIsEitherAFileOrATable) {
   auto issues = issues_of(replace(
       kMinimal, kWaterplane, kWaterplane + "  mean_drift: {file: hull.12d, frequencies: [0.5], surge: [[1.0]]}\n"));

@@ -324,6 +324,19 @@ TEST(ProjectValidation, MeanDriftFileThatExistsIsAccepted) {
   std::filesystem::remove_all(folder);
 }
 
+TEST(ProjectValidation, MeanDriftHeadingRuleRanges) {
+  const std::string table =
+      "headings_deg: [0, 180], frequencies: [0.5], surge: [[1], [-1]], sway: [[0], [0]], yaw: [[0], [0]]";
+  auto issues = check(with_hull("  mean_drift: {" + table + ", symmetry: {rotations: 0}}\n"));
+  expect_single(issues, "hull_value_positive", "hull.mean_drift.symmetry.rotations");
+  issues = check(with_hull("  mean_drift: {" + table + ", wave_frame_fill: {max_span_deg: 400.0}}\n"));
+  expect_single(issues, "hull_value_positive", "hull.mean_drift.wave_frame_fill.max_span_deg");
+  EXPECT_EQ(issues[0].message, "must be in (0, 360] deg, got 400 deg");
+  issues = check(with_hull("  mean_drift: {" + table +
+                           ", symmetry: {rotations: 2, mirror_xz: true}, wave_frame_fill: {max_span_deg: 360}}\n"));
+  EXPECT_TRUE(issues.empty()) << all(issues);
+}
+
 TEST(ProjectValidation, MeanDriftTableShapeAndFrequencies) {
   const auto issues =
       check(with_hull("  mean_drift: {headings_deg: [0, 180], frequencies: [0.4, 0.4, 0.8],\n"
