@@ -614,8 +614,13 @@ TEST(ProjectLoader, ScenariosCarryTheCoupledStaticsData) {
 
   const Project fps = load_project(folder + "deepwater-fps.yaml");
   ASSERT_TRUE(fps.hull.geometry && fps.hull.current_coefficients && fps.hull.wind_coefficients);
-  // No mean drift: the .12d has heading 0 only and three cases are at 45 deg.
-  EXPECT_FALSE(fps.hull.mean_drift.has_value());
+  // Mean drift: the OC4 .12d (heading 0 only), scaled, with the hull's D3
+  // symmetry and the wave-frame fill across its 120 deg gaps, both chosen.
+  ASSERT_TRUE(fps.hull.mean_drift.has_value());
+  EXPECT_DOUBLE_EQ(std::get<MeanDriftFile>(*fps.hull.mean_drift).ulen_m, 2.0);
+  EXPECT_EQ(fps.hull.mean_drift_headings.symmetry_rotations, 3);
+  EXPECT_TRUE(fps.hull.mean_drift_headings.symmetry_mirror_xz);
+  EXPECT_TRUE(fps.hull.mean_drift_headings.wave_frame_fill_max_span_rad.has_value());
   // The lambda = 2 proxy reuses the OC4 .1: ULEN 2, periods x sqrt(2).
   ASSERT_TRUE(fps.hull.hydrodynamics.has_value());
   EXPECT_DOUBLE_EQ(fps.hull.hydrodynamics->ulen_m, 2.0);
