@@ -34,6 +34,8 @@
 // Both return a new table that mean_environmental_loads.hpp and
 // slow_drift.hpp use as they use a file's; neither extrapolates in frequency.
 
+#include <numbers>
+
 #include "engine/hull/mean_environmental_loads.hpp"
 
 namespace spiral::engine {
@@ -56,8 +58,8 @@ MeanDriftTable with_symmetry_images(const MeanDriftTable& table, const HullSymme
 
 /// How the wave-frame fill works (header).
 struct WaveFrameFill {
-  double max_span_rad = 0.0;                               ///< > 0: the widest gap between data filled
-  double step_rad = 5.0 * 3.14159265358979323846 / 180.0;  ///< > 0: the largest spacing of filled headings
+  double max_span_rad = 0.0;                         ///< > 0: the widest gap between data filled
+  double step_rad = 5.0 * std::numbers::pi / 180.0;  ///< > 0: the largest spacing of filled headings
 };
 
 /// `table` with headings at most `fill.step_rad` apart in every gap between
