@@ -81,6 +81,7 @@ class AnalyzeCommand : public Command {
     request.output_step_s = step_s_;
     request.seed = seed_;
     request.line_dynamics = line_dynamics_;
+    request.tolerance_scale = tolerance_scale_;
     if (isatty(STDERR_FILENO)) request.progress = print_progress;
     const design::DynamicAnalysisResult result = design::run_dynamic_analysis(loaded, request);
     const std::filesystem::path folder = output_folder(
@@ -109,6 +110,9 @@ class AnalyzeCommand : public Command {
     sub.add_option("--seed", seed_, "Random seed of the wave and wind realizations (default: 1)");
     sub.add_flag("--line-dynamics", line_dynamics_,
                  "Also dynamic tensions: every mooring line as a dynamic FE line driven by the hull motion");
+    sub.add_option("--tolerance-scale", tolerance_scale_,
+                   "The dynamic FE lines' (and the coupled system's) integrator tolerances x this; < 1 for a "
+                   "convergence reference (default: 1)");
     sub.add_option("--out", out_, "Output folder (default: out/<project-stem>/analyze/<case>-<level>-seed<N>)");
   }
 
@@ -119,6 +123,7 @@ class AnalyzeCommand : public Command {
   std::uint64_t seed_ = 1;
   std::string out_;
   bool line_dynamics_ = false;
+  double tolerance_scale_ = 1.0;
 };
 
 }  // namespace

@@ -123,6 +123,13 @@ DynamicAnalysisResult run_coupled_analysis(const ValidatedProject& validated, co
   const auto n_out = static_cast<long>(std::floor(request.duration_s / request.output_step_s + 1e-9));
   for (long k = 1; k <= n_out; ++k) options.output_times_s.push_back(static_cast<double>(k) * request.output_step_s);
   options.threads = engine::worker_count(count);
+  const double scale = request.tolerance_scale;
+  options.relative_tolerance *= scale;
+  options.position_tolerance_m *= scale;
+  options.slope_tolerance *= scale;
+  options.velocity_tolerance_m_per_s *= scale;
+  options.hull_position_tolerance_m *= scale;
+  options.hull_rotation_tolerance_rad *= scale;
   options.max_steps_between_outputs = request.coupled_max_steps_between_outputs;
   engine::HullLoads loads;
   loads.lines = engine::LinearizedLines{};

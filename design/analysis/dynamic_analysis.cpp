@@ -181,6 +181,10 @@ DynamicModel build_dynamic_model(const ValidatedProject& validated, const Dynami
                         fmt::format("need duration > 0 s and 0 < output step <= duration, got {} s and {} s",
                                     request.duration_s, request.output_step_s));
   }
+  if (!(request.tolerance_scale > 0.0) || !std::isfinite(request.tolerance_scale)) {
+    throw request_error(project, "tolerance_scale",
+                        fmt::format("must be a finite number > 0, got {}", request.tolerance_scale));
+  }
   DynamicModel model;
   model.case_model = build_case_model(project, request.load_case);
   const LoadCase& load_case = *model.case_model.load_case;
@@ -436,6 +440,7 @@ DynamicAnalysisResult result_of_model(const DynamicModel& model, const DynamicAn
   result.environment = environment_name;
   result.level = request.level;
   result.seed = request.seed;
+  result.tolerance_scale = request.tolerance_scale;
   result.static_offset = model.statics.offset;
   result.mean_slow_drift_force = model.mean_slow_drift_force;
   result.line_added_mass = model.line_added_mass;
@@ -551,6 +556,7 @@ DynamicAnalysisResult run_dynamic_analysis(const ValidatedProject& validated, co
     lines.dt_s = result.times_s(1) - result.times_s(0);
     lines.motion = result.total;
     lines.ramp_s = request.line_dynamics_ramp_s;
+    lines.tolerance_scale = request.tolerance_scale;
     lines.sea = model.sea;
     result.dynamic_tensions = run_line_dynamics(project, lines);
     result.timing.line_dynamics_s = start.seconds();

@@ -96,6 +96,11 @@ struct DynamicAnalysisRequest {
   /// Coupled level: the integrator's work limit per output step (IDA
   /// gives up beyond it: a step-size collapse stops the case, not the machine).
   long coupled_max_steps_between_outputs = 500000;
+  /// The dynamic FE lines' integrator tolerances (the coupled system's, the
+  /// hull's in it included, and `line_dynamics`') × this: < 1 for a
+  /// convergence reference (the accuracy–time curve of
+  /// docs/decisions/coupled-dynamics-performance.md), > 0.
+  double tolerance_scale = 1.0;
   /// The static case of this load case when the caller has it already
   /// (a stage runs every case's statics first); null: solved here. It must be
   /// run_static_case of `load_case` with its own damaged line. The S-C levels
@@ -174,6 +179,7 @@ struct DynamicAnalysisResult {
   std::string environment;
   AnalysisLevel level = AnalysisLevel::semi_coupled;
   std::uint64_t seed = 1;
+  double tolerance_scale = 1.0;  ///< the request's
   Eigen::VectorXd times_s;
   Eigen::Matrix<double, 6, Eigen::Dynamic> low_frequency;   ///< m, rad
   Eigen::Matrix<double, 6, Eigen::Dynamic> wave_frequency;  ///< m, rad (zero without RAOs)

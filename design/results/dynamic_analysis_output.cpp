@@ -82,6 +82,7 @@ nlohmann::json dynamic_analysis_to_json(const DynamicAnalysisResult& r, const st
   const double dt = r.times_s.size() > 1 ? r.times_s(1) - r.times_s(0) : 0.0;
   j["duration_s"] = r.times_s.size() > 0 ? r.times_s(r.times_s.size() - 1) : 0.0;
   j["output_step_s"] = dt;
+  j["tolerance_scale"] = r.tolerance_scale;
   j["wave_frequency_motions"] = r.wave_frequency_computed;
   nlohmann::json offset;
   for (int d = 0; d < 6; ++d)

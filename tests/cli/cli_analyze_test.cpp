@@ -143,6 +143,15 @@ TEST(CliAnalyze, UnknownLevelIsBadInput) {
   EXPECT_NE(result.err.find("--level"), std::string::npos) << result.err;
 }
 
+TEST(CliAnalyze, AZeroToleranceScaleIsBadInputNamingTheField) {
+  const auto result = run_spiral("analyze " + scenario("oc4-semisubmersible.yaml") +
+                                 " --case intact-raft-jonswap --level coupled --duration 10 --tolerance-scale 0"
+                                 " --out /tmp/spiral-never");
+  EXPECT_EQ(result.exit_code, app::kExitBadInput);
+  EXPECT_NE(result.err.find("tolerance_scale"), std::string::npos) << result.err;
+  EXPECT_NE(result.err.find("oc4-semisubmersible.yaml"), std::string::npos) << result.err;
+}
+
 TEST(CliAnalyze, MissingRadiationFileIsBadInputWithFile) {
   const auto dir = std::filesystem::temp_directory_path() / ("spiral-analyze-bad-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
