@@ -81,6 +81,10 @@ struct LineBlock {
 // since it was factored: with many lines some line's contact changes at
 // almost every step, and refactoring all of them for it cost 60 % of the
 // run (measured on the deep-water scenario: 265 updates in 320 steps).
+// A line refactored for c_j is condensed again: X and Σ_B are dominated by
+// the end element's c_j² M, so keeping the old ones made the hull's Newton
+// iteration stall (docs/decisions/coupled-dynamics-performance.md, "End-B
+// condensation after a c_j refactor").
 constexpr double kLineRefactorCjChange = 0.25;
 
 class CoupledSystem final : public ImplicitSystem {
@@ -265,14 +269,15 @@ class CoupledSystem final : public ImplicitSystem {
     for_each_line([&](LineBlock& b) {
       const std::size_t i = static_cast<std::size_t>(&b - blocks_.data());
       ok[i] = 1;
-      if (!full && !b.stale && std::abs(cj / b.factored_cj - 1.0) <= kLineRefactorCjChange) return;
+      const bool cj_moved = std::abs(cj / b.factored_cj - 1.0) > kLineRefactorCjChange;
+      if (!full && !b.stale && !cj_moved) return;
       load_line(b, hull);
       const auto y_line = y.segment(b.offset, b.size), yp_line = yp.segment(b.offset, b.size);
       const bool factored = full ? b.line.setup_newton_matrix(t, y_line, yp_line, cj)
                                  : b.line.update_newton_matrix(t, y_line, yp_line, cj);
       if (factored) {
         b.line.prepare_end_B_matrices(cj);
-        if (full || b.never_condensed) b.line.condense_end_B();
+        if (full || b.never_condensed || cj_moved) b.line.condense_end_B();
         b.never_condensed = false;
       }
       b.setup_jacobian = b.at.jacobian;

@@ -45,9 +45,11 @@
 //    bit-identical); the system works on IDA's vectors in place
 //    (ImplicitSystem takes Eigen::Ref);
 //  * a partial Newton-matrix update refactors only the lines whose seabed
-//    contact changed by 10 % of an element, and keeps the other lines' end-B
-//    condensation from the last full setup; a coarser contact refresh leaves
-//    the stale-matrix Newton iterates' error in the motion;
+//    contact changed by 10 % of an element or whose c_j moved by 25 %; a
+//    line refactored for its contact keeps its end-B condensation from the
+//    last full setup, one refactored for c_j is condensed again (its end
+//    stiffness goes as c_j²); a coarser contact refresh leaves the
+//    stale-matrix Newton iterates' error in the motion;
 //  * at an output time the end force comes from the end element's own wave
 //    kinematics (evaluate_point), not from every element's.
 //
