@@ -328,8 +328,7 @@ class CoupledSystem final : public ImplicitSystem {
   WorkerPool pool_;                    // last: its threads stop before the blocks go
 };
 
-void validate(const HullDynamicsModel& hull, const HullLoads& loads, const std::vector<CoupledLine>& lines,
-              const CoupledOptions& o) {
+void validate(const HullLoads& loads, const std::vector<CoupledLine>& lines, const CoupledOptions& o) {
   auto fail = [](const std::string& what) { throw std::invalid_argument("coupled dynamics: " + what); };
   if (!std::holds_alternative<LinearizedLines>(loads.lines))
     fail("loads.lines: the FE lines replace a nonlinear line model (give LinearizedLines)");
@@ -353,7 +352,7 @@ CoupledTimeSeries simulate_coupled(const HullDynamicsModel& hull, const HullLoad
                                    const Eigen::Vector3d& reference_point_at_rest_g, const Vector6d& initial_offset,
                                    const std::vector<CoupledLine>& lines, const CoupledOptions& options) {
   Stopwatch start;
-  validate(hull, loads, lines, options);
+  validate(loads, lines, options);
   CoupledSystem system(hull, loads, reference_point_at_rest_g, lines, options);
   std::vector<LineBlock>& blocks = system.blocks();
 
