@@ -406,14 +406,7 @@ TEST(ScAnalysis, UnknownLevelAndCaseAreInputErrors) {
   EXPECT_THROW(run_dynamic_analysis(p, request), InputError);
 }
 
-// The tolerance scale is how a user makes the convergence reference of a
-// coupled run (docs/decisions/coupled-dynamics-performance.md). OC4's
-// coupled 100 s from rest, at scale 1 and 0.1 against 0.01: the tighter run
-// takes more steps and lies nearer the reference in every channel. Measured
-// (largest pointwise difference / the reference's std): surge 1.4 % → 0.65 %,
-// heave 13 % → 3.4 %, pitch 5.5 % → 1.6 %, L2 tension 1.8 % → 0.70 %; the
-// ratio asked, < 0.6, leaves room for other step sequences (BDF2's global
-// error falls about as the tolerance to the 2/3 power: 0.2 for 10×).
+// OC4's intact-raft-jonswap case at the coupled level.
 DynamicAnalysisRequest oc4_coupled_request(double duration_s) {
   DynamicAnalysisRequest request;
   request.load_case = "intact-raft-jonswap";
@@ -422,6 +415,14 @@ DynamicAnalysisRequest oc4_coupled_request(double duration_s) {
   return request;
 }
 
+// The tolerance scale is how a user makes the convergence reference of a
+// coupled run (docs/decisions/coupled-dynamics-performance.md). OC4's
+// coupled 100 s from rest, at scale 1 and 0.1 against 0.01: the tighter run
+// takes more steps and lies nearer the reference in every channel. Measured
+// (largest pointwise difference / the reference's std): surge 1.4 % → 0.65 %,
+// heave 13 % → 3.4 %, pitch 5.5 % → 1.6 %, L2 tension 1.8 % → 0.70 %; the
+// ratio asked, < 0.6, leaves room for other step sequences (BDF2's global
+// error falls about as the tolerance to the 2/3 power: 0.2 for 10×).
 TEST(CoupledAnalysis, ATighterToleranceScaleConvergesOnTheReference) {
   const ValidatedProject p = load_validated_project(kOc4);
   auto run = [&](double scale) {
