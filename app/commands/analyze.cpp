@@ -42,10 +42,11 @@ void print_run_summary(const design::DynamicAnalysisResult& result, double durat
   if (result.coupled_solver) {
     const engine::IdaStatistics& s = *result.coupled_solver;
     fmt::print(
-        "  coupled: {} lines, {} states; {} steps, {} Newton-matrix setups ({} partial), {} residuals; "
-        "{:.1f}x real time\n",
+        "  coupled: {} lines, {} states; {} steps, {} Newton-matrix setups ({} partial), {} residuals, "
+        "{} Newton restarts on a fresh matrix, {} failed Newton solves; {:.1f}x real time\n",
         result.coupled_lines, result.coupled_state_size, s.steps, s.newton_matrix_setups, s.newton_matrix_updates,
-        s.residual_evaluations, result.timing.dynamics_s > 0.0 ? duration_s / result.timing.dynamics_s : 0.0);
+        s.residual_evaluations, s.newton_restarts, s.nonlinear_convergence_failures,
+        result.timing.dynamics_s > 0.0 ? duration_s / result.timing.dynamics_s : 0.0);
   }
   if (!result.dynamic_tensions.empty()) {
     fmt::print("  line dynamics {:.3f} s; max fairlead tension, quasi-static vs dynamic:\n",

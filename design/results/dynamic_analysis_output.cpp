@@ -142,6 +142,7 @@ nlohmann::json dynamic_analysis_to_json(const DynamicAnalysisResult& r, const st
                            {"nonlinear_iterations", s.nonlinear_iterations},
                            {"error_test_failures", s.error_test_failures},
                            {"nonlinear_convergence_failures", s.nonlinear_convergence_failures},
+                           {"newton_restarts", s.newton_restarts},
                            {"last_step_s", s.last_step_s}};
   } else if (!r.dynamic_tensions.empty()) {
     j["line_dynamics_solver"] = line_solvers;

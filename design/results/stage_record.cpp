@@ -183,8 +183,8 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(ChannelStatistics, moments, spectrum, spectra
                                    zero_upcrossing_period_s, maximum, minimum)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(IdaStatistics, steps, residual_evaluations, newton_matrix_setups,
                                    newton_matrix_updates, linear_solves, error_test_failures, nonlinear_iterations,
-                                   nonlinear_convergence_failures, recoverable_residual_failures, last_step_s,
-                                   current_time_s, last_order)
+                                   nonlinear_convergence_failures, newton_restarts, recoverable_residual_failures,
+                                   last_step_s, current_time_s, last_order)
 }  // namespace spiral::engine
 
 namespace spiral::design {

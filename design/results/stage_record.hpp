@@ -30,7 +30,10 @@ namespace spiral::design {
 /// and its natural modes; the S-C storms use it.
 /// 4: line and riser profiles as columns of doubles (a static case's record
 /// 2.7 MB → a fraction, read without a JSON value per number).
-inline constexpr int kStageRecordVersion = 4;
+/// 5: the coupled solver's statistics count Newton restarts on a fresh
+/// matrix (engine/numerics/sundials_ida.hpp), and runs made before it took
+/// their steps without them.
+inline constexpr int kStageRecordVersion = 5;
 
 using RecordBytes = std::vector<std::uint8_t>;
 

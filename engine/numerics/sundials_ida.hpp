@@ -22,6 +22,11 @@
 // refresh (IDASetDeltaCjLSetup default) or the system reports its matrix
 // stale (newton_matrix_stale: a contact set that changed, say).
 //
+// A Newton solve that fails (diverges, or reaches the iteration cap) on a
+// matrix set up before this step goes on once from its iterate with a full
+// setup there, as SUNDIALS' Newton solver retries for the linear solvers that
+// have a setup function; only a failure on a current matrix fails the step.
+//
 // Newton convergence test: IDA's own (rate-based, ss·|δ| ≤ 0.33), with the
 // rate estimate ss reset as IDA resets it for the solvers it sets up itself
 // — 20 after a full setup, 100 when c_j changed without a refresh — and
@@ -104,6 +109,10 @@ struct IdaOptions {
   std::optional<double> initial_step_s;     ///< > 0
   long max_steps_between_outputs = 500000;  ///< > 0
   int max_steps_between_setups = 20;        ///< > 0: Newton matrix refreshed at least this often
+  /// A Newton solve that fails on a matrix older than the step goes on once
+  /// on a fresh one instead of failing the step (what SUNDIALS' Newton does
+  /// when it has a setup to call; see the header).
+  bool restart_newton_on_fresh_matrix = true;
 };
 
 struct IdaStatistics {
@@ -114,7 +123,8 @@ struct IdaStatistics {
   long linear_solves = 0;
   long error_test_failures = 0;
   long nonlinear_iterations = 0;
-  long nonlinear_convergence_failures = 0;
+  long nonlinear_convergence_failures = 0;  ///< Newton solves that failed (each a step retried smaller)
+  long newton_restarts = 0;                 ///< Newton solves restarted on a fresh matrix (not failures)
   long recoverable_residual_failures = 0;
   double last_step_s = 0.0;
   double current_time_s = 0.0;
