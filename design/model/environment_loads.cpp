@@ -122,19 +122,19 @@ MeanEnvironmentLoad mean_environment_load(const Project& project, const Environm
     }
   }
 
-  std::shared_ptr<const engine::MeanDriftTable> drift_table;
-  std::optional<engine::MeanDriftInput> drift_input;
+  std::shared_ptr<const engine::MeanDriftIntegral> drift_integral;
   if (environment.waves) {
     if (hull.mean_drift) {
-      drift_table = drift ? std::move(drift)
-                          : std::make_shared<const engine::MeanDriftTable>(drift_table_of(project, *hull.mean_drift));
+      const std::shared_ptr<const engine::MeanDriftTable> drift_table =
+          drift ? std::move(drift)
+                : std::make_shared<const engine::MeanDriftTable>(drift_table_of(project, *hull.mean_drift));
       engine::MeanDriftInput input;
       input.spectrum = wave_spectrum_of(*environment.waves);
       input.wave_heading_rad = environment.waves->heading_rad;
       if (environment.waves->spreading_s) {
         input.spreading = engine::DirectionalSpreading{engine::SpreadingForm::cos_2s, *environment.waves->spreading_s};
       }
-      drift_input = input;
+      drift_integral = std::make_shared<const engine::MeanDriftIntegral>(*drift_table, input);
       // The heading rule is the project's choice; every result it enters says so.
       const MeanDriftHeadings& rule = hull.mean_drift_headings;
       if (rule.symmetry_rotations > 1 || rule.symmetry_mirror_xz) {
@@ -163,11 +163,7 @@ MeanEnvironmentLoad mean_environment_load(const Project& project, const Environm
     if (wind_table)
       load += engine::wind_load(*wind_table, wind_speed_at_table_height, wind_heading, yaw, air_density).load_g;
     if (current_table) load += engine::current_load(*current_table, *current, water_density, yaw).load_g;
-    if (drift_table) {
-      engine::MeanDriftInput input = *drift_input;
-      input.hull_yaw_rad = yaw;
-      load += engine::mean_wave_drift_load(*drift_table, input).load_g;
-    }
+    if (drift_integral) load += drift_integral->load(yaw).load_g;
     return load;
   };
   return result;

@@ -255,12 +255,12 @@ Vector6d mean_drift_coefficients(const MeanDriftTable& table, double omega, doub
       heading_bracket(table.headings_rad, relative_heading_rad, "mean drift table", table.max_interpolation_gap_rad));
 }
 
-MeanDriftResult mean_wave_drift_load(const MeanDriftTable& table, const MeanDriftInput& in) {
+MeanDriftIntegral::MeanDriftIntegral(const MeanDriftTable& table, const MeanDriftInput& in)
+    : headings_rad_(table.headings_rad), max_interpolation_gap_rad_(table.max_interpolation_gap_rad) {
   validate_mean_drift_table(table);
   require_finite(in.wave_heading_rad, "mean drift: wave heading", "rad");
-  require_finite(in.hull_yaw_rad, "mean drift: hull yaw", "rad");
 
-  MeanDriftResult r;
+  MeanDriftResult& r = without_load_;
   if (in.spreading) {
     r.directions = discretise_spreading(*in.spreading, in.wave_heading_rad, in.spreading_directions);
   } else {
@@ -284,28 +284,41 @@ MeanDriftResult mean_wave_drift_load(const MeanDriftTable& table, const MeanDrif
   r.variance_fraction_below_table = below / r.m0_m2;
   r.variance_fraction_above_table = above / r.m0_m2;
 
-  // Frequency brackets do not depend on the direction: compute them once.
-  std::vector<Bracket> fw(static_cast<std::size_t>(nodes) + 1);
-  for (Eigen::Index i = 0; i < nodes; ++i) {
-    fw[static_cast<std::size_t>(i)] = frequency_bracket(table.omega_rad_per_s, q.omega_rad_per_s(i));
-  }
-  fw.back() = frequency_bracket(table.omega_rad_per_s, q.tail_start_rad_per_s);
-
-  for (const SpreadingDirection& dir : r.directions) {
-    if (dir.weight == 0.0) continue;
-    const Bracket fb = heading_bracket(table.headings_rad, dir.heading_rad - in.hull_yaw_rad, "mean drift table",
-                                       table.max_interpolation_gap_rad);
-    // Faltinsen (1990) ch. 5 / Newman (1974): F = 2 int S(w) D(w, beta) dw.
+  // Faltinsen (1990) ch. 5 / Newman (1974): F = 2 int S(w) D(w, beta) dw, at
+  // each table heading (a bracket on the heading itself, t = 0).
+  const auto headings = static_cast<Eigen::Index>(table.headings_rad.size());
+  at_heading_ = Eigen::Matrix<double, 6, Eigen::Dynamic>::Zero(6, headings);
+  for (Eigen::Index j = 0; j < headings; ++j) {
+    const Bracket on_heading{static_cast<std::size_t>(j), static_cast<std::size_t>(j), 0.0};
     Vector6d integral = Vector6d::Zero();
     for (Eigen::Index i = 0; i < nodes; ++i) {
       if (q.weight_m2(i) == 0.0) continue;
-      integral += q.weight_m2(i) * interpolate_drift(table, fw[static_cast<std::size_t>(i)], fb);
+      integral += q.weight_m2(i) *
+                  interpolate_drift(table, frequency_bracket(table.omega_rad_per_s, q.omega_rad_per_s(i)), on_heading);
     }
-    integral += q.tail_m0_m2 * interpolate_drift(table, fw.back(), fb);
-    r.load_b += 2.0 * dir.weight * integral;
+    integral += q.tail_m0_m2 *
+                interpolate_drift(table, frequency_bracket(table.omega_rad_per_s, q.tail_start_rad_per_s), on_heading);
+    at_heading_.col(j) = 2.0 * integral;
   }
-  r.load_g = yaw_body_to_global(r.load_b, in.hull_yaw_rad);
+}
+
+MeanDriftResult MeanDriftIntegral::load(double hull_yaw_rad) const {
+  require_finite(hull_yaw_rad, "mean drift: hull yaw", "rad");
+  MeanDriftResult r = without_load_;
+  for (const SpreadingDirection& dir : r.directions) {
+    if (dir.weight == 0.0) continue;
+    const Bracket fb =
+        heading_bracket(headings_rad_, dir.heading_rad - hull_yaw_rad, "mean drift table", max_interpolation_gap_rad_);
+    r.load_b += dir.weight * ((1.0 - fb.t) * at_heading_.col(static_cast<Eigen::Index>(fb.j0)) +
+                              fb.t * at_heading_.col(static_cast<Eigen::Index>(fb.j1)));
+  }
+  r.load_g = yaw_body_to_global(r.load_b, hull_yaw_rad);
   return r;
+}
+
+MeanDriftResult mean_wave_drift_load(const MeanDriftTable& table, const MeanDriftInput& in) {
+  require_finite(in.hull_yaw_rad, "mean drift: hull yaw", "rad");
+  return MeanDriftIntegral(table, in).load(in.hull_yaw_rad);
 }
 
 }  // namespace spiral::engine

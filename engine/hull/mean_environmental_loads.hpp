@@ -151,4 +151,27 @@ struct MeanDriftResult {
 
 MeanDriftResult mean_wave_drift_load(const MeanDriftTable& table, const MeanDriftInput& input);
 
+/// A sea's mean drift at any hull yaw without a quadrature per call: the
+/// spectrum's integral of the coefficients at each of the table's headings,
+/// F_j = 2 ∫ S(w) D(w, beta_j) dw. The coefficients are interpolated
+/// linearly in heading, so the integral at a heading between beta_j0 and
+/// beta_j1 is the same interpolation of F_j0 and F_j1 (exact, not an
+/// approximation). An equilibrium evaluates the load at every Newton pose;
+/// the quadrature (a JONSWAP's pow and exp at each node) was a quarter of the
+/// every-line pretension optimization's profile.
+class MeanDriftIntegral {
+ public:
+  /// input.hull_yaw_rad is not used. Throws as mean_wave_drift_load.
+  MeanDriftIntegral(const MeanDriftTable& table, const MeanDriftInput& input);
+  /// The load at this hull yaw (what mean_wave_drift_load returns for the
+  /// table and input with input.hull_yaw_rad = hull_yaw_rad).
+  MeanDriftResult load(double hull_yaw_rad) const;
+
+ private:
+  std::vector<double> headings_rad_;
+  double max_interpolation_gap_rad_;
+  Eigen::Matrix<double, 6, Eigen::Dynamic> at_heading_;  ///< F_j, hull frame, one column per table heading
+  MeanDriftResult without_load_;                         ///< the spectrum's variance, fractions and directions
+};
+
 }  // namespace spiral::engine
