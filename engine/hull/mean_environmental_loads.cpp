@@ -284,6 +284,13 @@ MeanDriftIntegral::MeanDriftIntegral(const MeanDriftTable& table, const MeanDrif
   r.variance_fraction_below_table = below / r.m0_m2;
   r.variance_fraction_above_table = above / r.m0_m2;
 
+  // Frequency brackets do not depend on the heading: compute them once.
+  std::vector<Bracket> fw(static_cast<std::size_t>(nodes) + 1);
+  for (Eigen::Index i = 0; i < nodes; ++i) {
+    fw[static_cast<std::size_t>(i)] = frequency_bracket(table.omega_rad_per_s, q.omega_rad_per_s(i));
+  }
+  fw.back() = frequency_bracket(table.omega_rad_per_s, q.tail_start_rad_per_s);
+
   // Faltinsen (1990) ch. 5 / Newman (1974): F = 2 int S(w) D(w, beta) dw, at
   // each table heading (a bracket on the heading itself, t = 0).
   const auto headings = static_cast<Eigen::Index>(table.headings_rad.size());
@@ -293,11 +300,9 @@ MeanDriftIntegral::MeanDriftIntegral(const MeanDriftTable& table, const MeanDrif
     Vector6d integral = Vector6d::Zero();
     for (Eigen::Index i = 0; i < nodes; ++i) {
       if (q.weight_m2(i) == 0.0) continue;
-      integral += q.weight_m2(i) *
-                  interpolate_drift(table, frequency_bracket(table.omega_rad_per_s, q.omega_rad_per_s(i)), on_heading);
+      integral += q.weight_m2(i) * interpolate_drift(table, fw[static_cast<std::size_t>(i)], on_heading);
     }
-    integral += q.tail_m0_m2 *
-                interpolate_drift(table, frequency_bracket(table.omega_rad_per_s, q.tail_start_rad_per_s), on_heading);
+    integral += q.tail_m0_m2 * interpolate_drift(table, fw.back(), on_heading);
     at_heading_.col(j) = 2.0 * integral;
   }
 }
@@ -317,7 +322,6 @@ MeanDriftResult MeanDriftIntegral::load(double hull_yaw_rad) const {
 }
 
 MeanDriftResult mean_wave_drift_load(const MeanDriftTable& table, const MeanDriftInput& in) {
-  require_finite(in.hull_yaw_rad, "mean drift: hull yaw", "rad");
   return MeanDriftIntegral(table, in).load(in.hull_yaw_rad);
 }
 
