@@ -205,8 +205,9 @@ TEST(SundialsIda, OneGroupWithoutGroupStarts) {
 }
 
 // y' = −k(t)·(y − sin t), a stiff relaxation onto sin t whose stiffness
-// grows 100× (1e3 → 1e5 /s, far above c_j ≈ 1.5/h) over half a second. The Newton matrix cj + k(t_setup) is kept
-// between setups (cj changes by < 25 %, fewer than 20 steps), so after the
+// grows 100× (1e3 → 1e5 /s, far above c_j ≈ 1.5/h) over half a second.
+// The Newton matrix cj + k(t_setup) is kept between setups (cj changes by
+// < 25 %, fewer than 20 steps), so after the
 // ramp starts it underestimates k: for this linear residual each Newton
 // iteration multiplies the error by (k − k_setup)/(cj + k_setup), above
 // IDA's divergence limit 0.9 once k has grown ≈ 2× since the setup.
