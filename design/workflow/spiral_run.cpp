@@ -650,7 +650,10 @@ SpiralRunResult run_spiral(const std::filesystem::path& project_file, const Spir
                            const std::function<void(const StageRun&)>& stage_done) {
   Iteration it = project_as_given(project_file, options);
   const std::vector<std::string> stages = spiral_stages(it.project->project, options.until);
-  const std::filesystem::path data_folder = project_file.parent_path();
+  // Absolute: a file named without a folder (`spiral run project.yaml` in
+  // its own folder) has an empty parent, which the iteration files' headers
+  // and data references cannot be made absolute from.
+  const std::filesystem::path data_folder = std::filesystem::absolute(project_file).parent_path();
 
   const bool root = options.cluster == nullptr || options.cluster->rank() == 0;
   std::unique_ptr<ResultsStore> store =

@@ -226,6 +226,30 @@ TEST(SpiralRun, FeedbackOptimizesTheFailingOffsetAndTheNextIterationPasses) {
   EXPECT_EQ(again.stages[1].model_hash, r.stages[1].model_hash);
 }
 
+TEST(SpiralRun, AProjectNamedWithoutItsFolderIteratesToo) {
+  // `spiral run project.yaml` from the project's own folder: the file's
+  // parent path is empty, and the feedback iteration must still write and
+  // load its project file (it once stopped with "cannot make absolute path").
+  const auto project = oc4_variant("bare-name", "max_offset_pct_depth: 10.0", "max_offset_pct_depth: 0.5");
+  const std::filesystem::path working = std::filesystem::current_path();
+  std::filesystem::current_path(project.parent_path());
+  SpiralRunOptions options;
+  options.out_folder = project.parent_path() / "out";
+  options.until = "preliminary";
+  SpiralRunResult r;
+  try {
+    r = run_spiral(project.filename(), options);
+  } catch (...) {
+    std::filesystem::current_path(working);
+    throw;
+  }
+  std::filesystem::current_path(working);
+  ASSERT_EQ(r.feedback.size(), 1u);
+  EXPECT_TRUE(r.feedback[0].applied);
+  ASSERT_EQ(r.stages.size(), 2u);
+  EXPECT_TRUE(r.stages[1].pass) << r.stages[1].governing;
+}
+
 TEST(SpiralRun, AnOptimizationTheProjectAsksForRunsOnceOnAPassingDesign) {
   // OC4 passes its preliminary checks as given; stages[].optimize asks for
   // the optimizer anyway (max SOZ margin). One optimization, one more
