@@ -144,8 +144,8 @@ std::pair<double, double> zoom_window(const design::CriticalCaseVerification& c)
   if (!d || d->times_s.empty()) return {0.0, kZoomWindow_s};
   const std::vector<double>& t = d->times_s;
   double at = t.front();
-  if (d->channels.size() > 4 && !d->channels[4].values.empty()) {
-    const auto& v = d->channels[4].values;
+  if (const design::StormChannel* tension = d->tension(); tension && !tension->values.empty()) {
+    const auto& v = tension->values;
     at = t[static_cast<std::size_t>(std::max_element(v.begin(), v.end()) - v.begin())];
   }
   const double half = 0.5 * std::min(kZoomWindow_s, t.back() - t.front());
@@ -158,13 +158,17 @@ std::pair<double, double> zoom_window(const design::CriticalCaseVerification& c)
 Figure overlay_figure(const design::CriticalCaseVerification& c, const std::string& id) {
   const auto [zoom_lo, zoom_hi] = zoom_window(c);
   std::vector<Plot> plots;
-  // StageDynamics channel order: surge, sway, yaw, offset, tension.
-  for (const std::size_t k : {std::size_t{0}, std::size_t{3}, std::size_t{4}}) {
+  enum class Shown { surge, offset, tension };
+  for (const Shown shown : {Shown::surge, Shown::offset, Shown::tension}) {
     Plot whole, zoom;
     const design::StormChannel* any = nullptr;
     for (const auto* d : {&c.sc, &c.coupled}) {
-      if (!*d || (*d)->channels.size() <= k) continue;
-      const design::StormChannel& ch = (*d)->channels[k];
+      if (!*d) continue;
+      const design::StormChannel* found = shown == Shown::tension  ? (*d)->tension()
+                                          : shown == Shown::offset ? (*d)->channel("offset")
+                                                                   : (*d)->channel("surge");
+      if (!found) continue;
+      const design::StormChannel& ch = *found;
       const double scale = ch.unit == "N" ? kN : 1.0;
       Series s = time_envelope((*d)->times_s, ch.values, scale);
       s.label = design::to_string((*d)->level);

@@ -145,9 +145,11 @@ Figure plot_panels(std::string id, std::string caption, double aspect, std::vect
 std::vector<Block> storm_blocks(const design::StageDynamics& d, const std::string& id) {
   std::vector<Block> out;
   std::vector<Plot> motion, spectra;
-  for (std::size_t i = 0; i < d.channels.size() && i < 4; ++i) {
-    motion.push_back(time_plot(d, d.channels[i], i));
-    spectra.push_back(spectrum_plot(d.channels[i], i));
+  for (const char* name : {"surge", "sway", "yaw", "offset"}) {
+    if (const design::StormChannel* c = d.channel(name)) {
+      motion.push_back(time_plot(d, *c, motion.size()));
+      spectra.push_back(spectrum_plot(*c, spectra.size()));
+    }
   }
   out.emplace_back(plot_panels(
       id + "-motions",
@@ -161,8 +163,34 @@ std::vector<Block> storm_blocks(const design::StageDynamics& d, const std::strin
                                "One-sided Welch spectra of the same channels (Hann window, 50 % overlap), up to "
                                "the frequency beyond which less than 1e-6 of the variance lies.",
                                1.3, std::move(spectra), 2));
-  if (d.channels.size() > 4) {
-    const design::StormChannel& t = d.channels[4];
+  // Heave, roll, pitch and the hang-off's vertical motion: what the
+  // wave-frequency response drives (each spectrum shows its wave peak).
+  std::vector<Plot> vertical, vertical_spectra;
+  const design::StormChannel* hang_off = nullptr;
+  for (const design::StormChannel& c : d.channels) {
+    const bool shown = c.name == "heave" || c.name == "roll" || c.name == "pitch" || c.name.starts_with("hang-off ");
+    if (!shown) continue;
+    if (c.name.starts_with("hang-off ")) hang_off = &c;
+    vertical.push_back(time_plot(d, c, vertical.size()));
+    vertical_spectra.push_back(spectrum_plot(c, vertical_spectra.size()));
+  }
+  if (!vertical.empty()) {
+    out.emplace_back(plot_panels(
+        id + "-vertical",
+        fmt::format("Heave, roll and pitch of the reference point{} in case {} ({}), as above.",
+                    hang_off ? fmt::format(", and the vertical motion of the riser hang-off that moves most ({})",
+                                           hang_off->name.substr(std::string_view("hang-off heave ").size()))
+                             : std::string(),
+                    d.case_name, design::to_string(d.level)),
+        1.25, std::move(vertical), 2));
+    out.emplace_back(plot_panels(id + "-vertical-spectra",
+                                 "One-sided Welch spectra of heave, roll, pitch and the hang-off's vertical motion: "
+                                 "the wave-frequency band, and the hull's own resonances beside it (a semi's "
+                                 "heave, roll and pitch periods lie above the waves').",
+                                 1.3, std::move(vertical_spectra), 2));
+  }
+  if (const design::StormChannel* tension = d.tension()) {
+    const design::StormChannel& t = *tension;
     Plot series = time_plot(d, t, 4);  // not red: the MPM line is
     const bool coupled = d.tension_source == design::TensionSource::coupled;
     series.title = fmt::format("{} fairlead tension, {}", coupled ? "Coupled" : "Quasi-static", d.most_loaded_line);
@@ -214,8 +242,8 @@ Section dynamics_section(const design::StageDynamics& d, const std::string& code
                            code, d.dynamic_safety_factor),
                {"Check", "Item", "Value", "Limit", "Utilization", "Result"},
                {}};
-  if (!d.most_loaded_line.empty()) {
-    const auto& t = d.channels.back();
+  if (const design::StormChannel* tension = d.tension()) {
+    const auto& t = *tension;
     checks.rows.push_back({text("dynamic tension"), text(d.most_loaded_line),
                            text(fmt::format("MPM {:.1f} kN", t.mpm_max().value_or(t.moments().maximum) * 1e-3)),
                            text(fmt::format("MBL {:.0f} kN", d.fairlead_mbl_N * 1e-3)), num(d.tension_utilization, 3),

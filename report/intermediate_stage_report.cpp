@@ -66,13 +66,17 @@ Section ranking_section(const design::IntermediateStageResults& r) {
               {}};
   for (const auto& c : r.ranked) {
     const auto& d = c.storm;
-    const auto& o = d.channels[3];
-    const auto& tt = d.channels.back();
-    stats.rows.push_back({text(d.case_name), text(d.most_loaded_line), num(tt.moments().mean, 1, kN),
-                          num(tt.moments().std_dev, 1, kN), num(tt.moments().maximum, 1, kN),
-                          num(tt.mpm_max().value_or(tt.moments().maximum), 1, kN), num(o.moments().mean, 2),
-                          num(o.moments().maximum, 2), num(o.mpm_max().value_or(o.moments().maximum), 2),
-                          num(d.wall_s, 2)});
+    const design::StormChannel* o = d.channel("offset");
+    const design::StormChannel* tt = d.tension();
+    if (!o) continue;
+    const auto tension = [&](auto value) { return tt ? num(value(*tt), 1, kN) : text("–"); };
+    stats.rows.push_back({text(d.case_name), text(tt ? d.most_loaded_line : "–"),
+                          tension([](const auto& c) { return c.moments().mean; }),
+                          tension([](const auto& c) { return c.moments().std_dev; }),
+                          tension([](const auto& c) { return c.moments().maximum; }),
+                          tension([](const auto& c) { return c.mpm_max().value_or(c.moments().maximum); }),
+                          num(o->moments().mean, 2), num(o->moments().maximum, 2),
+                          num(o->mpm_max().value_or(o->moments().maximum), 2), num(d.wall_s, 2)});
   }
   s.blocks.emplace_back(stats);
   return s;

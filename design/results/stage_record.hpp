@@ -33,7 +33,9 @@ namespace spiral::design {
 /// 5: the coupled solver's statistics count Newton restarts on a fresh
 /// matrix (engine/numerics/sundials_ida.hpp), and runs made before it took
 /// their steps without them.
-inline constexpr int kStageRecordVersion = 5;
+/// 6: a storm's channels add heave, roll, pitch and the vertical motion of
+/// the riser hang-off that moves most.
+inline constexpr int kStageRecordVersion = 6;
 
 using RecordBytes = std::vector<std::uint8_t>;
 

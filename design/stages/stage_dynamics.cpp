@@ -6,8 +6,9 @@
 #include <cmath>
 #include <numbers>
 
-#include "engine/numerics/statistics.hpp"
+#include "engine/common/rigid_body.hpp"
 #include "engine/common/stopwatch.hpp"
+#include "engine/numerics/statistics.hpp"
 
 namespace spiral::design {
 
@@ -25,7 +26,33 @@ std::vector<double> row(const Eigen::Matrix<double, 6, Eigen::Dynamic>& m, int d
   return out;
 }
 
+/// Vertical displacement of a body point from its rest height at each column
+/// of `total` (hull offsets about the reference point): heave plus the
+/// exact rotation's vertical component of the point's lever arm, the motion
+/// a riser's top sees (WF heave and pitch drive its tension range and the
+/// compression at its touchdown).
+std::vector<double> vertical_displacement(const Eigen::Matrix<double, 6, Eigen::Dynamic>& total,
+                                          const Eigen::Vector3d& point_b) {
+  std::vector<double> out(static_cast<std::size_t>(total.cols()));
+  for (Eigen::Index k = 0; k < total.cols(); ++k) {
+    const engine::Vector6d offset = total.col(k);
+    out[static_cast<std::size_t>(k)] =
+        engine::body_point_to_global(Eigen::Vector3d::Zero(), offset, point_b).z() - point_b.z();
+  }
+  return out;
+}
+
 }  // namespace
+
+const StormChannel* StageDynamics::channel(std::string_view name) const {
+  for (const StormChannel& c : channels)
+    if (c.name == name) return &c;
+  return nullptr;
+}
+
+const StormChannel* StageDynamics::tension() const {
+  return most_loaded_line.empty() ? nullptr : channel("tension " + most_loaded_line);
+}
 
 StormChannel summarize_storm_channel(std::string name, std::string unit, std::vector<double> values, double dt_s) {
   StormChannel c;
@@ -138,6 +165,22 @@ StageDynamics summarize_stage_dynamics(const ValidatedProject& vp, const StaticC
     out.tension_utilization = check.utilization;
     out.tension_pass = check.utilization <= 1.0;
   }
+
+  out.channels.push_back(summarize_storm_channel("heave", "m", row(r.total, 2, 1.0), dt));
+  out.channels.push_back(summarize_storm_channel("roll", "deg", row(r.total, 3, kRadToDeg), dt));
+  out.channels.push_back(summarize_storm_channel("pitch", "deg", row(r.total, 4, kRadToDeg), dt));
+  // The hang-off that moves most vertically: the riser whose top stroke and
+  // touchdown compression the storm tests hardest.
+  const Riser* moving = nullptr;
+  std::vector<double> stroke;
+  double largest_std = -1.0;
+  for (const Riser& riser : vp.project.risers) {
+    std::vector<double> z = vertical_displacement(r.total, riser.hang_off_b);
+    const double s = engine::channel_moments(z).std_dev;
+    if (s > largest_std) largest_std = s, moving = &riser, stroke = std::move(z);
+  }
+  if (moving)
+    out.channels.push_back(summarize_storm_channel("hang-off heave " + moving->name, "m", std::move(stroke), dt));
 
   if (zone && !zone->risers.empty()) {
     StaticCaseResult extreme;  // names the case; the offset comes from the record

@@ -1,8 +1,10 @@
 #pragma once
 // The time-domain part of a stage (DESIGN.md §2): one load case's S-C
 // analysis (dynamic_analysis.hpp) reduced to what a stage checks and reports —
-// the motion channels (surge, sway, yaw and the horizontal offset), the
-// quasi-static fairlead tension of the most loaded line, their statistics
+// the motion channels (surge, sway, yaw and the horizontal offset; heave,
+// roll, pitch and the vertical motion of the riser hang-off that moves most,
+// which the wave-frequency response drives), the fairlead tension of the
+// most loaded line, their statistics
 // (moments, Welch spectrum, MPM of the 3-h maximum) and the two dynamic
 // checks:
 //  - tension: the line's MPM fairlead tension against its fairlead segment's
@@ -17,6 +19,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "design/criteria/mooring_checks.hpp"
@@ -36,8 +39,8 @@ enum class TensionSource {
 
 /// One channel of a stage's dynamic analysis and its statistics.
 struct StormChannel {
-  std::string name;            ///< surge, sway, yaw, offset, or "tension <line>"
-  std::string unit;            ///< m, deg or N (the values below are in it)
+  std::string name;  ///< surge, sway, yaw, offset, "tension <line>", heave, roll, pitch, "hang-off heave <riser>"
+  std::string unit;  ///< m, deg or N (the values below are in it)
   std::vector<double> values;  ///< per output time
   /// Its statistics (engine::analyze_channel): the moments always; the
   /// one-sided Welch spectrum (up to its last significant bin), the periods
@@ -68,7 +71,11 @@ struct StageDynamics {
   double output_step_s = 0.0;
   std::uint64_t seed = 1;
   std::vector<double> times_s;
-  /// surge (m), sway (m), yaw (deg), offset (m, horizontal), tension of the most loaded line (N).
+  /// surge (m), sway (m), yaw (deg), offset (m, horizontal), the tension of
+  /// the most loaded line (N, when the project has mooring lines), heave (m),
+  /// roll and pitch (deg), and the vertical displacement of the riser hang-off
+  /// with the largest one's standard deviation (m, when it has risers). Look
+  /// channels up by name: which of them exist depends on the project.
   std::vector<StormChannel> channels;
   std::string most_loaded_line;  ///< by its largest sampled fairlead tension
   TensionSource tension_source = TensionSource::quasi_static;
@@ -81,6 +88,11 @@ struct StageDynamics {
   AnalysisTimings timing;  ///< of the analysis (equilibrium 0 when the stage's static case was reused)
   double wall_s = 0.0;     ///< the whole analysis and its statistics
   int solver_steps = 0;
+
+  /// The channel called `name`, or nullptr.
+  const StormChannel* channel(std::string_view name) const;
+  /// The most loaded line's tension channel, or nullptr (no mooring lines).
+  const StormChannel* tension() const;
 };
 
 /// Channel statistics of a uniformly sampled record (dt_s > 0).

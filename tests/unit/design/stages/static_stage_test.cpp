@@ -5,6 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <numbers>
+
+#include <Eigen/Geometry>
 
 #include "design/project/model_hash.hpp"
 
@@ -58,22 +61,54 @@ TEST(StaticStage, DefaultScenarioCasesChecksAndCurves) {
               r.checks[i].lines_pass && r.checks[i].offset_pass && r.checks[i].risers_pass && r.checks[i].soz_pass);
   }
 
-  // The S-C storm of the governing case: 3 h at 0.5 s, five channels, and
+  // The S-C storm of the governing case: 3 h at 0.5 s, nine channels, and
   // the dynamic tension check recomputed from its own channel.
   ASSERT_TRUE(r.dynamics.has_value());
   const StageDynamics& d = *r.dynamics;
   EXPECT_EQ(d.case_name, r.cases[static_cast<std::size_t>(std::max(1, r.worst_case))].case_name);
   EXPECT_EQ(d.level, AnalysisLevel::semi_coupled_enhanced);
   EXPECT_EQ(d.times_s.size(), 21601u);
-  ASSERT_EQ(d.channels.size(), 5u);
-  EXPECT_EQ(d.channels[4].name, "tension " + d.most_loaded_line);
+  ASSERT_EQ(d.channels.size(), 9u);
+  ASSERT_NE(d.tension(), nullptr);
+  EXPECT_EQ(d.tension(), &d.channels[4]);
+  EXPECT_EQ(d.tension()->name, "tension " + d.most_loaded_line);
+  for (const char* name : {"surge", "sway", "yaw", "offset", "heave", "roll", "pitch"})
+    EXPECT_NE(d.channel(name), nullptr) << name;
+  EXPECT_TRUE(d.channels.back().name.starts_with("hang-off heave ")) << d.channels.back().name;
   for (const StormChannel& c : d.channels) {
     EXPECT_EQ(c.values.size(), d.times_s.size()) << c.name;
     ASSERT_TRUE(c.mpm_max().has_value()) << c.name << ": " << c.extremes_note;
     EXPECT_GT(*c.mpm_max(), c.moments().mean) << c.name;
     EXPECT_GT(c.statistics.spectrum.density.size(), 0) << c.name;
   }
-  const StormChannel& t = d.channels[4];
+  // The hang-off channel: heave plus the rotation's vertical component of
+  // the hang-off's lever arm (Rz leaves z alone, so yaw does not enter), at
+  // the riser whose vertical motion varies most.
+  const auto vertical = [&](const Riser& riser) {
+    std::vector<double> z(d.times_s.size());
+    for (std::size_t k = 0; k < z.size(); ++k) {
+      const double roll = d.channel("roll")->values[k] * std::numbers::pi / 180.0;
+      const double pitch = d.channel("pitch")->values[k] * std::numbers::pi / 180.0;
+      const Eigen::Vector3d arm =
+          (Eigen::AngleAxisd(pitch, Eigen::Vector3d::UnitY()) * Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitX())) *
+          riser.hang_off_b;
+      z[k] = d.channel("heave")->values[k] + arm.z() - riser.hang_off_b.z();
+    }
+    return z;
+  };
+  const StormChannel& stroke = d.channels.back();
+  double largest_std = 0.0;
+  for (const Riser& riser : project.project.risers) {
+    const std::vector<double> z = vertical(riser);
+    const double s = engine::channel_moments(z).std_dev;
+    largest_std = std::max(largest_std, s);
+    if (stroke.name != "hang-off heave " + riser.name) continue;
+    for (std::size_t k = 0; k < z.size(); k += 97) EXPECT_NEAR(stroke.values[k], z[k], 1e-9) << riser.name << " " << k;
+  }
+  EXPECT_NEAR(stroke.moments().std_dev, largest_std, 1e-9);
+  EXPECT_GT(largest_std, d.channel("heave")->moments().std_dev);  // pitch adds to heave at the column hang-offs
+
+  const StormChannel& t = *d.tension();
   const double sf_dynamic = d.integrity == LineIntegrity::damaged ? 1.25 : 1.67;  // the scenario's API RP 2SK factors
   EXPECT_NEAR(d.tension_utilization, *t.mpm_max() * sf_dynamic / d.fairlead_mbl_N, 1e-12);
   ASSERT_TRUE(d.extreme_offset.has_value());
