@@ -1,6 +1,11 @@
 #include "design/model/hull_model.hpp"
 
+#include <list>
+#include <mutex>
 #include <numbers>
+#include <string>
+#include <utility>
+#include <vector>
 #include <stdexcept>
 
 #include "engine/hull/wamit_hst.hpp"
@@ -24,14 +29,61 @@ bool has_wave_excitation(const Project& project) {
          (h->rao_file || h->excitation_file || h->excitation == ExcitationSource::morison_maccamy_fuchs);
 }
 
+namespace {
+
+/// Every number the Morison excitation table depends on, as bytes: equal
+/// keys give bit-identical tables.
+std::string excitation_key(const engine::MorisonHull& hull, const engine::Seawater& water, std::optional<double> depth,
+                           const std::vector<double>& omegas) {
+  std::vector<double> v;
+  const auto add3 = [&v](const Eigen::Vector3d& x) { v.insert(v.end(), x.data(), x.data() + 3); };
+  for (const engine::MorisonStrip& s : hull.strips) {
+    add3(s.center_b);
+    add3(s.axis_b);
+    v.insert(v.end(), {s.length_m, s.diameter_m, s.drag_coefficient, s.added_mass_coefficient,
+                       s.submerged_at_rest ? 1.0 : 0.0, static_cast<double>(s.member)});
+  }
+  v.push_back(-1.0);  // strips | faces
+  for (const engine::MorisonEndFace& f : hull.faces) {
+    add3(f.center_b);
+    add3(f.inward_normal_b);
+    v.insert(v.end(), {f.radius_m, f.added_mass_coefficient, f.drag_coefficient, f.submerged_at_rest ? 1.0 : 0.0,
+                       static_cast<double>(f.member)});
+  }
+  add3(hull.reference_point_at_rest_g);
+  v.insert(v.end(), {water.density_kg_per_m3, water.gravity_m_per_s2, depth ? 1.0 : 0.0, depth.value_or(0.0)});
+  v.insert(v.end(), omegas.begin(), omegas.end());
+  return std::string(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(double));
+}
+
+}  // namespace
+
 engine::ExcitationTable morison_excitation_of(const Project& project, const engine::HydroCoefficients& radiation) {
   constexpr int kHeadings = 36;
+  const engine::MorisonHull hull = morison_hull_of(project);
+  const engine::Seawater water{project.site.water_density_kg_per_m3, project.site.gravity_m_per_s2};
+  // Every case model of a run builds the same hull, and the table (36
+  // headings × the radiation frequencies, each a sum over the strips with
+  // MacCamy–Fuchs Bessel factors) was a quarter of a 3-h S-C storm's time:
+  // kept per process by its inputs, the last few of them.
+  static std::mutex mutex;
+  static std::list<std::pair<std::string, engine::ExcitationTable>> computed;
+  constexpr std::size_t kKept = 4;
+  const std::string key = excitation_key(hull, water, project.site.depth_m, radiation.omega_rad_per_s);
+  {
+    std::lock_guard lock(mutex);
+    for (const auto& [k, table] : computed)
+      if (k == key) return table;
+  }
   std::vector<double> headings(kHeadings);
   for (int i = 0; i < kHeadings; ++i) headings[static_cast<std::size_t>(i)] = 2.0 * std::numbers::pi * i / kHeadings;
-  return engine::morison_excitation_table(
-      morison_hull_of(project), {project.site.water_density_kg_per_m3, project.site.gravity_m_per_s2},
-      project.site.depth_m, radiation.omega_rad_per_s, headings, engine::MorisonDiffraction::maccamy_fuchs,
+  engine::ExcitationTable table = engine::morison_excitation_table(
+      hull, water, project.site.depth_m, radiation.omega_rad_per_s, headings, engine::MorisonDiffraction::maccamy_fuchs,
       "hull.geometry (Morison members, MacCamy-Fuchs)");
+  std::lock_guard lock(mutex);
+  computed.emplace_front(key, table);
+  if (computed.size() > kKept) computed.pop_back();
+  return table;
 }
 
 engine::MorisonHull morison_hull_of(const Project& project) {

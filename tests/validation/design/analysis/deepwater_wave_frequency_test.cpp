@@ -76,6 +76,24 @@ TEST(DeepwaterWaveFrequency, MorisonExcitationRaosHaveTheLongWaveLimitsAndTheHul
     EXPECT_NEAR(std::abs(at(2, 0.0, w)), std::abs(at(2, 2.0 * kPi / 3.0, w)), 1e-5) << "w = " << rao.omega_rad_per_s[w];
 }
 
+TEST(DeepwaterWaveFrequency, TheExcitationTableIsComputedOnceForAHullAndAgainForAnother) {
+  // Every case model of a run asks for the same table (kept per process by
+  // its inputs); a hull with one column changed must not get it.
+  ValidatedProject vp = with_morison_excitation();
+  const HullModel hull = build_hull_model(vp.project);
+  const engine::ExcitationTable first = morison_excitation_of(vp.project, *hull.radiation);
+  const engine::ExcitationTable again = morison_excitation_of(vp.project, *hull.radiation);
+  for (std::size_t dof = 0; dof < 6; ++dof) EXPECT_EQ(first.values[dof], again.values[dof]) << dof;
+  vp.project.hull.geometry->columns.front().diameter_m *= 1.1;
+  const engine::ExcitationTable other = morison_excitation_of(vp.project, *hull.radiation);
+  const engine::ExcitationTable direct = engine::morison_excitation_table(
+      morison_hull_of(vp.project), {vp.project.site.water_density_kg_per_m3, vp.project.site.gravity_m_per_s2},
+      vp.project.site.depth_m, hull.radiation->omega_rad_per_s, first.headings_rad,
+      engine::MorisonDiffraction::maccamy_fuchs, "");
+  for (std::size_t dof = 0; dof < 6; ++dof) EXPECT_EQ(other.values[dof], direct.values[dof]) << dof;
+  EXPECT_NE(other.values[0], first.values[0]);
+}
+
 TEST(DeepwaterWaveFrequency, TheScStormMovesAtWaveFrequency) {
   const ValidatedProject vp = with_morison_excitation();
   DynamicAnalysisRequest request;
