@@ -646,6 +646,41 @@ OptimizationStudy run_optimization_study(const std::filesystem::path& project_fi
           store.file()};
 }
 
+std::vector<std::string> advanced_riser_findings(const AdvancedStageResults& r, int iteration) {
+  struct Worst {
+    const FinalRiserCheck* check = nullptr;
+    std::string case_name;
+    int cases = 0;
+  };
+  std::map<std::string, Worst> risers;
+  for (const CriticalCaseVerification& c : r.cases) {
+    for (const FinalRiserCheck& check : c.risers) {
+      if (check.pass || !check.limit_N) continue;
+      Worst& w = risers[check.riser];
+      ++w.cases;
+      if (!w.check || check.utilization > w.check->utilization) w.check = &check, w.case_name = c.case_name;
+    }
+  }
+  std::vector<std::string> out;
+  for (const auto& [name, w] : risers) {
+    const FinalRiserCheck& c = *w.check;
+    const std::string cause =
+        c.mean_N > *c.limit_N
+            ? "its mean top tension alone exceeds the limit: the offset's share is the mooring's to reduce"
+            : fmt::format(
+                  "its mean ({:.0f} kN) is within the limit, the storm's dynamic range ({:.0f} kN from mean "
+                  "to MPM) is not: the riser's response to the hull's motion at its hang-off, which the "
+                  "pretensions hardly change — revisit the hang-off capacity or the riser's configuration",
+                  c.mean_N * 1e-3, (c.mpm_N - c.mean_N) * 1e-3);
+    out.push_back(fmt::format(
+        "riser-design finding (advanced stage, iteration {}): riser {} exceeds its maximum top tension in the "
+        "coupled storms of {} of {} critical case(s), worst {:.3f} in {} (3-h MPM {:.0f} kN against {:.0f} kN); {}",
+        iteration, name, w.cases, r.cases.size(), c.utilization, w.case_name, c.mpm_N * 1e-3, *c.limit_N * 1e-3,
+        cause));
+  }
+  return out;
+}
+
 SpiralRunResult run_spiral(const std::filesystem::path& project_file, const SpiralRunOptions& options,
                            const std::function<void(const StageRun&)>& stage_done) {
   Iteration it = project_as_given(project_file, options);
@@ -781,6 +816,9 @@ SpiralRunResult run_spiral(const std::filesystem::path& project_file, const Spir
         }
         const IntermediateStageResults intermediate = *ranking->intermediate;
         record(run_advanced(ctx, it, intermediate));
+        if (const StageRun& advanced = result.stages.back(); advanced.advanced)
+          for (std::string& f : advanced_riser_findings(*advanced.advanced, it.number))
+            result.findings.push_back(std::move(f));
       }
     }
     result.completed = go_on && !result.stages.empty() && result.stages.back().completed;

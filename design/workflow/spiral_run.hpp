@@ -133,6 +133,15 @@ struct OptimizationStudy {
 OptimizationStudy run_optimization_study(const std::filesystem::path& project_file, const SpiralRunOptions& options,
                                          int study_points);
 
+/// The risers whose top tension fails in the advanced stage's coupled
+/// storms, one finding each (the worst case, the mean and the dynamic range
+/// against the limit): the static checks before that stage, and the S-C
+/// levels' quasi-static riser criteria, do not see a riser's own dynamics
+/// under the hull's wave-frequency motion, and the pretensions move its mean
+/// top tension, not that range — the riser design's (hang-off capacity,
+/// configuration) to answer.
+std::vector<std::string> advanced_riser_findings(const AdvancedStageResults& advanced, int iteration);
+
 /// The stages the project asks for (its stages[] names among kSpiralStages,
 /// else all three), up to `until`. Throws InputError for an unknown `until`.
 std::vector<std::string> spiral_stages(const Project& project, const std::optional<std::string>& until);

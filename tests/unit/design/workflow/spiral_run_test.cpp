@@ -250,6 +250,41 @@ TEST(SpiralRun, AProjectNamedWithoutItsFolderIteratesToo) {
   EXPECT_TRUE(r.stages[1].pass) << r.stages[1].governing;
 }
 
+TEST(SpiralRun, AdvancedRiserTopTensionFailuresAreRiserDesignFindings) {
+  // Two critical cases: E2 fails in both on its dynamic range (mean within
+  // the limit), P1 in one with its mean already over it; P2 passes, and a
+  // riser without a limit is never a finding.
+  const auto check = [](std::string riser, double mean_kN, double mpm_kN, std::optional<double> limit_kN) {
+    FinalRiserCheck c;
+    c.riser = std::move(riser);
+    c.mean_N = mean_kN * 1e3;
+    c.mpm_N = c.max_N = mpm_kN * 1e3;
+    if (limit_kN) c.limit_N = *limit_kN * 1e3;
+    c.utilization = limit_kN ? mpm_kN / *limit_kN : 0.0;
+    c.pass = c.utilization <= 1.0;
+    return c;
+  };
+  AdvancedStageResults r;
+  r.cases.resize(2);
+  r.cases[0].case_name = "lc1";
+  r.cases[0].risers = {check("E2", 3500.0, 5000.0, 4000.0), check("P2", 2500.0, 3000.0, 4000.0),
+                       check("F1", 2500.0, 9000.0, std::nullopt)};
+  r.cases[1].case_name = "lc2";
+  r.cases[1].risers = {check("E2", 3520.0, 5736.0, 4000.0), check("P1", 4100.0, 4400.0, 4000.0)};
+  const std::vector<std::string> f = advanced_riser_findings(r, 2);
+  ASSERT_EQ(f.size(), 2u);  // by riser name: E2, P1
+  EXPECT_NE(f[0].find("riser E2 exceeds its maximum top tension in the coupled storms of 2 of 2 critical case(s), "
+                      "worst 1.434 in lc2 (3-h MPM 5736 kN against 4000 kN)"),
+            std::string::npos)
+      << f[0];
+  EXPECT_NE(f[0].find("its mean (3520 kN) is within the limit, the storm's dynamic range (2216 kN"), std::string::npos)
+      << f[0];
+  EXPECT_NE(f[0].find("advanced stage, iteration 2"), std::string::npos) << f[0];
+  EXPECT_NE(f[1].find("riser P1 exceeds its maximum top tension in the coupled storms of 1 of 2"), std::string::npos)
+      << f[1];
+  EXPECT_NE(f[1].find("its mean top tension alone exceeds the limit"), std::string::npos) << f[1];
+}
+
 TEST(SpiralRun, AnOptimizationTheProjectAsksForRunsOnceOnAPassingDesign) {
   // OC4 passes its preliminary checks as given; stages[].optimize asks for
   // the optimizer anyway (max SOZ margin). One optimization, one more
