@@ -168,9 +168,10 @@ std::vector<Block> storm_blocks(const design::StageDynamics& d, const std::strin
   std::vector<Plot> vertical, vertical_spectra;
   const design::StormChannel* hang_off = nullptr;
   for (const design::StormChannel& c : d.channels) {
-    const bool shown = c.name == "heave" || c.name == "roll" || c.name == "pitch" || c.name.starts_with("hang-off ");
+    const bool shown =
+        c.name == "heave" || c.name == "roll" || c.name == "pitch" || c.name.starts_with(design::kHangOffHeavePrefix);
     if (!shown) continue;
-    if (c.name.starts_with("hang-off ")) hang_off = &c;
+    if (c.name.starts_with(design::kHangOffHeavePrefix)) hang_off = &c;
     vertical.push_back(time_plot(d, c, vertical.size()));
     vertical_spectra.push_back(spectrum_plot(c, vertical_spectra.size()));
   }
@@ -179,7 +180,7 @@ std::vector<Block> storm_blocks(const design::StageDynamics& d, const std::strin
         id + "-vertical",
         fmt::format("Heave, roll and pitch of the reference point{} in case {} ({}), as above.",
                     hang_off ? fmt::format(", and the vertical motion of the riser hang-off that moves most ({})",
-                                           hang_off->name.substr(std::string_view("hang-off heave ").size()))
+                                           hang_off->name.substr(design::kHangOffHeavePrefix.size()))
                              : std::string(),
                     d.case_name, design::to_string(d.level)),
         1.25, std::move(vertical), 2));

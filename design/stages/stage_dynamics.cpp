@@ -180,7 +180,8 @@ StageDynamics summarize_stage_dynamics(const ValidatedProject& vp, const StaticC
     if (s > largest_std) largest_std = s, moving = &riser, stroke = std::move(z);
   }
   if (moving)
-    out.channels.push_back(summarize_storm_channel("hang-off heave " + moving->name, "m", std::move(stroke), dt));
+    out.channels.push_back(
+        summarize_storm_channel(std::string(kHangOffHeavePrefix) + moving->name, "m", std::move(stroke), dt));
 
   if (zone && !zone->risers.empty()) {
     StaticCaseResult extreme;  // names the case; the offset comes from the record

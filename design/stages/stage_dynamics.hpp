@@ -37,6 +37,9 @@ enum class TensionSource {
   coupled,       ///< the dynamic FE line of the coupled run
 };
 
+/// Name prefix of the hang-off channel, followed by the riser's name.
+inline constexpr std::string_view kHangOffHeavePrefix = "hang-off heave ";
+
 /// One channel of a stage's dynamic analysis and its statistics.
 struct StormChannel {
   std::string name;  ///< surge, sway, yaw, offset, "tension <line>", heave, roll, pitch, "hang-off heave <riser>"

@@ -74,7 +74,7 @@ TEST(StaticStage, DefaultScenarioCasesChecksAndCurves) {
   EXPECT_EQ(d.tension()->name, "tension " + d.most_loaded_line);
   for (const char* name : {"surge", "sway", "yaw", "offset", "heave", "roll", "pitch"})
     EXPECT_NE(d.channel(name), nullptr) << name;
-  EXPECT_TRUE(d.channels.back().name.starts_with("hang-off heave ")) << d.channels.back().name;
+  EXPECT_TRUE(d.channels.back().name.starts_with(kHangOffHeavePrefix)) << d.channels.back().name;
   for (const StormChannel& c : d.channels) {
     EXPECT_EQ(c.values.size(), d.times_s.size()) << c.name;
     ASSERT_TRUE(c.mpm_max().has_value()) << c.name << ": " << c.extremes_note;
@@ -102,7 +102,7 @@ TEST(StaticStage, DefaultScenarioCasesChecksAndCurves) {
     const std::vector<double> z = vertical(riser);
     const double s = engine::channel_moments(z).std_dev;
     largest_std = std::max(largest_std, s);
-    if (stroke.name != "hang-off heave " + riser.name) continue;
+    if (stroke.name != std::string(kHangOffHeavePrefix) + riser.name) continue;
     for (std::size_t k = 0; k < z.size(); k += 97) EXPECT_NEAR(stroke.values[k], z[k], 1e-9) << riser.name << " " << k;
   }
   EXPECT_NEAR(stroke.moments().std_dev, largest_std, 1e-9);
