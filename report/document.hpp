@@ -87,6 +87,10 @@ int write_pdf(const ReportDocument& document, const std::string& file);
 /// (which exists). Throws std::runtime_error naming the file.
 void write_html(const ReportDocument& document, const std::string& folder);
 
+/// Writes a vector figure as an SVG file of the PDF's text-column width
+/// (the HTML index's figures). Throws std::runtime_error naming the file.
+void write_svg(const Figure& figure, const std::string& file);
+
 /// A CSV of the table (RFC 4180 quoting).
 std::string table_csv(const Table& table);
 

@@ -57,18 +57,7 @@ void write_figure(const Figure& f, const std::filesystem::path& folder) {
     write_png(*f.image, path);
     return;
   }
-  const double h = kSvgWidth / f.aspect;
-  const SurfacePtr surface(cairo_svg_surface_create(path.string().c_str(), kSvgWidth, h));
-  {
-    const ContextPtr cr(cairo_create(surface.get()));
-    cairo_set_source_rgb(cr.get(), 1, 1, 1);
-    cairo_paint(cr.get());
-    if (f.draw) f.draw(cr.get(), kSvgWidth, h);
-  }
-  cairo_surface_finish(surface.get());
-  if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS) {
-    throw std::runtime_error(fmt::format("{}: cannot write the figure", path.string()));
-  }
+  write_svg(f, path.string());
 }
 
 constexpr const char* kStyle = R"(
@@ -87,6 +76,21 @@ figcaption{font-size:.9em} nav li{margin:2px 0} dl.kv{display:grid;grid-template
 )";
 
 }  // namespace
+
+void write_svg(const Figure& f, const std::string& file) {
+  const double h = kSvgWidth / f.aspect;
+  const SurfacePtr surface(cairo_svg_surface_create(file.c_str(), kSvgWidth, h));
+  {
+    const ContextPtr cr(cairo_create(surface.get()));
+    cairo_set_source_rgb(cr.get(), 1, 1, 1);
+    cairo_paint(cr.get());
+    if (f.draw) f.draw(cr.get(), kSvgWidth, h);
+  }
+  cairo_surface_finish(surface.get());
+  if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS) {
+    throw std::runtime_error(fmt::format("{}: cannot write the figure", file));
+  }
+}
 
 std::string table_csv(const Table& table) {
   auto quote = [](const std::string& s) {

@@ -18,6 +18,7 @@
 #include "design/project/request_error.hpp"
 #include "design/project/validated_project.hpp"
 #include "design/results/level_comparison_output.hpp"
+#include "report/comparison_figure.hpp"
 #include "report/terminal/comparison_table.hpp"
 
 namespace spiral::app {
@@ -51,6 +52,7 @@ class CompareCommand : public Command {
       std::filesystem::create_directories(folder);
       write_file_atomically(folder / "comparison.json", design::comparison_to_json(comparison).dump(2) + "\n");
       write_file_atomically(folder / "comparison.txt", table);
+      report::write_svg(report::comparison_figure(comparison), (folder / "comparison.svg").string());
     } catch (const std::exception& error) {
       fmt::print(stderr, "output error: {}\n", error.what());
       fmt::print("{}", table);  // the finished comparison is not lost

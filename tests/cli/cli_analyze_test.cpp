@@ -126,6 +126,10 @@ TEST(CliCompare, FourLevelsSideBySide) {
   EXPECT_GT(j["levels"]["sc"]["speedup_vs_coupled"].get<double>(), 1.0);
   EXPECT_TRUE(j["levels"]["sc"]["channels"]["offset_m"].contains("diff_pct_vs_coupled"));
   EXPECT_TRUE(j["levels"]["coupled"]["channels"].contains("tension_L2_N"));
+  // The trade-off plot beside the table (cairo writes the text as glyphs).
+  const std::string svg = read_text((out / "comparison.svg").string());
+  EXPECT_NE(svg.find("<svg"), std::string::npos);
+  EXPECT_GT(svg.size(), 10000u);
   std::filesystem::remove_all(out);
 }
 
