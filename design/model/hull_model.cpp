@@ -81,6 +81,9 @@ engine::ExcitationTable morison_excitation_of(const Project& project, const engi
       hull, water, project.site.depth_m, radiation.omega_rad_per_s, headings, engine::MorisonDiffraction::maccamy_fuchs,
       "hull.geometry (Morison members, MacCamy-Fuchs)");
   std::lock_guard lock(mutex);
+  // Two tasks starting together may both have computed it: keep one entry.
+  for (const auto& [k, kept] : computed)
+    if (k == key) return table;
   computed.emplace_front(key, table);
   if (computed.size() > kKept) computed.pop_back();
   return table;
