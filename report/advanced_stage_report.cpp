@@ -40,9 +40,18 @@ Section critical_cases_section(const design::AdvancedStageResults& r) {
   for (const auto& c : r.cases) {
     t.rows.push_back({num(c.rank, 0), text(c.case_name), text(design::to_string(c.integrity)),
                       num(c.intermediate_score, 3), text(design::to_string(c.intermediate_governing)),
-                      text(c.coupled ? "finished" : "FAILED"), num(c.wall_s, 2), verdict(c.pass)});
+                      text(!c.shared_with.empty() ? "as " + c.shared_with
+                           : c.coupled            ? "finished"
+                                                  : "FAILED"),
+                      c.shared_with.empty() ? num(c.wall_s, 2) : text("–"), verdict(c.pass)});
   }
   s.blocks.emplace_back(t);
+  for (const auto& c : r.cases)
+    if (!c.shared_with.empty())
+      s.blocks.emplace_back(Paragraph{fmt::format(
+          "Case {} is the same analysis as {} (the same sea, wind and current, line integrity, design condition "
+          "and seed): it was run once, and its results and checks below are those of {}.",
+          c.case_name, c.shared_with, c.shared_with)});
   for (const auto& c : r.cases)
     if (c.error) s.blocks.emplace_back(Paragraph{fmt::format("Case {} — solver failure: {}", c.case_name, *c.error)});
   return s;

@@ -215,4 +215,11 @@ const Environment& environment_of(const Project& project, const LoadCase& load_c
   return *it;
 }
 
+bool same_analysis_inputs(const Project& project, const LoadCase& a, const LoadCase& b) {
+  if (a.damaged_line != b.damaged_line || a.condition != b.condition || a.seed != b.seed) return false;
+  const Environment& ea = environment_of(project, a);
+  const Environment& eb = environment_of(project, b);
+  return ea.waves == eb.waves && ea.wind == eb.wind && ea.current == eb.current;
+}
+
 }  // namespace spiral::design

@@ -378,6 +378,7 @@ struct Waves {
   std::optional<double> gamma;        ///< JONSWAP peak enhancement, >= 1 (absent: DNV-RP-C205 3.5.5.5)
   double heading_rad = 0.0;           ///< direction of propagation
   std::optional<double> spreading_s;  ///< cos-2s directional spreading exponent, > 0 (absent: long-crested)
+  bool operator==(const Waves&) const = default;
 };
 
 struct Wind {
@@ -385,16 +386,19 @@ struct Wind {
   double heading_rad = 0.0;    ///< direction the wind blows towards
   WindSpectrum spectrum = WindSpectrum::none;
   double reference_height_m = 10.0;  ///< above mean water level, > 0
+  bool operator==(const Wind&) const = default;
 };
 
 struct CurrentPoint {
   double z_m = 0.0;            ///< global z, in [-depth, 0]
   double speed_m_per_s = 0.0;  ///< >= 0
+  bool operator==(const CurrentPoint&) const = default;
 };
 
 struct Current {
   double heading_rad = 0.0;
   std::vector<CurrentPoint> profile;  ///< from the surface down (z strictly decreasing)
+  bool operator==(const Current&) const = default;
 };
 
 struct Environment {
@@ -629,6 +633,14 @@ RiserCriteria riser_criteria(const Criteria& criteria, const Riser& riser);
 
 /// The environment a load case names (validation guarantees it exists).
 const Environment& environment_of(const Project& project, const LoadCase& load_case);
+
+/// Whether two load cases of `project` are the same analysis under two
+/// names: equal sea, wind and current (value for value; the environments'
+/// names aside), the same damaged line, design condition and seed. Every
+/// result of one is then the other's (a load-case matrix may list a case
+/// the project also names, e.g. an environment turned by 45 deg and the
+/// 45 deg environment itself).
+bool same_analysis_inputs(const Project& project, const LoadCase& a, const LoadCase& b);
 
 /// The mooring line named `name`, for names the validation or a request
 /// check has already found (std::logic_error otherwise: a bug).

@@ -259,7 +259,8 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(FinalRiserCheck, riser, mean_N, max_N, mpm_N,
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(CriticalCaseVerification, rank, case_name, integrity, intermediate_score,
                                    intermediate_governing, sc, coupled, comparison, error, lines, soz_offset,
                                    mpm_offset_m, offset_limit_m, offset_limit_pass, risers, static_risers_pass,
-                                   static_riser_utilization, static_riser, static_riser_criterion, pass, wall_s)
+                                   static_riser_utilization, static_riser, static_riser_criterion, pass, wall_s,
+                                   shared_with)
 
 // The pretension optimization of a feedback iteration.
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(GroupVariable, name, lines, min_m, max_m)

@@ -35,7 +35,8 @@ namespace spiral::design {
 /// their steps without them.
 /// 6: a storm's channels add heave, roll, pitch and the vertical motion of
 /// the riser hang-off that moves most.
-inline constexpr int kStageRecordVersion = 6;
+/// 7: a critical case names the case whose runs it shares (shared_with).
+inline constexpr int kStageRecordVersion = 7;
 
 using RecordBytes = std::vector<std::uint8_t>;
 

@@ -11,6 +11,28 @@ namespace spiral::design {
 
 namespace {
 
+std::string verification_selection(const RankedCase& ranked) {
+  return fmt::format("critical case #{} of the intermediate ranking", ranked.rank);
+}
+
+/// What of a verification is `ranked`'s own in `stage`: its name, rank,
+/// intermediate score and static riser check.
+void name_as(CriticalCaseVerification& v, const IntermediateStageResults& stage, const RankedCase& ranked) {
+  const StaticCaseResult& statics = stage.statics.cases[ranked.case_index];
+  v.rank = ranked.rank;
+  v.case_name = statics.case_name;
+  v.integrity = statics.integrity;
+  v.intermediate_score = ranked.score;
+  v.intermediate_governing = ranked.governing_measure;
+  // The riser criteria the coupled run does not give (stress, angles, …)
+  // stand as the stage's static equilibrium of the case checked them.
+  v.static_risers_pass = stage.statics.checks[ranked.case_index].risers_pass;
+  v.static_riser_utilization = ranked.riser_utilization;
+  v.static_riser = ranked.riser;
+  v.static_riser_criterion = ranked.riser_criterion;
+  v.comparison.case_name = statics.case_name;
+}
+
 /// The output step of every stage storm (stage_dynamics.cpp): 0.5 s.
 constexpr double kOutputStep_s = 0.5;
 /// One seed for both levels, so that they see the same sea.
@@ -84,20 +106,9 @@ CriticalCaseVerification verify_critical_case(const ValidatedProject& vp, const 
   base.statics = &statics;
   base.seed = static_cast<std::uint64_t>(case_seed(vp.project, statics.case_name));  // both levels, one sea
   const SozResult* zone = stage.statics.soz ? &*stage.statics.soz : nullptr;
-  const std::string selection = fmt::format("critical case #{} of the intermediate ranking", ranked.rank);
+  const std::string selection = verification_selection(ranked);
   CriticalCaseVerification v;
-  v.rank = ranked.rank;
-  v.case_name = statics.case_name;
-  v.integrity = statics.integrity;
-  v.intermediate_score = ranked.score;
-  v.intermediate_governing = ranked.governing_measure;
-  // The riser criteria the coupled run does not give (stress, angles, …)
-  // stand as the stage's static equilibrium of the case checked them.
-  v.static_risers_pass = stage.statics.checks[ranked.case_index].risers_pass;
-  v.static_riser_utilization = ranked.riser_utilization;
-  v.static_riser = ranked.riser;
-  v.static_riser_criterion = ranked.riser_criterion;
-  v.comparison.case_name = statics.case_name;
+  name_as(v, stage, ranked);
   v.comparison.seed = base.seed;
   v.comparison.duration_s = base.duration_s;
 
@@ -200,6 +211,41 @@ long coupled_max_steps(const AdvancedStageOptions& options, const std::string& c
   return limit != options.coupled_max_steps_by_case.end() ? limit->second : options.coupled_max_steps_between_outputs;
 }
 
+const RankedCase* earlier_identical_case(const Project& project, const IntermediateStageResults& stage,
+                                         const RankedCase& ranked, const AdvancedStageOptions& options) {
+  const auto load_case = [&](const RankedCase& r) -> const LoadCase* {
+    const std::string& name = stage.statics.cases[r.case_index].case_name;
+    for (const LoadCase& c : project.load_cases)
+      if (c.name == name) return &c;
+    return nullptr;
+  };
+  const LoadCase* own = load_case(ranked);
+  if (own == nullptr) return nullptr;
+  for (const RankedCase& earlier : stage.ranked) {
+    if (&earlier == &ranked) return nullptr;
+    if (!earlier.critical) continue;
+    const LoadCase* other = load_case(earlier);
+    if (other != nullptr && same_analysis_inputs(project, *own, *other) &&
+        coupled_max_steps(options, own->name) == coupled_max_steps(options, other->name))
+      return &earlier;
+  }
+  return nullptr;
+}
+
+CriticalCaseVerification shared_verification(CriticalCaseVerification verified, const IntermediateStageResults& stage,
+                                             const RankedCase& ranked) {
+  CriticalCaseVerification v = std::move(verified);
+  v.shared_with = v.case_name;
+  name_as(v, stage, ranked);
+  for (std::optional<StageDynamics>* level : {&v.sc, &v.coupled}) {
+    if (!level->has_value()) continue;
+    (*level)->case_name = v.case_name;
+    (*level)->selection = verification_selection(ranked);
+  }
+  v.wall_s = 0.0;
+  return v;
+}
+
 AdvancedStageResults reduce_advanced_stage(IntermediateStageResults intermediate, const DynamicAnalysisRequest& base,
                                            std::vector<CriticalCaseVerification> cases) {
   AdvancedStageResults out;
@@ -228,6 +274,13 @@ AdvancedStageResults run_advanced_stage(const ValidatedProject& vp, const Advanc
   std::vector<CriticalCaseVerification> cases;
   for (const RankedCase& ranked : intermediate.ranked) {
     if (!ranked.critical) continue;
+    if (const RankedCase* twin = earlier_identical_case(vp.project, intermediate, ranked, options)) {
+      const auto verified = std::find_if(cases.begin(), cases.end(), [&](const CriticalCaseVerification& c) {
+        return c.rank == twin->rank && c.shared_with.empty();
+      });
+      cases.push_back(shared_verification(*verified, intermediate, ranked));
+      continue;
+    }
     const std::string& name = intermediate.statics.cases[ranked.case_index].case_name;
     cases.push_back(verify_critical_case(vp, intermediate, ranked, base, coupled_max_steps(options, name)));
   }

@@ -25,7 +25,9 @@
 //               stage's static equilibrium of the case checked them.
 // A coupled run that fails (engine::SolverError) keeps its message in its
 // case, the other cases still run, and the stage cannot pass: an unverified
-// critical case is not a verified one.
+// critical case is not a verified one. Two critical cases that are the same
+// analysis under two names (a matrix case and a case the project names) are
+// run once; the second shares the first's runs and says so.
 
 #include <cstdint>
 #include <map>
@@ -92,8 +94,12 @@ struct CriticalCaseVerification {
   bool static_risers_pass = true;
   double static_riser_utilization = 0.0;
   std::string static_riser, static_riser_criterion;
-  bool pass = false;  ///< the coupled run finished and every check passes
-  double wall_s = 0.0;
+  bool pass = false;    ///< the coupled run finished and every check passes
+  double wall_s = 0.0;  ///< 0 for a case that shares another's runs
+  /// The critical case whose runs and checks this one shares: the same
+  /// analysis under another name (same_analysis_inputs); empty when the
+  /// case ran its own.
+  std::string shared_with;
 };
 
 struct AdvancedStageResults {
@@ -140,6 +146,19 @@ long coupled_max_steps(const AdvancedStageOptions& options, const std::string& c
 CriticalCaseVerification verify_critical_case(const ValidatedProject& project, const IntermediateStageResults& stage,
                                               const RankedCase& ranked, DynamicAnalysisRequest base,
                                               long coupled_max_steps);
+
+/// The first critical case ranked before `ranked` that is the same analysis
+/// (same_analysis_inputs and the same coupled work limit), verified once for
+/// both; null when there is none.
+const RankedCase* earlier_identical_case(const Project& project, const IntermediateStageResults& stage,
+                                         const RankedCase& ranked, const AdvancedStageOptions& options);
+
+/// The verification of `ranked` from `verified`, that of a case with the same
+/// analysis inputs: the runs and checks are the same, the name, rank,
+/// intermediate score and selection are `ranked`'s, and `shared_with` names
+/// the case that ran.
+CriticalCaseVerification shared_verification(CriticalCaseVerification verified, const IntermediateStageResults& stage,
+                                             const RankedCase& ranked);
 
 /// The stage from the ranking and the verified cases (rank order).
 AdvancedStageResults reduce_advanced_stage(IntermediateStageResults intermediate, const DynamicAnalysisRequest& base,

@@ -347,7 +347,8 @@ StageRun run_advanced(const RunContext& ctx, const Iteration& it, const Intermed
   const DynamicAnalysisRequest base = advanced_stage_request(vp.project, options);
   TaskBatch batch(stage.stage, it.number);
   for (const RankedCase& ranked : intermediate.ranked) {
-    if (!ranked.critical) continue;
+    // A case that is another's analysis under a second name shares its task.
+    if (!ranked.critical || earlier_identical_case(vp.project, intermediate, ranked, options)) continue;
     const std::string& name = intermediate.statics.cases[ranked.case_index].case_name;
     const long max_steps = coupled_max_steps(options, name);
     // The rank and score are the intermediate stage's; they enter the key so
@@ -369,9 +370,19 @@ StageRun run_advanced(const RunContext& ctx, const Iteration& it, const Intermed
   // default scenario's four critical cases: 233 s one at a time on two
   // threads, 182 s two at a time on one each).
   run_batch(ctx, batch, stage, "verification", ctx.options.jobs);
-  std::vector<CriticalCaseVerification> cases;
+  std::vector<CriticalCaseVerification> verified;
   for (std::size_t k = 0; k < batch.size(); ++k)
-    if (const auto* v = batch.value<CriticalCaseVerification>(k)) cases.push_back(*v);
+    if (const auto* v = batch.value<CriticalCaseVerification>(k)) verified.push_back(*v);
+  std::vector<CriticalCaseVerification> cases;
+  for (const RankedCase& ranked : intermediate.ranked) {
+    if (!ranked.critical) continue;
+    const RankedCase* twin = earlier_identical_case(vp.project, intermediate, ranked, options);
+    const int rank = twin ? twin->rank : ranked.rank;
+    const auto v = std::find_if(verified.begin(), verified.end(),
+                                [&](const CriticalCaseVerification& c) { return c.rank == rank; });
+    if (v == verified.end()) continue;  // its task failed: the batch says why
+    cases.push_back(twin ? shared_verification(*v, intermediate, ranked) : *v);
+  }
   AdvancedStageResults r = reduce_advanced_stage(intermediate, base, std::move(cases));
   r.verification_wall_s = runs_start.seconds();
   r.wall_time_s = start.seconds();

@@ -141,5 +141,48 @@ TEST(LoadCaseMatrix, LoadedProjectHoldsTheGeneratedCases) {
   EXPECT_EQ(p.project.environments.size(), 2u + 2u);
 }
 
+// A matrix case turned onto a heading the project also names as its own
+// environment is the same analysis (same_analysis_inputs), whatever the two
+// environments are called; a different seed, damaged line, condition or
+// heading is not.
+TEST(LoadCaseMatrix, AMatrixCaseTurnedOntoANamedCaseIsTheSameAnalysis) {
+  std::string text =
+      with_matrix("  - {environment: storm0, headings_deg: [0.0, 45.0], damaged: [L0], damaged_condition: extreme}\n");
+  text = replace(text, "  - name: calm\n",
+                 "  - name: calm\n"
+                 "  - name: storm0\n"
+                 "    waves: {spectrum: jonswap, hs: 6.0, tp: 11.0, heading_deg: 0.0}\n"
+                 "    wind: {speed: 20.0, heading_deg: 0.0, spectrum: api}\n"
+                 "    current: {heading_deg: 0.0, profile: [[0.0, 1.0], [-100.0, 0.5]]}\n"
+                 "  - name: storm45\n"
+                 "    waves: {spectrum: jonswap, hs: 6.0, tp: 11.0, heading_deg: 45.0}\n"
+                 "    wind: {speed: 20.0, heading_deg: 45.0, spectrum: api}\n"
+                 "    current: {heading_deg: 45.0, profile: [[0.0, 1.0], [-100.0, 0.5]]}\n");
+  text = replace(text, "  - {name: lc1, environment: calm}\n",
+                 "  - {name: lc1, environment: calm}\n"
+                 "  - {name: named45, environment: storm45}\n"
+                 "  - {name: named45-seed2, environment: storm45, seed: 2}\n"
+                 "  - {name: named45-without-L0, environment: storm45, damaged_line: L0}\n"
+                 "  - {name: named45-survival, environment: storm45, condition: survival}\n");
+  ASSERT_EQ(report(text), "");
+  Project p = parse_project(text, "test.yaml");
+  expand_load_case_matrix(p);
+  const auto load_case = [&](const std::string& name) -> const LoadCase& {
+    for (const LoadCase& c : p.load_cases)
+      if (c.name == name) return c;
+    ADD_FAILURE() << name;
+    return p.load_cases.front();
+  };
+  const LoadCase& named = load_case("named45");
+  EXPECT_TRUE(same_analysis_inputs(p, named, load_case("storm0@h045")));
+  EXPECT_TRUE(same_analysis_inputs(p, load_case("named45-without-L0"), load_case("storm0@h045-without-L0")));
+  EXPECT_FALSE(same_analysis_inputs(p, named, load_case("storm0@h000")));  // heading
+  EXPECT_FALSE(same_analysis_inputs(p, named, load_case("named45-seed2")));
+  EXPECT_FALSE(same_analysis_inputs(p, named, load_case("named45-without-L0")));
+  EXPECT_FALSE(same_analysis_inputs(p, named, load_case("named45-survival")));
+  EXPECT_FALSE(same_analysis_inputs(p, named, load_case("lc1")));  // calm: no sea at all
+  EXPECT_TRUE(same_analysis_inputs(p, named, named));
+}
+
 }  // namespace
 }  // namespace spiral::design

@@ -322,6 +322,61 @@ TEST(SpiralRun, EveryStormOfACaseUsesItsSeed) {
     EXPECT_EQ(v.comparison.seed, v.case_name == "intact-raft-jonswap" ? 3u : 1u) << v.case_name;
 }
 
+// A load case listed twice under two names (as a matrix may list a case the
+// project also names) is verified once at the advanced stage: one coupled
+// task, and the second case carries the first's results under its own name
+// and rank, saying whose they are.
+TEST(SpiralRun, ACaseListedTwiceIsVerifiedOnce) {
+  const auto project = oc4_variant("twice", "  - {name: intact-raft-jonswap, environment: raft-jonswap}\n",
+                                   "  - {name: intact-raft-jonswap, environment: raft-jonswap}\n"
+                                   "  - {name: raft-jonswap-again, environment: raft-jonswap}\n");
+  SpiralRunOptions options;
+  options.out_folder = project.parent_path() / "out";
+  const SpiralRunResult r = run_spiral(project, options);
+  ASSERT_TRUE(r.completed);
+  const AdvancedStageResults& advanced = *r.stages.back().advanced;
+  ASSERT_EQ(advanced.cases.size(), 3u);  // every case is in the top 3
+  const CriticalCaseVerification* ran = nullptr;
+  const CriticalCaseVerification* shared = nullptr;
+  for (const CriticalCaseVerification& c : advanced.cases) {
+    if (c.case_name == "intact-still-water") {
+      EXPECT_TRUE(c.shared_with.empty());
+      continue;
+    }
+    (c.shared_with.empty() ? ran : shared) = &c;
+  }
+  ASSERT_NE(ran, nullptr);
+  ASSERT_NE(shared, nullptr);
+  EXPECT_EQ(shared->shared_with, ran->case_name);
+  EXPECT_LT(ran->rank, shared->rank);
+  EXPECT_DOUBLE_EQ(shared->wall_s, 0.0);
+  ASSERT_TRUE(ran->coupled && shared->coupled && shared->sc);
+  EXPECT_EQ(shared->coupled->case_name, shared->case_name);
+  EXPECT_EQ(shared->comparison.case_name, shared->case_name);
+  EXPECT_NE(shared->coupled->selection.find("#" + std::to_string(shared->rank)), std::string::npos);
+  ASSERT_EQ(shared->coupled->channels.size(), ran->coupled->channels.size());
+  for (std::size_t i = 0; i < ran->coupled->channels.size(); ++i)
+    EXPECT_EQ(shared->coupled->channels[i].values, ran->coupled->channels[i].values);
+  ASSERT_EQ(shared->lines.size(), ran->lines.size());
+  for (std::size_t i = 0; i < ran->lines.size(); ++i) EXPECT_EQ(shared->lines[i].mpm_N, ran->lines[i].mpm_N);
+  EXPECT_EQ(shared->pass, ran->pass);
+  // The intermediate storms of the two names are the same, bit for bit: the
+  // premise of sharing.
+  const auto& ranked = r.stages[1].intermediate->ranked;
+  const auto storm = [&](const std::string& name) {
+    for (const RankedCase& c : ranked)
+      if (c.storm.case_name == name) return c.storm.channels[0].values;
+    ADD_FAILURE() << name;
+    return std::vector<double>{};
+  };
+  EXPECT_EQ(storm("intact-raft-jonswap"), storm("raft-jonswap-again"));
+  // Two coupled verification tasks in the store, not three.
+  int verifications = 0;
+  for (const std::string& row : stored_numbers(results_store_file(options.out_folder)))
+    verifications += row.find("|verification|") != std::string::npos ? 1 : 0;
+  EXPECT_EQ(verifications, 2);
+}
+
 TEST(SpiralRun, AnUnknownLastStageIsARequestError) {
   const auto project = oc4_variant("until");
   SpiralRunOptions options;
