@@ -137,6 +137,7 @@ DynamicAnalysisResult run_coupled_analysis(const ValidatedProject& validated, co
   const auto n_out = static_cast<long>(std::floor(request.duration_s / request.output_step_s + 1e-9));
   for (long k = 1; k <= n_out; ++k) options.output_times_s.push_back(static_cast<double>(k) * request.output_step_s);
   options.threads = engine::worker_count(count);
+  options.take_freed_cores = true;
   const double scale = request.tolerance_scale;
   options.relative_tolerance *= scale;
   options.position_tolerance_m *= scale;

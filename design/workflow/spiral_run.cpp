@@ -368,7 +368,8 @@ StageRun run_advanced(const RunContext& ctx, const Iteration& it, const Intermed
   // the cores it is given (engine::worker_count: none beside another run),
   // and one run on two cores is only 1.2-1.9x faster than on one (the
   // default scenario's four critical cases: 233 s one at a time on two
-  // threads, 182 s two at a time on one each).
+  // threads, 182 s two at a time on one each). The last run takes the
+  // cores the others free when they end (CoupledOptions::take_freed_cores).
   run_batch(ctx, batch, stage, "verification", ctx.options.jobs);
   std::vector<CriticalCaseVerification> verified;
   for (std::size_t k = 0; k < batch.size(); ++k)

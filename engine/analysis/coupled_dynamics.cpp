@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "engine/analysis/line_array.hpp"
+#include "engine/common/parallel_for.hpp"
 #include "engine/common/worker_pool.hpp"
 #include "engine/lines/fe_dynamic_line.hpp"
 #include "engine/common/stopwatch.hpp"
@@ -468,6 +469,10 @@ CoupledTimeSeries simulate_coupled(const HullDynamicsModel& hull, const HullLoad
                           ida.state_derivative().segment<6>(6));
     previous_acceleration = ida.state_derivative().segment<6>(6);
     system.for_each_line([&](LineBlock& b) { b.line.follow_elements(ida.state().segment(b.offset, b.line.n)); });
+    if (options.take_freed_cores) {
+      const int lines = static_cast<int>(blocks.size());
+      system.pool().grow_to(std::min(lines, worker_count(lines)));
+    }
     const std::vector<double> err = ida.group_local_errors();
     std::size_t worst_part = blocks.size();
     double worst = err[0];

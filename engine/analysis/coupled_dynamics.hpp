@@ -115,7 +115,13 @@ struct CoupledOptions {
   int max_order = 2;
   std::optional<double> max_step_s;
   long max_steps_between_outputs = 500000;
-  int threads = 1;                               ///< >= 1
+  int threads = 1;  ///< >= 1
+  /// At each output the line pool grows to the cores that other
+  /// parallel_for work has freed (worker_count), up to a thread per line: a
+  /// run started beside another (the advanced stage's verifications two at
+  /// a time) gets both cores once the other ends. Results do not depend on
+  /// the thread count (each line and vector range writes its own values).
+  bool take_freed_cores = false;
   PrescribedHullMotionFn wave_frequency_motion;  ///< empty: none
 };
 

@@ -21,9 +21,7 @@ namespace spiral::engine {
 class WorkerPool {
  public:
   /// `threads` >= 1 threads in all, the caller's included.
-  explicit WorkerPool(int threads) {
-    for (int t = 1; t < threads; ++t) workers_.emplace_back([this] { work(); });
-  }
+  explicit WorkerPool(int threads) { grow_to(threads); }
   ~WorkerPool() {
     {
       std::lock_guard<std::mutex> lock(mutex_);
@@ -36,6 +34,14 @@ class WorkerPool {
   WorkerPool& operator=(const WorkerPool&) = delete;
 
   int threads() const { return static_cast<int>(workers_.size()) + 1; }
+
+  /// Adds workers until there are `threads` in all (never fewer): a long
+  /// run started beside other work takes the cores that work frees. Call
+  /// from the owning thread between runs.
+  void grow_to(int threads) {
+    while (this->threads() < threads)
+      workers_.emplace_back([this, seen = generation_.load(std::memory_order_acquire)] { work(seen); });
+  }
 
   template <class Task>
   void run(int count, const Task& task) {
@@ -88,8 +94,9 @@ class WorkerPool {
   }
   static constexpr int kSpinChecks = 200;
 
-  void work() {
-    long seen = 0;
+  /// `seen`: the last job generation before this worker started (it takes
+  /// the next one on).
+  void work(long seen) {
     for (;;) {
       spin_until([&] { return generation_.load(std::memory_order_acquire) != seen; });
       {
