@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "design/project/request_error.hpp"
 #include "engine/common/solver_error.hpp"
 #include "engine/common/stopwatch.hpp"
 
@@ -31,6 +32,24 @@ void name_as(CriticalCaseVerification& v, const IntermediateStageResults& stage,
   v.static_riser = ranked.riser;
   v.static_riser_criterion = ranked.riser_criterion;
   v.comparison.case_name = statics.case_name;
+}
+
+/// The verification of `ranked` from `verified`, that of a case with the
+/// same analysis inputs: the runs and checks are the same, the name, rank,
+/// intermediate score and selection are `ranked`'s, and `shared_with` names
+/// the case that ran.
+CriticalCaseVerification shared_verification(CriticalCaseVerification verified, const IntermediateStageResults& stage,
+                                             const RankedCase& ranked) {
+  CriticalCaseVerification v = std::move(verified);
+  v.shared_with = v.case_name;
+  name_as(v, stage, ranked);
+  for (std::optional<StageDynamics>* level : {&v.sc, &v.coupled}) {
+    if (!level->has_value()) continue;
+    (*level)->case_name = v.case_name;
+    (*level)->selection = verification_selection(ranked);
+  }
+  v.wall_s = 0.0;
+  return v;
 }
 
 /// The output step of every stage storm (stage_dynamics.cpp): 0.5 s.
@@ -213,37 +232,35 @@ long coupled_max_steps(const AdvancedStageOptions& options, const std::string& c
 
 const RankedCase* earlier_identical_case(const Project& project, const IntermediateStageResults& stage,
                                          const RankedCase& ranked, const AdvancedStageOptions& options) {
-  const auto load_case = [&](const RankedCase& r) -> const LoadCase* {
-    const std::string& name = stage.statics.cases[r.case_index].case_name;
-    for (const LoadCase& c : project.load_cases)
-      if (c.name == name) return &c;
-    return nullptr;
+  const auto load_case = [&](const RankedCase& r) -> const LoadCase& {
+    return find_load_case(project, stage.statics.cases[r.case_index].case_name);
   };
-  const LoadCase* own = load_case(ranked);
-  if (own == nullptr) return nullptr;
+  const LoadCase& own = load_case(ranked);
   for (const RankedCase& earlier : stage.ranked) {
     if (&earlier == &ranked) return nullptr;
     if (!earlier.critical) continue;
-    const LoadCase* other = load_case(earlier);
-    if (other != nullptr && same_analysis_inputs(project, *own, *other) &&
-        coupled_max_steps(options, own->name) == coupled_max_steps(options, other->name))
+    const LoadCase& other = load_case(earlier);
+    if (same_analysis_inputs(project, own, other) &&
+        coupled_max_steps(options, own.name) == coupled_max_steps(options, other.name))
       return &earlier;
   }
   return nullptr;
 }
 
-CriticalCaseVerification shared_verification(CriticalCaseVerification verified, const IntermediateStageResults& stage,
-                                             const RankedCase& ranked) {
-  CriticalCaseVerification v = std::move(verified);
-  v.shared_with = v.case_name;
-  name_as(v, stage, ranked);
-  for (std::optional<StageDynamics>* level : {&v.sc, &v.coupled}) {
-    if (!level->has_value()) continue;
-    (*level)->case_name = v.case_name;
-    (*level)->selection = verification_selection(ranked);
+std::vector<CriticalCaseVerification> critical_case_verifications(
+    const Project& project, const IntermediateStageResults& stage, const AdvancedStageOptions& options,
+    const std::vector<CriticalCaseVerification>& verified) {
+  std::vector<CriticalCaseVerification> cases;
+  for (const RankedCase& ranked : stage.ranked) {
+    if (!ranked.critical) continue;
+    const RankedCase* twin = earlier_identical_case(project, stage, ranked, options);
+    const int rank = twin ? twin->rank : ranked.rank;
+    const auto v = std::find_if(verified.begin(), verified.end(),
+                                [&](const CriticalCaseVerification& c) { return c.rank == rank; });
+    if (v == verified.end()) continue;  // its task failed: the caller says why
+    cases.push_back(twin ? shared_verification(*v, stage, ranked) : *v);
   }
-  v.wall_s = 0.0;
-  return v;
+  return cases;
 }
 
 AdvancedStageResults reduce_advanced_stage(IntermediateStageResults intermediate, const DynamicAnalysisRequest& base,
@@ -271,19 +288,14 @@ AdvancedStageResults run_advanced_stage(const ValidatedProject& vp, const Advanc
   engine::Stopwatch runs_start;
   // One case at a time: the coupled run already spreads its lines over the
   // worker pool, and its memory is that of every FE line of the case.
-  std::vector<CriticalCaseVerification> cases;
+  std::vector<CriticalCaseVerification> verified;
   for (const RankedCase& ranked : intermediate.ranked) {
-    if (!ranked.critical) continue;
-    if (const RankedCase* twin = earlier_identical_case(vp.project, intermediate, ranked, options)) {
-      const auto verified = std::find_if(cases.begin(), cases.end(), [&](const CriticalCaseVerification& c) {
-        return c.rank == twin->rank && c.shared_with.empty();
-      });
-      cases.push_back(shared_verification(*verified, intermediate, ranked));
-      continue;
-    }
+    if (!ranked.critical || earlier_identical_case(vp.project, intermediate, ranked, options)) continue;
     const std::string& name = intermediate.statics.cases[ranked.case_index].case_name;
-    cases.push_back(verify_critical_case(vp, intermediate, ranked, base, coupled_max_steps(options, name)));
+    verified.push_back(verify_critical_case(vp, intermediate, ranked, base, coupled_max_steps(options, name)));
   }
+  std::vector<CriticalCaseVerification> cases =
+      critical_case_verifications(vp.project, intermediate, options, verified);
   const double verification_wall_s = runs_start.seconds();
   AdvancedStageResults out = reduce_advanced_stage(std::move(intermediate), base, std::move(cases));
   out.verification_wall_s = verification_wall_s;

@@ -153,12 +153,14 @@ CriticalCaseVerification verify_critical_case(const ValidatedProject& project, c
 const RankedCase* earlier_identical_case(const Project& project, const IntermediateStageResults& stage,
                                          const RankedCase& ranked, const AdvancedStageOptions& options);
 
-/// The verification of `ranked` from `verified`, that of a case with the same
-/// analysis inputs: the runs and checks are the same, the name, rank,
-/// intermediate score and selection are `ranked`'s, and `shared_with` names
-/// the case that ran.
-CriticalCaseVerification shared_verification(CriticalCaseVerification verified, const IntermediateStageResults& stage,
-                                             const RankedCase& ranked);
+/// The critical cases of `stage` in rank order from the verifications of the
+/// cases that ran (`verified`): a case that is an earlier case's analysis
+/// (earlier_identical_case) takes that verification under its own name and
+/// rank, `shared_with` naming the case that ran; a case whose verification
+/// is missing (its task failed) is left out.
+std::vector<CriticalCaseVerification> critical_case_verifications(
+    const Project& project, const IntermediateStageResults& stage, const AdvancedStageOptions& options,
+    const std::vector<CriticalCaseVerification>& verified);
 
 /// The stage from the ranking and the verified cases (rank order).
 AdvancedStageResults reduce_advanced_stage(IntermediateStageResults intermediate, const DynamicAnalysisRequest& base,

@@ -374,17 +374,8 @@ StageRun run_advanced(const RunContext& ctx, const Iteration& it, const Intermed
   std::vector<CriticalCaseVerification> verified;
   for (std::size_t k = 0; k < batch.size(); ++k)
     if (const auto* v = batch.value<CriticalCaseVerification>(k)) verified.push_back(*v);
-  std::vector<CriticalCaseVerification> cases;
-  for (const RankedCase& ranked : intermediate.ranked) {
-    if (!ranked.critical) continue;
-    const RankedCase* twin = earlier_identical_case(vp.project, intermediate, ranked, options);
-    const int rank = twin ? twin->rank : ranked.rank;
-    const auto v = std::find_if(verified.begin(), verified.end(),
-                                [&](const CriticalCaseVerification& c) { return c.rank == rank; });
-    if (v == verified.end()) continue;  // its task failed: the batch says why
-    cases.push_back(twin ? shared_verification(*v, intermediate, ranked) : *v);
-  }
-  AdvancedStageResults r = reduce_advanced_stage(intermediate, base, std::move(cases));
+  AdvancedStageResults r = reduce_advanced_stage(
+      intermediate, base, critical_case_verifications(vp.project, intermediate, options, verified));
   r.verification_wall_s = runs_start.seconds();
   r.wall_time_s = start.seconds();
   stage.completed = true;
