@@ -22,20 +22,6 @@ namespace {
 /// component's motion to (ω Δt)⁴/384 ≈ 1e-5 of its amplitude.
 constexpr double kWaveMotionSample_s = 0.2;
 
-/// The integrator's relative tolerance (shared with the hull) and the lines'
-/// absolute ones under wave-frequency hull motion, as a fraction of the
-/// single-line defaults the coupled system takes otherwise.
-/// Measured on the default FPS (lc2, 300 s, WF motion prescribed to the
-/// hull): at the defaults the risers' top-tension std came out +36 % (E2)
-/// to +76 % (P1) above the converged value, while the mooring lines' and the
-/// hull's motions were converged; ×0.3 gave +6 / +15 %, ×0.1 agrees with
-/// ×0.1 of every tolerance and with the same risers under the same motion
-/// prescribed alone (E2 271 / 270 / 263-270 kN, P1 54 / 54 / 54-57 kN), for
-/// 1.3× the steps (5,891 against 3,476). The hull's tolerances ×0.1 alone
-/// changed nothing (E2 356 kN). Without WF motion the defaults are within
-/// 0.5 % (docs/decisions/coupled-dynamics-performance.md).
-constexpr double kWaveFrequencyLineToleranceScale = 0.1;
-
 /// The RAO motion as a C² function of time with its rates, built up by the
 /// quintic ramp (translations and rotations as two 3-vector splines).
 engine::PrescribedHullMotionFn ramped_wave_motion(const Eigen::Matrix<double, 6, Eigen::Dynamic>& samples, double dt_s,
