@@ -30,6 +30,7 @@ std::string flag_of(const std::string& argument) {
       {"motion", "--motion"},
       {"output_step_s", "--step"},
       {"ramp_s", "--ramp"},
+      {"tolerance_scale", "--tolerance-scale"},
   };
   for (const auto& [name, flag] : kFlags)
     if (name == argument) return std::string(flag);

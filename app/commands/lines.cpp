@@ -59,6 +59,7 @@ class LinesCommand : public Command {
     request.ramp_s = ramp_s_;
     request.waves_on_lines = !no_waves_;
     request.seed = seed_;
+    request.tolerance_scale = tolerance_scale_;
     const design::MotionLinesResult result = design::run_motion_lines(loaded, request);
     const nlohmann::json summary = design::motion_lines_to_json(result, loaded, motion_file_);
     const std::filesystem::path folder =
@@ -96,6 +97,9 @@ class LinesCommand : public Command {
     sub.add_option("--ramp", ramp_s_, "Build-up time of the motion, s; statistics start after it (default: 20)");
     sub.add_option("--seed", seed_, "Seed of the case's sea on the lines (default: the load case's seed)");
     sub.add_flag("--no-waves", no_waves_, "No waves on the lines (current and the hull motion only)");
+    sub.add_option("--tolerance-scale", tolerance_scale_,
+                   "The FE lines' integrator tolerances x this (default: 1, the single-line defaults); 0.1 for a "
+                   "motion with wave-frequency content, as analyze and compare run the lines under it (docs/lines.md)");
     sub.add_option("--out", out_, "Output folder (default: out/<project-stem>/lines/<case>-<motion-stem>)");
   }
 
@@ -106,6 +110,7 @@ class LinesCommand : public Command {
   double ramp_s_ = 20.0;
   std::optional<std::uint64_t> seed_;
   bool no_waves_ = false;
+  double tolerance_scale_ = 1.0;
   std::string out_;
 };
 

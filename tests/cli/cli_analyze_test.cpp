@@ -152,7 +152,7 @@ TEST(CliAnalyze, AZeroToleranceScaleIsBadInputNamingTheField) {
                                  " --case intact-raft-jonswap --level coupled --duration 10 --tolerance-scale 0"
                                  " --out /tmp/spiral-never");
   EXPECT_EQ(result.exit_code, app::kExitBadInput);
-  EXPECT_NE(result.err.find("tolerance_scale"), std::string::npos) << result.err;
+  EXPECT_NE(result.err.find("--tolerance-scale"), std::string::npos) << result.err;
   EXPECT_NE(result.err.find("oc4-semisubmersible.yaml"), std::string::npos) << result.err;
 }
 

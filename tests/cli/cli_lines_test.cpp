@@ -103,13 +103,17 @@ TEST(CliLines, BadMotionFileExitsTwoWithFileLineAndColumn) {
   EXPECT_NE(missing.err.find("/nonexistent/m.csv"), std::string::npos) << missing.err;
 }
 
-TEST(CliLines, UnknownLineAndRampTooLongExitTwoNamingTheirFlags) {
+TEST(CliLines, UnknownLineRampTooLongAndZeroToleranceScaleExitTwoNamingTheirFlags) {
   const auto line = run_spiral("lines " + kOc4 + " --motion " + kSurge + " --case intact-still-water --lines L9");
   EXPECT_EQ(line.exit_code, app::kExitBadInput);
   EXPECT_NE(line.err.find("--lines: no mooring line or riser named \"L9\""), std::string::npos) << line.err;
   const auto ramp = run_spiral("lines " + kOc4 + " --motion " + kSurge + " --case intact-still-water --ramp 900");
   EXPECT_EQ(ramp.exit_code, app::kExitBadInput);
   EXPECT_NE(ramp.err.find("--ramp"), std::string::npos) << ramp.err;
+  const auto scale =
+      run_spiral("lines " + kOc4 + " --motion " + kSurge + " --case intact-still-water --tolerance-scale 0");
+  EXPECT_EQ(scale.exit_code, app::kExitBadInput);
+  EXPECT_NE(scale.err.find("--tolerance-scale: must be > 0, got 0"), std::string::npos) << scale.err;
 }
 
 }  // namespace
