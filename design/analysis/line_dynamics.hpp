@@ -61,10 +61,11 @@ namespace spiral::design {
 /// Prescribed motion (the enhanced S-C motion of the operating case lc5,
 /// 1800 s, against ×0.1): at the defaults the top-tension std of the 12
 /// risers +22 to +33 %, the mooring lines' +13 to +15 %, and in the first
-/// seconds a start-up burst of E1's top tension to 3.78 MN (+26 % over the
-/// run's maximum) — IDA's steps, long while the build-up ramp barely moves
+/// seconds a start-up burst of E1's top tension to 3.78 MN (+25 % over the
+/// converged maximum) — IDA's steps, long while the build-up ramp barely moves
 /// the ends, grow past what the wave-frequency motion then needs and ring
-/// the risers' lightly damped axial modes; ×0.1 costs 1.9× the steps
+/// the risers' lightly damped axial modes; ×0.1 takes 2.1× the steps (1.9×
+/// the time)
 /// (docs/decisions/enhanced-sc-accuracy.md). Without WF motion the defaults
 /// are within 0.5 %.
 inline constexpr double kWaveFrequencyLineToleranceScale = 0.1;
