@@ -65,9 +65,8 @@ namespace spiral::design {
 /// converged maximum) — IDA's steps, long while the build-up ramp barely moves
 /// the ends, grow past what the wave-frequency motion then needs and ring
 /// the risers' lightly damped axial modes; ×0.1 takes 2.1× the steps (1.9×
-/// the time)
-/// (docs/decisions/enhanced-sc-accuracy.md). Without WF motion the defaults
-/// are within 0.5 %.
+/// the time; docs/decisions/enhanced-sc-accuracy.md). Without WF motion the
+/// defaults are within 0.5 %.
 inline constexpr double kWaveFrequencyLineToleranceScale = 0.1;
 
 struct LineDynamicsInput {

@@ -180,7 +180,7 @@ TEST(DeepwaterWaveFrequency, TheCoupledRisersTopTensionIsConvergedUnderWaveFrequ
 // the single-line default tolerances the first seconds rang the lines: E1's
 // top tension swung 2.60–3.19 MN in the first 12 s against 2.81–2.88 MN
 // converged, E2 2.75–3.45 against 3.18–3.23, L1 up to +3.5 %, L9 up to
-// +2.3 % (and in an 1800 s run E1's maximum, 3.78 MN at 2.5 s, was 26 %
+// +2.3 % (and in an 1800 s run E1's maximum, 3.78 MN at 2.5 s, was 25 %
 // above the converged one). Under WF motion they now run at
 // kWaveFrequencyLineToleranceScale; the reference is 0.3 of that again
 // (measured within 0.2 % of it). Tolerance 1.5 % of each line's extreme.
