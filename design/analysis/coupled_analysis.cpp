@@ -132,14 +132,12 @@ DynamicAnalysisResult run_coupled_analysis(const ValidatedProject& validated, co
   options.hull_position_tolerance_m *= scale;
   options.hull_rotation_tolerance_rad *= scale;
   if (options.wave_frequency_motion) {
-    options.relative_tolerance *= kWaveFrequencyLineToleranceScale;
-    options.position_tolerance_m *= kWaveFrequencyLineToleranceScale;
-    options.slope_tolerance *= kWaveFrequencyLineToleranceScale;
-    options.velocity_tolerance_m_per_s *= kWaveFrequencyLineToleranceScale;
-    result.notes.push_back(fmt::format(
-        "coupled: under wave-frequency motion the lines' tolerances are {:g} of the single-line defaults (the "
-        "risers' top tension is not converged at the defaults there)",
-        kWaveFrequencyLineToleranceScale));
+    // The risers' top tension under WF motion needs a Newton matrix as new
+    // as the step, not tighter tolerances (CoupledOptions).
+    options.steps_between_full_setups = 1;
+    result.notes.push_back(
+        "coupled: under wave-frequency motion the Newton matrix is set up afresh at every step (on older "
+        "element matrices the risers' top tension is not converged)");
   }
   options.max_steps_between_outputs = request.coupled_max_steps_between_outputs;
   engine::HullLoads loads;

@@ -569,7 +569,7 @@ DynamicAnalysisResult run_dynamic_analysis(const ValidatedProject& validated, co
                     model.sea ? " and linear wave kinematics at each element's midpoint (to 0.5 m)" : "",
                     result.wave_frequency_computed
                         ? fmt::format("; under the wave-frequency motion their tolerances are {:g} of the "
-                                      "single-line defaults, as the coupled level's",
+                                      "single-line defaults",
                                       kWaveFrequencyLineToleranceScale)
                         : std::string()));
   }

@@ -47,18 +47,11 @@
 
 namespace spiral::design {
 
-/// The FE lines' integrator tolerances (the relative one and the lines'
-/// absolute ones) when their ends follow wave-frequency hull motion, as a
-/// fraction of the single-line defaults (FeDynamicsOptions), which were
-/// chosen on a chain under slow and 10-s motion: the coupled system's lines
-/// and the S-C levels' prescribed-motion lines alike.
-/// Coupled (default FPS, lc2, 300 s): at the defaults the risers' top-tension
-/// std came out +36 % (E2) to +76 % (P1) above the converged value, while the
-/// mooring lines' and the hull's motions were converged; ×0.3 gave +6 /
-/// +15 %, ×0.1 agrees with ×0.1 of every tolerance (E2 271 / 270 kN, P1
-/// 54 / 54 kN), for 1.3× the steps. The hull's tolerances ×0.1 alone changed
-/// nothing (docs/decisions/coupled-dynamics-performance.md).
-/// Prescribed motion (the enhanced S-C motion of the operating case lc5,
+/// The S-C levels' prescribed-motion FE lines' integrator tolerances (the
+/// relative one and the lines' absolute ones) when their ends follow
+/// wave-frequency hull motion, as a fraction of the single-line defaults
+/// (FeDynamicsOptions), which were chosen on a chain under slow and 10-s
+/// motion. Measured (the enhanced S-C motion of the operating case lc5,
 /// 1800 s, against ×0.1): at the defaults the top-tension std of the 12
 /// risers +22 to +33 %, the mooring lines' +13 to +15 %, and in the first
 /// seconds a start-up burst of E1's top tension to 3.78 MN (+25 % over the
@@ -66,7 +59,11 @@ namespace spiral::design {
 /// the ends, grow past what the wave-frequency motion then needs and ring
 /// the risers' lightly damped axial modes; ×0.1 takes 2.1× the steps (1.9×
 /// the time; docs/decisions/enhanced-sc-accuracy.md). Without WF motion the
-/// defaults are within 0.5 %.
+/// defaults are within 0.5 %. The coupled level used this scale too until
+/// its lines' error was found to be the Newton iteration's on old element
+/// matrices: it now sets its Newton matrix up at every step instead
+/// (engine::CoupledOptions::steps_between_full_setups); whether part of the
+/// prescribed lines' error is the same effect is not yet measured.
 inline constexpr double kWaveFrequencyLineToleranceScale = 0.1;
 
 struct LineDynamicsInput {

@@ -88,16 +88,6 @@ struct LineBlock {
 // condensation after a c_j refactor").
 constexpr double kLineRefactorCjChange = 0.25;
 
-// A full setup (every line's element matrices evaluated again) at least every
-// 8 steps rather than IDA's 20: with wave-frequency motion the elements'
-// tangents turn within a few steps, and a stale axial stiffness EA t tᵀ
-// spoils the Newton iteration (docs/decisions/coupled-dynamics-performance.md,
-// "What still limits the wave-frequency case"). Measured on lc1, 2026-12-05:
-// with WF motion, 100 s, 1,424 → 975 steps, 25.8 → 21.5 s; without, 600 s,
-// 2,221 → 1,927 steps, 29.9 → 29.3 s, statistics within 0.7 % (5 steps: no
-// fewer steps, more setups).
-constexpr int kStepsBetweenFullSetups = 8;
-
 class CoupledSystem final : public ImplicitSystem {
  public:
   CoupledSystem(const HullDynamicsModel& hull, const HullLoads& loads, const Eigen::Vector3d& reference_g,
@@ -335,6 +325,8 @@ void validate(const HullLoads& loads, const std::vector<CoupledLine>& lines, con
     fail("loads.lines: the FE lines replace a nonlinear line model (give LinearizedLines)");
   if (lines.empty()) fail("lines: at least one line is needed");
   if (o.threads < 1) fail(fmt::format("threads: must be >= 1, got {}", o.threads));
+  if (o.steps_between_full_setups < 1)
+    fail(fmt::format("steps_between_full_setups: must be >= 1, got {}", o.steps_between_full_setups));
   if (o.output_times_s.empty()) fail("output_times_s: empty");
   double last = o.start_time_s;
   for (double t : o.output_times_s) {
@@ -426,7 +418,7 @@ CoupledTimeSeries simulate_coupled(const HullDynamicsModel& hull, const HullLoad
   for (const LineBlock& b : blocks) io.error_group_starts.push_back(b.offset);
   io.max_step_s = options.max_step_s;
   io.max_steps_between_outputs = options.max_steps_between_outputs;
-  io.max_steps_between_setups = kStepsBetweenFullSetups;
+  io.max_steps_between_setups = options.steps_between_full_setups;
   io.vector_pool = &system.pool();  // idle between the system's own loops
   IdaIntegrator ida(system, options.start_time_s, y0, yp0, io);
 

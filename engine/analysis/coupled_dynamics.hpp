@@ -116,6 +116,29 @@ struct CoupledOptions {
   std::optional<double> max_step_s;
   long max_steps_between_outputs = 500000;
   int threads = 1;  ///< >= 1
+  /// A full Newton-matrix setup (every line's element matrices evaluated
+  /// again, every line refactored and condensed) at least every this many
+  /// steps; between them a line is refactored only when c_j moved or its
+  /// seabed contact changed, on its old element matrices. 8 rather than
+  /// IDA's 20: without wave-frequency motion, lc1 600 s, 2,221 → 1,927 steps,
+  /// statistics within 0.7 % (5: no fewer steps, more setups). Under
+  /// wave-frequency motion the risers' top tension needs 1 (below).
+  ///
+  /// Why 1 under WF motion: there the elements near the tops turn within a
+  /// step, the Newton iteration on old element matrices converges slowly,
+  /// and IDA's test (the rate of the last solve times the first correction)
+  /// accepts iterates whose error shows in the risers' top tension — the
+  /// state the hull sees is converged, the tension is not. Measured on the
+  /// default FPS, lc2, 100 s, the 12 risers' top-tension std after 30 s
+  /// against a run at 0.1 of the line tolerances whose test takes a fresh
+  /// rate after every refactor (IDA's own rule after a setup; 1.2× the time):
+  /// at the single-line tolerances and 8 steps +30 to +111 %; a setup every
+  /// 2 steps +14 to +32 %; a Newton test 10× stricter, or on the max-norm,
+  /// +36 to +118 %; every step +3.2 to +5.2 % in 738 steps — as good as 0.1
+  /// of the line tolerances at 8 steps (+2.9 to +4.0 %, 1,934 steps), and
+  /// 13 % faster (docs/decisions/coupled-dynamics-performance.md, "Under
+  /// wave-frequency motion the risers' top tension is a Newton effect").
+  int steps_between_full_setups = 8;
   /// At each output the line pool grows to the cores that other
   /// parallel_for work has freed (worker_count), up to a thread per line: a
   /// run started beside another (the advanced stage's verifications two at

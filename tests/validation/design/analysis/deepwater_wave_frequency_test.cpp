@@ -125,15 +125,16 @@ TEST(DeepwaterWaveFrequency, TheScStormMovesAtWaveFrequency) {
 TEST(DeepwaterWaveFrequency, TheCoupledRisersTopTensionIsConvergedUnderWaveFrequencyMotion) {
   // The same risers under (nearly) the same motion, integrated two ways: in
   // the coupled system with the hull, and alone with the enhanced S-C
-  // motion prescribed at the hang-off (line_dynamics). Both run their lines
-  // at kWaveFrequencyLineToleranceScale of the single-line defaults under
-  // WF motion: with the coupled system's former tolerances the coupled std
-  // was +36 % (E2) to +76 % (P1) over 300 s, and the prescribed risers at
-  // the defaults came out 4-8 % high too (P1-P5 50-52 kN against 48 kN).
-  // What remains between the two is the levels' slightly different
-  // low-frequency motion and the coupled lines' wave kinematics at their
-  // displaced positions: 4.5 % at most on lc2's first 100 s (P6 +4.5 %,
-  // E1 -2.3 %, P1 +0.2 %), so 8 % per riser.
+  // motion prescribed at the hang-off (line_dynamics, at
+  // kWaveFrequencyLineToleranceScale of the single-line tolerances). Under
+  // WF motion the coupled level sets its Newton matrix up at every step
+  // (CoupledOptions::steps_between_full_setups): with a setup every 8 steps
+  // its risers' std came out +30 to +111 % at the single-line tolerances
+  // (lc2, 100 s), and before this scheme the level needed 0.1 of those. What
+  // remains between the two is the levels' slightly different low-frequency
+  // motion and the coupled lines' wave kinematics at their displaced
+  // positions: 4.4 % at most on lc2's first 100 s (P6 +4.4 %, P1 +0.9 %,
+  // E1 -0.5 %), so 8 % per riser.
   const ValidatedProject vp = load_validated_project(kDeepwater);
   ASSERT_EQ(vp.project.hull.hydrodynamics->excitation, ExcitationSource::morison_maccamy_fuchs);
   DynamicAnalysisRequest request;
@@ -145,6 +146,12 @@ TEST(DeepwaterWaveFrequency, TheCoupledRisersTopTensionIsConvergedUnderWaveFrequ
   request.line_dynamics = true;
   const DynamicAnalysisResult prescribed = run_dynamic_analysis(vp, request);
   ASSERT_TRUE(coupled.wave_frequency_computed);
+  ASSERT_TRUE(coupled.coupled_solver);
+  // A full setup at every step (partial updates only in a step's retries).
+  const engine::IdaStatistics& solver = *coupled.coupled_solver;
+  EXPECT_GE(solver.newton_matrix_setups - solver.newton_matrix_updates, solver.steps);
+  std::cout << "coupled: " << solver.steps << " steps, " << solver.newton_matrix_setups << " setups ("
+            << solver.newton_matrix_updates << " partial)\n";
   const auto std_after_30s = [&](const std::vector<double>& v, const Eigen::VectorXd& times) {
     double sum = 0.0, sum2 = 0.0;
     int n = 0;
