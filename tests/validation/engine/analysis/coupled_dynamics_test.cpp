@@ -341,6 +341,25 @@ TEST(CoupledDynamics, AnIntegratorFailureNamesTimeCauseAndPart) {
   }
 }
 
+// The setup interval is an option (the coupled analysis sets 1 under
+// wave-frequency motion); fewer than one step between setups is refused.
+TEST(CoupledDynamics, ASetupIntervalBelowOneStepIsRefused) {
+  const ValidatedProject p = load_validated_project(kOc4);
+  const DynamicModel model = still_water_model(p);
+  engine::CoupledOptions options;
+  options.output_times_s = outputs(1.0, 1.0);
+  options.steps_between_full_setups = 0;
+  try {
+    engine::simulate_coupled(model.hull, loads_without_linearized_lines(), p.project.hull.reference_point_g,
+                             model.initial_offset, oc4_lines(p.project, model.initial_offset, std::nullopt, false),
+                             options);
+    FAIL() << "a setup interval of 0 must be refused";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("steps_between_full_setups: must be >= 1, got 0"), std::string::npos)
+        << e.what();
+  }
+}
+
 // A line whose forces turn non-finite (here: its wave kinematics return NaN
 // after 5 s) is named with the time in the failure.
 TEST(CoupledDynamics, ANonFiniteLineIsNamed) {
