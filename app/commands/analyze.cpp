@@ -43,9 +43,11 @@ void print_run_summary(const design::DynamicAnalysisResult& result, double durat
     const engine::IdaStatistics& s = *result.coupled_solver;
     fmt::print(
         "  coupled: {} lines, {} states; {} steps, {} Newton-matrix setups ({} partial), {} residuals, "
-        "{} Newton restarts on a fresh matrix, {} failed Newton solves; {:.1f}x real time\n",
+        "{} Newton restarts on a fresh matrix, {} failed Newton solves; {} element matrices evaluated, {} "
+        "kept by full setups (the element had not moved); {:.1f}x real time\n",
         result.coupled_lines, result.coupled_state_size, s.steps, s.newton_matrix_setups, s.newton_matrix_updates,
         s.residual_evaluations, s.newton_restarts, s.nonlinear_convergence_failures,
+        result.coupled_element_matrix_evaluations, result.coupled_element_matrices_kept,
         result.timing.dynamics_s > 0.0 ? duration_s / result.timing.dynamics_s : 0.0);
   }
   if (!result.dynamic_tensions.empty()) {

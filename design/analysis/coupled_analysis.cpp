@@ -22,6 +22,13 @@ namespace {
 /// component's motion to (ω Δt)⁴/384 ≈ 1e-5 of its amplitude.
 constexpr double kWaveMotionSample_s = 0.2;
 
+/// Under WF motion, with a full setup at every step: an element keeps its
+/// matrices until a slope component moves by 1e-4 or a velocity (its nodes',
+/// the sea's at it) by 0.05 m/s — measured to leave the default FPS's runs
+/// as they are, 14 % faster (engine::CoupledOptions::element_refresh_slope).
+constexpr double kWaveFrequencyElementRefreshSlope = 1e-4;
+constexpr double kWaveFrequencyElementRefreshVelocity_m_per_s = 0.05;
+
 /// The RAO motion as a C² function of time with its rates, built up by the
 /// quintic ramp (translations and rotations as two 3-vector splines).
 engine::PrescribedHullMotionFn ramped_wave_motion(const Eigen::Matrix<double, 6, Eigen::Dynamic>& samples, double dt_s,
@@ -134,10 +141,14 @@ DynamicAnalysisResult run_coupled_analysis(const ValidatedProject& validated, co
   if (options.wave_frequency_motion) {
     // The risers' top tension under WF motion needs a Newton matrix as new
     // as the step, not tighter tolerances (CoupledOptions).
+    // At every step only the elements that moved need it (CoupledOptions).
     options.steps_between_full_setups = 1;
+    options.element_refresh_slope = kWaveFrequencyElementRefreshSlope;
+    options.element_refresh_velocity_m_per_s = kWaveFrequencyElementRefreshVelocity_m_per_s;
     result.notes.push_back(
-        "coupled: under wave-frequency motion the Newton matrix is set up afresh at every step (on older "
-        "element matrices the risers' top tension is not converged)");
+        "coupled: under wave-frequency motion the Newton matrix is set up afresh at every step, with the "
+        "element matrices of every element that moved (on older element matrices the risers' top tension is not "
+        "converged)");
   }
   options.max_steps_between_outputs = request.coupled_max_steps_between_outputs;
   engine::HullLoads loads;
@@ -174,6 +185,8 @@ DynamicAnalysisResult run_coupled_analysis(const ValidatedProject& validated, co
   result.coupled_solver = series.statistics;
   result.coupled_state_size = series.state_size;
   result.coupled_lines = count;
+  result.coupled_element_matrix_evaluations = series.element_matrix_evaluations;
+  result.coupled_element_matrices_kept = series.element_matrices_kept;
   result.wave_frequency.setZero(6, series.times_s.size());
   if (options.wave_frequency_motion) {
     for (Eigen::Index k = 0; k < series.times_s.size(); ++k)

@@ -198,6 +198,9 @@ struct DynamicAnalysisResult {
   std::optional<engine::IdaStatistics> coupled_solver;
   long coupled_state_size = 0;
   int coupled_lines = 0;
+  /// Coupled level: element-matrix evaluations, and those its full setups kept.
+  long coupled_element_matrix_evaluations = 0;
+  long coupled_element_matrices_kept = 0;
   std::vector<std::string> notes;
   AnalysisTimings timing;
 };

@@ -327,6 +327,11 @@ void validate(const HullLoads& loads, const std::vector<CoupledLine>& lines, con
   if (o.threads < 1) fail(fmt::format("threads: must be >= 1, got {}", o.threads));
   if (o.steps_between_full_setups < 1)
     fail(fmt::format("steps_between_full_setups: must be >= 1, got {}", o.steps_between_full_setups));
+  if (!(o.element_refresh_slope >= 0.0))
+    fail(fmt::format("element_refresh_slope: must be >= 0, got {}", o.element_refresh_slope));
+  if (!(o.element_refresh_velocity_m_per_s >= 0.0))
+    fail(fmt::format("element_refresh_velocity_m_per_s: must be >= 0 m/s, got {} m/s",
+                     o.element_refresh_velocity_m_per_s));
   if (o.output_times_s.empty()) fail("output_times_s: empty");
   double last = o.start_time_s;
   for (double t : o.output_times_s) {
@@ -386,6 +391,10 @@ CoupledTimeSeries simulate_coupled(const HullDynamicsModel& hull, const HullLoad
     size += blocks[i].size;
   }
   system.order_lines_by_size();
+  for (LineBlock& b : blocks) {
+    b.line.refresh_slope_tolerance = options.element_refresh_slope;
+    b.line.refresh_velocity_tolerance_m_per_s = options.element_refresh_velocity_m_per_s;
+  }
 
   Eigen::VectorXd y0(size), yp0 = Eigen::VectorXd::Zero(size), atol(size), id(size);
   y0.head<6>() = initial_offset;
@@ -474,6 +483,10 @@ CoupledTimeSeries simulate_coupled(const HullDynamicsModel& hull, const HullLoad
     ++out.step_limiting_outputs[worst_part];
   }
   out.statistics = ida.statistics();
+  for (const LineBlock& b : blocks) {
+    out.element_matrix_evaluations += b.line.element_evaluations;
+    out.element_matrices_kept += b.line.element_matrices_kept;
+  }
   out.wall_clock_s = start.seconds();
   return out;
 }

@@ -236,6 +236,51 @@ struct DynamicLine final : ImplicitSystem {
         ancf::element_newton_matrices(p.elements[e], dyn[e], shapes[e], static_ctx, bed, still_water ? nullptr : &fluid,
                                       x.q.data(), x.v.data(), element_matrices[e]);
     element_stale[e] = 0;
+    if (e < evaluated_at.size()) evaluated_at[e] = refresh_key(t, e, x);
+    ++element_evaluations;
+  }
+
+  // --- Selective refresh of a full setup (the coupled system's) ---
+  //
+  // An element whose slopes (r': direction and strain), node velocities and
+  // sea velocity have each moved less than these since its matrices were
+  // evaluated keeps them at a full setup; a change of its seabed contact
+  // re-evaluates it as before (newton_matrix_stale). 0: every element at
+  // every full setup; so too with a `waves` function, whose sea velocity the
+  // key below does not see. CoupledOptions documents the values and why
+  // they do not change the solution.
+  double refresh_slope_tolerance = 0.0;
+  double refresh_velocity_tolerance_m_per_s = 0.0;
+  long element_evaluations = 0;    // element matrices evaluated, at setups and updates
+  long element_matrices_kept = 0;  // of the elements a full setup visited, those it kept
+
+  bool selective_refresh() const {
+    return (refresh_slope_tolerance > 0.0 || refresh_velocity_tolerance_m_per_s > 0.0) && !waves;
+  }
+
+  // The element's slopes (6), node velocities (6) and the sea's velocity at
+  // its kinematics point (3, ramped as fluid_at applies it) at time t.
+  using RefreshKey = std::array<double, 15>;
+  std::vector<RefreshKey> evaluated_at;  // per element, at its last evaluation
+  RefreshKey refresh_key(double t, std::size_t e, const ElementValues& x) const {
+    RefreshKey k{};
+    std::size_t i = 0;
+    for (int slope : {3, 4, 5, 9, 10, 11}) k[i++] = x.q[slope];
+    for (int r : {0, 1, 2, 6, 7, 8}) k[i++] = x.v[r];
+    if (element_waves) {
+      const double ramp = smooth_ramp(t - options.start_time_s, sea_ramp_s).value;
+      for (int d = 0; d < 3; ++d) k[i++] = ramp * element_wave_velocity[e][d];
+    }
+    return k;
+  }
+  bool element_moved(double t, std::size_t e, const Eigen::VectorXd& q, const Eigen::VectorXd& v) const {
+    const RefreshKey now = refresh_key(t, e, gather(e, q, v, v));
+    const RefreshKey& then = evaluated_at[e];
+    for (std::size_t i = 0; i < now.size(); ++i) {
+      const double tolerance = i < 6 ? refresh_slope_tolerance : refresh_velocity_tolerance_m_per_s;
+      if (std::abs(now[i] - then[i]) > tolerance) return true;
+    }
+    return false;
   }
 
   /// S = cM M + cC C + cK K and, with D_cj, D = D_cj M − C from the element
@@ -299,7 +344,19 @@ struct DynamicLine final : ImplicitSystem {
   // S = c² M − c C − K, D = c M − C (the Newton matrix of the residual, reduced).
   bool setup_newton_matrix(double t, const VectorConstRef& y, const VectorConstRef& yp, double cj) override {
     load_state(t, y, yp);
-    for (std::size_t e = 0; e < p.elements.size(); ++e) evaluate_element_matrices(t, e, qw, vw);
+    const bool selective = selective_refresh() && evaluated_at.size() == p.elements.size();
+    if (selective_refresh() && !selective) evaluated_at.resize(p.elements.size());
+    if (selective && element_waves && t != element_waves_time) {
+      element_waves->evaluate(t, element_wave_velocity, element_wave_acceleration);
+      element_waves_time = t;
+    }
+    for (std::size_t e = 0; e < p.elements.size(); ++e) {
+      if (selective && element_stale[e] == 0 && !element_moved(t, e, qw, vw)) {
+        ++element_matrices_kept;
+        continue;
+      }
+      evaluate_element_matrices(t, e, qw, vw);
+    }
     combine_matrices(cj * cj, -cj, -1.0, cj);
     return S.factorize();
   }

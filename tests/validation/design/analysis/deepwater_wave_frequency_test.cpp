@@ -147,11 +147,17 @@ TEST(DeepwaterWaveFrequency, TheCoupledRisersTopTensionIsConvergedUnderWaveFrequ
   const DynamicAnalysisResult prescribed = run_dynamic_analysis(vp, request);
   ASSERT_TRUE(coupled.wave_frequency_computed);
   ASSERT_TRUE(coupled.coupled_solver);
-  // A full setup at every step (partial updates only in a step's retries).
+  // A full setup at every step (partial updates: a step's retries and
+  // seabed contact changes), refreshing the elements that moved: about 60 %
+  // of the element matrices are kept (CoupledOptions::element_refresh_slope).
   const engine::IdaStatistics& solver = *coupled.coupled_solver;
   EXPECT_GE(solver.newton_matrix_setups - solver.newton_matrix_updates, solver.steps);
+  const long visits = coupled.coupled_element_matrices_kept + coupled.coupled_element_matrix_evaluations;
+  EXPECT_GT(coupled.coupled_element_matrices_kept, visits / 4);
+  EXPECT_GT(coupled.coupled_element_matrix_evaluations, visits / 4);
   std::cout << "coupled: " << solver.steps << " steps, " << solver.newton_matrix_setups << " setups ("
-            << solver.newton_matrix_updates << " partial)\n";
+            << solver.newton_matrix_updates << " partial); element matrices " << coupled.coupled_element_matrices_kept
+            << " kept, " << coupled.coupled_element_matrix_evaluations << " evaluated\n";
   const auto std_after_30s = [&](const std::vector<double>& v, const Eigen::VectorXd& times) {
     double sum = 0.0, sum2 = 0.0;
     int n = 0;
