@@ -140,8 +140,8 @@ DynamicAnalysisResult run_coupled_analysis(const ValidatedProject& validated, co
   options.hull_rotation_tolerance_rad *= scale;
   if (options.wave_frequency_motion) {
     // The risers' top tension under WF motion needs a Newton matrix as new
-    // as the step, not tighter tolerances (CoupledOptions).
-    // At every step only the elements that moved need it (CoupledOptions).
+    // as the step, not tighter tolerances; at each step only the elements
+    // that moved need new matrices (CoupledOptions).
     options.steps_between_full_setups = 1;
     options.element_refresh_slope = kWaveFrequencyElementRefreshSlope;
     options.element_refresh_velocity_m_per_s = kWaveFrequencyElementRefreshVelocity_m_per_s;
