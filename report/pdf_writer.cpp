@@ -26,6 +26,7 @@ constexpr double kBodyFont = 9.5, kLineH = 13.0;
 constexpr double kTableFont = 7.8, kRowH = 11.5;
 constexpr Rgb kInk{0.10, 0.11, 0.14};
 constexpr Rgb kAccent{0.08, 0.25, 0.45};
+constexpr double kHeadingLineH = 19.0;  // pt, a section heading's line at 15 pt
 
 void ink(cairo_t* cr, const Rgb& c) { cairo_set_source_rgb(cr, c.r, c.g, c.b); }
 
@@ -155,16 +156,20 @@ class Layout {
     else
       ensure(80);
     found_pages_[index] = page_;
+    // A long title (a matrix case's name) wraps instead of running off the page.
+    set_font(cr_, 15, true);
+    const std::vector<std::string> lines = wrap(cr_, fmt::format("{}  {}", index + 1, s.title), kContentW);
+    const double extra = kHeadingLineH * static_cast<double>(std::max<std::size_t>(lines.size(), 1) - 1);
     if (draw_) {
-      set_font(cr_, 15, true);
       ink(cr_, kAccent);
-      draw_text(cr_, kMarginX, y_ + 15, fmt::format("{}  {}", index + 1, s.title));
+      for (std::size_t i = 0; i < lines.size(); ++i)
+        draw_text(cr_, kMarginX, y_ + 15 + kHeadingLineH * static_cast<double>(i), lines[i]);
       cairo_set_line_width(cr_, 0.8);
-      cairo_move_to(cr_, kMarginX, y_ + 22);
-      cairo_line_to(cr_, kPageW - kMarginX, y_ + 22);
+      cairo_move_to(cr_, kMarginX, y_ + 22 + extra);
+      cairo_line_to(cr_, kPageW - kMarginX, y_ + 22 + extra);
       cairo_stroke(cr_);
     }
-    y_ += 36;
+    y_ += 36 + extra;
     for (const Block& block : s.blocks) {
       std::visit([this](const auto& b) { this->block(b); }, block);
     }
