@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <vector>
@@ -100,12 +101,21 @@ class NewtonMatrix {
   void solve_in_place(Eigen::VectorXd& x) const {
     if (!cholesky_) {
       lu_.solve_in_place(x);
-    } else if (b_ == 11) {
-      solve_kd<11>(x.data());
-    } else if (b_ == 14) {
-      solve_kd<14>(x.data());
     } else {
-      solve_kd<0>(x.data());
+      solve_columns<1>(x.data(), 0);
+    }
+  }
+
+  /// Three right-hand sides (the columns of x) that are zero above row
+  /// `first_nonzero` — a line's response to its end's motion: the same
+  /// arithmetic as solve_in_place on each column (the same result, bit for
+  /// bit), with the forward substitution started at that row (above it the
+  /// solution of L y = x is zero) and the factor read once for the three.
+  void solve_end_columns(Eigen::Matrix<double, Eigen::Dynamic, 3>& x, int first_nonzero) const {
+    if (!cholesky_) {
+      for (int c = 0; c < 3; ++c) lu_.solve_in_place(x.col(c));
+    } else {
+      solve_columns<3>(x.data(), first_nonzero);
     }
   }
 
@@ -118,27 +128,45 @@ class NewtonMatrix {
     return KD > 0 ? KD : b_;
   }
 
-  template <int KD>
-  void solve_kd(double* x) const {
+  template <int NC>
+  void solve_columns(double* x, int first_nonzero) const {
+    if (b_ == 11) {
+      solve_kd<11, NC>(x, first_nonzero);
+    } else if (b_ == 14) {
+      solve_kd<14, NC>(x, first_nonzero);
+    } else {
+      solve_kd<0, NC>(x, first_nonzero);
+    }
+  }
+
+  // NC columns of x (column-major, n rows), each zero above first_nonzero.
+  template <int KD, int NC>
+  void solve_kd(double* x, int first_nonzero) const {
     const int b = kd<KD>(), ld = b + 1;
     const double* l = band_.a.data();
     const double* inv = inv_diagonal_.data();
-    for (int j = 0; j < n_; ++j) {  // L y = x
+    std::array<double*, NC> columns;
+    for (int c = 0; c < NC; ++c) columns[static_cast<std::size_t>(c)] = x + static_cast<std::ptrdiff_t>(c) * n_;
+    for (int j = std::max(first_nonzero, 0); j < n_; ++j) {  // L y = x
       const double* col = l + static_cast<std::ptrdiff_t>(j) * ld;
-      const double xj = x[j] * inv[j];
-      x[j] = xj;
-      double* xr = x + j;
-      if (j + b < n_) {
-        for (int r = 1; r <= b; ++r) xr[r] -= col[r] * xj;
-      } else {
-        for (int r = 1; r < n_ - j; ++r) xr[r] -= col[r] * xj;
+      for (double* xc : columns) {
+        const double xj = xc[j] * inv[j];
+        xc[j] = xj;
+        double* xr = xc + j;
+        if (j + b < n_) {
+          for (int r = 1; r <= b; ++r) xr[r] -= col[r] * xj;
+        } else {
+          for (int r = 1; r < n_ - j; ++r) xr[r] -= col[r] * xj;
+        }
       }
     }
     for (int j = n_ - 1; j >= 0; --j) {  // Lᵀ x = y
       const double* col = l + static_cast<std::ptrdiff_t>(j) * ld;
-      const double* xr = x + j;
-      const double sum = j + b < n_ ? band_dot(col, xr, b) : band_dot(col, xr, n_ - 1 - j);
-      x[j] = (x[j] - sum) * inv[j];
+      for (double* xc : columns) {
+        const double* xr = xc + j;
+        const double sum = j + b < n_ ? band_dot(col, xr, b) : band_dot(col, xr, n_ - 1 - j);
+        xc[j] = (xc[j] - sum) * inv[j];
+      }
     }
   }
 

@@ -430,14 +430,13 @@ struct DynamicLine final : ImplicitSystem {
   /// matrix (both only change how fast the Newton iteration converges).
   void condense_end_B() {
     end_B_influence.setZero(n, 3);
-    for (int c = 0; c < 3; ++c) {
-      rhs.setZero(n);
-      for (int k = 0; k < kElementDofs; ++k) {
-        if (!fixed(end_dof(k))) rhs[end_dof(k)] = end_S_at(k, kEndBLocal + c);
-      }
-      S.solve_in_place(rhs);
-      end_B_influence.col(c) = rhs;
+    int first = n;
+    for (int k = 0; k < kElementDofs; ++k) {
+      if (fixed(end_dof(k))) continue;
+      first = std::min(first, end_dof(k));
+      for (int c = 0; c < 3; ++c) end_B_influence(end_dof(k), c) = end_S_at(k, kEndBLocal + c);
     }
+    S.solve_end_columns(end_B_influence, first);
     for (int a = 0; a < 3; ++a) {
       for (int c = 0; c < 3; ++c) {
         double sum = end_S_at(kEndBLocal + a, kEndBLocal + c);
