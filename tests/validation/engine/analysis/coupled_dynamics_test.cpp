@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 #include <iostream>
 #include <limits>
 #include <numbers>
@@ -341,23 +342,29 @@ TEST(CoupledDynamics, AnIntegratorFailureNamesTimeCauseAndPart) {
   }
 }
 
-// The setup interval is an option (the coupled analysis sets 1 under
-// wave-frequency motion); fewer than one step between setups is refused.
-TEST(CoupledDynamics, ASetupIntervalBelowOneStepIsRefused) {
+// OC4 in still water with one option set wrong: simulate_coupled refuses it
+// before integrating, naming the option and the value.
+void expect_option_refused(const std::function<void(engine::CoupledOptions&)>& set_wrong, const std::string& message) {
   const ValidatedProject p = load_validated_project(kOc4);
   const DynamicModel model = still_water_model(p);
   engine::CoupledOptions options;
   options.output_times_s = outputs(1.0, 1.0);
-  options.steps_between_full_setups = 0;
+  set_wrong(options);
   try {
     engine::simulate_coupled(model.hull, loads_without_linearized_lines(), p.project.hull.reference_point_g,
                              model.initial_offset, oc4_lines(p.project, model.initial_offset, std::nullopt, false),
                              options);
-    FAIL() << "a setup interval of 0 must be refused";
+    FAIL() << "must be refused: " << message;
   } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("steps_between_full_setups: must be >= 1, got 0"), std::string::npos)
-        << e.what();
+    EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
   }
+}
+
+// The setup interval is an option (the coupled analysis sets 1 under
+// wave-frequency motion); fewer than one step between setups is refused.
+TEST(CoupledDynamics, ASetupIntervalBelowOneStepIsRefused) {
+  expect_option_refused([](engine::CoupledOptions& o) { o.steps_between_full_setups = 0; },
+                        "steps_between_full_setups: must be >= 1, got 0");
 }
 
 // Selective refresh: with a full setup at every step (as under WF motion)
@@ -415,21 +422,8 @@ TEST(CoupledDynamics, KeepingTheMatricesOfElementsThatDidNotMoveKeepsTheAccuracy
 }
 
 TEST(CoupledDynamics, ANegativeRefreshToleranceIsRefused) {
-  const ValidatedProject p = load_validated_project(kOc4);
-  const DynamicModel model = still_water_model(p);
-  engine::CoupledOptions options;
-  options.output_times_s = outputs(1.0, 1.0);
-  options.element_refresh_velocity_m_per_s = -0.1;
-  try {
-    engine::simulate_coupled(model.hull, loads_without_linearized_lines(), p.project.hull.reference_point_g,
-                             model.initial_offset, oc4_lines(p.project, model.initial_offset, std::nullopt, false),
-                             options);
-    FAIL() << "a negative refresh tolerance must be refused";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("element_refresh_velocity_m_per_s: must be >= 0 m/s, got -0.1 m/s"),
-              std::string::npos)
-        << e.what();
-  }
+  expect_option_refused([](engine::CoupledOptions& o) { o.element_refresh_velocity_m_per_s = -0.1; },
+                        "element_refresh_velocity_m_per_s: must be >= 0 m/s, got -0.1 m/s");
 }
 
 // A line whose forces turn non-finite (here: its wave kinematics return NaN
