@@ -10,6 +10,7 @@
 
 #include "design/optimization/dynamic_level.hpp"
 #include "design/project/request_error.hpp"
+#include "design/optimization/warm_start_plan.hpp"
 #include "design/soz/soz.hpp"
 #include "engine/common/parallel_for.hpp"
 #include "engine/common/stopwatch.hpp"
@@ -254,10 +255,12 @@ bool PretensionProblem::has_expensive_lines() const {
 
 void PretensionProblem::linearize_expensive_lines() {
   for (ScenarioModel& m : models_) m.linearize_expensive_lines();
+  linearized_ = true;
 }
 
 void PretensionProblem::restore_expensive_lines() {
   for (ScenarioModel& m : models_) m.restore_expensive_lines();
+  linearized_ = false;
 }
 
 std::string PretensionProblem::objective_unit() const {
@@ -298,22 +301,62 @@ ProblemEvaluation PretensionProblem::evaluate(const Eigen::VectorXd& payouts_m, 
       for (std::size_t i = 0; i < scenarios_.size() && intact_of[s] == scenarios_.size(); ++i)
         if (!scenarios_[i].damaged_line && environment(i) == environment(s)) intact_of[s] = i;
     }
-    (intact_of[s] < scenarios_.size() ? then : first).push_back(s);
+    (models_started_ || intact_of[s] < scenarios_.size() ? then : first).push_back(s);
   }
   evaluate_each(first);
   // The intact scenarios' riser stiffness once, for the damaged scenarios'
   // predictors (each would otherwise factorise every riser again).
   std::vector<std::size_t> sources;
-  for (const std::size_t s : then)
-    if (std::find(sources.begin(), sources.end(), intact_of[s]) == sources.end()) sources.push_back(intact_of[s]);
+  for (std::size_t s = 0; s < scenarios_.size(); ++s)
+    if (intact_of[s] < scenarios_.size() && std::find(sources.begin(), sources.end(), intact_of[s]) == sources.end())
+      sources.push_back(intact_of[s]);
   engine::parallel_for(static_cast<int>(sources.size()), threads_,
                        [&](int k) { models_[sources[static_cast<std::size_t>(k)]].complete_expensive_lines(); });
-  for (const std::size_t s : then) models_[s].start_from(models_[intact_of[s]]);
-  evaluate_each(then);
+  for (std::size_t s = 0; s < scenarios_.size(); ++s)
+    if (intact_of[s] < scenarios_.size()) models_[s].start_from(models_[intact_of[s]]);
+  if (!has_expensive_lines() || linearized_ || !evaluate_in_waves(then, payouts_m, with_gradient, out))
+    evaluate_each(then);
   models_started_ = true;
   for (std::size_t s = 0; s < scenarios_.size(); ++s) add_scenario_constraints(s, out.responses[s], with_gradient, out);
   if (dynamic_) dynamic_->apply(*this, payouts_m, out);
   return out;
+}
+
+bool PretensionProblem::evaluate_in_waves(const std::vector<std::size_t>& which, const Eigen::VectorXd& payouts_m,
+                                          bool with_gradient, ProblemEvaluation& out) {
+  // Each scenario's equilibrium predicted on linearized risers, then solved
+  // in full starting its risers from the nearest solved state of its
+  // environment (warm_start_plan.hpp).
+  std::vector<WarmStartNode> nodes(which.size());
+  engine::parallel_for(static_cast<int>(which.size()), threads_, [&](int k) {
+    ScenarioModel& model = models_[which[static_cast<std::size_t>(k)]];
+    WarmStartNode& node = nodes[static_cast<std::size_t>(k)];
+    node.own_tops_g = model.solved_riser_tops_g();
+    const std::optional<engine::HullPose> predicted = model.predict(payouts_m);
+    // Without a prediction the full solve starts where the last one ended.
+    node.predicted_tops_g = predicted ? model.riser_tops_g(*predicted) : node.own_tops_g;
+  });
+  std::vector<std::string> environments;
+  for (std::size_t k = 0; k < which.size(); ++k) {
+    const std::string& environment = load_case_named(project_, scenarios_[which[k]].case_name).environment;
+    auto it = std::find(environments.begin(), environments.end(), environment);
+    if (it == environments.end()) it = environments.insert(environments.end(), environment);
+    nodes[k].environment = static_cast<int>(it - environments.begin());
+  }
+  // A riser without a solution (its last solve failed): no plan, each
+  // scenario starts from its own state.
+  if (std::any_of(nodes.begin(), nodes.end(), [](const WarmStartNode& n) { return n.own_tops_g.empty(); }))
+    return false;
+  const std::vector<WarmStart> plan = plan_warm_starts(nodes);
+  for (const std::vector<int>& wave : warm_start_waves(plan)) {
+    engine::parallel_for(static_cast<int>(wave.size()), threads_, [&](int i) {
+      const auto k = static_cast<std::size_t>(wave[static_cast<std::size_t>(i)]);
+      const std::size_t s = which[k];
+      if (plan[k].donor) models_[s].start_risers_from(models_[which[static_cast<std::size_t>(*plan[k].donor)]]);
+      out.responses[s] = models_[s].evaluate(payouts_m, with_gradient);
+    });
+  }
+  return true;
 }
 
 void PretensionProblem::add_scenario_constraints(std::size_t s, const ScenarioResponse& r, bool with_gradient,

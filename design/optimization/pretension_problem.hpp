@@ -95,6 +95,13 @@ class PretensionProblem {
   void restore_expensive_lines();
 
  private:
+  /// Evaluates scenarios `which` (each already evaluated once, or started
+  /// from another) in waves of warm starts (warm_start_plan.hpp). False,
+  /// with nothing solved, when a scenario's risers have no solution to plan
+  /// from (they then start from their own state).
+  bool evaluate_in_waves(const std::vector<std::size_t>& which, const Eigen::VectorXd& payouts_m, bool with_gradient,
+                         ProblemEvaluation& out);
+
   struct ZoneOfScenario {
     std::string name;
     std::shared_ptr<const SmoothZone> zone;  ///< none: no risers, or the zone was dropped (findings)
@@ -111,6 +118,7 @@ class PretensionProblem {
   /// False until the models' first evaluation, which starts each scenario
   /// the study removed a line from at its load case's intact equilibrium.
   bool models_started_ = false;
+  bool linearized_ = false;  ///< between linearize_expensive_lines() and restore_expensive_lines()
   std::unique_ptr<DynamicLevel> dynamic_;
   HullModel hull_;
   std::vector<std::string> findings_, notes_;

@@ -11,6 +11,7 @@
 #include "design/model/environment_loads.hpp"
 #include "design/model/riser_model.hpp"
 #include "engine/analysis/fe_static_line.hpp"
+#include "engine/analysis/line_array.hpp"
 #include "engine/analysis/linearized_line.hpp"
 #include "engine/analysis/static_line.hpp"
 #include "engine/lines/catenary_payout.hpp"
@@ -60,6 +61,8 @@ struct ScenarioModel::Impl {
   double safety_factor = 1.0;
   engine::Vector6d last_offset = engine::Vector6d::Zero();
   std::optional<engine::HullPose> last_pose;
+  /// Where predict() put the next evaluation's start.
+  std::optional<engine::Vector6d> predicted;
   /// The full lines while their linearizations stand in (by array index).
   std::vector<std::unique_ptr<engine::StaticLine>> stashed;
 
@@ -148,25 +151,12 @@ ScenarioResponse ScenarioModel::evaluate(const Eigen::VectorXd& payouts_m, bool 
   engine::EquilibriumResult eq;
   try {
     engine::Vector6d start = m.last_offset;
-    if (m.last_pose && m.stashed.empty() && m.has_expensive_lines()) {
-      // Predictor: the equilibrium first with the FE risers linearized where
-      // they were last solved (microseconds), then the full one from there.
-      // The hull's Newton iterations that follow the mooring's nonlinearity
-      // over a payout change (a damaged hull moves tens of metres) then cost
-      // no riser solves; the full solve only corrects the risers' second-order
-      // force error: one solve at the predicted pose and one or two small
-      // Newton steps, instead of a riser solve at every step of the way.
-      linearize_expensive_lines();
-      try {
-        start = engine::solve_static_equilibrium(m.hull.statics, m.array.lines, m.environment_load, m.last_offset,
-                                                 {.stiffness_at_solution = false})
-                    .offset;
-      } catch (const engine::SolverError&) {
-        // The linear risers' equilibrium is only a starting point: without
-        // one, the full solve starts where the last one ended.
-      }
-      restore_expensive_lines();
+    if (m.predicted) {
+      start = *m.predicted;
+    } else if (const auto predicted = predicted_offset(payouts_m)) {
+      start = *predicted;
     }
+    m.predicted.reset();
     // The K at the solution serves the analytic gradient only (catenaries
     // alone); the FE risers then skip a factorisation each.
     eq = engine::solve_static_equilibrium(m.hull.statics, m.array.lines, m.environment_load, start,
@@ -272,21 +262,79 @@ ScenarioResponse ScenarioModel::evaluate(const Eigen::VectorXd& payouts_m, bool 
   return out;
 }
 
-void ScenarioModel::start_from(const ScenarioModel& source) {
+std::optional<engine::Vector6d> ScenarioModel::predicted_offset(const Eigen::VectorXd& payouts_m) {
+  Impl& m = *impl_;
+  if (!m.last_pose || !m.stashed.empty() || !m.has_expensive_lines()) return std::nullopt;
+  // Predictor: the equilibrium first with the FE risers linearized where
+  // they were last solved (microseconds), then the full one from there.
+  // The hull's Newton iterations that follow the mooring's nonlinearity
+  // over a payout change (a damaged hull moves tens of metres) then cost
+  // no riser solves; the full solve only corrects the risers' second-order
+  // force error: one solve at the predicted pose and one or two small
+  // Newton steps, instead of a riser solve at every step of the way.
+  m.install(payouts_m);
+  linearize_expensive_lines();
+  std::optional<engine::Vector6d> out;
+  try {
+    out = engine::solve_static_equilibrium(m.hull.statics, m.array.lines, m.environment_load, m.last_offset,
+                                           {.stiffness_at_solution = false})
+              .offset;
+  } catch (const engine::SolverError&) {
+    // The linear risers' equilibrium is only a starting point: without
+    // one, the full solve starts where the last one ended.
+  }
+  restore_expensive_lines();
+  return out;
+}
+
+std::optional<engine::HullPose> ScenarioModel::predict(const Eigen::VectorXd& payouts_m) {
+  Impl& m = *impl_;
+  m.predicted = predicted_offset(payouts_m);
+  if (!m.predicted) return std::nullopt;
+  return engine::pose_from_offset(m.hull.statics.reference_point_at_rest_g, *m.predicted);
+}
+
+std::vector<Eigen::Vector3d> ScenarioModel::riser_tops_g(const engine::HullPose& pose) const {
+  const Impl& m = *impl_;
+  std::vector<Eigen::Vector3d> out;
+  for (std::size_t k = m.paid.size(); k < m.array.lines.size(); ++k)
+    if (m.array.lines[k]->expensive())
+      out.push_back(pose.reference_point_g + pose.rotation * m.array.lines[k]->attachment_b());
+  return out;
+}
+
+std::vector<Eigen::Vector3d> ScenarioModel::solved_riser_tops_g() const {
+  const Impl& m = *impl_;
+  std::vector<Eigen::Vector3d> out;
+  for (std::size_t k = m.paid.size(); k < m.array.lines.size(); ++k) {
+    if (!m.array.lines[k]->expensive()) continue;
+    const auto* line = dynamic_cast<const engine::FeStaticLine*>(m.array.lines[k].get());
+    if (!line || !line->last_result()) return {};
+    out.push_back(line->last_attachment_g());
+  }
+  return out;
+}
+
+void ScenarioModel::start_risers_from(const ScenarioModel& source) {
   Impl& m = *impl_;
   const Impl& from = *source.impl_;
-  if (!from.last_pose) throw std::logic_error("ScenarioModel::start_from: the source has not been evaluated");
   // The risers follow the mooring lines in both arrays, in project order.
   const std::size_t risers = m.array.lines.size() - m.paid.size();
   if (risers != from.array.lines.size() - from.paid.size())
-    throw std::logic_error("ScenarioModel::start_from: the scenarios have different risers");
+    throw std::logic_error("ScenarioModel::start_risers_from: the scenarios have different risers");
   for (std::size_t j = 0; j < risers; ++j) {
     auto* line = dynamic_cast<engine::FeStaticLine*>(m.array.lines[m.paid.size() + j].get());
     const auto* solved = dynamic_cast<const engine::FeStaticLine*>(from.array.lines[from.paid.size() + j].get());
     if (!line || !solved || !solved->last_result()) continue;
-    line->adopt(from.last_pose->reference_point_g + from.last_pose->rotation * solved->attachment_b(),
-                *solved->last_result());
+    line->adopt(solved->last_attachment_g(), *solved->last_result());
   }
+}
+
+void ScenarioModel::start_from(const ScenarioModel& source) {
+  Impl& m = *impl_;
+  const Impl& from = *source.impl_;
+  if (!from.last_pose) throw std::logic_error("ScenarioModel::start_from: the source has not been evaluated");
+  start_risers_from(source);
   m.last_offset = from.last_offset;
   m.last_pose = from.last_pose;
 }
@@ -307,8 +355,14 @@ void ScenarioModel::linearize_expensive_lines() {
   for (std::size_t k = m.paid.size(); k < m.array.lines.size(); ++k) {
     std::unique_ptr<engine::StaticLine>& line = m.array.lines[k];
     if (m.stashed[k] || !line->expensive()) continue;
-    const Eigen::Vector3d at = m.last_pose->reference_point_g + m.last_pose->rotation * line->attachment_b();
-    const engine::LineEndResponse response = line->linearization(at);  // the stored solution: no new solve
+    // About where the line was last solved (the stored solution: no new
+    // solve). The hull's last pose may be a linearized evaluation's.
+    const auto* fe = dynamic_cast<const engine::FeStaticLine*>(line.get());
+    const Eigen::Vector3d at =
+        fe && fe->last_result()
+            ? fe->last_attachment_g()
+            : Eigen::Vector3d(m.last_pose->reference_point_g + m.last_pose->rotation * line->attachment_b());
+    const engine::LineEndResponse response = line->linearization(at);
     auto linear = std::make_unique<engine::LinearizedStaticLine>(line->name(), line->attachment_b(), at, response);
     m.stashed[k] = std::move(line);
     line = std::move(linear);

@@ -92,6 +92,21 @@ class ScenarioModel {
   /// offset and its risers' FE solutions. `source` must be in the same
   /// environment (same risers, same current), already evaluated.
   void start_from(const ScenarioModel& source);
+  /// Only the risers: they start warm from `source`'s last solutions (same
+  /// requirements); the hull's start stays.
+  void start_risers_from(const ScenarioModel& source);
+
+  /// The hull's equilibrium at `payouts_m` with the FE risers linearized
+  /// where they were last solved (no riser solve); the next evaluate()
+  /// starts its full solve there. None before the first evaluation, without
+  /// FE risers, or when that linear solve fails (evaluate() then starts
+  /// where the last one ended).
+  std::optional<engine::HullPose> predict(const Eigen::VectorXd& payouts_m);
+  /// The FE risers' tops at `pose`, in line order.
+  std::vector<Eigen::Vector3d> riser_tops_g(const engine::HullPose& pose) const;
+  /// Where the FE risers were last solved, in line order; empty if any has
+  /// no solution.
+  std::vector<Eigen::Vector3d> solved_riser_tops_g() const;
   /// Gives the risers' last solutions their end stiffness (no new solve:
   /// engine::with_end_B_stiffness), so that the scenarios that start_from
   /// this one linearize them without a factorisation each.
@@ -112,6 +127,9 @@ class ScenarioModel {
   ScenarioResponse evaluate_by_differences(const Eigen::VectorXd& payouts_m, double step_m = 5e-2);
 
  private:
+  /// predict()'s offset, without keeping it.
+  std::optional<engine::Vector6d> predicted_offset(const Eigen::VectorXd& payouts_m);
+
   struct Impl;
   std::unique_ptr<Impl> impl_;
   Scenario scenario_;

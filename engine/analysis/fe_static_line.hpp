@@ -51,6 +51,8 @@ class FeStaticLine final : public StaticLine {
   bool expensive() const override { return true; }
   /// The full FE solution of the last solve (curvature, bending moment per node).
   const FeStaticsResult* last_result() const { return last_.get(); }
+  /// Where end B was for last_result() (meaningless without one).
+  const Eigen::Vector3d& last_attachment_g() const { return last_attachment_g_; }
   const FeLineModel& model() const { return model_; }
   const Eigen::Vector3d& end_A_g() const { return end_A_g_; }
 

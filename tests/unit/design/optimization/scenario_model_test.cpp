@@ -86,12 +86,6 @@ TEST(ScenarioModel, PayingOutSlackensTheLineAndMovesTheHullAway) {
   EXPECT_NEAR(std::hypot(at_rest.offset(0), at_rest.offset(1)), 0.0, 1e-7) << at_rest.offset.transpose();
 }
 
-}  // namespace
-}  // namespace spiral::design
-
-namespace spiral::design {
-namespace {
-
 // A scenario the study removed a line from, started at its load case's
 // intact equilibrium (the intact risers' FE solutions and offset), reaches
 // the same equilibrium as when it is solved cold: both are converged to the
@@ -120,6 +114,51 @@ TEST(ScenarioModel, ADamagedScenarioStartedFromItsIntactCaseReachesTheColdEquili
         << a.lines[k].name;
   // The damaged hull moves: the start was not simply kept.
   EXPECT_GT(b.offset.head<2>().norm(), 1.0);
+}
+
+// The optimizer's waves (warm_start_plan.hpp): a scenario whose risers start
+// from a neighbouring scenario's solution (lc2 without L10, solved at the
+// new payouts) reaches the equilibrium it reaches from its own last state,
+// to the solver tolerance (same bounds as above). The prediction on
+// linearized risers that places the full solve's start lands within a tenth
+// of the hull's move.
+TEST(ScenarioModel, RisersStartedFromANeighbourReachTheSameEquilibrium) {
+  const ValidatedProject p = load_validated_project(std::string(SPIRAL_SOURCE_DIR) + "/scenarios/deepwater-fps.yaml");
+  const std::vector<PayoutGroup> groups = payout_groups(p.project);
+  const HullModel hull = build_hull_model(p.project);
+  const std::string name = "lc2-survival-collinear-45deg";
+  ScenarioModel intact(p.project, hull, groups, {name, std::nullopt, DesignCondition::extreme});
+  ScenarioModel own(p.project, hull, groups, {name, std::string("L9"), DesignCondition::extreme, true});
+  ScenarioModel borrowed(p.project, hull, groups, {name, std::string("L9"), DesignCondition::extreme, true});
+  ScenarioModel neighbour(p.project, hull, groups, {name, std::string("L10"), DesignCondition::extreme, true});
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(groups.size()));
+  intact.evaluate(zero, false);
+  for (ScenarioModel* m : {&own, &borrowed, &neighbour}) {
+    m->start_from(intact);
+    m->evaluate(zero, false);
+  }
+  const engine::Vector6d before = own.evaluate(zero, false).offset;
+  Eigen::VectorXd payouts = zero;
+  payouts(0) = -12.0;
+  payouts(2) = -12.0;
+  neighbour.evaluate(payouts, false);
+
+  const std::optional<engine::HullPose> predicted = own.predict(payouts);
+  ASSERT_TRUE(predicted.has_value());
+  const ScenarioResponse a = own.evaluate(payouts, false);
+  ASSERT_TRUE(borrowed.predict(payouts).has_value());
+  borrowed.start_risers_from(neighbour);
+  const ScenarioResponse b = borrowed.evaluate(payouts, false);
+
+  EXPECT_LT((a.offset.head<3>() - b.offset.head<3>()).norm(), 1e-3);
+  ASSERT_EQ(a.lines.size(), b.lines.size());
+  for (std::size_t k = 0; k < a.lines.size(); ++k)
+    EXPECT_NEAR(a.lines[k].fairlead_tension_N, b.lines[k].fairlead_tension_N, 1e-6 * b.lines[k].fairlead_tension_N)
+        << a.lines[k].name;
+  const double moved_m = (a.offset.head<3>() - before.head<3>()).norm();
+  EXPECT_GT(moved_m, 5.0);
+  const Eigen::Vector3d predicted_offset = predicted->reference_point_g - hull.statics.reference_point_at_rest_g;
+  EXPECT_LT((predicted_offset - a.offset.head<3>()).norm(), 0.1 * moved_m);
 }
 
 }  // namespace
