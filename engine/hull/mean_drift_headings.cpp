@@ -9,19 +9,17 @@
 #include <utility>
 #include <vector>
 
+#include "engine/hull/heading_rule.hpp"
+
 namespace spiral::engine {
 namespace {
 
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 constexpr double kDeg = 180.0 / std::numbers::pi;
-/// Headings this close are the same heading (degrees written to 5–6 digits).
-constexpr double kSameHeading_rad = 1e-6;
+/// Headings this close are the same heading (the heading rule's tolerance).
+constexpr double kSameHeading_rad = kHeadingTolerance_rad;
 
-double wrapped(double angle) {
-  double a = std::fmod(angle, kTwoPi);
-  if (a < 0.0) a += kTwoPi;
-  return a >= kTwoPi - kSameHeading_rad ? 0.0 : a;
-}
+double wrapped(double angle) { return wrap_0_2pi(angle, kSameHeading_rad); }
 
 /// The six DOFs' coefficients at one heading: frequencies × DOF.
 using Coefficients = Eigen::Matrix<double, Eigen::Dynamic, 6>;
@@ -77,12 +75,7 @@ MeanDriftTable assembled(const MeanDriftTable& like, std::vector<std::pair<doubl
 /// heading rule: the interior gaps, and the wrap-around one when the table
 /// is periodic by that rule), at most the table's own limit.
 double interpolated_gap(const MeanDriftTable& t) {
-  const auto& h = t.headings_rad;
-  double widest = 0.0;
-  for (std::size_t j = 1; j < h.size(); ++j) widest = std::max(widest, h[j] - h[j - 1]);
-  const double wrap = h.front() + kTwoPi - h.back();
-  if (h.size() > 1 && wrap <= widest + kSameHeading_rad) widest = std::max(widest, wrap);
-  return std::min(widest, t.max_interpolation_gap_rad);
+  return std::min(widest_interpolated_gap(t.headings_rad), t.max_interpolation_gap_rad);
 }
 
 double largest_abs(const MeanDriftTable& t, std::size_t first_dof) {

@@ -1,5 +1,6 @@
 #include "engine/hull/mean_environmental_loads.hpp"
 #include "engine/common/table_range_error.hpp"
+#include "engine/hull/heading_rule.hpp"
 
 #include <fmt/format.h>
 
@@ -13,19 +14,9 @@ namespace spiral::engine {
 namespace {
 
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
-// Relative headings closer than this to a table end count as on it (rounding of
-// degrees written with 5-6 significant digits).
-constexpr double kHeadingTolerance_rad = 1e-6;
 /// A relative heading this far beyond the end of a table that does not cover
 /// the circle is evaluated at the end heading (header, heading rule).
 constexpr double kHeadingEndHold_rad = 0.5 * std::numbers::pi / 180.0;
-
-double wrap_0_2pi(double angle) {
-  double a = std::fmod(angle, kTwoPi);
-  if (a < 0.0) a += kTwoPi;
-  if (a >= kTwoPi) a = 0.0;
-  return a;
-}
 
 // Linear interpolation bracket: value = (1 - t) v[j0] + t v[j1].
 struct Bracket {
@@ -68,12 +59,7 @@ Bracket heading_bracket_in_range(const std::vector<double>& h, double beta, cons
     const std::size_t j0 = j1 - 1;
     return {j0, j1, (b - h[j0]) / (h[j1] - h[j0])};
   }
-  const double wrap_gap = first + kTwoPi - last;
-  double largest_gap = 0.0;
-  for (std::size_t j = 1; j < n; ++j) largest_gap = std::max(largest_gap, h[j] - h[j - 1]);
-  if (n > 1 && wrap_gap <= largest_gap + kHeadingTolerance_rad) {
-    return {n - 1, 0, (b - last) / wrap_gap};
-  }
+  if (wraps_around(h)) return {n - 1, 0, (b - last) / (first + kTwoPi - last)};
   if (b - last <= kHeadingEndHold_rad) return {n - 1, n - 1, 0.0};
   if (first + kTwoPi - b <= kHeadingEndHold_rad) return {0, 0, 0.0};
   throw TableRangeError(fmt::format(
