@@ -148,15 +148,15 @@ ScenarioResponse ScenarioModel::evaluate(const Eigen::VectorXd& payouts_m, bool 
   Impl& m = *impl_;
   if (with_gradient && !m.all_catenary()) return evaluate_by_differences(payouts_m);
   m.install(payouts_m);
+  engine::Vector6d start = m.last_offset;
+  if (m.predicted) {
+    start = *m.predicted;
+  } else if (const auto predicted = predicted_offset(payouts_m)) {
+    start = *predicted;
+  }
+  m.predicted.reset();
   engine::EquilibriumResult eq;
   try {
-    engine::Vector6d start = m.last_offset;
-    if (m.predicted) {
-      start = *m.predicted;
-    } else if (const auto predicted = predicted_offset(payouts_m)) {
-      start = *predicted;
-    }
-    m.predicted.reset();
     // The K at the solution serves the analytic gradient only (catenaries
     // alone); the FE risers then skip a factorisation each.
     eq = engine::solve_static_equilibrium(m.hull.statics, m.array.lines, m.environment_load, start,
@@ -273,7 +273,11 @@ std::optional<engine::Vector6d> ScenarioModel::predicted_offset(const Eigen::Vec
   // force error: one solve at the predicted pose and one or two small
   // Newton steps, instead of a riser solve at every step of the way.
   m.install(payouts_m);
-  linearize_expensive_lines();
+  try {
+    linearize_expensive_lines();
+  } catch (const engine::SolverError& error) {
+    throw engine::SolverError(fmt::format("{}: {}", scenario_.label(), error.what()), error.diagnostics());
+  }
   std::optional<engine::Vector6d> out;
   try {
     out = engine::solve_static_equilibrium(m.hull.statics, m.array.lines, m.environment_load, m.last_offset,
