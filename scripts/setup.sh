@@ -26,5 +26,11 @@ if [ ${#missing[@]} -gt 0 ]; then
   DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
-cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
+# Configure when there is no build yet or packages were just installed (the
+# optional features, e.g. MPI, are found at configure time); otherwise ninja
+# re-runs CMake itself when a CMakeLists or a globbed folder changes (3 s
+# saved on every run of the two commands).
+if [ ! -f build/build.ninja ] || [ ${#missing[@]} -gt 0 ]; then
+  cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
+fi
 cmake --build build --parallel "$(nproc)"
