@@ -293,13 +293,10 @@ ProblemEvaluation PretensionProblem::evaluate(const Eigen::VectorXd& payouts_m, 
   // current goes through continuations and costs ten warm ones.
   std::vector<std::size_t> first, then;
   std::vector<std::size_t> intact_of(scenarios_.size(), scenarios_.size());
-  const auto environment = [&](std::size_t s) {
-    return load_case_named(project_, scenarios_[s].case_name).environment;
-  };
   for (std::size_t s = 0; s < scenarios_.size(); ++s) {
     if (!models_started_ && scenarios_[s].damaged_line) {
       for (std::size_t i = 0; i < scenarios_.size() && intact_of[s] == scenarios_.size(); ++i)
-        if (!scenarios_[i].damaged_line && environment(i) == environment(s)) intact_of[s] = i;
+        if (!scenarios_[i].damaged_line && environment_of(i) == environment_of(s)) intact_of[s] = i;
     }
     (models_started_ || intact_of[s] < scenarios_.size() ? then : first).push_back(s);
   }
@@ -322,6 +319,10 @@ ProblemEvaluation PretensionProblem::evaluate(const Eigen::VectorXd& payouts_m, 
   return out;
 }
 
+const std::string& PretensionProblem::environment_of(std::size_t s) const {
+  return load_case_named(project_, scenarios_[s].case_name).environment;
+}
+
 bool PretensionProblem::evaluate_in_waves(const std::vector<std::size_t>& which, const Eigen::VectorXd& payouts_m,
                                           bool with_gradient, ProblemEvaluation& out) {
   // Each scenario's equilibrium predicted on linearized risers, then solved
@@ -338,7 +339,7 @@ bool PretensionProblem::evaluate_in_waves(const std::vector<std::size_t>& which,
   });
   std::vector<std::string> environments;
   for (std::size_t k = 0; k < which.size(); ++k) {
-    const std::string& environment = load_case_named(project_, scenarios_[which[k]].case_name).environment;
+    const std::string& environment = environment_of(which[k]);
     auto it = std::find(environments.begin(), environments.end(), environment);
     if (it == environments.end()) it = environments.insert(environments.end(), environment);
     nodes[k].environment = static_cast<int>(it - environments.begin());

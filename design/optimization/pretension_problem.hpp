@@ -95,6 +95,9 @@ class PretensionProblem {
   void restore_expensive_lines();
 
  private:
+  /// The environment of scenario `s` (scenarios of one environment share
+  /// their risers: same models, same current).
+  const std::string& environment_of(std::size_t s) const;
   /// Evaluates scenarios `which` (each already evaluated once, or started
   /// from another) in waves of warm starts (warm_start_plan.hpp). False,
   /// with nothing solved, when a scenario's risers have no solution to plan
