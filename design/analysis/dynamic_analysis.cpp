@@ -463,7 +463,7 @@ std::vector<TensionSeries> quasi_static_fairlead_tensions(const Project& project
     const engine::HullPose pose = engine::pose_from_offset(project.hull.reference_point_g, total.col(k));
     for (std::size_t l = 0; l < mooring.lines.size(); ++l) {
       const auto& line = mooring.lines[l];
-      const Eigen::Vector3d fairlead = pose.reference_point_g + pose.rotation * line->attachment_b();
+      const Eigen::Vector3d fairlead = pose.point_g(line->attachment_b());
       tensions[l].fairlead_g_m[static_cast<std::size_t>(k)] = fairlead;
       tensions[l].tension_N[static_cast<std::size_t>(k)] = line->solve(fairlead).top_tension_N;
     }

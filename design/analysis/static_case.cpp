@@ -141,7 +141,7 @@ StaticCaseResult run_static_case(const ValidatedProject& validated, const CaseMo
         const auto it = cache->solutions.find({result.environment, fe->name()});
         if (it != cache->solutions.end()) solved = it->second;
       }
-      if (solved) fe->adopt(rest.reference_point_g + rest.rotation * fe->attachment_b(), std::move(*solved));
+      if (solved) fe->adopt(rest.point_g(fe->attachment_b()), std::move(*solved));
     }
     engine::evaluate_line_array(lines.lines, rest);
     const std::lock_guard lock(cache->mutex);
@@ -186,8 +186,7 @@ StaticCaseResult run_static_case(const ValidatedProject& validated, const CaseMo
   std::vector<engine::LineState> states;
   for (std::size_t i = 0; i < lines.designs.size(); ++i) {
     const auto& line = lines.lines[i];
-    states.push_back(line->state(equilibrium.pose.reference_point_g + equilibrium.pose.rotation * line->attachment_b(),
-                                 kResultProfilePointsPerSegment));
+    states.push_back(line->state(equilibrium.pose.point_g(line->attachment_b()), kResultProfilePointsPerSegment));
   }
   result.lines = line_statics_rows(lines, states);
   result.dynamic_stiffness = array.stiffness;

@@ -302,8 +302,7 @@ std::vector<Eigen::Vector3d> ScenarioModel::riser_tops_g(const engine::HullPose&
   const Impl& m = *impl_;
   std::vector<Eigen::Vector3d> out;
   for (std::size_t k = m.paid.size(); k < m.array.lines.size(); ++k)
-    if (m.array.lines[k]->expensive())
-      out.push_back(pose.reference_point_g + pose.rotation * m.array.lines[k]->attachment_b());
+    if (m.array.lines[k]->expensive()) out.push_back(pose.point_g(m.array.lines[k]->attachment_b()));
   return out;
 }
 
@@ -348,7 +347,7 @@ void ScenarioModel::complete_expensive_lines() {
   if (!m.last_pose) throw std::logic_error("ScenarioModel::complete_expensive_lines: not evaluated");
   for (std::size_t k = m.paid.size(); k < m.array.lines.size(); ++k) {
     engine::StaticLine& line = *m.array.lines[k];
-    if (line.expensive()) line.solve(m.last_pose->reference_point_g + m.last_pose->rotation * line.attachment_b());
+    if (line.expensive()) line.solve(m.last_pose->point_g(line.attachment_b()));
   }
 }
 
@@ -363,9 +362,7 @@ void ScenarioModel::linearize_expensive_lines() {
     // solve). The hull's last pose may be a linearized evaluation's.
     const auto* fe = dynamic_cast<const engine::FeStaticLine*>(line.get());
     const Eigen::Vector3d at =
-        fe && fe->last_result()
-            ? fe->last_attachment_g()
-            : Eigen::Vector3d(m.last_pose->reference_point_g + m.last_pose->rotation * line->attachment_b());
+        fe && fe->last_result() ? fe->last_attachment_g() : m.last_pose->point_g(line->attachment_b());
     const engine::LineEndResponse response = line->linearization(at);
     auto linear = std::make_unique<engine::LinearizedStaticLine>(line->name(), line->attachment_b(), at, response);
     m.stashed[k] = std::move(line);

@@ -39,7 +39,7 @@ std::vector<LineEndResponse> solve_all(std::span<const std::unique_ptr<StaticLin
                                        LineArrayQuantities quantities = LineArrayQuantities::force_and_stiffness) {
   std::vector<LineEndResponse> ends(lines.size());
   const auto solve_one = [&](std::size_t i) {
-    const Eigen::Vector3d attachment_g = pose.reference_point_g + pose.rotation * lines[i]->attachment_b();
+    const Eigen::Vector3d attachment_g = pose.point_g(lines[i]->attachment_b());
     switch (quantities) {
       case LineArrayQuantities::force:
         ends[i].force_g = lines[i]->solve_force(attachment_g);

@@ -24,6 +24,8 @@ namespace spiral::engine {
 struct HullPose {
   Eigen::Vector3d reference_point_g = Eigen::Vector3d::Zero();  ///< m
   Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();       ///< body -> global
+  /// Where a point of the hull (body frame, relative to the reference point) is, global.
+  Eigen::Vector3d point_g(const Eigen::Vector3d& point_b) const { return reference_point_g + rotation * point_b; }
 };
 
 /// The pose of a hull whose reference point is at `reference_point_at_rest_g`
