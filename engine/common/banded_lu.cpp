@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 namespace spiral::engine {
@@ -28,35 +29,82 @@ void BandMatrix::set_identity_row(int i) {
   at(i, i) = 1.0;
 }
 
-// dgbtf2, 0-based.
-bool BandMatrix::factorize() {
+namespace {
+
+// A diagonal pivot is kept while it has its diagonal's sign (before
+// elimination) and at least this fraction of its size: in a definite matrix
+// elimination leaves every pivot with its diagonal's sign, and a pivot that
+// lost all but 1e-8 of its diagonal to cancellation is where an indefinite
+// matrix would grow its factors without bound.
+constexpr double kKeptDiagonalFraction = 1e-8;
+constexpr double kDefiniteSlack = 4.0;
+
+}  // namespace
+
+// dgbtf2, 0-based, with the pivot rule of the header. The interior columns'
+// loops have a compile-time length for the FE lines' bandwidths (KL = 0: run
+// time), so that they unroll.
+template <int KL>
+bool BandMatrix::factorize_band(Pivoting pivoting) {
+  const int kl = KL > 0 ? KL : kl_;
   ipiv_.assign(static_cast<std::size_t>(n_), 0);
+  inverse_pivot_.resize(static_cast<std::size_t>(n_));
+  column_top_.resize(static_cast<std::size_t>(n_));
+  for (int j = 0; j < n_; ++j) {
+    column_top_[static_cast<std::size_t>(j)] = j;
+    inverse_pivot_[static_cast<std::size_t>(j)] = at(j, j);  // the diagonal before elimination, for the rule
+  }
   int ju = 0;
   bool ok = true;
   for (int j = 0; j < n_; ++j) {
-    const int km = std::min(kl_, n_ - 1 - j);
+    const int km = std::min(kl, n_ - 1 - j);
+    double* const l = &at(j, j);  // column j from the diagonal down: contiguous
     int jp = 0;
-    double best = std::abs(at(j, j));
-    for (int p = 1; p <= km; ++p) {
-      if (std::abs(at(j + p, j)) > best) {
-        best = std::abs(at(j + p, j));
-        jp = p;
+    double best = std::abs(l[0]);
+    const double diagonal = inverse_pivot_[static_cast<std::size_t>(j)];
+    bool keep_diagonal =
+        pivoting == Pivoting::diagonal_while_definite && diagonal != 0.0 && l[0] / diagonal > kKeptDiagonalFraction;
+    // Definite: |a_ij a_ji| ≤ |a_ii a_jj| in every Schur complement, which
+    // bounds each update a_ik − a_ij a_jk / a_jj by the diagonals (slack 4
+    // for the unsymmetric drag part). A column that breaks it is indefinite
+    // there: interchanges.
+    for (int i = 1; keep_diagonal && i <= std::min(km, ku_); ++i) {
+      keep_diagonal = std::abs(l[i] * at(j, j + i)) <= kDefiniteSlack * std::abs(l[0] * at(j + i, j + i));
+    }
+    if (!keep_diagonal) {
+      for (int p = 1; p <= km; ++p) {
+        if (std::abs(l[p]) > best) {
+          best = std::abs(l[p]);
+          jp = p;
+        }
       }
     }
     ipiv_[static_cast<std::size_t>(j)] = j + jp;
     if (best == 0.0) {
       ok = false;
+      inverse_pivot_[static_cast<std::size_t>(j)] = std::numeric_limits<double>::infinity();
       continue;
     }
-    ju = std::max(ju, std::min(j + ku_ + jp, n_ - 1));
+    const int reach = std::min(j + ku_ + jp, n_ - 1);
+    for (int c = ju + 1; c <= reach; ++c) column_top_[static_cast<std::size_t>(c)] = j;
+    ju = std::max(ju, reach);
     if (jp != 0) {
       for (int c = j; c <= ju; ++c) std::swap(at(j, c), at(j + jp, c));
     }
-    if (km > 0) {
-      const double inv = 1.0 / at(j, j);
-      // Column j below the diagonal, and each column c to its right from row
-      // j on, are contiguous in the band storage (distinct columns: no alias).
-      double* const l = &at(j, j);
+    const double inv = 1.0 / l[0];
+    inverse_pivot_[static_cast<std::size_t>(j)] = inv;
+    if (km == 0) continue;
+    // Each column c to the right of j is contiguous from row j on (distinct
+    // columns: no alias with l).
+    if (KL > 0 && km == KL) {
+      for (int i = 1; i <= KL; ++i) l[i] *= inv;
+      for (int c = j + 1; c <= ju; ++c) {
+        double* const a = &at(j, c);
+        const double u = a[0];
+        if (u == 0.0) continue;
+        for (int i = 1; i <= KL; ++i) a[i] -= l[i] * u;
+      }
+    } else {
       for (int i = 1; i <= km; ++i) l[i] *= inv;
       for (int c = j + 1; c <= ju; ++c) {
         double* const a = &at(j, c);
@@ -69,17 +117,46 @@ bool BandMatrix::factorize() {
   return ok;
 }
 
-void BandMatrix::solve_in_place(Eigen::Ref<Eigen::VectorXd> b) const {
-  for (int j = 0; j < n_; ++j) {
+bool BandMatrix::factorize(Pivoting pivoting) {
+  if (kl_ == 11) return factorize_band<11>(pivoting);
+  if (kl_ == 14) return factorize_band<14>(pivoting);
+  return factorize_band<0>(pivoting);
+}
+
+template <int KL>
+void BandMatrix::solve_band(Eigen::Ref<Eigen::VectorXd> b) const {
+  const int kl = KL > 0 ? KL : kl_;
+  double* const x = b.data();
+  // Above its first nonzero (less the reach of a row interchange) the
+  // right-hand side stays zero through L: a line's response to its end B
+  // (the end-stiffness condensation) starts there.
+  int first = 0;
+  while (first < n_ && x[first] == 0.0) ++first;
+  for (int j = std::max(0, first - kl); j < n_; ++j) {
     const int l = ipiv_[static_cast<std::size_t>(j)];
-    if (l != j) std::swap(b[l], b[j]);
-    const int km = std::min(kl_, n_ - 1 - j);
-    for (int i = 1; i <= km; ++i) b[j + i] -= at(j + i, j) * b[j];
+    if (l != j) std::swap(x[l], x[j]);
+    const double* const col = address(j, j);
+    const double xj = x[j];
+    if (KL > 0 && j + KL < n_) {
+      for (int i = 1; i <= KL; ++i) x[j + i] -= col[i] * xj;
+    } else {
+      const int km = std::min(kl, n_ - 1 - j);
+      for (int i = 1; i <= km; ++i) x[j + i] -= col[i] * xj;
+    }
   }
   for (int j = n_ - 1; j >= 0; --j) {
-    b[j] /= at(j, j);
-    for (int i = std::max(0, j - kv_); i < j; ++i) b[i] -= at(i, j) * b[j];
+    const double xj = x[j] * inverse_pivot_[static_cast<std::size_t>(j)];
+    x[j] = xj;
+    const int top = column_top_[static_cast<std::size_t>(j)];
+    const double* const col = address(top, j);  // rows top..j−1 of column j: contiguous
+    for (int i = 0; i < j - top; ++i) x[top + i] -= col[i] * xj;
   }
+}
+
+void BandMatrix::solve_in_place(Eigen::Ref<Eigen::VectorXd> b) const {
+  if (kl_ == 11) return solve_band<11>(b);
+  if (kl_ == 14) return solve_band<14>(b);
+  solve_band<0>(b);
 }
 
 }  // namespace spiral::engine

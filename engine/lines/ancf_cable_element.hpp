@@ -70,24 +70,44 @@ inline T norm_c1(const V3<T>& v) {
   return sqrt(s);
 }
 
+/// The current profile about height z: u(z') = velocity + shear (z' − z_ref)
+/// on the table's segment that holds z; constant (zero shear) beyond the
+/// table (times the continuation factor).
+struct CurrentSegment {
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();
+  Eigen::Vector3d shear = Eigen::Vector3d::Zero();  ///< du/dz, 1/s
+  double z_ref_m = 0.0;
+};
+inline CurrentSegment current_segment(const LoadContext& ctx, double z) {
+  const auto& c = *ctx.current;
+  const double f = ctx.current_factor;
+  CurrentSegment s;
+  s.z_ref_m = z;
+  if (c.empty()) return s;
+  if (z <= c.front().z_m) {
+    s.velocity = f * c.front().velocity_m_per_s;
+    return s;
+  }
+  if (z >= c.back().z_m) {
+    s.velocity = f * c.back().velocity_m_per_s;
+    return s;
+  }
+  std::size_t i = 1;
+  while (c[i].z_m < z) ++i;
+  const auto& p0 = c[i - 1];
+  const auto& p1 = c[i];
+  s.velocity = f * p0.velocity_m_per_s;
+  s.shear = f * (p1.velocity_m_per_s - p0.velocity_m_per_s) / (p1.z_m - p0.z_m);
+  s.z_ref_m = p0.z_m;
+  return s;
+}
+
 /// Current velocity at height z: linear in z, constant beyond the table.
 template <typename T>
 inline V3<T> current_at(const LoadContext& ctx, const T& z) {
-  const auto& c = *ctx.current;
-  const double f = ctx.current_factor;
-  auto constant = [f](const Eigen::Vector3d& u) { return V3<T>{T(f * u.x()), T(f * u.y()), T(f * u.z())}; };
-  if (c.empty()) return constant(Eigen::Vector3d::Zero());
-  const double zv = value_of(z);
-  if (zv <= c.front().z_m) return constant(c.front().velocity_m_per_s);
-  if (zv >= c.back().z_m) return constant(c.back().velocity_m_per_s);
-  std::size_t i = 1;
-  while (c[i].z_m < zv) ++i;
-  const auto& p0 = c[i - 1];
-  const auto& p1 = c[i];
-  const Eigen::Vector3d slope = f * (p1.velocity_m_per_s - p0.velocity_m_per_s) / (p1.z_m - p0.z_m);
-  const Eigen::Vector3d u0 = f * p0.velocity_m_per_s;
-  const T dz = z - p0.z_m;
-  return {u0.x() + slope.x() * dz, u0.y() + slope.y() * dz, u0.z() + slope.z() * dz};
+  const CurrentSegment s = current_segment(ctx, value_of(z));
+  const T dz = z - s.z_ref_m;
+  return {s.velocity.x() + s.shear.x() * dz, s.velocity.y() + s.shear.y() * dz, s.velocity.z() + s.shear.z() * dz};
 }
 
 /// 5-point Gauss–Legendre rule on [0, 1] (exact to degree 9: the weight load,
@@ -101,12 +121,28 @@ inline constexpr std::array<double, 5> kGaussW = {0.5 * 0.2369268850561891, 0.5 
 struct ShapeAt {
   std::array<double, 4> S, dS, ddS;  ///< S_k, dS_k/ds, d²S_k/ds² (slope DOFs carry the L factor)
 };
-inline ShapeAt shape_at(double xi, double L) {
+/// The shapes at ξ of an element of length L, given 1/L: the kernels call
+/// this at every Gauss point, where a division per derivative would cost as
+/// much as the rest of the interpolation.
+inline ShapeAt shape_at(double xi, double L, double inv_L) {
   const double x2 = xi * xi, x3 = x2 * xi;
+  const double inv_L2 = inv_L * inv_L;
   ShapeAt s;
   s.S = {1.0 - 3.0 * x2 + 2.0 * x3, L * (xi - 2.0 * x2 + x3), 3.0 * x2 - 2.0 * x3, L * (x3 - x2)};
-  s.dS = {(-6.0 * xi + 6.0 * x2) / L, 1.0 - 4.0 * xi + 3.0 * x2, (6.0 * xi - 6.0 * x2) / L, 3.0 * x2 - 2.0 * xi};
-  s.ddS = {(-6.0 + 12.0 * xi) / (L * L), (-4.0 + 6.0 * xi) / L, (6.0 - 12.0 * xi) / (L * L), (6.0 * xi - 2.0) / L};
+  s.dS = {(-6.0 * xi + 6.0 * x2) * inv_L, 1.0 - 4.0 * xi + 3.0 * x2, (6.0 * xi - 6.0 * x2) * inv_L,
+          3.0 * x2 - 2.0 * xi};
+  s.ddS = {(-6.0 + 12.0 * xi) * inv_L2, (-4.0 + 6.0 * xi) * inv_L, (6.0 - 12.0 * xi) * inv_L2,
+           (6.0 * xi - 2.0) * inv_L};
+  return s;
+}
+inline ShapeAt shape_at(double xi, double L) { return shape_at(xi, L, 1.0 / L); }
+
+/// Shape functions at the Gauss points kGaussXi of an element of length L.
+using GaussShapes = std::array<ShapeAt, kGaussXi.size()>;
+inline GaussShapes gauss_shapes(double L) {
+  const double inv_L = 1.0 / L;
+  GaussShapes s;
+  for (std::size_t gp = 0; gp < kGaussXi.size(); ++gp) s[gp] = shape_at(kGaussXi[gp], L, inv_L);
   return s;
 }
 
@@ -182,7 +218,7 @@ inline constexpr std::array<double, 4> kContactGaussW = {0.1739274225687269, 0.3
 template <typename T>
 void add_seabed_contact(const ElementProperties& e, const LoadContext& ctx, const V3<T>* node, V3<T>* force,
                         ElementTangent* K = nullptr) {
-  const double L = e.length_m;
+  const double L = e.length_m, inv_L = 1.0 / L;
   const double zs = ctx.seabed_z_m;
   std::array<std::array<double, 2>, 4> pieces;
   const int n_pieces = seabed_contact_pieces(
@@ -191,7 +227,7 @@ void add_seabed_contact(const ElementProperties& e, const LoadContext& ctx, cons
     const double a = pieces[static_cast<std::size_t>(c)][0], b = pieces[static_cast<std::size_t>(c)][1];
     for (int gp = 0; gp < 4; ++gp) {
       const double xi = a + (b - a) * kContactGaussXi[gp];
-      const ShapeAt sh = shape_at(xi, L);
+      const ShapeAt sh = shape_at(xi, L, inv_L);
       T z = T(0.0);
       for (int k = 0; k < 4; ++k) z = z + sh.S[k] * node[k].z;
       const T pen = zs - z;
@@ -210,41 +246,96 @@ void add_seabed_contact(const ElementProperties& e, const LoadContext& ctx, cons
 
 /// Morison drag of the current on the line at rest, per unstretched length,
 /// on the stretched length |r'| ds (OrcaFlex / MoorDyn v2 convention, see
-/// fe_line_statics.hpp). With ctx.drag_jacobian false, a Dual evaluation
-/// returns the drag as a dead load (values only, zero derivatives).
+/// fe_line_statics.hpp). na = |r'|, inv_na = 1/|r'|. With ctx.drag_jacobian
+/// false, a Dual evaluation returns the drag as a dead load (values only,
+/// zero derivatives).
 template <typename T>
-V3<T> drag_load(const ElementProperties& e, const LoadContext& ctx, const V3<T>& r, const V3<T>& a, const T& na) {
+V3<T> drag_load(const ElementProperties& e, const LoadContext& ctx, const V3<T>& r, const V3<T>& a, const T& na,
+                const T& inv_na) {
   if (!ctx.drag_jacobian && !std::is_same_v<T, double>) {
     const V3<double> rv{value_of(r.x), value_of(r.y), value_of(r.z)};
     const V3<double> av{value_of(a.x), value_of(a.y), value_of(a.z)};
-    const V3<double> p = drag_load<double>(e, ctx, rv, av, value_of(na));
+    const V3<double> p = drag_load<double>(e, ctx, rv, av, value_of(na), value_of(inv_na));
     return {T(p.x), T(p.y), T(p.z)};
   }
   const V3<T> u = current_at<T>(ctx, r.z);
-  const V3<T> t = (1.0 / na) * a;
+  const V3<T> t = inv_na * a;
   const T ut = dot(u, t);
   const V3<T> un = u - ut * t;
   const T abs_ut = value_of(ut) < 0.0 ? T(-ut) : ut;
   return (e.normal_drag_N_s2_per_m3 * norm_c1(un) * na) * un + (e.tangential_drag_N_s2_per_m3 * abs_ut * ut * na) * t;
 }
 
+using M3 = std::array<std::array<double, 3>, 3>;
+
+/// drag_load<double> and its derivatives ∂p/∂r' (d_da) and ∂p/∂z (d_dz),
+/// analytic. With t = a/|a|, u_t = u·t, u_n = u − u_t t, P = I − t tᵀ and
+/// p = |a| [c_n |u_n| u_n + c_t |u_t| u_t t] (drag_load):
+///   ∂t/∂a = P/|a|, ∂u_t/∂a = u_nᵀ/|a|, ∂u_n/∂a = −(t u_nᵀ + u_t P)/|a|,
+///   ∂|u_n|/∂a = −u_t u_nᵀ/(|a| |u_n|), ∂|a|/∂a = tᵀ, so
+///   ∂p/∂a = c_n [|u_n| u_n tᵀ − (u_t/|u_n|) u_n u_nᵀ − |u_n| (t u_nᵀ + u_t P)]
+///         + c_t |u_t| [u_t t tᵀ + 2 t u_nᵀ + u_t P];
+///   ∂p/∂u = |a| [c_n (|u_n| P + u_n u_nᵀ/|u_n|) + 2 c_t |u_t| t tᵀ],
+///   ∂p/∂z = ∂p/∂u du/dz (the profile's shear).
+/// The u_n u_nᵀ/|u_n| terms vanish with u_n, as norm_c1's derivative does.
+/// Equal to the forward-mode derivatives of drag_load to round-off
+/// (tests/unit/engine/lines/ancf_tangent_test.cpp).
+struct DragTangent {
+  V3<double> load;
+  M3 d_da;
+  std::array<double, 3> d_dz;
+};
+inline DragTangent drag_load_and_tangent(const ElementProperties& e, const LoadContext& ctx, const V3<double>& r,
+                                         const V3<double>& a, double na, double inv_na) {
+  const CurrentSegment current = current_segment(ctx, r.z);
+  const double dz = r.z - current.z_ref_m;
+  const V3<double> u{current.velocity.x() + current.shear.x() * dz, current.velocity.y() + current.shear.y() * dz,
+                     current.velocity.z() + current.shear.z() * dz};
+  const V3<double> t = inv_na * a;
+  const double ut = dot(u, t);
+  const V3<double> un = u - ut * t;
+  const double nun = norm_c1(un);
+  const double abs_ut = std::abs(ut);
+  const double cn = e.normal_drag_N_s2_per_m3, ct = e.tangential_drag_N_s2_per_m3;
+  DragTangent out;
+  out.load = (cn * nun * na) * un + (ct * abs_ut * ut * na) * t;
+  const double inv_nun = nun > 0.0 ? 1.0 / nun : 0.0;
+  const double tv[3] = {t.x, t.y, t.z}, nv[3] = {un.x, un.y, un.z};
+  const double shear[3] = {current.shear.x(), current.shear.y(), current.shear.z()};
+  for (int x = 0; x < 3; ++x) {
+    double dz_x = 0.0;
+    for (int y = 0; y < 3; ++y) {
+      const double P = (x == y ? 1.0 : 0.0) - tv[x] * tv[y];
+      const double nn = nv[x] * nv[y];
+      out.d_da[x][y] = cn * (nun * nv[x] * tv[y] - ut * inv_nun * nn - nun * (tv[x] * nv[y] + ut * P)) +
+                       ct * abs_ut * (ut * tv[x] * tv[y] + 2.0 * tv[x] * nv[y] + ut * P);
+      const double d_du = na * (cn * (nun * P + inv_nun * nn) + 2.0 * ct * abs_ut * tv[x] * tv[y]);
+      dz_x += d_du * shear[y];
+    }
+    out.d_dz[static_cast<std::size_t>(x)] = dz_x;
+  }
+  return out;
+}
+
 /// Gradient of the strain-energy density per unstretched length at a point
-/// with r' = a, r'' = b (aa = a·a, na = |a|): fa = ∂W/∂r', fb = ∂W/∂r''.
+/// with r' = a, r'' = b (aa = a·a, na = |a|, inv_na = 1/|a|): fa = ∂W/∂r',
+/// fb = ∂W/∂r''.
 template <typename T>
 inline void strain_energy_gradient(const ElementProperties& e, const V3<T>& a, const V3<T>& b, const T& aa, const T& na,
-                                   V3<T>& fa, V3<T>& fb) {
+                                   const T& inv_na, V3<T>& fa, V3<T>& fb) {
   // Axial: N δ|r'| with N = EA (|r'| − 1) (engineering strain, Irvine 1981).
-  const T axial = e.EA_N * (na - 1.0) / na;  // N / |r'|
+  const T axial = e.EA_N * (na - 1.0) * inv_na;  // N / |r'|
   fa = axial * a;
   fb = {T(0.0), T(0.0), T(0.0)};
   if (e.EI_Nm2 > 0.0) {
     // U_b = EI/2 κ², κ² = (|a|²|b|² − (a·b)²) / |a|⁶ (Gerstmayr & Shabana 2006, eq. 17).
     const T bb = dot(b, b);
     const T ab = dot(a, b);
-    const T a6 = aa * aa * aa;
+    const T inv_aa = inv_na * inv_na;
+    const T ei_a6 = e.EI_Nm2 * (inv_aa * inv_aa * inv_aa);  // EI / |a|⁶
     const T gk = aa * bb - ab * ab;
-    fa = fa + (e.EI_Nm2 / a6) * ((bb * a - ab * b) - (3.0 * gk / aa) * a);
-    fb = (e.EI_Nm2 / a6) * (aa * b - ab * a);
+    fa = fa + ei_a6 * ((bb * a - ab * b) - (3.0 * gk * inv_aa) * a);
+    fb = ei_a6 * (aa * b - ab * a);
   }
 }
 
@@ -259,8 +350,9 @@ void element_forces(const ElementProperties& e, const LoadContext& ctx, const T*
   V3<T> force[4];
   for (int k = 0; k < 4; ++k) force[k] = {T(0.0), T(0.0), T(0.0)};
 
+  const GaussShapes shapes = gauss_shapes(L);
   for (std::size_t gp = 0; gp < kGaussXi.size(); ++gp) {
-    const ShapeAt sh = shape_at(kGaussXi[gp], L);
+    const ShapeAt& sh = shapes[gp];
     const double wds = kGaussW[gp] * L;  // quadrature weight times ds/dξ
     V3<T> r{T(0.0), T(0.0), T(0.0)}, a = r, b = r;
     for (int k = 0; k < 4; ++k) {
@@ -270,15 +362,16 @@ void element_forces(const ElementProperties& e, const LoadContext& ctx, const T*
     }
     const T aa = dot(a, a);
     const T na = sqrt(aa);
+    const T inv_na = 1.0 / na;
     V3<T> fa, fb;  // ∂U/∂r', ∂U/∂r'' per length
-    strain_energy_gradient(e, a, b, aa, na, fa, fb);
+    strain_energy_gradient(e, a, b, aa, na, inv_na, fa, fb);
     // Distributed external load per unstretched length.
     V3<T> p{T(0.0), T(0.0), T(-e.weight_N_per_m)};
     if (ctx.current != nullptr && !ctx.current->empty() &&
         (e.normal_drag_N_s2_per_m3 > 0.0 || e.tangential_drag_N_s2_per_m3 > 0.0)) {
       // Morison drag of the current on the line at rest, on the stretched
       // length |r'| ds (OrcaFlex / MoorDyn v2 convention, see header).
-      p = p + drag_load<T>(e, ctx, r, a, na);
+      p = p + drag_load<T>(e, ctx, r, a, na, inv_na);
     }
     for (int k = 0; k < 4; ++k) {
       force[k] = force[k] + wds * (sh.S[k] * p - sh.dS[k] * fa - sh.ddS[k] * fb);
@@ -292,21 +385,20 @@ void element_forces(const ElementProperties& e, const LoadContext& ctx, const T*
   }
 }
 
-using M3 = std::array<std::array<double, 3>, 3>;
-
 /// The strain-energy gradient (fa = ∂W/∂r', fb = ∂W/∂r'') and Hessian
 /// (Haa = ∂fa/∂a, Hab = ∂fa/∂b, Hbb = ∂fb/∂b; ∂fb/∂a = Habᵀ) at a point with
 /// r' = a, r'' = b (A = a·a, na = |a|); formulas at element_forces_and_tangent.
 inline void strain_energy_hessian(const ElementProperties& e, const V3<double>& a, const V3<double>& b, double A,
                                   double na, V3<double>& fa, V3<double>& fb, M3& Haa, M3& Hab, M3& Hbb) {
   const double av[3] = {a.x, a.y, a.z}, bv[3] = {b.x, b.y, b.z};
-  const double axial = e.EA_N * (na - 1.0) / na;
+  const double inv_na = 1.0 / na, inv_A = inv_na * inv_na;  // the one division
+  const double axial = e.EA_N * (na - 1.0) * inv_na;
   fa = axial * a;
   fb = {0.0, 0.0, 0.0};
   Haa = {};
   Hab = {};
   Hbb = {};
-  const double c_aa = e.EA_N / (A * na);
+  const double c_aa = e.EA_N * inv_A * inv_na;
   for (int i = 0; i < 3; ++i) {
     for (int j = 0; j < 3; ++j) Haa[i][j] = c_aa * av[i] * av[j];
     Haa[i][i] += axial;
@@ -315,8 +407,8 @@ inline void strain_energy_hessian(const ElementProperties& e, const V3<double>& 
     const double B = dot(b, b), C = dot(a, b);
     const double G = A * B - C * C;
     const double EI = e.EI_Nm2;
-    const double iA3 = EI / (A * A * A), iA4 = iA3 / A, iA5 = iA4 / A;
-    fa = fa + iA3 * ((B * a - C * b) - (3.0 * G / A) * a);
+    const double iA3 = EI * (inv_A * inv_A * inv_A), iA4 = iA3 * inv_A, iA5 = iA4 * inv_A;
+    fa = fa + iA3 * ((B * a - C * b) - (3.0 * G * inv_A) * a);
     fb = iA3 * (A * b - C * a);
     double u[3], v[3];  // u = B a − C b, v = A b − C a
     for (int i = 0; i < 3; ++i) {
@@ -339,9 +431,10 @@ inline void strain_energy_hessian(const ElementProperties& e, const V3<double>& 
 
 /// Generalised forces g (as element_forces<double>) and their exact tangent
 /// K = ∂g/∂q, analytic: per Gauss point the 6×6 Hessian of the strain-energy
-/// density in (a, b) = (r', r''), mapped through the shape functions; the
-/// drag's derivatives in (z, r') by forward differentiation of drag_load
-/// (4 seeds instead of 12); the contact's from its linear integrand. Same
+/// density in (a, b) = (r', r''), mapped through the shape functions (the
+/// blocks of one triangle: the elastic tangent is symmetric); the drag's
+/// derivatives in (z, r') from drag_load_and_tangent; the contact's from its
+/// linear integrand. Same
 /// result as element_forces<Dual<12>> to round-off (tests/unit), at a
 /// fraction of its cost (docs/decisions/fe-line-statics.md). With
 /// ctx.drag_jacobian false the drag is a dead load in K.
@@ -364,9 +457,12 @@ inline void element_forces_and_tangent(const ElementProperties& e, const LoadCon
   K.fill(0.0);
   const bool drag = ctx.current != nullptr && !ctx.current->empty() &&
                     (e.normal_drag_N_s2_per_m3 > 0.0 || e.tangential_drag_N_s2_per_m3 > 0.0);
+  ElementTangent drag_K;
+  if (drag && ctx.drag_jacobian) drag_K.fill(0.0);
 
+  const GaussShapes shapes = gauss_shapes(L);
   for (std::size_t gp = 0; gp < kGaussXi.size(); ++gp) {
-    const ShapeAt sh = shape_at(kGaussXi[gp], L);
+    const ShapeAt& sh = shapes[gp];
     const double wds = kGaussW[gp] * L;
     V3<double> r{0.0, 0.0, 0.0}, a = r, b = r;
     for (int k = 0; k < 4; ++k) {
@@ -380,47 +476,57 @@ inline void element_forces_and_tangent(const ElementProperties& e, const LoadCon
     M3 Haa, Hab, Hbb;  // ∂f_a/∂a, ∂f_a/∂b, ∂f_b/∂b
     strain_energy_hessian(e, a, b, A, na, fa, fb, Haa, Hab, Hbb);
     V3<double> p{0.0, 0.0, -e.weight_N_per_m};
-    M3 Pa{};                         // ∂p/∂a
-    double Pz[3] = {0.0, 0.0, 0.0};  // ∂p/∂z
     if (drag) {
       if (ctx.drag_jacobian) {
-        using D = Dual<4>;
-        const V3<D> rd{D(r.x), D(r.y), D::seed(r.z, 0)};
-        const V3<D> ad{D::seed(a.x, 1), D::seed(a.y, 2), D::seed(a.z, 3)};
-        const V3<D> pd = drag_load<D>(e, ctx, rd, ad, sqrt(dot(ad, ad)));
-        const D* pc[3] = {&pd.x, &pd.y, &pd.z};
-        for (int i = 0; i < 3; ++i) {
-          Pz[i] = pc[i]->d[0];
-          for (int j = 0; j < 3; ++j) Pa[i][j] = pc[i]->d[static_cast<std::size_t>(j + 1)];
+        const DragTangent d = drag_load_and_tangent(e, ctx, r, a, na, 1.0 / na);
+        p = p + d.load;
+        // K_kj += wds S_k (∂p/∂a dS_j + ∂p/∂z e_zᵀ S_j): the one unsymmetric term.
+        for (int k = 0; k < 4; ++k) {
+          const double cs = wds * sh.S[k];
+          for (int j = 0; j < 4; ++j) {
+            const double ca = cs * sh.dS[j], cz = cs * sh.S[j];
+            for (int x = 0; x < 3; ++x) {
+              double* row = &drag_K[static_cast<std::size_t>(12 * (3 * k + x) + 3 * j)];
+              for (int y = 0; y < 3; ++y) row[y] += ca * d.d_da[x][y];
+              row[2] += cz * d.d_dz[static_cast<std::size_t>(x)];
+            }
+          }
         }
-        p = p + V3<double>{pd.x.v, pd.y.v, pd.z.v};
       } else {
-        p = p + drag_load<double>(e, ctx, r, a, na);
+        p = p + drag_load<double>(e, ctx, r, a, na, 1.0 / na);
       }
     }
     for (int k = 0; k < 4; ++k) {
       force[k] = force[k] + wds * (sh.S[k] * p - sh.dS[k] * fa - sh.ddS[k] * fb);
     }
-    // K_kj = wds [S_k (∂p/∂z e_zᵀ S_j + ∂p/∂a dS_j) − dS_k (Haa dS_j + Hab ddS_j)
-    //             − ddS_k (Habᵀ dS_j + Hbb ddS_j)]
-    for (int j = 0; j < 4; ++j) {
-      M3 Ma, Mb, Mp;
-      for (int x = 0; x < 3; ++x) {
-        for (int y = 0; y < 3; ++y) {
-          Ma[x][y] = Haa[x][y] * sh.dS[j] + Hab[x][y] * sh.ddS[j];
-          Mb[x][y] = Hab[y][x] * sh.dS[j] + Hbb[x][y] * sh.ddS[j];
-          Mp[x][y] = Pa[x][y] * sh.dS[j];
-        }
-        Mp[x][2] += Pz[x] * sh.S[j];
-      }
-      for (int k = 0; k < 4; ++k) {
-        const double cs = wds * sh.S[k], ca = wds * sh.dS[k], cb = wds * sh.ddS[k];
+    // Elastic: K_kj −= wds [dS_k (Haa dS_j + Hab ddS_j) + ddS_k (Habᵀ dS_j + Hbb ddS_j)],
+    // symmetric (the Hessian of an energy): the blocks k ≤ j here, k > j
+    // mirrored after the loop.
+    for (int k = 0; k < 4; ++k) {
+      for (int j = k; j < 4; ++j) {
+        const double caa = wds * sh.dS[k] * sh.dS[j], cab = wds * sh.dS[k] * sh.ddS[j];
+        const double cba = wds * sh.ddS[k] * sh.dS[j], cbb = wds * sh.ddS[k] * sh.ddS[j];
         for (int x = 0; x < 3; ++x) {
           double* row = &K[static_cast<std::size_t>(12 * (3 * k + x) + 3 * j)];
-          for (int y = 0; y < 3; ++y) row[y] += cs * Mp[x][y] - ca * Ma[x][y] - cb * Mb[x][y];
+          for (int y = 0; y < 3; ++y) {
+            row[y] -= caa * Haa[x][y] + cab * Hab[x][y] + cba * Hab[y][x] + cbb * Hbb[x][y];
+          }
         }
       }
     }
+  }
+  for (int k = 1; k < 4; ++k) {
+    for (int j = 0; j < k; ++j) {
+      for (int x = 0; x < 3; ++x) {
+        for (int y = 0; y < 3; ++y) {
+          K[static_cast<std::size_t>(12 * (3 * k + x) + 3 * j + y)] =
+              K[static_cast<std::size_t>(12 * (3 * j + y) + 3 * k + x)];
+        }
+      }
+    }
+  }
+  if (drag && ctx.drag_jacobian) {
+    for (std::size_t i = 0; i < K.size(); ++i) K[i] += drag_K[i];
   }
   if (ctx.seabed_stiffness_N_per_m2 > 0.0) add_seabed_contact<double>(e, ctx, node, force, &K);
   for (int k = 0; k < 4; ++k) {

@@ -74,15 +74,6 @@ struct ElementDynamicMatrices {
                       ///< element_newton_matrices: in full (with the static tangent), N/m
 };
 
-/// Shape functions at the Gauss points kGaussXi of an element of length L
-/// (the dynamics holds element lengths fixed: computed once per element).
-using GaussShapes = std::array<ShapeAt, kGaussXi.size()>;
-inline GaussShapes gauss_shapes(double L) {
-  GaussShapes s;
-  for (std::size_t gp = 0; gp < kGaussXi.size(); ++gp) s[gp] = shape_at(kGaussXi[gp], L);
-  return s;
-}
-
 namespace detail {
 inline void add_outer(ElementMatrix& m, const std::array<double, 4>& su, const std::array<double, 4>& sv,
                       const double (*p)[3], double scale) {
@@ -324,7 +315,7 @@ inline double dynamic_element_forces(const ElementProperties& e, const DynamicEl
     const V3<double> av{a[0], a[1], a[2]}, bv{b[0], b[1], b[2]};
     const double aa = dot(av, av), na = std::sqrt(aa);
     V3<double> fa, fb;
-    strain_energy_gradient(e, av, bv, aa, na, fa, fb);
+    strain_energy_gradient(e, av, bv, aa, na, 1.0 / na, fa, fb);
     const detail::PointLoad pl = detail::point_load(e, d, gp, a, na, ad, rd, rdd, fluid);
     const double fat[3] = {fa.x + pl.n_axial * pl.t[0], fa.y + pl.n_axial * pl.t[1], fa.z + pl.n_axial * pl.t[2]};
     const double fbt[3] = {fb.x, fb.y, fb.z};

@@ -69,6 +69,7 @@ NewtonOutcome newton(const Problem& p, const FeStaticsOptions& o, Eigen::VectorX
       if (is_fixed(p, i)) d[i] = 0.0;
     }
   };
+  t.converged_q.resize(0);
   if (!assemble(p, q, g, nullptr)) return out;
   // Iteration limits count Newton steps (fresh Jacobians) and chord steps
   // apart: o.max_iterations each (chord steps are cheap, and each one taken
@@ -83,6 +84,8 @@ NewtonOutcome newton(const Problem& p, const FeStaticsOptions& o, Eigen::VectorX
     const double tolerance_N = std::max(o.relative_force_tolerance * out.scale_N, p.round_off_floor_N);
     if (out.residual_N <= tolerance_N) {
       out.converged = true;
+      t.converged_q = q;
+      t.converged_residual = g;
       // A Newton step lands far below the tolerance (quadratic convergence),
       // a chord step just below it: polish with more chord steps while they
       // contract, so that the state is as exact as a full Newton iteration
@@ -117,7 +120,7 @@ NewtonOutcome newton(const Problem& p, const FeStaticsOptions& o, Eigen::VectorX
       if (is_fixed(p, i)) jac.set_identity_row(i);
     }
     newton_rhs(g, dq);
-    if (!jac.factorize()) return out;
+    if (!jac.factorize(Pivoting::diagonal_while_definite)) return out;
     t.valid = true;
     jac.solve_in_place(dq);
     if (!dq.allFinite()) return out;
@@ -138,7 +141,7 @@ NewtonOutcome newton(const Problem& p, const FeStaticsOptions& o, Eigen::VectorX
           if (is_fixed(p, i)) jac_dead.set_identity_row(i);
         }
         newton_rhs(g, dq_dead);
-        if (jac_dead.factorize()) {
+        if (jac_dead.factorize(Pivoting::diagonal_while_definite)) {
           jac_dead.solve_in_place(dq_dead);
           if (dq_dead.allFinite() && step_limit(dq_dead) > limit) {
             dq = dq_dead;
@@ -171,7 +174,7 @@ NewtonOutcome newton(const Problem& p, const FeStaticsOptions& o, Eigen::VectorX
           if (is_fixed(p, i)) jac_w.set_identity_row(i);
         }
         newton_rhs(g_w, dq_w);
-        if (!jac_w.factorize()) break;
+        if (!jac_w.factorize(Pivoting::diagonal_while_definite)) break;
         jac_w.solve_in_place(dq_w);
         if (!dq_w.allFinite()) break;
         q_w += dq_w;

@@ -94,6 +94,10 @@ struct Tangent {
   /// (docs/decisions/fe-line-statics.md), so cold solves keep full Newton.
   bool chord_steps = false;
   int evaluations = 0;  // Jacobian assemblies + factorisations
+  /// The state the last Newton solve converged at and its residual g(q):
+  /// the result's end forces and node residuals without assembling g again
+  /// (post_process), when the state is still that one.
+  Eigen::VectorXd converged_q, converged_residual;
 };
 
 /// Throws SolverError("FE line statics: invalid input: " + what).

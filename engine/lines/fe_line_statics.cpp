@@ -39,7 +39,7 @@ std::optional<Eigen::Matrix3d> condense_on_end_B(const Problem& p, BandMatrix& j
     if (is_fixed(p, i)) jac.set_identity_row(i);
   }
   const Eigen::Matrix3d k_bb = rows_b.middleCols<3>(b0);
-  if (!jac.factorize()) return std::nullopt;
+  if (!jac.factorize(Pivoting::diagonal_while_definite)) return std::nullopt;
   for (int k = 0; k < 3; ++k) jac.solve_in_place(cols_b.col(k));
   return Eigen::Matrix3d(k_bb - rows_b * cols_b);
 }
@@ -52,7 +52,11 @@ FeStaticsResult post_process(const Problem& p, const FeStaticsOptions& o, const 
   Eigen::VectorXd g(p.n_dofs);
   auto tangent = std::make_shared<FeLineTangent>();
   BandMatrix& jac = tangent->lu;
-  assemble(p, q, g, o.compute_end_B_stiffness ? &jac : nullptr);
+  if (!o.compute_end_B_stiffness && t.converged_q.size() == q.size() && t.converged_q == q) {
+    g = t.converged_residual;  // the Newton solve's last assembly
+  } else {
+    assemble(p, q, g, o.compute_end_B_stiffness ? &jac : nullptr);
+  }
   r.node_position_m.resize(static_cast<std::size_t>(nn));
   r.node_tension_N.resize(static_cast<std::size_t>(nn));
   r.node_force_residual_N.resize(static_cast<std::size_t>(nn));

@@ -1,6 +1,8 @@
 // Unit test of the analytic ANCF element tangent: it must equal the
 // forward-mode AD Jacobian of the same element forces (element_forces<Dual<12>>)
 // for axial, bending, drag (depth-varying current) and seabed contact terms.
+// The AD Jacobian differentiates drag_load itself, so it is an independent
+// check of drag_load_and_tangent's hand-derived derivatives.
 
 #include <array>
 #include <cmath>
@@ -82,6 +84,23 @@ TEST(AncfTangent, BeamMatchesAutomaticDifferentiation) {
 TEST(AncfTangent, DeadLoadDragMatchesAutomaticDifferentiation) {
   const auto current = sheared_current();
   expect_tangent_matches_ad(make_case(1.7e7, false, &current));
+}
+
+// The drag's derivatives are tiny beside EA/L: with a soft element the
+// comparison is dominated by them, so an error in the analytic drag tangent
+// (drag_load_and_tangent) cannot hide under the axial stiffness. In the
+// current's sheared segment (its ∂/∂z) and above the table's top (none).
+TEST(AncfTangent, DragDominatedTangentMatchesAutomaticDifferentiation) {
+  const auto current = sheared_current();
+  for (const double z_shift : {0.0, 1500.0, 1900.0}) {
+    Case c = make_case(0.0, true, &current);
+    c.e.EA_N = 50.0;
+    c.e.weight_N_per_m = 0.0;
+    c.ctx.seabed_stiffness_N_per_m2 = 0.0;
+    c.q[2] += z_shift;
+    c.q[8] += z_shift;
+    expect_tangent_matches_ad(c);
+  }
 }
 
 TEST(AncfTangent, NoCurrentMatchesAutomaticDifferentiation) {
