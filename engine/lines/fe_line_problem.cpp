@@ -215,8 +215,6 @@ Problem make_problem(const FeLineModel& m, const FeEnvironment& env, const FeLin
   return p;
 }
 
-bool is_fixed(const Problem& p, int dof) { return p.fixed[static_cast<std::size_t>(dof)] != 0; }
-
 /// Net generalised forces g(q) (6 per node) and, if jac != nullptr, the
 /// Jacobian ∂g/∂q in band storage. Returns false if a non-finite value appears.
 bool assemble(const Problem& p, const Eigen::VectorXd& q, Eigen::VectorXd& g, BandMatrix* jac, bool drag_jacobian) {

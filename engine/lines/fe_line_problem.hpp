@@ -113,7 +113,7 @@ void set_node_arc_lengths(Problem& p, const std::vector<double>& s);
 /// First DOF of each 3-block of element e: r_a, r'_a, r_b, r'_b.
 std::array<int, 4> element_blocks(const Problem& p, std::size_t e);
 ElementState gather(const Problem& p, const Eigen::VectorXd& q, std::size_t e);
-bool is_fixed(const Problem& p, int dof);
+inline bool is_fixed(const Problem& p, int dof) { return p.fixed[static_cast<std::size_t>(dof)] != 0; }
 /// Net generalised forces g(q) and, if jac != nullptr, ∂g/∂q (band storage);
 /// drag_jacobian false: the drag enters the Jacobian as a dead load. Returns
 /// false if a non-finite value appears.
