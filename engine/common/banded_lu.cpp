@@ -1,6 +1,8 @@
 #include "engine/common/banded_lu.hpp"
 
 #include <algorithm>
+#include <array>
+#include <cstddef>
 #include <cmath>
 #include <limits>
 #include <utility>
@@ -123,40 +125,62 @@ bool BandMatrix::factorize(Pivoting pivoting) {
   return factorize_band<0>(pivoting);
 }
 
-template <int KL>
-void BandMatrix::solve_band(Eigen::Ref<Eigen::VectorXd> b) const {
+// NC columns of x (column-major, n rows each), each column with the same
+// arithmetic as a single solve: the factor is read once for all of them and
+// their independent recurrences overlap.
+template <int KL, int NC>
+void BandMatrix::solve_band(double* x) const {
   const int kl = KL > 0 ? KL : kl_;
-  double* const x = b.data();
-  // Above its first nonzero (less the reach of a row interchange) the
+  std::array<double*, NC> columns;
+  for (int c = 0; c < NC; ++c) columns[static_cast<std::size_t>(c)] = x + static_cast<std::ptrdiff_t>(c) * n_;
+  // Above its first nonzero (less the reach of a row interchange) a
   // right-hand side stays zero through L: a line's response to its end B
   // (the end-stiffness condensation) starts there.
-  int first = 0;
-  while (first < n_ && x[first] == 0.0) ++first;
+  int first = n_;
+  for (const double* xc : columns) {
+    int f = 0;
+    while (f < first && xc[f] == 0.0) ++f;
+    first = std::min(first, f);
+  }
   for (int j = std::max(0, first - kl); j < n_; ++j) {
     const int l = ipiv_[static_cast<std::size_t>(j)];
-    if (l != j) std::swap(x[l], x[j]);
     const double* const col = address(j, j);
-    const double xj = x[j];
-    if (KL > 0 && j + KL < n_) {
-      for (int i = 1; i <= KL; ++i) x[j + i] -= col[i] * xj;
-    } else {
-      const int km = std::min(kl, n_ - 1 - j);
-      for (int i = 1; i <= km; ++i) x[j + i] -= col[i] * xj;
+    for (double* xc : columns) {
+      if (l != j) std::swap(xc[l], xc[j]);
+      const double xj = xc[j];
+      if (KL > 0 && j + KL < n_) {
+        for (int i = 1; i <= KL; ++i) xc[j + i] -= col[i] * xj;
+      } else {
+        const int km = std::min(kl, n_ - 1 - j);
+        for (int i = 1; i <= km; ++i) xc[j + i] -= col[i] * xj;
+      }
     }
   }
   for (int j = n_ - 1; j >= 0; --j) {
-    const double xj = x[j] * inverse_pivot_[static_cast<std::size_t>(j)];
-    x[j] = xj;
+    const double inverse = inverse_pivot_[static_cast<std::size_t>(j)];
     const int top = column_top_[static_cast<std::size_t>(j)];
     const double* const col = address(top, j);  // rows top..j−1 of column j: contiguous
-    for (int i = 0; i < j - top; ++i) x[top + i] -= col[i] * xj;
+    for (double* xc : columns) {
+      const double xj = xc[j] * inverse;
+      xc[j] = xj;
+      for (int i = 0; i < j - top; ++i) xc[top + i] -= col[i] * xj;
+    }
   }
 }
 
-void BandMatrix::solve_in_place(Eigen::Ref<Eigen::VectorXd> b) const {
-  if (kl_ == 11) return solve_band<11>(b);
-  if (kl_ == 14) return solve_band<14>(b);
-  solve_band<0>(b);
+template <int NC>
+void BandMatrix::solve_columns(double* x) const {
+  if (kl_ == 11) return solve_band<11, NC>(x);
+  if (kl_ == 14) return solve_band<14, NC>(x);
+  solve_band<0, NC>(x);
+}
+
+void BandMatrix::solve_in_place(Eigen::Ref<Eigen::VectorXd> b) const { solve_columns<1>(b.data()); }
+
+void BandMatrix::solve_columns_in_place(Eigen::Ref<Eigen::MatrixXd> b) const {
+  Eigen::Index c = 0;
+  for (; c + 3 <= b.cols(); c += 3) solve_columns<3>(b.col(c).data());
+  for (; c < b.cols(); ++c) solve_columns<1>(b.col(c).data());
 }
 
 }  // namespace spiral::engine

@@ -77,6 +77,11 @@ struct CurrentSegment {
   Eigen::Vector3d velocity = Eigen::Vector3d::Zero();
   Eigen::Vector3d shear = Eigen::Vector3d::Zero();  ///< du/dz, 1/s
   double z_ref_m = 0.0;
+  template <typename T>
+  V3<T> at(const T& z) const {
+    const T dz = z - z_ref_m;
+    return {velocity.x() + shear.x() * dz, velocity.y() + shear.y() * dz, velocity.z() + shear.z() * dz};
+  }
 };
 inline CurrentSegment current_segment(const LoadContext& ctx, double z) {
   const auto& c = *ctx.current;
@@ -105,9 +110,7 @@ inline CurrentSegment current_segment(const LoadContext& ctx, double z) {
 /// Current velocity at height z: linear in z, constant beyond the table.
 template <typename T>
 inline V3<T> current_at(const LoadContext& ctx, const T& z) {
-  const CurrentSegment s = current_segment(ctx, value_of(z));
-  const T dz = z - s.z_ref_m;
-  return {s.velocity.x() + s.shear.x() * dz, s.velocity.y() + s.shear.y() * dz, s.velocity.z() + s.shear.z() * dz};
+  return current_segment(ctx, value_of(z)).at(z);
 }
 
 /// 5-point Gauss–Legendre rule on [0, 1] (exact to degree 9: the weight load,
@@ -288,9 +291,7 @@ struct DragTangent {
 inline DragTangent drag_load_and_tangent(const ElementProperties& e, const LoadContext& ctx, const V3<double>& r,
                                          const V3<double>& a, double na, double inv_na) {
   const CurrentSegment current = current_segment(ctx, r.z);
-  const double dz = r.z - current.z_ref_m;
-  const V3<double> u{current.velocity.x() + current.shear.x() * dz, current.velocity.y() + current.shear.y() * dz,
-                     current.velocity.z() + current.shear.z() * dz};
+  const V3<double> u = current.at(r.z);
   const V3<double> t = inv_na * a;
   const double ut = dot(u, t);
   const V3<double> un = u - ut * t;
@@ -434,10 +435,9 @@ inline void strain_energy_hessian(const ElementProperties& e, const V3<double>& 
 /// density in (a, b) = (r', r''), mapped through the shape functions (the
 /// blocks of one triangle: the elastic tangent is symmetric); the drag's
 /// derivatives in (z, r') from drag_load_and_tangent; the contact's from its
-/// linear integrand. Same
-/// result as element_forces<Dual<12>> to round-off (tests/unit), at a
-/// fraction of its cost (docs/decisions/fe-line-statics.md). With
-/// ctx.drag_jacobian false the drag is a dead load in K.
+/// linear integrand. Same result as element_forces<Dual<12>> to round-off
+/// (tests/unit), at a fraction of its cost (docs/decisions/fe-line-statics.md).
+/// With ctx.drag_jacobian false the drag is a dead load in K.
 ///
 /// Hessian of W = EA/2 (|a| − 1)² + EI/2 (|a|²|b|² − (a·b)²)/|a|⁶ (the
 /// energy whose gradient element_forces uses), with A = a·a, B = b·b,

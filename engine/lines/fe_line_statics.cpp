@@ -40,7 +40,7 @@ std::optional<Eigen::Matrix3d> condense_on_end_B(const Problem& p, BandMatrix& j
   }
   const Eigen::Matrix3d k_bb = rows_b.middleCols<3>(b0);
   if (!jac.factorize(Pivoting::diagonal_while_definite)) return std::nullopt;
-  for (int k = 0; k < 3; ++k) jac.solve_in_place(cols_b.col(k));
+  jac.solve_columns_in_place(cols_b);
   return Eigen::Matrix3d(k_bb - rows_b * cols_b);
 }
 
