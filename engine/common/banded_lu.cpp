@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 #include <utility>
 
 namespace spiral::engine {
@@ -97,23 +98,21 @@ bool BandMatrix::factorize_band(Pivoting pivoting) {
     inverse_pivot_[static_cast<std::size_t>(j)] = inv;
     if (km == 0) continue;
     // Each column c to the right of j is contiguous from row j on (distinct
-    // columns: no alias with l).
+    // columns: no alias with l). `rows` is a compile-time constant for the
+    // interior columns of the FE bandwidths.
+    auto eliminate = [&](auto rows) {
+      for (int i = 1; i <= rows; ++i) l[i] *= inv;
+      for (int c = j + 1; c <= ju; ++c) {
+        double* const a = &at(j, c);
+        const double u = a[0];
+        if (u == 0.0) continue;
+        for (int i = 1; i <= rows; ++i) a[i] -= l[i] * u;
+      }
+    };
     if (KL > 0 && km == KL) {
-      for (int i = 1; i <= KL; ++i) l[i] *= inv;
-      for (int c = j + 1; c <= ju; ++c) {
-        double* const a = &at(j, c);
-        const double u = a[0];
-        if (u == 0.0) continue;
-        for (int i = 1; i <= KL; ++i) a[i] -= l[i] * u;
-      }
+      eliminate(std::integral_constant<int, KL>{});
     } else {
-      for (int i = 1; i <= km; ++i) l[i] *= inv;
-      for (int c = j + 1; c <= ju; ++c) {
-        double* const a = &at(j, c);
-        const double u = a[0];
-        if (u == 0.0) continue;
-        for (int i = 1; i <= km; ++i) a[i] -= l[i] * u;
-      }
+      eliminate(km);
     }
   }
   return ok;
