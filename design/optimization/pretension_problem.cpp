@@ -8,6 +8,7 @@
 #include <map>
 #include <numbers>
 
+#include "design/model/environment_loads.hpp"
 #include "design/optimization/dynamic_level.hpp"
 #include "design/project/request_error.hpp"
 #include "design/optimization/warm_start_plan.hpp"
@@ -217,7 +218,15 @@ PretensionProblem::~PretensionProblem() = default;
 void PretensionProblem::build_models() {
   models_.clear();
   models_.reserve(scenarios_.size());
-  for (const Scenario& s : scenarios_) models_.emplace_back(project_, hull_, payout_groups_, s);
+  std::map<std::string, engine::ExternalLoad> environment_loads;
+  for (std::size_t s = 0; s < scenarios_.size(); ++s) {
+    const Environment& environment =
+        design::environment_of(project_, load_case_named(project_, scenarios_[s].case_name));
+    auto load = environment_loads.find(environment.name);
+    if (load == environment_loads.end())
+      load = environment_loads.emplace(environment.name, mean_environment_load(project_, environment).load).first;
+    models_.emplace_back(project_, hull_, payout_groups_, scenarios_[s], load->second);
+  }
   models_started_ = false;
 }
 

@@ -66,12 +66,13 @@ struct ScenarioModel::Impl {
   /// The full lines while their linearizations stand in (by array index).
   std::vector<std::unique_ptr<engine::StaticLine>> stashed;
 
-  Impl(const Project& p, const HullModel& h, const std::vector<PayoutGroup>& g, const Scenario& scenario)
-      : project(p), hull(h), groups(g), types(resolve_line_types(p)) {
+  Impl(const Project& p, const HullModel& h, const std::vector<PayoutGroup>& g, const Scenario& scenario,
+       engine::ExternalLoad load)
+      : project(p), hull(h), groups(g), types(resolve_line_types(p)), environment_load(std::move(load)) {
     const LoadCase& load_case = *std::find_if(p.load_cases.begin(), p.load_cases.end(),
                                               [&](const LoadCase& c) { return c.name == scenario.case_name; });
     const Environment& environment = environment_of(p, load_case);
-    environment_load = mean_environment_load(p, environment).load;
+    if (!environment_load) environment_load = mean_environment_load(p, environment).load;
     current = current_profile_of(environment);
     LineArrayOptions options;
     options.excluded_line = scenario.damaged_line.value_or("");
@@ -139,8 +140,9 @@ struct ScenarioModel::Impl {
 };
 
 ScenarioModel::ScenarioModel(const Project& project, const HullModel& hull, const std::vector<PayoutGroup>& groups,
-                             Scenario scenario)
-    : impl_(std::make_unique<Impl>(project, hull, groups, scenario)), scenario_(std::move(scenario)) {}
+                             Scenario scenario, engine::ExternalLoad environment_load)
+    : impl_(std::make_unique<Impl>(project, hull, groups, scenario, std::move(environment_load))),
+      scenario_(std::move(scenario)) {}
 ScenarioModel::ScenarioModel(ScenarioModel&&) noexcept = default;
 ScenarioModel::~ScenarioModel() = default;
 

@@ -76,9 +76,13 @@ struct ScenarioResponse {
 class ScenarioModel {
  public:
   /// Builds the scenario's lines (risers with the case's current). `hull`
-  /// and `groups` must outlive the model.
+  /// and `groups` must outlive the model. `environment_load`: the mean
+  /// environmental load on the hull in the case's environment
+  /// (mean_environment_load; computed here when empty), which the scenarios
+  /// of one environment can share: its drift integral costs more than
+  /// building the scenario's lines.
   ScenarioModel(const Project& project, const HullModel& hull, const std::vector<PayoutGroup>& groups,
-                Scenario scenario);
+                Scenario scenario, engine::ExternalLoad environment_load = {});
   ScenarioModel(ScenarioModel&&) noexcept;
   ~ScenarioModel();
 
