@@ -25,6 +25,10 @@ std::string Scenario::label() const {
 
 namespace {
 
+// Within this of the pose where the line array's stiffness was computed,
+// the hull's Newton tangent keeps it (EquilibriumOptions).
+constexpr double kStiffnessReuseDistance_m = 0.1;
+
 Eigen::Matrix3d skew(const Eigen::Vector3d& a) {
   Eigen::Matrix3d s;
   s << 0.0, -a.z(), a.y(), a.z(), 0.0, -a.x(), -a.y(), a.x(), 0.0;
@@ -160,9 +164,12 @@ ScenarioResponse ScenarioModel::evaluate(const Eigen::VectorXd& payouts_m, bool 
   engine::EquilibriumResult eq;
   try {
     // The K at the solution serves the analytic gradient only (catenaries
-    // alone); the FE risers then skip a factorisation each.
-    eq = engine::solve_static_equilibrium(m.hull.statics, m.array.lines, m.environment_load, start,
-                                          {.stiffness_at_solution = with_gradient});
+    // alone); the FE risers then skip a factorisation each. The closing
+    // Newton steps (centimetres from the predicted start) keep the tangent
+    // of the step before: a riser's stiffness changes over metres.
+    eq = engine::solve_static_equilibrium(
+        m.hull.statics, m.array.lines, m.environment_load, start,
+        {.stiffness_at_solution = with_gradient, .stiffness_reuse_distance_m = kStiffnessReuseDistance_m});
   } catch (const engine::SolverError& error) {
     throw engine::SolverError(fmt::format("{}: {}", scenario_.label(), error.what()), error.diagnostics());
   }

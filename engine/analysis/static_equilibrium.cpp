@@ -47,6 +47,14 @@ double merit(const Vector6d& residual, double force_ref, double moment_ref) {
   return std::hypot(residual.head<3>().norm() / force_ref, residual.tail<3>().norm() / moment_ref);
 }
 
+/// A bound on how far any attachment within `arm_m` of the reference point
+/// moves between two poses: the translation plus the rotation angle times
+/// the arm.
+double attachment_move_m(const HullPose& a, const HullPose& b, double arm_m) {
+  const double angle = Eigen::AngleAxisd(b.rotation * a.rotation.transpose()).angle();
+  return (b.reference_point_g - a.reference_point_g).norm() + std::abs(angle) * arm_m;
+}
+
 }  // namespace
 
 Matrix6d external_load_stiffness(const ExternalLoad& external_load, const Vector6d& offset) {
@@ -111,6 +119,13 @@ EquilibriumResult solve_static_equilibrium(const HullStaticModel& hull,
   force_ref_N = std::max(force_ref_N, 1.0);
   const double moment_ref_Nm = force_ref_N * arm_ref_m;
 
+  // The line-array stiffness the Newton tangent uses, and where it was computed.
+  struct LineTangent {
+    HullPose pose;
+    Matrix6d stiffness;
+  };
+  std::optional<LineTangent> tangent_lines;
+
   int iteration = 0;
   while (true) {
     const double current_merit = merit(current.residual, force_ref_N, moment_ref_Nm);
@@ -144,10 +159,16 @@ EquilibriumResult solve_static_equilibrium(const HullStaticModel& hull,
     ++iteration;
 
     // At the accepted pose: the lines' solutions are kept, an FE line only
-    // factorises its Jacobian for the exact stiffness.
-    if (!current.lines.has_stiffness) current.lines = evaluate_line_array(lines, current.pose);
+    // factorises its Jacobian for the exact stiffness — or the stiffness of
+    // an earlier iteration within options.stiffness_reuse_distance_m serves.
+    if (!current.lines.has_stiffness &&
+        !(tangent_lines && options.stiffness_reuse_distance_m > 0.0 &&
+          attachment_move_m(tangent_lines->pose, current.pose, arm_ref_m) <= options.stiffness_reuse_distance_m)) {
+      current.lines = evaluate_line_array(lines, current.pose);
+    }
+    if (current.lines.has_stiffness) tangent_lines = {current.pose, current.lines.stiffness};
     const Eigen::FullPivLU<Matrix6d> lu(
-        equilibrium_tangent(hull, current.lines.stiffness, external_load, current.offset));
+        equilibrium_tangent(hull, tangent_lines->stiffness, external_load, current.offset));
     if (!lu.isInvertible()) {
       throw SolverError(
           "static equilibrium: the hull has no stiffness in at least one DOF (no hydrostatic or "

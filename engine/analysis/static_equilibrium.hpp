@@ -46,8 +46,18 @@ struct EquilibriumOptions {
   double max_rotation_step_rad = 0.05;   ///< per Newton step (≈ 2.9°)
   /// EquilibriumResult::lines with the stiffness at the solution (false: the
   /// forces only there, when the caller needs no K: the FE lines then skip a
-  /// factorisation each).
+  /// factorisation each). Always the exact one.
   bool stiffness_at_solution = true;
+  /// The Newton tangent keeps the line array's stiffness of an earlier
+  /// iteration of this solve while no attachment has moved more than this
+  /// (m, translation plus rotation times the largest arm) since it was
+  /// computed: the closing steps of a solve started near its solution then
+  /// cost the FE lines no Jacobian factorisation. A quasi-Newton step: its
+  /// error is the stiffness change over that distance (an FE riser's end
+  /// stiffness changes over metres of offset), so the convergence stays fast;
+  /// the converged state is the same to the tolerance. 0: a fresh stiffness
+  /// at every Newton pose.
+  double stiffness_reuse_distance_m = 0.0;
 };
 
 struct EquilibriumResult {

@@ -140,6 +140,82 @@ TEST(StaticEquilibrium, LoadThatTurnsWithTheHullConvergesQuadratically) {
   EXPECT_NEAR(again.offset(5), result.offset(5), 1e-8);
 }
 
+/// A line that counts the solves asked for its stiffness (an FE line's
+/// Jacobian factorisation each) and forwards everything to `inner`.
+class StiffnessCountingLine final : public StaticLine {
+ public:
+  StiffnessCountingLine(std::unique_ptr<StaticLine> inner, int& stiffness_solves)
+      : inner_(std::move(inner)), stiffness_solves_(stiffness_solves) {}
+  const std::string& name() const override { return inner_->name(); }
+  const Eigen::Vector3d& attachment_b() const override { return inner_->attachment_b(); }
+  LineEndResponse solve(const Eigen::Vector3d& attachment_g) override {
+    ++stiffness_solves_;
+    return inner_->solve(attachment_g);
+  }
+  Eigen::Vector3d solve_force(const Eigen::Vector3d& attachment_g) override {
+    return inner_->solve_force(attachment_g);
+  }
+  LineState state(const Eigen::Vector3d& attachment_g, int points_per_segment) override {
+    return inner_->state(attachment_g, points_per_segment);
+  }
+  void reset() override { inner_->reset(); }
+
+ private:
+  std::unique_ptr<StaticLine> inner_;
+  int& stiffness_solves_;
+};
+
+// EquilibriumOptions::stiffness_reuse_distance_m: started 5 cm and 0.01°
+// from its solution under a load that turns with the hull, the solve keeps
+// the lines' stiffness of its first Newton pose for the closing steps (the
+// catenaries' stiffness changes by ~1 % over metres: each step contracts the
+// residual by about 1e-3, so it converges in about as many iterations). It
+// reaches the same equilibrium to the tolerance, and its stiffness at the
+// solution is the exact one there.
+TEST(StaticEquilibrium, NearbyLineStiffnessServesTheClosingNewtonSteps) {
+  auto hull = test::oc4_hull_statics();
+  hull.rest_force(2) *= 2.0;  // six lines hang twice the OC4 mooring load
+  const ExternalLoad load = [](const Vector6d& offset) {
+    Vector6d f = Vector6d::Zero();
+    f(0) = -3.0e5;
+    f(1) = 1.0e5;
+    f(5) = 2.0e6 * std::sin(0.5 - offset(5));
+    return f;
+  };
+  const auto reference_lines = clustered_lines();
+  const EquilibriumResult reference = solve_static_equilibrium(hull, reference_lines, load);
+  Vector6d start = reference.offset;
+  start(0) += 0.04;
+  start(1) -= 0.03;
+  start(5) += 1e-4;
+
+  const auto counted = [&](int& stiffness_solves) {
+    std::vector<std::unique_ptr<StaticLine>> lines;
+    for (auto& line : clustered_lines())
+      lines.push_back(std::make_unique<StiffnessCountingLine>(std::move(line), stiffness_solves));
+    return lines;
+  };
+  int exact_solves = 0, reused_solves = 0;
+  const auto exact_lines = counted(exact_solves);
+  const auto reused_lines = counted(reused_solves);
+  const EquilibriumResult exact = solve_static_equilibrium(hull, exact_lines, load, start);
+  const EquilibriumResult reused =
+      solve_static_equilibrium(hull, reused_lines, load, start, {.stiffness_reuse_distance_m = 0.1});
+  ASSERT_GE(exact.iterations, 2);
+  // Six lines: a stiffness at every Newton pose and at the solution, against
+  // one at the first pose and one at the solution.
+  EXPECT_EQ(exact_solves, 6 * (exact.iterations + 1));
+  EXPECT_EQ(reused_solves, 6 * 2);
+  EXPECT_LE(reused.iterations, exact.iterations + 1);
+  EXPECT_LT(reused.residual.head<3>().norm(), kBalance * reused.force_reference_N);
+  // The offsets agree to the tolerance's force over the stiffness (≈ 1e-9 ×
+  // 4e6 N over 1e5 N/m).
+  EXPECT_LT((reused.offset - reference.offset).head<3>().norm(), 1e-6);
+  EXPECT_NEAR(reused.offset(5), reference.offset(5), 1e-8);
+  const LineArrayResponse at_solution = evaluate_line_array(reused_lines, reused.pose);
+  EXPECT_TRUE(reused.lines.stiffness.isApprox(at_solution.stiffness, 1e-12));
+}
+
 // A coefficient table ends at some relative heading: at a hull yaw just
 // inside its edge the tangent's central difference would step off it; the
 // one-sided difference on the inside stands in (first order: h/2 of the
