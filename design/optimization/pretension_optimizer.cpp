@@ -427,6 +427,9 @@ OptimizationResult optimize_pretension(const ValidatedProject& validated, const 
   Eigen::VectorXd best = zero;
   bool feasible = false;
   std::optional<std::pair<Eigen::VectorXd, double>> kept;  // best point feasible with the full risers, its objective
+  // The last pass's full evaluation, with the sensitivities: the final check
+  // when its point is the one kept.
+  std::optional<std::pair<Eigen::VectorXd, ProblemEvaluation>> last_full;
   for (int pass_number = 1; pass_number <= (linearize ? kMaxPasses : 1); ++pass_number) {
     if (linearize) problem.linearize_expensive_lines();
     Pass pass =
@@ -438,7 +441,10 @@ OptimizationResult optimize_pretension(const ValidatedProject& validated, const 
     feasible = pass.best_feasible.has_value();
     best = feasible ? *pass.best_feasible : pass.least_infeasible;
     if (!linearize || !feasible) break;
-    const ProblemEvaluation full = problem.evaluate(best, false);
+    // Converged when the linearization point no longer moves by the payout tolerance.
+    const bool last_pass =
+        pass_number == kMaxPasses || (best - from).lpNorm<Eigen::Infinity>() <= problem.settings().payout_tolerance_m;
+    const ProblemEvaluation full = problem.evaluate(best, last_pass);
     const ConstraintValue* worst_full = nullptr;
     const double violation = worst_of(full.constraints, &worst_full);
     const double objective = problem.objective_of(full, best);
@@ -447,8 +453,10 @@ OptimizationResult optimize_pretension(const ValidatedProject& validated, const 
         "constraint {:.3e}{}",
         pass_number, evaluations, objective, violation, worst_full ? " (" + worst_full->describe() + ")" : ""));
     if (violation <= kConstraintTolerance && (!kept || objective < kept->second)) kept = {{best, objective}};
-    // Converged when the linearization point no longer moves by the payout tolerance.
-    if ((best - from).lpNorm<Eigen::Infinity>() <= problem.settings().payout_tolerance_m) break;
+    if (last_pass) {
+      last_full = {{best, full}};
+      break;
+    }
     from = best;  // the full models were last solved here: the next linearization is about this point
   }
   if (linearize && kept) {
@@ -461,8 +469,10 @@ OptimizationResult optimize_pretension(const ValidatedProject& validated, const 
   result.payouts_m.assign(best.data(), best.data() + best.size());
 
   // Verify the kept point with the full models (risers restored: a new
-  // equilibrium of every scenario), and take the sensitivities there.
-  const ProblemEvaluation check = problem.evaluate(best, true);
+  // equilibrium of every scenario), and take the sensitivities there — the
+  // last pass's full evaluation when it was at that point.
+  const ProblemEvaluation check =
+      last_full && last_full->first == best ? std::move(last_full->second) : problem.evaluate(best, true);
   for (std::size_t s = 0; s < check.responses.size(); ++s) result.after.push_back(problem.summarize(s, check));
   result.objective_best = problem.objective_of(check, best);
   const ConstraintValue* worst = nullptr;
