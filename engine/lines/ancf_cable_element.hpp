@@ -281,6 +281,12 @@ using M3 = std::array<std::array<double, 3>, 3>;
 ///   ∂p/∂u = |a| [c_n (|u_n| P + u_n u_nᵀ/|u_n|) + 2 c_t |u_t| t tᵀ],
 ///   ∂p/∂z = ∂p/∂u du/dz (the profile's shear).
 /// The u_n u_nᵀ/|u_n| terms vanish with u_n, as norm_c1's derivative does.
+/// Collected on the dyads of t and u_n (P = I − t tᵀ):
+///   ∂p/∂a = α I + c_n |u_n| u_n tᵀ − c_n (u_t/|u_n|) u_n u_nᵀ
+///           + (2 c_t |u_t| − c_n |u_n|) t u_nᵀ + c_n |u_n| u_t t tᵀ,
+///   α = u_t (c_t |u_t| − c_n |u_n|);
+///   ∂p/∂z = |a| [c_n |u_n| s + (2 c_t |u_t| − c_n |u_n|) (t·s) t + c_n (u_n·s)/|u_n| u_n],
+///   s = du/dz.
 /// Equal to the forward-mode derivatives of drag_load to round-off
 /// (tests/unit/engine/lines/ancf_tangent_test.cpp).
 struct DragTangent {
@@ -301,20 +307,17 @@ inline DragTangent drag_load_and_tangent(const ElementProperties& e, const LoadC
   DragTangent out;
   out.load = (cn * nun * na) * un + (ct * abs_ut * ut * na) * t;
   const double inv_nun = nun > 0.0 ? 1.0 / nun : 0.0;
+  const double cn_nun = cn * nun, tn = 2.0 * ct * abs_ut - cn_nun;
+  const double alpha = ut * (ct * abs_ut - cn_nun), c_nn = -cn * ut * inv_nun, c_tt = cn_nun * ut;
   const double tv[3] = {t.x, t.y, t.z}, nv[3] = {un.x, un.y, un.z};
-  const double shear[3] = {current.shear.x(), current.shear.y(), current.shear.z()};
   for (int x = 0; x < 3; ++x) {
-    double dz_x = 0.0;
-    for (int y = 0; y < 3; ++y) {
-      const double P = (x == y ? 1.0 : 0.0) - tv[x] * tv[y];
-      const double nn = nv[x] * nv[y];
-      out.d_da[x][y] = cn * (nun * nv[x] * tv[y] - ut * inv_nun * nn - nun * (tv[x] * nv[y] + ut * P)) +
-                       ct * abs_ut * (ut * tv[x] * tv[y] + 2.0 * tv[x] * nv[y] + ut * P);
-      const double d_du = na * (cn * (nun * P + inv_nun * nn) + 2.0 * ct * abs_ut * tv[x] * tv[y]);
-      dz_x += d_du * shear[y];
-    }
-    out.d_dz[static_cast<std::size_t>(x)] = dz_x;
+    const double n_x = cn_nun * nv[x] + c_tt * tv[x], nn_x = c_nn * nv[x], t_x = tn * tv[x];
+    for (int y = 0; y < 3; ++y) out.d_da[x][y] = n_x * tv[y] + (nn_x + t_x) * nv[y];
+    out.d_da[x][x] += alpha;
   }
+  const V3<double> shear{current.shear.x(), current.shear.y(), current.shear.z()};
+  const V3<double> d_dz = na * (cn_nun * shear + (tn * dot(t, shear)) * t + (cn * inv_nun * dot(un, shear)) * un);
+  out.d_dz = {d_dz.x, d_dz.y, d_dz.z};
   return out;
 }
 
@@ -457,8 +460,10 @@ inline void element_forces_and_tangent(const ElementProperties& e, const LoadCon
   K.fill(0.0);
   const bool drag = ctx.current != nullptr && !ctx.current->empty() &&
                     (e.normal_drag_N_s2_per_m3 > 0.0 || e.tangential_drag_N_s2_per_m3 > 0.0);
-  ElementTangent drag_K;
-  if (drag && ctx.drag_jacobian) drag_K.fill(0.0);
+  const bool drag_tangent = drag && ctx.drag_jacobian;
+  // The drag's tangent per Gauss point, added once the elastic part is
+  // mirrored: D[gp][x][3 j + y] = ∂p_x/∂a_y dS_j + ∂p_x/∂z S_j δ_y2.
+  double D[kGaussXi.size()][3][12];
 
   const GaussShapes shapes = gauss_shapes(L);
   for (std::size_t gp = 0; gp < kGaussXi.size(); ++gp) {
@@ -476,42 +481,40 @@ inline void element_forces_and_tangent(const ElementProperties& e, const LoadCon
     M3 Haa, Hab, Hbb;  // ∂f_a/∂a, ∂f_a/∂b, ∂f_b/∂b
     strain_energy_hessian(e, a, b, A, na, fa, fb, Haa, Hab, Hbb);
     V3<double> p{0.0, 0.0, -e.weight_N_per_m};
-    if (drag) {
-      if (ctx.drag_jacobian) {
-        const DragTangent d = drag_load_and_tangent(e, ctx, r, a, na, 1.0 / na);
-        p = p + d.load;
-        // K_kj += wds S_k (∂p/∂a dS_j + ∂p/∂z e_zᵀ S_j): the one unsymmetric term.
-        for (int k = 0; k < 4; ++k) {
-          const double cs = wds * sh.S[k];
-          for (int j = 0; j < 4; ++j) {
-            const double ca = cs * sh.dS[j], cz = cs * sh.S[j];
-            for (int x = 0; x < 3; ++x) {
-              double* row = &drag_K[static_cast<std::size_t>(12 * (3 * k + x) + 3 * j)];
-              for (int y = 0; y < 3; ++y) row[y] += ca * d.d_da[x][y];
-              row[2] += cz * d.d_dz[static_cast<std::size_t>(x)];
-            }
-          }
+    if (drag_tangent) {
+      const DragTangent d = drag_load_and_tangent(e, ctx, r, a, na, 1.0 / na);
+      p = p + d.load;
+      for (int j = 0; j < 4; ++j) {
+        for (int x = 0; x < 3; ++x) {
+          for (int y = 0; y < 3; ++y) D[gp][x][3 * j + y] = sh.dS[j] * d.d_da[x][y];
+          D[gp][x][3 * j + 2] += sh.S[j] * d.d_dz[static_cast<std::size_t>(x)];
         }
-      } else {
-        p = p + drag_load<double>(e, ctx, r, a, na, 1.0 / na);
       }
+    } else if (drag) {
+      p = p + drag_load<double>(e, ctx, r, a, na, 1.0 / na);
     }
     for (int k = 0; k < 4; ++k) {
       force[k] = force[k] + wds * (sh.S[k] * p - sh.dS[k] * fa - sh.ddS[k] * fb);
     }
-    // Elastic: K_kj −= wds [dS_k (Haa dS_j + Hab ddS_j) + ddS_k (Habᵀ dS_j + Hbb ddS_j)],
-    // symmetric (the Hessian of an energy): the blocks k ≤ j here, k > j
-    // mirrored after the loop.
-    for (int k = 0; k < 4; ++k) {
-      for (int j = k; j < 4; ++j) {
-        const double caa = wds * sh.dS[k] * sh.dS[j], cab = wds * sh.dS[k] * sh.ddS[j];
-        const double cba = wds * sh.ddS[k] * sh.dS[j], cbb = wds * sh.ddS[k] * sh.ddS[j];
-        for (int x = 0; x < 3; ++x) {
-          double* row = &K[static_cast<std::size_t>(12 * (3 * k + x) + 3 * j)];
-          for (int y = 0; y < 3; ++y) {
-            row[y] -= caa * Haa[x][y] + cab * Hab[x][y] + cba * Hab[y][x] + cbb * Hbb[x][y];
-          }
+    // Elastic: K_kj −= wds (dS_k Ma_j + ddS_k Mb_j) with Ma_j = Haa dS_j +
+    // Hab ddS_j and Mb_j = Habᵀ dS_j + Hbb ddS_j, held for every j as rows of
+    // 12 so that each row of K takes one contiguous update (half the
+    // multiplications of the four products per block). Symmetric (the
+    // Hessian of an energy): the blocks k ≤ j here, k > j mirrored below.
+    double Ma[3][12], Mb[3][12];
+    for (int j = 0; j < 4; ++j) {
+      for (int x = 0; x < 3; ++x) {
+        for (int y = 0; y < 3; ++y) {
+          Ma[x][3 * j + y] = sh.dS[j] * Haa[x][y] + sh.ddS[j] * Hab[x][y];
+          Mb[x][3 * j + y] = sh.dS[j] * Hab[y][x] + sh.ddS[j] * Hbb[x][y];
         }
+      }
+    }
+    for (int k = 0; k < 4; ++k) {
+      const double ca = wds * sh.dS[k], cb = wds * sh.ddS[k];
+      for (int x = 0; x < 3; ++x) {
+        double* row = &K[static_cast<std::size_t>(12 * (3 * k + x))];
+        for (int c = 3 * k; c < 12; ++c) row[c] -= ca * Ma[x][c] + cb * Mb[x][c];
       }
     }
   }
@@ -525,8 +528,18 @@ inline void element_forces_and_tangent(const ElementProperties& e, const LoadCon
       }
     }
   }
-  if (drag && ctx.drag_jacobian) {
-    for (std::size_t i = 0; i < K.size(); ++i) K[i] += drag_K[i];
+  if (drag_tangent) {
+    // K_kj += Σ wds S_k (∂p/∂a dS_j + ∂p/∂z e_zᵀ S_j): the one unsymmetric term.
+    for (std::size_t gp = 0; gp < kGaussXi.size(); ++gp) {
+      const double wds = kGaussW[gp] * L;
+      for (int k = 0; k < 4; ++k) {
+        const double cs = wds * shapes[gp].S[k];
+        for (int x = 0; x < 3; ++x) {
+          double* row = &K[static_cast<std::size_t>(12 * (3 * k + x))];
+          for (int c = 0; c < 12; ++c) row[c] += cs * D[gp][x][c];
+        }
+      }
+    }
   }
   if (ctx.seabed_stiffness_N_per_m2 > 0.0) add_seabed_contact<double>(e, ctx, node, force, &K);
   for (int k = 0; k < 4; ++k) {
