@@ -146,7 +146,7 @@ LineArrayModel build_line_array(const Project& project, const std::vector<LineTy
       const engine::FeLineModel fe = fe_model_of(project, line, types);
       model.lines.push_back(std::make_unique<engine::FeStaticLine>(
           line.name, line.anchor_g, line.fairlead_b, fe,
-          fe_environment(project, options.current, fe.sections.front().hydro_diameter_m)));
+          fe_environment(project, options.current, fe.sections.front().hydro_diameter_m), options.fe_statics));
     } else {
       model.lines.push_back(std::make_unique<engine::CatenaryStaticLine>(
           line.name, line.anchor_g, line.fairlead_b, anchor_height_m, catenary_of(project, line, types)));
@@ -165,7 +165,7 @@ LineArrayModel build_line_array(const Project& project, const std::vector<LineTy
         throw InputError(
             {make_issue(project, fmt::format("risers[{}].sections", i), "riser_geometry_feasible", error.what())});
       }
-      model.lines.push_back(riser_static_line(project, model.risers.back(), options.current));
+      model.lines.push_back(riser_static_line(project, model.risers.back(), options.current, options.fe_statics));
     }
   }
   return model;

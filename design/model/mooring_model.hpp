@@ -42,6 +42,8 @@ struct LineArrayOptions {
   /// K are those of the current-loaded lines. Without a current it changes
   /// nothing: each line keeps its own model (a catenary is exact there).
   bool lines_carry_current = false;
+  /// The FE lines' solver settings (mooring `model: fe` lines and risers).
+  engine::FeStaticsOptions fe_statics;
 };
 
 /// The resolved type named `name`; std::invalid_argument if there is none.

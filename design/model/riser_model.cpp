@@ -181,10 +181,11 @@ RiserDesign riser_design(const Project& project, const Riser& riser) {
 }
 
 std::unique_ptr<engine::FeStaticLine> riser_static_line(const Project& project, const RiserDesign& design,
-                                                        const std::optional<engine::CurrentProfile>& current) {
+                                                        const std::optional<engine::CurrentProfile>& current,
+                                                        const engine::FeStaticsOptions& options) {
   const double contact_diameter_m = design.sections.front().properties.hydrodynamic_diameter_m;
   return std::make_unique<engine::FeStaticLine>(design.name, design.foot_g, design.hang_off_b, design.fe_model,
-                                                fe_environment(project, current, contact_diameter_m));
+                                                fe_environment(project, current, contact_diameter_m), options);
 }
 
 }  // namespace spiral::design

@@ -61,7 +61,9 @@ engine::FeEnvironment fe_environment(const Project& project, const std::optional
 /// for or nothing lies on the seabed at rest (there is no touchdown to refine).
 std::optional<engine::FeRefinementZone> touchdown_refinement_zone(const FeMesh& mesh, double laid_length_m);
 
+/// The riser as a static line of the line array, in `current`, solved with `options`.
 std::unique_ptr<engine::FeStaticLine> riser_static_line(const Project& project, const RiserDesign& design,
-                                                        const std::optional<engine::CurrentProfile>& current);
+                                                        const std::optional<engine::CurrentProfile>& current,
+                                                        const engine::FeStaticsOptions& options = {});
 
 }  // namespace spiral::design
