@@ -166,6 +166,20 @@ ScenarioResponse ScenarioModel::evaluate(const Eigen::VectorXd& payouts_m, bool 
   Impl& m = *impl_;
   if (with_gradient && !m.all_catenary()) return evaluate_by_differences(payouts_m);
   m.install(payouts_m);
+  if (!m.last_pose && !m.predicted && m.has_expensive_lines()) {
+    // Cold: the FE lines solved once where the hull starts (with their
+    // stiffness), so that the predictor below takes the hull across its
+    // tens of metres of offset on them linearized; the hull's Newton from
+    // rest with the full risers re-solved every riser at each of its 3-4
+    // poses on the way.
+    const engine::HullPose rest = engine::pose_from_offset(m.hull.statics.reference_point_at_rest_g, m.last_offset);
+    try {
+      engine::evaluate_line_array(m.array.lines, rest);
+    } catch (const engine::SolverError& error) {
+      throw engine::SolverError(fmt::format("{}: {}", scenario_.label(), error.what()), error.diagnostics());
+    }
+    m.last_pose = rest;
+  }
   engine::Vector6d start = m.last_offset;
   if (m.predicted) {
     start = *m.predicted;
