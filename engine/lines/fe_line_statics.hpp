@@ -177,14 +177,17 @@ struct FeStaticsOptions {
   /// Newton) instead of re-assembling. Optional, used with warm_start_state;
   /// ignored if it belongs to another mesh size.
   std::shared_ptr<const FeLineTangent> warm_start_tangent;
+  /// The condensed 3×3 dF_B/dx_B (a factorisation at the solution and three
+  /// back-substitutions).
   bool compute_end_B_stiffness = true;
-  /// Move the nearest node onto the touchdown point and re-solve (r-adaptivity;
-  /// keeps the element's convergence order on lines that lie on the seabed).
   /// After converging by chord steps, go on with chord steps while they
   /// contract, to 1e-3 of the tolerance (the state a Newton step would have
-  /// left). Off for screening solves that only need the tolerance.
+  /// left). Off for screening solves that only need the tolerance (the SOZ
+  /// march, the pretension optimizer).
   bool polish_chord_steps = true;
-  bool snap_node_to_touchdown = true;  ///< condensed 3×3 dF_B/dx_B (cheap: 3 back-substitutions)
+  /// Move the nearest node onto the touchdown point and re-solve (r-adaptivity;
+  /// keeps the element's convergence order on lines that lie on the seabed).
+  bool snap_node_to_touchdown = true;
 };
 
 struct FeTouchdown {
