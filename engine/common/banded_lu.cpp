@@ -124,14 +124,14 @@ bool BandMatrix::factorize(Pivoting pivoting) {
   return factorize_band<0>(pivoting);
 }
 
-// NC columns of x (column-major, n rows each), each column with the same
+// NC columns of x, column_stride apart (n rows each), each column with the same
 // arithmetic as a single solve: the factor is read once for all of them and
 // their independent recurrences overlap.
 template <int KL, int NC>
-void BandMatrix::solve_band(double* x) const {
+void BandMatrix::solve_band(double* x, std::ptrdiff_t column_stride) const {
   const int kl = KL > 0 ? KL : kl_;
   std::array<double*, NC> columns;
-  for (int c = 0; c < NC; ++c) columns[static_cast<std::size_t>(c)] = x + static_cast<std::ptrdiff_t>(c) * n_;
+  for (int c = 0; c < NC; ++c) columns[static_cast<std::size_t>(c)] = x + c * column_stride;
   // Above its first nonzero (less the reach of a row interchange) a
   // right-hand side stays zero through L: a line's response to its end B
   // (the end-stiffness condensation) starts there.
@@ -168,18 +168,20 @@ void BandMatrix::solve_band(double* x) const {
 }
 
 template <int NC>
-void BandMatrix::solve_columns(double* x) const {
-  if (kl_ == 11) return solve_band<11, NC>(x);
-  if (kl_ == 14) return solve_band<14, NC>(x);
-  solve_band<0, NC>(x);
+void BandMatrix::solve_columns(double* x, std::ptrdiff_t column_stride) const {
+  if (kl_ == 11) return solve_band<11, NC>(x, column_stride);
+  if (kl_ == 14) return solve_band<14, NC>(x, column_stride);
+  solve_band<0, NC>(x, column_stride);
 }
 
-void BandMatrix::solve_in_place(Eigen::Ref<Eigen::VectorXd> b) const { solve_columns<1>(b.data()); }
+void BandMatrix::solve_in_place(Eigen::Ref<Eigen::VectorXd> b) const { solve_columns<1>(b.data(), 0); }
 
 void BandMatrix::solve_columns_in_place(Eigen::Ref<Eigen::MatrixXd> b) const {
+  // The columns of a block of a larger matrix lie outerStride() apart.
+  const std::ptrdiff_t stride = b.outerStride();
   Eigen::Index c = 0;
-  for (; c + 3 <= b.cols(); c += 3) solve_columns<3>(b.col(c).data());
-  for (; c < b.cols(); ++c) solve_columns<1>(b.col(c).data());
+  for (; c + 3 <= b.cols(); c += 3) solve_columns<3>(b.col(c).data(), stride);
+  for (; c < b.cols(); ++c) solve_columns<1>(b.col(c).data(), stride);
 }
 
 }  // namespace spiral::engine

@@ -21,6 +21,7 @@
 // elements, an indefinite tangent — falls back to partial pivoting for that
 // column.
 
+#include <cstddef>
 #include <vector>
 
 #include <Eigen/Core>
@@ -61,10 +62,11 @@ class BandMatrix {
   const double* address(int i, int j) const { return &ab_[static_cast<std::size_t>(kv_ + i - j + j * ld_)]; }
   template <int KL>
   bool factorize_band(Pivoting pivoting);
+  // NC right-hand sides, column_stride apart, from x.
   template <int KL, int NC>
-  void solve_band(double* x) const;
+  void solve_band(double* x, std::ptrdiff_t column_stride) const;
   template <int NC>
-  void solve_columns(double* x) const;
+  void solve_columns(double* x, std::ptrdiff_t column_stride) const;
 
   int n_ = 0, kl_ = 0, ku_ = 0, kv_ = 0, ld_ = 0;
   std::vector<double> ab_;

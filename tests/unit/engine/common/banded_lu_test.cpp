@@ -158,7 +158,8 @@ TEST(BandedLu, ARightHandSideStartingWithZerosSolvesAsAFullOne) {
 }
 
 // Several right-hand sides at once give each column's single solve, bit for
-// bit (four columns: one group of three and one alone).
+// bit (four columns: one group of three and one alone), also as a block of a
+// larger matrix.
 TEST(BandedLu, ColumnsSolveAsSingleRightHandSides) {
   constexpr int n = 300, half_band = 11;
   for (const Pivoting pivoting : {Pivoting::partial, Pivoting::diagonal_while_definite}) {
@@ -172,10 +173,16 @@ TEST(BandedLu, ColumnsSolveAsSingleRightHandSides) {
     b.col(3) = -ramp(n);
     Eigen::MatrixXd together = b;
     band.solve_columns_in_place(together);
+    // The same columns as the top block of a taller matrix (columns n + 5 apart).
+    Eigen::MatrixXd taller = Eigen::MatrixXd::Constant(n + 5, 4, 7.0);
+    taller.topRows(n) = b;
+    band.solve_columns_in_place(taller.topRows(n));
     for (int c = 0; c < 4; ++c) {
       Eigen::VectorXd alone = b.col(c);
       band.solve_in_place(alone);
       for (int i = 0; i < n; ++i) ASSERT_EQ(together(i, c), alone[i]) << c << ", " << i;
+      for (int i = 0; i < n; ++i) ASSERT_EQ(taller(i, c), alone[i]) << "block " << c << ", " << i;
+      for (int i = n; i < n + 5; ++i) ASSERT_EQ(taller(i, c), 7.0) << "below the block " << c << ", " << i;
     }
   }
 }
