@@ -14,6 +14,7 @@
 #include "engine/analysis/line_array.hpp"
 #include "engine/analysis/linearized_line.hpp"
 #include "engine/analysis/static_line.hpp"
+#include "engine/common/parallel_for.hpp"
 #include "engine/lines/catenary_payout.hpp"
 
 namespace spiral::design {
@@ -115,6 +116,22 @@ struct ScenarioModel::Impl {
                        [](const auto& line) { return line->expensive(); });
   }
 
+  /// Solves the risers (the expensive lines) with their stiffness at `pose`,
+  /// on the cores the caller leaves free; `label` names the scenario in a
+  /// failure.
+  void solve_expensive_lines(const engine::HullPose& pose, const std::string& label) {
+    const auto first = static_cast<std::ptrdiff_t>(paid.size());
+    const int count = static_cast<int>(array.lines.size() - paid.size());
+    try {
+      engine::parallel_for(count, engine::worker_count(count), [&](int i) {
+        engine::StaticLine& line = *array.lines[static_cast<std::size_t>(first + i)];
+        if (line.expensive()) line.solve(pose.point_g(line.attachment_b()));
+      });
+    } catch (const engine::SolverError& error) {
+      throw engine::SolverError(fmt::format("{}: {}", label, error.what()), error.diagnostics());
+    }
+  }
+
   bool all_catenary() const {
     return std::all_of(paid.begin(), paid.end(), [](const PaidLine& l) { return l.catenary.has_value(); });
   }
@@ -173,11 +190,7 @@ ScenarioResponse ScenarioModel::evaluate(const Eigen::VectorXd& payouts_m, bool 
     // rest with the full risers re-solved every riser at each of its 3-4
     // poses on the way.
     const engine::HullPose rest = engine::pose_from_offset(m.hull.statics.reference_point_at_rest_g, m.last_offset);
-    try {
-      engine::evaluate_line_array(m.array.lines, rest);
-    } catch (const engine::SolverError& error) {
-      throw engine::SolverError(fmt::format("{}: {}", scenario_.label(), error.what()), error.diagnostics());
-    }
+    m.solve_expensive_lines(rest, scenario_.label());
     m.last_pose = rest;
   }
   engine::Vector6d start = m.last_offset;
@@ -380,10 +393,7 @@ void ScenarioModel::start_from(const ScenarioModel& source) {
 void ScenarioModel::complete_expensive_lines() {
   Impl& m = *impl_;
   if (!m.last_pose) throw std::logic_error("ScenarioModel::complete_expensive_lines: not evaluated");
-  for (std::size_t k = m.paid.size(); k < m.array.lines.size(); ++k) {
-    engine::StaticLine& line = *m.array.lines[k];
-    if (line.expensive()) line.solve(m.last_pose->point_g(line.attachment_b()));
-  }
+  m.solve_expensive_lines(*m.last_pose, scenario_.label());
 }
 
 void ScenarioModel::linearize_expensive_lines() {
