@@ -10,21 +10,31 @@
 
 namespace spiral::engine {
 
-BandMatrix::BandMatrix(int n, int kl, int ku)
-    : n_(n),
-      kl_(kl),
-      ku_(ku),
-      kv_(kl + ku),
-      ld_(2 * kl + ku + 1),
-      ab_(static_cast<std::size_t>(ld_) * static_cast<std::size_t>(n), 0.0) {}
+BandMatrix::BandMatrix(int n, int kl, int ku) { reset(n, kl, ku); }
 
 void BandMatrix::reset(int n, int kl, int ku) {
   n_ = n;
   kl_ = kl;
   ku_ = ku;
-  kv_ = kl + ku;
-  ld_ = 2 * kl + ku + 1;
+  kv_ = ku;
+  ld_ = kl + ku + 1;
   ab_.assign(static_cast<std::size_t>(ld_) * static_cast<std::size_t>(n), 0.0);
+}
+
+void BandMatrix::widen() {
+  const auto old_ld = static_cast<std::size_t>(ld_);
+  const auto new_ld = old_ld + static_cast<std::size_t>(kl_);
+  const auto fill = static_cast<std::size_t>(kl_);
+  ab_.resize(new_ld * static_cast<std::size_t>(n_));
+  // Last column first: each column moves to a higher address, never onto a
+  // column still to be moved.
+  for (std::size_t j = static_cast<std::size_t>(n_); j-- > 0;) {
+    double* const to = ab_.data() + j * new_ld;
+    std::copy_backward(ab_.data() + j * old_ld, ab_.data() + (j + 1) * old_ld, to + new_ld);
+    std::fill(to, to + fill, 0.0);
+  }
+  kv_ = kl_ + ku_;
+  ld_ = static_cast<int>(new_ld);
 }
 
 void BandMatrix::set_identity_row(int i) {
@@ -61,7 +71,7 @@ bool BandMatrix::factorize_band(Pivoting pivoting) {
   bool ok = true;
   for (int j = 0; j < n_; ++j) {
     const int km = std::min(kl, n_ - 1 - j);
-    double* const l = &at(j, j);  // column j from the diagonal down: contiguous
+    double* l = &at(j, j);  // column j from the diagonal down: contiguous
     int jp = 0;
     double best = std::abs(l[0]);
     const double diagonal = inverse_pivot_[static_cast<std::size_t>(j)];
@@ -92,6 +102,10 @@ bool BandMatrix::factorize_band(Pivoting pivoting) {
     for (int c = ju + 1; c <= reach; ++c) column_top_[static_cast<std::size_t>(c)] = j;
     ju = std::max(ju, reach);
     if (jp != 0) {
+      if (compact()) {
+        widen();
+        l = &at(j, j);
+      }
       for (int c = j; c <= ju; ++c) std::swap(at(j, c), at(j + jp, c));
     }
     const double inv = 1.0 / l[0];

@@ -2,7 +2,12 @@
 // Band matrix with LU factorisation by partial pivoting (the algorithm of
 // LAPACK dgbtf2/dgbtrs: E. Anderson et al., LAPACK Users' Guide, 3rd ed.,
 // SIAM 1999, §5.3.2), for the block-tridiagonal Jacobians of FE line models.
-// Storage is LAPACK's: kl extra super-diagonals hold the fill-in of pivoting.
+// Storage is LAPACK's band layout, column by column, but without the kl extra
+// super-diagonals for the fill-in of row interchanges until the first
+// interchange needs them: the FE lines' factorisations mostly make none (see
+// below), and a line keeps its factor between solves (the optimizer keeps
+// one per riser and scenario, ~0.7 GB), so the unused third of each column
+// was zeroed, faulted in and streamed through every back substitution.
 //
 // The pivot rule is the caller's choice. Partial pivoting (LAPACK's) for any
 // matrix; or the diagonal while the matrix behaves as definite, for the FE
@@ -39,10 +44,14 @@ class BandMatrix {
   /// n×n, kl sub- and ku super-diagonals, zero-filled.
   BandMatrix(int n, int kl, int ku);
   /// Becomes the zero n×n matrix with kl sub- and ku super-diagonals, reusing
-  /// the storage (no allocation when the size does not grow).
+  /// the storage (no allocation when the size does not grow). Compact (no
+  /// fill-in rows) until factorize() interchanges rows.
   void reset(int n, int kl, int ku);
 
   int size() const { return n_; }
+  /// Diagonals held per column: kl + ku + 1, or 2 kl + ku + 1 once a row
+  /// interchange needed the fill-in rows.
+  int stored_diagonals() const { return ld_; }
   /// Entry (i, j); requires −ku ≤ j − i ≤ kl in the sense i − j ∈ [−ku, kl].
   double& at(int i, int j) { return ab_[static_cast<std::size_t>(kv_ + i - j + j * ld_)]; }
   double at(int i, int j) const { return ab_[static_cast<std::size_t>(kv_ + i - j + j * ld_)]; }
@@ -62,12 +71,17 @@ class BandMatrix {
   const double* address(int i, int j) const { return &ab_[static_cast<std::size_t>(kv_ + i - j + j * ld_)]; }
   template <int KL>
   bool factorize_band(Pivoting pivoting);
+  /// Adds the kl fill-in rows above each column (in place, values kept).
+  void widen();
+  bool compact() const { return kv_ == ku_; }
   // NC right-hand sides, column_stride apart, from x.
   template <int KL, int NC>
   void solve_band(double* x, std::ptrdiff_t column_stride) const;
   template <int NC>
   void solve_columns(double* x, std::ptrdiff_t column_stride) const;
 
+  // kv_: the diagonal's row in a stored column (ku_ compact, kl_ + ku_
+  // wide); ld_: a stored column's length.
   int n_ = 0, kl_ = 0, ku_ = 0, kv_ = 0, ld_ = 0;
   std::vector<double> ab_;
   std::vector<int> ipiv_;

@@ -144,6 +144,26 @@ TEST(BandedLu, DiagonalPivotsSolveADefiniteBadlyScaledMatrix) {
   }
 }
 
+// The fill-in rows are added at the first interchange, mid-factorisation for
+// the saddle (the columns before it move, the solution is unchanged), and
+// not at all for the definite matrix; a reset returns to the compact layout.
+TEST(BandedLu, FillInRowsOnlyOnceARowInterchangeNeedsThem) {
+  constexpr int n = 200, half_band = 11, compact = 2 * half_band + 1, wide = 3 * half_band + 1;
+  BandMatrix band(n, half_band, half_band);
+  const std::vector<Entry> definite_entries = definite(band, n, half_band, false);
+  EXPECT_EQ(band.stored_diagonals(), compact);
+  EXPECT_LT(backward_error(band, definite_entries, n, Pivoting::diagonal_while_definite, ramp(n)), 1e-13);
+  EXPECT_EQ(band.stored_diagonals(), compact);
+  band.reset(n, half_band, half_band);
+  const std::vector<Entry> saddle_entries = definite(band, n, half_band, true);
+  EXPECT_LT(backward_error(band, saddle_entries, n, Pivoting::diagonal_while_definite, ramp(n)), 1e-13);
+  EXPECT_EQ(band.stored_diagonals(), wide);
+  band.reset(n, half_band, half_band);
+  EXPECT_EQ(band.stored_diagonals(), compact);
+  for (int i = 0; i < n; ++i)
+    for (int j = std::max(0, i - half_band); j <= std::min(n - 1, i + half_band); ++j) ASSERT_EQ(band.at(i, j), 0.0);
+}
+
 // The end-stiffness condensation's right-hand sides are zero but for end B's
 // rows: the solve that starts below the zeros gives the full solve's result.
 TEST(BandedLu, ARightHandSideStartingWithZerosSolvesAsAFullOne) {
