@@ -10,6 +10,7 @@
 // eq. 4 in arc-length form):
 //   S1 = 1 − 3ξ² + 2ξ³, S2 = L(ξ − 2ξ² + ξ³), S3 = 3ξ² − 2ξ³, S4 = L(ξ³ − ξ²).
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <type_traits>
@@ -106,6 +107,39 @@ inline CurrentSegment current_segment(const LoadContext& ctx, double z) {
   s.z_ref_m = p0.z_m;
   return s;
 }
+
+/// current_segment for the Gauss points of one element, which mostly lie in
+/// one segment of the profile: the segment is looked up again only when z
+/// leaves the heights it holds for (the same segment, the same numbers).
+class CurrentLookup {
+ public:
+  explicit CurrentLookup(const LoadContext& ctx) : ctx_(ctx) {}
+  const CurrentSegment& at(double z) {
+    if (!(z > below_ && z <= top_)) {
+      segment_ = current_segment(ctx_, z);
+      const auto& c = *ctx_.current;
+      if (c.empty()) {
+        below_ = -INFINITY, top_ = INFINITY;
+      } else if (z <= c.front().z_m) {
+        below_ = -INFINITY, top_ = c.front().z_m;
+      } else if (z >= c.back().z_m) {
+        // current_segment takes z = back().z_m to the constant part too.
+        below_ = std::nextafter(c.back().z_m, -INFINITY), top_ = INFINITY;
+      } else {
+        std::size_t i = 1;
+        while (c[i].z_m < z) ++i;
+        below_ = c[i - 1].z_m;
+        top_ = i + 1 == c.size() ? std::nextafter(c[i].z_m, -INFINITY) : c[i].z_m;
+      }
+    }
+    return segment_;
+  }
+
+ private:
+  const LoadContext& ctx_;
+  CurrentSegment segment_;
+  double below_ = 0.0, top_ = -1.0;  // (below_, top_]: heights segment_ holds for; empty at first
+};
 
 /// Current velocity at height z: linear in z, constant beyond the table.
 template <typename T>
@@ -294,9 +328,8 @@ struct DragTangent {
   M3 d_da;
   std::array<double, 3> d_dz;
 };
-inline DragTangent drag_load_and_tangent(const ElementProperties& e, const LoadContext& ctx, const V3<double>& r,
+inline DragTangent drag_load_and_tangent(const ElementProperties& e, const CurrentSegment& current, const V3<double>& r,
                                          const V3<double>& a, double na, double inv_na) {
-  const CurrentSegment current = current_segment(ctx, r.z);
   const V3<double> u = current.at(r.z);
   const V3<double> t = inv_na * a;
   const double ut = dot(u, t);
@@ -389,6 +422,134 @@ void element_forces(const ElementProperties& e, const LoadContext& ctx, const T*
   }
 }
 
+/// The Gauss shapes of an element length laid out point by point (arrays
+/// over the points) for element_forces_side_by_side, with a sixth point
+/// that repeats the fifth: an even count fills 2-wide vector registers.
+struct GaussPointRows {
+  static constexpr int kPoints = 6;
+  double length_m = -1.0;
+  alignas(16) double S[4][kPoints], dS[4][kPoints], ddS[4][kPoints], wds[kPoints];
+  void set(double L) {
+    length_m = L;
+    const GaussShapes shapes = gauss_shapes(L);
+    for (int gp = 0; gp < kPoints; ++gp) {
+      const auto g = static_cast<std::size_t>(std::min(gp, static_cast<int>(kGaussXi.size()) - 1));
+      for (std::size_t k = 0; k < 4; ++k) {
+        S[k][gp] = shapes[g].S[k];
+        dS[k][gp] = shapes[g].dS[k];
+        ddS[k][gp] = shapes[g].ddS[k];
+      }
+      wds[gp] = kGaussW[g] * L;
+    }
+  }
+};
+
+/// element_forces<double> with the Gauss points side by side: each step of
+/// the point's arithmetic is done for all points at once (loops the compiler
+/// turns into 2-wide vector instructions, square roots and divisions
+/// included), each point with the same operations in the same order, and the
+/// points summed in the same order: the same result, bit for bit
+/// (tests/unit/engine/lines/ancf_tangent_test.cpp). rows: set for e.length_m.
+inline void element_forces_side_by_side(const ElementProperties& e, const LoadContext& ctx, const GaussPointRows& rows,
+                                        const double* q, double* g) {
+  constexpr int P = GaussPointRows::kPoints;
+  constexpr int used = static_cast<int>(kGaussXi.size());
+  double r[3][P] = {}, a[3][P] = {}, b[3][P] = {};
+  for (int k = 0; k < 4; ++k) {
+    for (int x = 0; x < 3; ++x) {
+      const double n = q[3 * k + x];
+      for (int gp = 0; gp < P; ++gp) {
+        r[x][gp] = r[x][gp] + rows.S[k][gp] * n;
+        a[x][gp] = a[x][gp] + rows.dS[k][gp] * n;
+        b[x][gp] = b[x][gp] + rows.ddS[k][gp] * n;
+      }
+    }
+  }
+  double aa[P], na[P], inv_na[P], fa[3][P], fb[3][P] = {}, p[3][P];
+  for (int gp = 0; gp < P; ++gp) {
+    aa[gp] = a[0][gp] * a[0][gp] + a[1][gp] * a[1][gp] + a[2][gp] * a[2][gp];
+    na[gp] = std::sqrt(aa[gp]);
+    inv_na[gp] = 1.0 / na[gp];
+    const double axial = e.EA_N * (na[gp] - 1.0) * inv_na[gp];
+    for (int x = 0; x < 3; ++x) fa[x][gp] = axial * a[x][gp];
+  }
+  if (e.EI_Nm2 > 0.0) {
+    for (int gp = 0; gp < P; ++gp) {
+      const double bb = b[0][gp] * b[0][gp] + b[1][gp] * b[1][gp] + b[2][gp] * b[2][gp];
+      const double ab = a[0][gp] * b[0][gp] + a[1][gp] * b[1][gp] + a[2][gp] * b[2][gp];
+      const double inv_aa = inv_na[gp] * inv_na[gp];
+      const double ei_a6 = e.EI_Nm2 * (inv_aa * inv_aa * inv_aa);
+      const double gk = aa[gp] * bb - ab * ab;
+      const double c = 3.0 * gk * inv_aa;
+      for (int x = 0; x < 3; ++x) {
+        fa[x][gp] = fa[x][gp] + ei_a6 * ((bb * a[x][gp] - ab * b[x][gp]) - c * a[x][gp]);
+        fb[x][gp] = ei_a6 * (aa[gp] * b[x][gp] - ab * a[x][gp]);
+      }
+    }
+  }
+  for (int gp = 0; gp < P; ++gp) {
+    p[0][gp] = 0.0;
+    p[1][gp] = 0.0;
+    p[2][gp] = -e.weight_N_per_m;
+  }
+  if (ctx.current != nullptr && !ctx.current->empty() &&
+      (e.normal_drag_N_s2_per_m3 > 0.0 || e.tangential_drag_N_s2_per_m3 > 0.0)) {
+    // drag_load, point by point.
+    double u[3][P];
+    CurrentLookup current(ctx);
+    for (int gp = 0; gp < P; ++gp) {
+      const CurrentSegment& s = current.at(r[2][gp]);
+      const double dz = r[2][gp] - s.z_ref_m;
+      u[0][gp] = s.velocity.x() + s.shear.x() * dz;
+      u[1][gp] = s.velocity.y() + s.shear.y() * dz;
+      u[2][gp] = s.velocity.z() + s.shear.z() * dz;
+    }
+    const double cn = e.normal_drag_N_s2_per_m3, ct = e.tangential_drag_N_s2_per_m3;
+    double t[3][P], un[3][P], ut[P], c_n[P], c_t[P];
+    for (int x = 0; x < 3; ++x)
+      for (int gp = 0; gp < P; ++gp) t[x][gp] = inv_na[gp] * a[x][gp];
+    for (int gp = 0; gp < P; ++gp) ut[gp] = u[0][gp] * t[0][gp] + u[1][gp] * t[1][gp] + u[2][gp] * t[2][gp];
+    for (int x = 0; x < 3; ++x)
+      for (int gp = 0; gp < P; ++gp) un[x][gp] = u[x][gp] - ut[gp] * t[x][gp];
+    for (int gp = 0; gp < P; ++gp) {
+      // norm_c1: the square root of +0 is the 0 it returns there.
+      const double nun = std::sqrt(un[0][gp] * un[0][gp] + un[1][gp] * un[1][gp] + un[2][gp] * un[2][gp]);
+      c_n[gp] = cn * nun * na[gp];
+      c_t[gp] = ct * std::abs(ut[gp]) * ut[gp] * na[gp];
+    }
+    for (int x = 0; x < 3; ++x)
+      for (int gp = 0; gp < P; ++gp) p[x][gp] = p[x][gp] + (c_n[gp] * un[x][gp] + c_t[gp] * t[x][gp]);
+  }
+  double term[4][3][P];
+  for (int k = 0; k < 4; ++k) {
+    for (int x = 0; x < 3; ++x) {
+      for (int gp = 0; gp < P; ++gp) {
+        term[k][x][gp] =
+            rows.wds[gp] * (rows.S[k][gp] * p[x][gp] - rows.dS[k][gp] * fa[x][gp] - rows.ddS[k][gp] * fb[x][gp]);
+      }
+    }
+  }
+  V3<double> force[4];
+  for (int k = 0; k < 4; ++k) {
+    double f[3];
+    for (int x = 0; x < 3; ++x) {
+      f[x] = 0.0;
+      for (int gp = 0; gp < used; ++gp) f[x] = f[x] + term[k][x][gp];
+    }
+    force[k] = {f[0], f[1], f[2]};
+  }
+  if (ctx.seabed_stiffness_N_per_m2 > 0.0) {
+    V3<double> node[4];
+    for (int k = 0; k < 4; ++k) node[k] = {q[3 * k], q[3 * k + 1], q[3 * k + 2]};
+    add_seabed_contact(e, ctx, node, force);
+  }
+  for (int k = 0; k < 4; ++k) {
+    g[3 * k] = force[k].x;
+    g[3 * k + 1] = force[k].y;
+    g[3 * k + 2] = force[k].z;
+  }
+}
+
 /// The strain-energy gradient (fa = ∂W/∂r', fb = ∂W/∂r'') and Hessian
 /// (Haa = ∂fa/∂a, Hab = ∂fa/∂b, Hbb = ∂fb/∂b; ∂fb/∂a = Habᵀ) at a point with
 /// r' = a, r'' = b (A = a·a, na = |a|); formulas at element_forces_and_tangent.
@@ -466,6 +627,7 @@ inline void element_forces_and_tangent(const ElementProperties& e, const LoadCon
   double D[kGaussXi.size()][3][12];
 
   const GaussShapes shapes = gauss_shapes(L);
+  CurrentLookup current(ctx);
   for (std::size_t gp = 0; gp < kGaussXi.size(); ++gp) {
     const ShapeAt& sh = shapes[gp];
     const double wds = kGaussW[gp] * L;
@@ -482,7 +644,7 @@ inline void element_forces_and_tangent(const ElementProperties& e, const LoadCon
     strain_energy_hessian(e, a, b, A, na, fa, fb, Haa, Hab, Hbb);
     V3<double> p{0.0, 0.0, -e.weight_N_per_m};
     if (drag_tangent) {
-      const DragTangent d = drag_load_and_tangent(e, ctx, r, a, na, 1.0 / na);
+      const DragTangent d = drag_load_and_tangent(e, current.at(r.z), r, a, na, 1.0 / na);
       p = p + d.load;
       for (int j = 0; j < 4; ++j) {
         for (int x = 0; x < 3; ++x) {

@@ -223,6 +223,9 @@ bool assemble(const Problem& p, const Eigen::VectorXd& q, Eigen::VectorXd& g, Ba
   g.setZero(p.n_dofs);
   if (jac) jac->reset(p.n_dofs, p.band, p.band);
   ancf::ElementTangent ke;
+  // A line's elements mostly share a length (a section's mesh is uniform
+  // away from the touchdown node): the shapes are laid out once per length.
+  ancf::GaussPointRows rows;
   for (std::size_t e = 0; e < p.elements.size(); ++e) {
     const auto blocks = element_blocks(p, e);
     std::array<int, kElementDofs> dof;
@@ -239,7 +242,8 @@ bool assemble(const Problem& p, const Eigen::VectorXd& q, Eigen::VectorXd& g, Ba
           jac->at(dof[i], dof[j]) += ke[static_cast<std::size_t>(kElementDofs * i + j)];
       }
     } else {
-      ancf::element_forces<double>(p.elements[e], p.load, qe.data(), ge.data());
+      if (rows.length_m != p.elements[e].length_m) rows.set(p.elements[e].length_m);
+      ancf::element_forces_side_by_side(p.elements[e], p.load, rows, qe.data(), ge.data());
       for (int i = 0; i < kElementDofs; ++i) g[dof[i]] += ge[i];
     }
   }

@@ -2,7 +2,9 @@
 // forward-mode AD Jacobian of the same element forces (element_forces<Dual<12>>)
 // for axial, bending, drag (depth-varying current) and seabed contact terms.
 // The AD Jacobian differentiates drag_load itself, so it is an independent
-// check of drag_load_and_tangent's hand-derived derivatives.
+// check of drag_load_and_tangent's hand-derived derivatives. And the
+// residual kernel the statics assemble with (element_forces_side_by_side)
+// must equal the reference element_forces<double> bit for bit.
 
 #include <array>
 #include <cmath>
@@ -107,6 +109,52 @@ TEST(AncfTangent, NoCurrentMatchesAutomaticDifferentiation) {
   const std::vector<CurrentProfilePoint> none;
   expect_tangent_matches_ad(make_case(1.7e7, true, &none));
   expect_tangent_matches_ad(make_case(1.7e7, true, nullptr));
+}
+
+// The same operations in the same order: equal, not close. Cable and beam,
+// with and without current, the element across the profile's breakpoint at
+// −1799 m, above its top and below its bottom, on and off the seabed.
+TEST(AncfSideBySide, ForcesEqualTheReferenceBitForBit) {
+  const auto sheared = sheared_current();
+  const std::vector<CurrentProfilePoint> none;
+  for (const double EI : {0.0, 1.7e7}) {
+    for (const std::vector<CurrentProfilePoint>* current :
+         {&sheared, &none, static_cast<const std::vector<CurrentProfilePoint>*>(nullptr)}) {
+      for (const double z_shift : {0.0, 0.5, 1.02, 1500.0, 1900.0, -3.0}) {
+        Case c = make_case(EI, true, current);
+        c.q[2] += z_shift;
+        c.q[8] += z_shift;
+        GaussPointRows rows;
+        rows.set(c.e.length_m);
+        std::array<double, 12> reference, side_by_side;
+        element_forces<double>(c.e, c.ctx, c.q.data(), reference.data());
+        element_forces_side_by_side(c.e, c.ctx, rows, c.q.data(), side_by_side.data());
+        for (std::size_t i = 0; i < 12; ++i)
+          EXPECT_EQ(side_by_side[i], reference[i]) << "EI " << EI << ", z shift " << z_shift << ", g_" << i;
+      }
+    }
+  }
+}
+
+// The lookup's segment holds where current_segment would pick the same one:
+// at the breakpoints themselves (a table row belongs to the segment below
+// it; the top row to the constant part above), beside them and beyond the
+// table, visited in an order that leaves and re-enters segments.
+TEST(AncfSideBySide, CurrentLookupGivesCurrentSegmentsVelocity) {
+  const auto current = sheared_current();
+  LoadContext ctx;
+  ctx.current = &current;
+  ctx.current_factor = 0.8;
+  CurrentLookup lookup(ctx);
+  const double below = std::nextafter(-1799.0, -INFINITY), above = std::nextafter(-1799.0, INFINITY);
+  for (const double z : {-1799.5, -1799.0, below, above, -1800.0, -1850.0, -1799.2, 0.0, std::nextafter(0.0, -1.0),
+                         -900.0, 5.0, -1799.0, -1800.0, std::nextafter(-1800.0, 0.0)}) {
+    const V3<double> expected = current_segment(ctx, z).at(z);
+    const V3<double> got = lookup.at(z).at(z);
+    EXPECT_EQ(got.x, expected.x) << z;
+    EXPECT_EQ(got.y, expected.y) << z;
+    EXPECT_EQ(got.z, expected.z) << z;
+  }
 }
 
 }  // namespace
