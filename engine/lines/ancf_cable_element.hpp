@@ -73,11 +73,13 @@ inline T norm_c1(const V3<T>& v) {
 
 /// The current profile about height z: u(z') = velocity + shear (z' − z_ref)
 /// on the table's segment that holds z; constant (zero shear) beyond the
-/// table (times the continuation factor).
+/// table (times the continuation factor). current_segment gives this same
+/// segment for every height in (above_m, up_to_m].
 struct CurrentSegment {
   Eigen::Vector3d velocity = Eigen::Vector3d::Zero();
   Eigen::Vector3d shear = Eigen::Vector3d::Zero();  ///< du/dz, 1/s
   double z_ref_m = 0.0;
+  double above_m = -INFINITY, up_to_m = INFINITY;
   template <typename T>
   V3<T> at(const T& z) const {
     const T dz = z - z_ref_m;
@@ -92,10 +94,14 @@ inline CurrentSegment current_segment(const LoadContext& ctx, double z) {
   if (c.empty()) return s;
   if (z <= c.front().z_m) {
     s.velocity = f * c.front().velocity_m_per_s;
+    s.up_to_m = c.front().z_m;
     return s;
   }
+  // The top row's height belongs to the constant part above the table.
+  const double below_top = std::nextafter(c.back().z_m, -INFINITY);
   if (z >= c.back().z_m) {
     s.velocity = f * c.back().velocity_m_per_s;
+    s.above_m = below_top;
     return s;
   }
   std::size_t i = 1;
@@ -105,6 +111,8 @@ inline CurrentSegment current_segment(const LoadContext& ctx, double z) {
   s.velocity = f * p0.velocity_m_per_s;
   s.shear = f * (p1.velocity_m_per_s - p0.velocity_m_per_s) / (p1.z_m - p0.z_m);
   s.z_ref_m = p0.z_m;
+  s.above_m = p0.z_m;
+  s.up_to_m = i + 1 == c.size() ? below_top : p1.z_m;
   return s;
 }
 
@@ -115,22 +123,9 @@ class CurrentLookup {
  public:
   explicit CurrentLookup(const LoadContext& ctx) : ctx_(ctx) {}
   const CurrentSegment& at(double z) {
-    if (!(z > below_ && z <= top_)) {
+    if (!looked_up_ || !(z > segment_.above_m && z <= segment_.up_to_m)) {
       segment_ = current_segment(ctx_, z);
-      const auto& c = *ctx_.current;
-      if (c.empty()) {
-        below_ = -INFINITY, top_ = INFINITY;
-      } else if (z <= c.front().z_m) {
-        below_ = -INFINITY, top_ = c.front().z_m;
-      } else if (z >= c.back().z_m) {
-        // current_segment takes z = back().z_m to the constant part too.
-        below_ = std::nextafter(c.back().z_m, -INFINITY), top_ = INFINITY;
-      } else {
-        std::size_t i = 1;
-        while (c[i].z_m < z) ++i;
-        below_ = c[i - 1].z_m;
-        top_ = i + 1 == c.size() ? std::nextafter(c[i].z_m, -INFINITY) : c[i].z_m;
-      }
+      looked_up_ = true;
     }
     return segment_;
   }
@@ -138,7 +133,7 @@ class CurrentLookup {
  private:
   const LoadContext& ctx_;
   CurrentSegment segment_;
-  double below_ = 0.0, top_ = -1.0;  // (below_, top_]: heights segment_ holds for; empty at first
+  bool looked_up_ = false;
 };
 
 /// Current velocity at height z: linear in z, constant beyond the table.

@@ -154,6 +154,15 @@ TEST(AncfSideBySide, CurrentLookupGivesCurrentSegmentsVelocity) {
     EXPECT_EQ(got.x, expected.x) << z;
     EXPECT_EQ(got.y, expected.y) << z;
     EXPECT_EQ(got.z, expected.z) << z;
+    // The heights the segment claims, at both ends: current_segment gives
+    // the same velocity there.
+    const CurrentSegment segment = current_segment(ctx, z);
+    for (const double probe : {std::nextafter(segment.above_m, INFINITY), segment.up_to_m}) {
+      if (!std::isfinite(probe)) continue;
+      const V3<double> own = current_segment(ctx, probe).at(probe), claimed = segment.at(probe);
+      EXPECT_EQ(claimed.x, own.x) << z << " at " << probe;
+      EXPECT_EQ(claimed.y, own.y) << z << " at " << probe;
+    }
   }
 }
 
