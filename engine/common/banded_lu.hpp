@@ -5,9 +5,10 @@
 // Storage is LAPACK's band layout, column by column, but without the kl extra
 // super-diagonals for the fill-in of row interchanges until the first
 // interchange needs them: the FE lines' factorisations mostly make none (see
-// below), and a line keeps its factor between solves (the optimizer keeps
-// one per riser and scenario, ~0.7 GB), so the unused third of each column
-// was zeroed, faulted in and streamed through every back substitution.
+// below), and a line keeps its factor between solves (the every-line
+// optimization keeps one per riser and scenario: in LAPACK's layout about
+// 1 GB of its 1.4 GB peak), so the unused third of each column was zeroed,
+// faulted in and streamed through every back substitution.
 //
 // The pivot rule is the caller's choice. Partial pivoting (LAPACK's) for any
 // matrix; or the diagonal while the matrix behaves as definite, for the FE
