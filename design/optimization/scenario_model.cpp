@@ -29,6 +29,13 @@ namespace {
 // Within this of the pose where the line array's stiffness was computed,
 // the hull's Newton tangent keeps it (EquilibriumOptions).
 constexpr double kStiffnessReuseDistance_m = 0.1;
+// Within this of where an FE riser's end-B stiffness was last computed (by
+// itself or by the scenario it adopted its state from), an equilibrium
+// without gradients takes that stiffness for its Newton tangent
+// (FeStaticLine::set_stiffness_reuse_distance): a damaged scenario starts
+// 0.2-1 m from its cluster neighbour, and a riser's stiffness changes over
+// metres.
+constexpr double kRiserStiffnessReuseDistance_m = 1.0;
 
 Eigen::Matrix3d skew(const Eigen::Vector3d& a) {
   Eigen::Matrix3d s;
@@ -200,6 +207,14 @@ ScenarioResponse ScenarioModel::evaluate(const Eigen::VectorXd& payouts_m, bool 
     start = *predicted;
   }
   m.predicted.reset();
+  // Exact riser stiffness where the gradients use it (at the solution),
+  // and outside the equilibrium (state(), complete_expensive_lines).
+  const auto riser_stiffness_reuse = [&](double distance_m) {
+    for (std::size_t k = m.paid.size(); k < m.array.lines.size(); ++k)
+      if (auto* fe = dynamic_cast<engine::FeStaticLine*>(m.array.lines[k].get()))
+        fe->set_stiffness_reuse_distance(distance_m);
+  };
+  riser_stiffness_reuse(with_gradient ? 0.0 : kRiserStiffnessReuseDistance_m);
   engine::EquilibriumResult eq;
   try {
     // The K at the solution serves the analytic gradient only (catenaries
@@ -210,8 +225,10 @@ ScenarioResponse ScenarioModel::evaluate(const Eigen::VectorXd& payouts_m, bool 
         m.hull.statics, m.array.lines, m.environment_load, start,
         {.stiffness_at_solution = with_gradient, .stiffness_reuse_distance_m = kStiffnessReuseDistance_m});
   } catch (const engine::SolverError& error) {
+    riser_stiffness_reuse(0.0);
     throw engine::SolverError(fmt::format("{}: {}", scenario_.label(), error.what()), error.diagnostics());
   }
+  riser_stiffness_reuse(0.0);
   m.last_offset = eq.offset;
   m.last_pose = eq.pose;
   ScenarioResponse out;
@@ -377,7 +394,7 @@ void ScenarioModel::start_risers_from(const ScenarioModel& source) {
     auto* line = dynamic_cast<engine::FeStaticLine*>(m.array.lines[m.paid.size() + j].get());
     const auto* solved = dynamic_cast<const engine::FeStaticLine*>(from.array.lines[from.paid.size() + j].get());
     if (!line || !solved || !solved->last_result()) continue;
-    line->adopt(solved->last_attachment_g(), *solved->last_result());
+    line->adopt(*solved);
   }
 }
 

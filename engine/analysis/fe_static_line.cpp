@@ -39,7 +39,10 @@ FeStaticLine::FeStaticLine(std::string name, Eigen::Vector3d end_A_g, Eigen::Vec
       options_(std::move(options)) {}
 
 const FeStaticsResult& FeStaticLine::keep(const Eigen::Vector3d& attachment_g, FeStaticsResult solution) {
-  if (solution.has_end_B_stiffness) recent_stiffness_ = solution.end_B_stiffness_N_per_m;
+  if (solution.has_end_B_stiffness) {
+    recent_stiffness_ = solution.end_B_stiffness_N_per_m;
+    recent_stiffness_at_g_ = attachment_g;
+  }
   last_ = std::make_shared<const FeStaticsResult>(std::move(solution));
   last_attachment_g_ = attachment_g;
   warm_ = last_;
@@ -76,12 +79,24 @@ void FeStaticLine::adopt(const Eigen::Vector3d& attachment_g, FeStaticsResult so
   keep(attachment_g, std::move(solution));
 }
 
+void FeStaticLine::adopt(const FeStaticLine& source) {
+  if (!source.last_) throw std::invalid_argument(fmt::format("line '{}': the adopted line has no solve", name_));
+  adopt(source.last_attachment_g_, *source.last_);
+  if (!source.last_->has_end_B_stiffness && source.recent_stiffness_) {
+    recent_stiffness_ = source.recent_stiffness_;
+    recent_stiffness_at_g_ = source.recent_stiffness_at_g_;
+  }
+}
+
 LineEndResponse FeStaticLine::solve(const Eigen::Vector3d& attachment_g) {
-  const FeStaticsResult& r = solve_at(attachment_g, true);
+  const bool reuse = stiffness_reuse_distance_m_ > 0.0 && recent_stiffness_ &&
+                     (attachment_g - recent_stiffness_at_g_).norm() <= stiffness_reuse_distance_m_;
+  const FeStaticsResult& r = solve_at(attachment_g, !reuse);
   LineEndResponse response;
   response.force_g = r.end_B_force_N;
   // The FE solver gives dF_B/dx_B; the line array uses K = −dF/dx.
-  response.stiffness_g = -r.end_B_stiffness_N_per_m;
+  response.stiffness_g =
+      r.has_end_B_stiffness ? Eigen::Matrix3d(-r.end_B_stiffness_N_per_m) : Eigen::Matrix3d(-*recent_stiffness_);
   response.top_tension_N = r.end_B_force_N.norm();
   response.iterations = r.iterations;
   return response;

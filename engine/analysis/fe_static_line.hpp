@@ -25,8 +25,15 @@ class FeStaticLine final : public StaticLine {
   const Eigen::Vector3d& attachment_b() const override { return attachment_b_; }
   /// Warm-started from the last converged solve (kept after a failed one);
   /// at the attachment of the last solve it returns that solution as is (a
-  /// re-solve there would return it, to round-off).
+  /// re-solve there would return it, to round-off). The stiffness is exact
+  /// there, unless set_stiffness_reuse_distance allows an earlier one.
   LineEndResponse solve(const Eigen::Vector3d& attachment_g) override;
+  /// From now on solve() may return, with the force at its attachment, the
+  /// end-B stiffness of the most recent solve that computed one (its own or
+  /// an adopted line's) if that was within `distance_m` of it: no Jacobian
+  /// and factorisation, for callers that use the stiffness as a Newton
+  /// tangent only. 0 (the default): always the exact stiffness.
+  void set_stiffness_reuse_distance(double distance_m) { stiffness_reuse_distance_m_ = distance_m; }
   /// Without the end-B stiffness (its Jacobian factorisation is most of a warm solve).
   Eigen::Vector3d solve_force(const Eigen::Vector3d& attachment_g) override;
   /// The force there and the end-B stiffness of the last solve that computed one.
@@ -40,6 +47,10 @@ class FeStaticLine final : public StaticLine {
   /// same environment). Throws
   /// std::invalid_argument if its mesh size differs from this model's.
   void adopt(const Eigen::Vector3d& attachment_g, FeStaticsResult solution);
+  /// adopt() of `source`'s last solve, with the end-B stiffness of its most
+  /// recent solve that computed one (see set_stiffness_reuse_distance).
+  /// `source` must have a last solve.
+  void adopt(const FeStaticLine& source);
   /// fe_line_incremental_end_B_stiffness at the solve there; one EA per section.
   Eigen::Matrix3d incremental_stiffness_g(const Eigen::Vector3d& attachment_g,
                                           const std::vector<double>& incremental_EA_N) override;
@@ -72,6 +83,8 @@ class FeStaticLine final : public StaticLine {
   std::shared_ptr<const FeStaticsResult> last_;  ///< of the last solve; empty after a failure
   Eigen::Vector3d last_attachment_g_ = Eigen::Vector3d::Zero();
   std::optional<Eigen::Matrix3d> recent_stiffness_;  ///< end-B stiffness of the last solve that computed one
+  Eigen::Vector3d recent_stiffness_at_g_ = Eigen::Vector3d::Zero();  ///< where end B was for it
+  double stiffness_reuse_distance_m_ = 0.0;
   /// The last converged solve (the warm start): last_ itself, or kept
   /// through a failed solve.
   std::shared_ptr<const FeStaticsResult> warm_;
