@@ -426,8 +426,8 @@ DynamicModel build_dynamic_model(const ValidatedProject& validated, const Dynami
     model.timing.reduction_s += start.seconds();
     model.notes.push_back(
         "sc-enhanced: mooring-line damping and added mass from the quasi-static line shape derivative "
-        "(normal Morison drag linearized on the fairlead velocities of a first sc run, sqrt(8/pi) sigma, "
-        "and about the current at each node); the current's effect on the line shape, the risers' "
+        "(normal Morison drag linearized stochastically about the current at each node for the velocities "
+        "of a first sc run, Atalik & Utku 1976); the current's effect on the line shape, the risers' "
         "damping and line dynamics neglected in these matrices");
   }
   return model;

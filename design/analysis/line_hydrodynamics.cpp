@@ -6,6 +6,8 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "engine/lines/stochastic_drag.hpp"
+
 namespace spiral::design {
 namespace {
 
@@ -34,30 +36,6 @@ Eigen::Vector3d position_at_arc(const std::vector<engine::LineProfilePoint>& pro
     }
   }
   return profile.back().position_g;
-}
-
-/// The drag's linearization matrix per unit ½ ρ Cd d ds (m/s): the expected
-/// derivative of |u| u (u the normal relative velocity) with respect to the
-/// line's normal velocity, for a velocity of standard deviation sigma about
-/// the normal current u_c. Without current: Borgman's sqrt(8/pi) sigma in
-/// every normal direction. With it, along û_c the exact one-dimensional
-/// expectation 2 E|U + v|, v ~ N(0, sigma²) (U = |u_c|),
-///   E|U + v| = sigma sqrt(2/pi) exp(−U²/2sigma²) + U erf(U / (sigma sqrt 2)),
-/// which is 2U for U >> sigma (the steady drag's slope) and Borgman's for
-/// U = 0; across it sqrt(U² + (8/pi) sigma²), between |u| for U >> sigma (the
-/// drag force turns with the velocity) and Borgman's. An approximation: each
-/// direction takes the whole normal sigma.
-Eigen::Matrix3d drag_linearization(const Eigen::Matrix3d& Pn, const Eigen::Vector3d& u_current, double sigma) {
-  const double U = u_current.norm();
-  const double borgman = std::sqrt(8.0 / std::numbers::pi) * sigma;
-  if (!(U > 0.0)) return borgman * Pn;
-  const double mean_speed = sigma > 0.0
-                                ? sigma * std::sqrt(2.0 / std::numbers::pi) * std::exp(-U * U / (2.0 * sigma * sigma)) +
-                                      U * std::erf(U / (sigma * std::numbers::sqrt2))
-                                : U;
-  const Eigen::Vector3d along = u_current / U;
-  const Eigen::Matrix3d along_along = along * along.transpose();
-  return 2.0 * mean_speed * along_along + std::sqrt(U * U + borgman * borgman) * (Pn - along_along);
 }
 
 }  // namespace
@@ -102,14 +80,15 @@ LineHydrodynamicsResult line_hydrodynamics(LineArrayModel& model, const engine::
       const auto& type = model.designs[l].segment_types.at(static_cast<std::size_t>(base.profile[j].segment));
       const double d = type.hydrodynamic_diameter_m;
       const Eigen::Matrix3d PJ = Pn * J[j];
-      const double sigma = std::sqrt(std::max(0.0, (PJ * covariance[l] * PJ.transpose()).trace()));
-      sigma_sum += sigma;
+      const Eigen::Matrix3d normal_covariance = PJ * covariance[l] * PJ.transpose();
+      sigma_sum += std::sqrt(std::max(0.0, normal_covariance.trace()));
       const Eigen::Vector3d u_current =
           current ? Eigen::Vector3d(Pn * engine::current_velocity_g(*current, base.profile[j].position_g.z()))
                   : Eigen::Vector3d::Zero();
       A_f += J[j].transpose() * (rho * type.added_mass_normal * 0.25 * std::numbers::pi * d * d * ds * Pn) * J[j];
-      B_f +=
-          J[j].transpose() * (0.5 * rho * type.drag_normal * d * ds * drag_linearization(Pn, u_current, sigma)) * J[j];
+      B_f += J[j].transpose() *
+             (0.5 * rho * type.drag_normal * d * ds * engine::expected_drag_slope(t, u_current, normal_covariance)) *
+             J[j];
     }
     out.line_drag_velocity_std_m_per_s.push_back(n > 0 ? sigma_sum / static_cast<double>(n) : 0.0);
     Eigen::Matrix<double, 3, 6> T;

@@ -15,22 +15,22 @@
 // 2) Per node, with the normal projector P_n = I − t tᵀ (t the unit tangent),
 //    tributary length ds_j, hydrodynamic diameter d, Cd, Ca of its segment:
 //      added mass  a_j = rho Ca (pi d²/4) ds_j P_n
-//      damping     b_j = ½ rho Cd d ds_j c_j P_n,  c_j = sqrt(8/pi) sigma_j
-//    the Morison drag u|u| linearized stochastically (Borgman 1967: for a
-//    zero-mean Gaussian u, u|u| ~ sqrt(8/pi) sigma_u u in the least-squares
-//    sense; for a harmonic amplitude U the equivalent factor is 8/(3 pi) U).
-//    sigma_j² = trace(P_n J_j S_f J_jᵀ P_n), S_f the covariance of the
-//    fairlead velocity (global, 3x3) — supplied by the caller (the analysis
-//    takes it from a first plain S-C run of the same case: one fixed-point
-//    iteration).
+//      damping     b_j = ½ rho Cd d ds_j D_j
+//    D_j the Morison drag |w| w linearized stochastically for the node's
+//    Gaussian normal relative velocity w ~ N(u_n, P_n J_j S_f J_jᵀ P_n) —
+//    u_n the normal current at the node, S_f the covariance of the fairlead
+//    velocity (global, 3x3) — as the expected Jacobian
+//    E[|w| P_n + w wᵀ/|w|] (engine/lines/stochastic_drag.hpp; Atalik &
+//    Utku 1976; Borgman's sqrt(8/pi) sigma for one direction without
+//    current): 2U along and U across the normal current for a line that
+//    hardly moves, and for a line swept in one direction by the waves twice
+//    the damping along that direction as across it. S_f is supplied by the
+//    caller (the analysis takes it from a first plain S-C run of the same
+//    case: one fixed-point iteration). A line in a 1.5 m/s current is damped
+//    several times more than by its own motion.
 // 3) Fairlead matrices A_f = sum J_jᵀ a_j J_j, B_f = sum J_jᵀ b_j J_j, mapped
 //    to the hull by the fairlead arm a (global): delta x_f = du − [a×] dtheta,
 //    T = [I, −[a×]], A_6 = Tᵀ A_f T, B_6 = Tᵀ B_f T, summed over the lines.
-//    With a current, the drag is linearized about the normal current at
-//    the node instead (drag_linearization in the .cpp: the steady drag's
-//    slope 2|u_c| along it, |u_c| across it for a current large against
-//    sigma): a line in a 1.5 m/s current is damped several times more than
-//    by its own motion.
 // Limits: the in-line (tangential) drag and inertia, the current's effect
 // on the line's shape, the risers' damping, and the lines' own dynamic
 // amplification (important for deep-water lines at wave frequency) are
