@@ -31,6 +31,8 @@ std::string flag_of(const std::string& argument) {
       {"output_step_s", "--step"},
       {"ramp_s", "--ramp"},
       {"tolerance_scale", "--tolerance-scale"},
+      {"decay.displacement", "--decay"},
+      {"decay.release_s", "--release"},
   };
   for (const auto& [name, flag] : kFlags)
     if (name == argument) return std::string(flag);

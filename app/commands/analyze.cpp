@@ -8,7 +8,9 @@
 #include <cstdio>
 #include <exception>
 #include <filesystem>
+#include <numbers>
 #include <string>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -85,6 +87,14 @@ class AnalyzeCommand : public Command {
     request.seed = seed_;
     request.line_dynamics = line_dynamics_;
     request.tolerance_scale = tolerance_scale_;
+    if (!decay_.empty()) {
+      // m for the translations, deg for the rotations (as every output); the request takes rad.
+      design::DynamicAnalysisRequest::FreeDecay decay;
+      for (int d = 0; d < 6; ++d)
+        decay.displacement(d) = decay_[static_cast<std::size_t>(d)] * (d < 3 ? 1.0 : std::numbers::pi / 180.0);
+      decay.release_s = release_s_;
+      request.decay = decay;
+    }
     if (isatty(STDERR_FILENO)) request.progress = print_progress;
     const design::DynamicAnalysisResult result = design::run_dynamic_analysis(loaded, request);
     const std::filesystem::path folder = output_folder(
@@ -116,6 +126,14 @@ class AnalyzeCommand : public Command {
     sub.add_option("--tolerance-scale", tolerance_scale_,
                    "The dynamic FE lines' (and the coupled system's) integrator tolerances x this; < 1 for a "
                    "convergence reference (default: 1)");
+    sub.add_option("--decay", decay_,
+                   "Free decay: the hull pulled this far from its static equilibrium and released, "
+                   "surge,sway,heave (m),roll,pitch,yaw (deg); e.g. 10,0,0,0,0,0")
+        ->expected(6)
+        ->delimiter(',');
+    sub.add_option("--release", release_s_,
+                   "Free decay: the release time, s (default: 300; the pull builds up "
+                   "over its first half)");
     sub.add_option("--out", out_, "Output folder (default: out/<project-stem>/analyze/<case>-<level>-seed<N>)");
   }
 
@@ -127,6 +145,8 @@ class AnalyzeCommand : public Command {
   std::string out_;
   bool line_dynamics_ = false;
   double tolerance_scale_ = 1.0;
+  std::vector<double> decay_;
+  double release_s_ = 300.0;
 };
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include "design/analysis/dynamic_analysis.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <Eigen/LU>
 #include <algorithm>
@@ -20,6 +21,7 @@
 #include "engine/analysis/fairlead_velocity.hpp"
 #include "engine/analysis/forcing_table.hpp"
 #include "engine/analysis/line_array.hpp"
+#include "engine/numerics/sampled_trajectory.hpp"
 #include "engine/numerics/statistics.hpp"
 #include "engine/environment/wave_realization.hpp"
 #include "engine/environment/wind.hpp"
@@ -64,6 +66,11 @@ constexpr double kForcedRunAbsTolRotation = 1e-8;
 /// the wave band is then wholly WF, the moored surge/sway/yaw modes (periods
 /// of minutes) wholly LF.
 constexpr double kMorisonSplitFraction = 0.5;
+
+/// A free decay's rotations are kept within this (30 deg): the hull models
+/// (hydrostatics at the mean waterline, small-angle radiation) are not meant
+/// for more.
+constexpr double kLargestDecayRotation_rad = std::numbers::pi / 6.0;
 
 /// The Morison load of the members with what it points to (the flow holds
 /// raw pointers into this struct; it lives behind a shared_ptr, never moved).
@@ -184,6 +191,19 @@ DynamicModel build_dynamic_model(const ValidatedProject& validated, const Dynami
   if (!(request.tolerance_scale > 0.0) || !std::isfinite(request.tolerance_scale)) {
     throw request_error(project, "tolerance_scale",
                         fmt::format("must be a finite number > 0, got {}", request.tolerance_scale));
+  }
+  if (request.decay) {
+    const engine::Vector6d& d = request.decay->displacement;
+    if (!d.allFinite() || d.tail<3>().cwiseAbs().maxCoeff() > kLargestDecayRotation_rad) {
+      throw request_error(project, "decay.displacement",
+                          fmt::format("need finite displacements and rotations within {:g} deg, got [{}] (m, rad)",
+                                      kLargestDecayRotation_rad * 180.0 / std::numbers::pi, fmt::join(d, ", ")));
+    }
+    if (!(request.decay->release_s > 0.0) || !(request.decay->release_s < request.duration_s)) {
+      throw request_error(project, "decay.release_s",
+                          fmt::format("the release must come after 0 s and before the end of the run ({} s), got {} s",
+                                      request.duration_s, request.decay->release_s));
+    }
   }
   DynamicModel model;
   model.case_model = build_case_model(project, request.load_case);
@@ -401,6 +421,23 @@ DynamicModel build_dynamic_model(const ValidatedProject& validated, const Dynami
 
   model.timing.forcing_s = forcing_start.seconds();
 
+  // A free decay: the pull that holds the hull displaced until its release.
+  if (request.decay) {
+    const engine::Vector6d pull =
+        (model.hull.hydrostatic_stiffness + model.statics.dynamic_stiffness) * request.decay->displacement;
+    const double release_s = request.decay->release_s;
+    model.loads.external = [inner = model.loads.external, pull, release_s](double t, const engine::Vector6d& q,
+                                                                           const engine::Vector6d& qd) {
+      engine::Vector6d f = inner ? inner(t, q, qd) : engine::Vector6d::Zero();
+      if (t < release_s) f += engine::smooth_ramp(t, 0.5 * release_s).value * pull;
+      return f;
+    };
+    model.notes.push_back(fmt::format(
+        "free decay: the hull pulled by (C + K) d, d = [{:.4g}] (m, rad) from the equilibrium, built up over "
+        "{:g} s and released at {:g} s",
+        fmt::join(request.decay->displacement, ", "), 0.5 * release_s, release_s));
+  }
+
   // Enhanced S-C: line damping and added mass at the fairleads, the drag
   // linearized on the fairlead velocities of a first plain S-C run.
   if (request.level == AnalysisLevel::semi_coupled_enhanced) {
@@ -441,6 +478,7 @@ DynamicAnalysisResult result_of_model(const DynamicModel& model, const DynamicAn
   result.level = request.level;
   result.seed = request.seed;
   result.tolerance_scale = request.tolerance_scale;
+  result.decay = request.decay;
   result.static_offset = model.statics.offset;
   result.mean_slow_drift_force = model.mean_slow_drift_force;
   result.line_added_mass = model.line_added_mass;

@@ -101,6 +101,21 @@ struct DynamicAnalysisRequest {
   /// convergence reference (the accuracy–time curve of
   /// docs/decisions/coupled-dynamics-performance.md), > 0.
   double tolerance_scale = 1.0;
+  /// A free decay, as in a model basin: the hull is pulled from the level's
+  /// static equilibrium by the constant force (C + K) d — C the
+  /// hydrostatic stiffness, K the lines' S-C stiffness there, so d is where
+  /// the S-C hull comes to rest — built up by the smooth ramp over the first
+  /// half of `release_s`, held, and released at `release_s`. The
+  /// environment is the load case's (a decay test runs a case with current
+  /// only, or with nothing). Every level starts from its equilibrium with
+  /// its lines in their static state, so the pull goes through the same
+  /// line models as the decay (the polyester's dynamic EA acts about the
+  /// mean strain, seabed friction where the lines have it).
+  struct FreeDecay {
+    engine::Vector6d displacement = engine::Vector6d::Zero();  ///< m (surge, sway, heave), rad (roll, pitch, yaw)
+    double release_s = 300.0;                                  ///< > 0, < duration
+  };
+  std::optional<FreeDecay> decay;
   /// The static case of this load case when the caller has it already
   /// (a stage runs every case's statics first); null: solved here. It must be
   /// run_static_case of `load_case` with its own damaged line. The S-C levels
@@ -179,7 +194,8 @@ struct DynamicAnalysisResult {
   std::string environment;
   AnalysisLevel level = AnalysisLevel::semi_coupled;
   std::uint64_t seed = 1;
-  double tolerance_scale = 1.0;  ///< the request's
+  double tolerance_scale = 1.0;                            ///< the request's
+  std::optional<DynamicAnalysisRequest::FreeDecay> decay;  ///< the request's
   Eigen::VectorXd times_s;
   Eigen::Matrix<double, 6, Eigen::Dynamic> low_frequency;   ///< m, rad
   Eigen::Matrix<double, 6, Eigen::Dynamic> wave_frequency;  ///< m, rad (zero without RAOs)

@@ -1,5 +1,7 @@
 #include "design/results/dynamic_analysis_output.hpp"
 
+#include "engine/numerics/free_decay.hpp"
+
 #include <fmt/format.h>
 
 #include <cmath>
@@ -83,6 +85,32 @@ nlohmann::json dynamic_analysis_to_json(const DynamicAnalysisResult& r, const st
   j["duration_s"] = r.times_s.size() > 0 ? r.times_s(r.times_s.size() - 1) : 0.0;
   j["output_step_s"] = dt;
   j["tolerance_scale"] = r.tolerance_scale;
+  if (r.decay) {
+    // A free decay: what was asked, and the half cycles of every displaced
+    // degree of freedom's low-frequency motion about the static equilibrium
+    // after the release, down to 1 % of the displacement (m; angles in deg,
+    // as every output).
+    nlohmann::json displacement, half_cycles;
+    for (int d = 0; d < 6; ++d) {
+      const std::string name = fmt::format("{}_{}", kDofNames[d], dof_unit(d));
+      const double asked = r.decay->displacement(d);
+      displacement[name] = asked * dof_scale(d);
+      if (asked == 0.0 || r.times_s.size() < 3) continue;
+      const Eigen::VectorXd motion = r.low_frequency.row(d).transpose();
+      nlohmann::json cycles = nlohmann::json::array();
+      for (const engine::DecayHalfCycle& c : engine::free_decay_half_cycles(
+               std::span<const double>(r.times_s.data(), static_cast<std::size_t>(r.times_s.size())),
+               std::span<const double>(motion.data(), static_cast<std::size_t>(motion.size())), r.static_offset(d),
+               r.decay->release_s, 0.01 * std::abs(asked))) {
+        cycles.push_back({{"start_s", c.start_s},
+                          {"amplitude", c.amplitude * dof_scale(d)},
+                          {"period_s", c.period_s},
+                          {"damping_ratio", c.damping_ratio}});
+      }
+      half_cycles[name] = std::move(cycles);
+    }
+    j["decay"] = {{"release_s", r.decay->release_s}, {"displacement", displacement}, {"half_cycles", half_cycles}};
+  }
   j["wave_frequency_motions"] = r.wave_frequency_computed;
   nlohmann::json offset;
   for (int d = 0; d < 6; ++d)

@@ -156,6 +156,35 @@ TEST(CliAnalyze, AZeroToleranceScaleIsBadInputNamingTheField) {
   EXPECT_NE(result.err.find("oc4-semisubmersible.yaml"), std::string::npos) << result.err;
 }
 
+// A free decay: pulled 5 m in surge, released at 300 s; the summary gives
+// the half cycles (OC4's surge period is about 113 s).
+TEST(CliAnalyze, AFreeDecayReportsItsHalfCycles) {
+  const auto out = std::filesystem::temp_directory_path() / ("spiral-analyze-decay-" + std::to_string(::getpid()));
+  std::filesystem::remove_all(out);
+  const auto result = run_spiral("analyze " + scenario("oc4-semisubmersible.yaml") +
+                                 " --case intact-still-water --level sc --duration 900 --decay 5,0,0,0,0,0"
+                                 " --release 300 --out '" +
+                                 out.string() + "'");
+  ASSERT_EQ(result.exit_code, app::kExitOk) << result.err;
+  const auto doc = nlohmann::json::parse(read_text(out / "summary.json"));
+  ASSERT_TRUE(doc.contains("decay")) << doc.dump().substr(0, 400);
+  EXPECT_EQ(doc["decay"]["release_s"].get<double>(), 300.0);
+  EXPECT_EQ(doc["decay"]["displacement"]["surge_m"].get<double>(), 5.0);
+  const auto& cycles = doc["decay"]["half_cycles"]["surge_m"];
+  ASSERT_GE(cycles.size(), 5u) << doc["decay"].dump();
+  EXPECT_NEAR(cycles[0]["period_s"].get<double>(), 113.0, 3.0);
+  EXPECT_FALSE(doc["decay"]["half_cycles"].contains("sway_m")) << "only the displaced degrees of freedom";
+  std::filesystem::remove_all(out);
+}
+
+TEST(CliAnalyze, AReleaseAfterTheRunIsBadInputNamingTheFlag) {
+  const auto result = run_spiral("analyze " + scenario("oc4-semisubmersible.yaml") +
+                                 " --case intact-still-water --duration 200 --decay 5,0,0,0,0,0 --release 300"
+                                 " --out /tmp/spiral-never");
+  EXPECT_EQ(result.exit_code, app::kExitBadInput);
+  EXPECT_NE(result.err.find("--release"), std::string::npos) << result.err;
+}
+
 TEST(CliAnalyze, MissingRadiationFileIsBadInputWithFile) {
   const auto dir = std::filesystem::temp_directory_path() / ("spiral-analyze-bad-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
