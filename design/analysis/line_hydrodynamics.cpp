@@ -6,6 +6,7 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "engine/common/rigid_body.hpp"
 #include "engine/lines/stochastic_drag.hpp"
 
 namespace spiral::design {
@@ -16,12 +17,6 @@ namespace {
 constexpr double kFairleadStep_m = 0.1;
 /// Profile points per segment for the node sums (tributary lengths ~ L/40).
 constexpr int kPointsPerSegment = 40;
-
-Eigen::Matrix3d skew(const Eigen::Vector3d& a) {
-  Eigen::Matrix3d m;
-  m << 0.0, -a.z(), a.y(), a.z(), 0.0, -a.x(), -a.y(), a.x(), 0.0;
-  return m;
-}
 
 /// Position on a profile at unstretched arc length s (linear between points;
 /// the point count may differ between solutions, e.g. with a touchdown point).
@@ -92,7 +87,7 @@ LineHydrodynamicsResult line_hydrodynamics(LineArrayModel& model, const engine::
     }
     out.line_drag_velocity_std_m_per_s.push_back(n > 0 ? sigma_sum / static_cast<double>(n) : 0.0);
     Eigen::Matrix<double, 3, 6> T;
-    T << Eigen::Matrix3d::Identity(), -skew(arm);
+    T << Eigen::Matrix3d::Identity(), -engine::cross_product_matrix(arm);
     out.added_mass += T.transpose() * A_f * T;
     out.damping += T.transpose() * B_f * T;
   }

@@ -15,6 +15,7 @@
 #include "engine/analysis/linearized_line.hpp"
 #include "engine/analysis/static_line.hpp"
 #include "engine/common/parallel_for.hpp"
+#include "engine/common/rigid_body.hpp"
 #include "engine/lines/catenary_payout.hpp"
 
 namespace spiral::design {
@@ -36,12 +37,6 @@ constexpr double kStiffnessReuseDistance_m = 0.1;
 // 0.2-1 m from its cluster neighbour, and a riser's stiffness changes over
 // metres.
 constexpr double kRiserStiffnessReuseDistance_m = 1.0;
-
-Eigen::Matrix3d skew(const Eigen::Vector3d& a) {
-  Eigen::Matrix3d s;
-  s << 0.0, -a.z(), a.y(), a.z(), 0.0, -a.x(), -a.y(), a.x(), 0.0;
-  return s;
-}
 
 /// A mooring line of the scenario and how to rebuild it at a payout.
 struct PaidLine {
@@ -277,7 +272,8 @@ ScenarioResponse ScenarioModel::evaluate(const Eigen::VectorXd& payouts_m, bool 
       const engine::CatenarySegment& top = catenary.line().segments.back();
       const Eigen::Vector3d& e = catenary.last_direction_g();
       // Fairlead displacement per group, then the in-plane spans.
-      const Eigen::Matrix<double, 3, Eigen::Dynamic> dp = dq.topRows<3>() - skew(arm) * dq.bottomRows<3>();
+      const Eigen::Matrix<double, 3, Eigen::Dynamic> dp =
+          dq.topRows<3>() - engine::cross_product_matrix(arm) * dq.bottomRows<3>();
       Eigen::Matrix<double, 2, Eigen::Dynamic> dspan(2, group_count);
       dspan.row(0) = e.transpose() * dp;
       dspan.row(1) = dp.row(2);

@@ -57,6 +57,14 @@ inline Vector6d yaw_body_to_global(const Vector6d& load_b, double yaw_rad) {
   return g;
 }
 
+/// [a×], the matrix of the cross product: [a×] b = a × b. A small rotation
+/// θ moves a body point at arm a by θ × a = −[a×] θ.
+inline Eigen::Matrix3d cross_product_matrix(const Eigen::Vector3d& a) {
+  Eigen::Matrix3d m;
+  m << 0.0, -a.z(), a.y(), a.z(), 0.0, -a.x(), -a.y(), a.x(), 0.0;
+  return m;
+}
+
 /// The 6×6 rigid-body mass matrix about the reference point (body axes =
 /// global axes at rest) of a body of mass m with its centre of gravity at
 /// r_g and inertia tensor I_g about the centre of gravity:
@@ -64,9 +72,7 @@ inline Vector6d yaw_body_to_global(const Vector6d& load_b, double yaw_rad) {
 ///   [ m [r_g×]   I_g − m [r_g×][r_g×] ]   (Fossen 2011, §3.3; parallel axes)
 inline Matrix6d rigid_body_mass_matrix(double mass_kg, const Eigen::Vector3d& center_of_gravity_m,
                                        const Eigen::Matrix3d& inertia_about_cog_kg_m2) {
-  Eigen::Matrix3d s;
-  const Eigen::Vector3d& r = center_of_gravity_m;
-  s << 0.0, -r.z(), r.y(), r.z(), 0.0, -r.x(), -r.y(), r.x(), 0.0;
+  const Eigen::Matrix3d s = cross_product_matrix(center_of_gravity_m);
   Matrix6d m;
   m.topLeftCorner<3, 3>() = mass_kg * Eigen::Matrix3d::Identity();
   m.topRightCorner<3, 3>() = -mass_kg * s;
