@@ -87,6 +87,8 @@ class AnalyzeCommand : public Command {
     request.seed = seed_;
     request.line_dynamics = line_dynamics_;
     request.tolerance_scale = tolerance_scale_;
+    request.line_reduction =
+        line_reduction_ == "dynamic" ? design::LineReduction::dynamic : design::LineReduction::quasi_static;
     if (!decay_.empty()) {
       // m for the translations, deg for the rotations (as every output); the request takes rad.
       design::DynamicAnalysisRequest::FreeDecay decay;
@@ -126,6 +128,10 @@ class AnalyzeCommand : public Command {
     sub.add_option("--tolerance-scale", tolerance_scale_,
                    "The dynamic FE lines' (and the coupled system's) integrator tolerances x this; < 1 for a "
                    "convergence reference (default: 1)");
+    sub.add_option("--line-reduction", line_reduction_,
+                   "sc-enhanced: the lines' damping from their quasi-static shape (quasi-static, the default) or "
+                   "from their dynamic FE models (dynamic)")
+        ->check(CLI::IsMember({"quasi-static", "dynamic"}));
     sub.add_option("--decay", decay_,
                    "Free decay: the hull pulled this far from its static equilibrium and released, "
                    "surge,sway,heave (m),roll,pitch,yaw (deg); e.g. 10,0,0,0,0,0")
@@ -146,6 +152,7 @@ class AnalyzeCommand : public Command {
   bool line_dynamics_ = false;
   double tolerance_scale_ = 1.0;
   std::vector<double> decay_;
+  std::string line_reduction_ = "quasi-static";
   double release_s_ = 300.0;
 };
 

@@ -15,6 +15,7 @@
 #include "design/model/environment_loads.hpp"
 #include "design/model/hull_model.hpp"
 #include "design/analysis/coupled_analysis.hpp"
+#include "design/analysis/line_dynamic_reduction.hpp"
 #include "design/analysis/line_hydrodynamics.hpp"
 #include "design/model/mooring_model.hpp"
 #include "design/project/project_validation.hpp"
@@ -268,8 +269,8 @@ DynamicModel build_dynamic_model(const ValidatedProject& validated, const Dynami
   // Lines.
   const Eigen::Vector3d reference_point = project.hull.reference_point_g;
   const std::string damaged = load_case.damaged_line.value_or("");
-  engine::LinearizedLines linearized{model.statics.line_force, model.statics.dynamic_stiffness, model.statics.offset,
-                                     std::nullopt, std::nullopt};
+  engine::LinearizedLines linearized{
+      model.statics.line_force, model.statics.dynamic_stiffness, model.statics.offset, std::nullopt, std::nullopt, {}};
   if (request.level == AnalysisLevel::uncoupled) {
     auto mooring =
         std::make_shared<LineArrayModel>(build_mooring_model(project, *model.case_model.line_types, damaged));
@@ -438,9 +439,34 @@ DynamicModel build_dynamic_model(const ValidatedProject& validated, const Dynami
         fmt::join(request.decay->displacement, ", "), 0.5 * release_s, release_s));
   }
 
-  // Enhanced S-C: line damping and added mass at the fairleads, the drag
-  // linearized on the fairlead velocities of a first plain S-C run.
-  if (request.level == AnalysisLevel::semi_coupled_enhanced) {
+  // Enhanced S-C, dynamic reduction: every line's FE impedance about its
+  // current-loaded static state, fitted for the hull's equations.
+  if (request.level == AnalysisLevel::semi_coupled_enhanced && request.line_reduction == LineReduction::dynamic) {
+    engine::Stopwatch start;
+    const DynamicLineReduction reduced =
+        dynamic_line_reduction(project, *model.case_model.line_types, model.case_model.current, model.statics, damaged);
+    linearized.added_mass = reduced.added_mass;
+    linearized.damping = reduced.damping;
+    linearized.relaxations = reduced.relaxations;
+    model.line_added_mass = reduced.added_mass;
+    model.line_damping = reduced.damping;
+    model.line_relaxations = reduced.relaxations;
+    model.loads.lines = linearized;
+    model.timing.reduction_s += start.seconds();
+    model.notes.push_back(fmt::format(
+        "sc-enhanced: the damping, added mass and low-frequency stiffening of {} mooring lines and risers from "
+        "their dynamic FE models' impedance about the current-loaded equilibrium ({} frequencies, {:.3g}-{:.3g} "
+        "rad/s), fitted with a dashpot, an added mass and relaxations of {} (fit residual {:.1f} %; "
+        "design/analysis/line_dynamic_reduction.hpp); the waves' velocities on the lines are not in the drag's "
+        "linearization",
+        reduced.lines, reduced.frequencies, reduced.lowest_frequency_rad_per_s, reduced.highest_frequency_rad_per_s,
+        reduced.relaxation_summary, 100.0 * reduced.relative_residual));
+  }
+
+  // Enhanced S-C, quasi-static reduction: line damping and added mass at the
+  // fairleads, the drag linearized on the fairlead velocities of a first
+  // plain S-C run.
+  if (request.level == AnalysisLevel::semi_coupled_enhanced && request.line_reduction == LineReduction::quasi_static) {
     engine::Stopwatch start;
     // The plain S-C model as built so far (same forcing, same seed).
     const engine::HullTimeSeries plain = engine::simulate_hull(model.hull, model.loads, model.initial_offset,
@@ -483,6 +509,7 @@ DynamicAnalysisResult result_of_model(const DynamicModel& model, const DynamicAn
   result.mean_slow_drift_force = model.mean_slow_drift_force;
   result.line_added_mass = model.line_added_mass;
   result.line_damping = model.line_damping;
+  result.line_relaxations = model.line_relaxations;
   result.notes = model.notes;
   result.timing = model.timing;
   return result;

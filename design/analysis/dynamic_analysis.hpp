@@ -82,6 +82,12 @@ const char* to_string(AnalysisLevel level);
 /// Parses the CLI name; throws InputError (path `--level`) for anything else.
 AnalysisLevel parse_analysis_level(const std::string& name, const Project& project);
 
+/// How the enhanced S-C reduces the lines' damping and inertia to the hull:
+/// the quasi-static shape derivative (line_hydrodynamics.hpp), or the lines'
+/// dynamic FE models' impedance, fitted with relaxations
+/// (line_dynamic_reduction.hpp; mooring lines and risers).
+enum class LineReduction { quasi_static, dynamic };
+
 struct DynamicAnalysisRequest {
   std::string load_case;
   AnalysisLevel level = AnalysisLevel::semi_coupled;
@@ -116,6 +122,7 @@ struct DynamicAnalysisRequest {
     double release_s = 300.0;                                  ///< > 0, < duration
   };
   std::optional<FreeDecay> decay;
+  LineReduction line_reduction = LineReduction::quasi_static;  ///< sc-enhanced only
   /// The static case of this load case when the caller has it already
   /// (a stage runs every case's statics first); null: solved here. It must be
   /// run_static_case of `load_case` with its own damaged line. The S-C levels
@@ -163,6 +170,7 @@ struct DynamicModel {
   StaticCaseResult statics;                                    ///< the S-C static case
   std::optional<engine::Matrix6d> line_added_mass;             ///< sc-enhanced
   std::optional<engine::Matrix6d> line_damping;                ///< sc-enhanced
+  std::vector<engine::LineRelaxation> line_relaxations;        ///< sc-enhanced, dynamic reduction
   /// hull.hydrodynamics.radiation: memory — A(inf), the kernel and their diagnostics.
   std::optional<engine::RadiationMemory> radiation_memory;
   /// Morison hull in waves: the LF/WF split frequency of the integrated
@@ -209,7 +217,8 @@ struct DynamicAnalysisResult {
   engine::Vector6d mean_slow_drift_force = engine::Vector6d::Zero();
   std::optional<engine::Matrix6d> line_added_mass;
   std::optional<engine::Matrix6d> line_damping;
-  engine::CvodeStatistics solver;  ///< hull integrator (not the coupled level)
+  std::vector<engine::LineRelaxation> line_relaxations;  ///< sc-enhanced, dynamic reduction
+  engine::CvodeStatistics solver;                        ///< hull integrator (not the coupled level)
   /// Coupled level: the one IDA integration of hull + lines, and its size.
   std::optional<engine::IdaStatistics> coupled_solver;
   long coupled_state_size = 0;

@@ -121,6 +121,12 @@ nlohmann::json dynamic_analysis_to_json(const DynamicAnalysisResult& r, const st
   j["mean_slow_drift_force_N"] = drift;
   if (r.line_added_mass) j["line_added_mass"] = matrix_json(*r.line_added_mass);
   if (r.line_damping) j["line_damping"] = matrix_json(*r.line_damping);
+  if (!r.line_relaxations.empty()) {
+    nlohmann::json relaxations = nlohmann::json::array();
+    for (const engine::LineRelaxation& x : r.line_relaxations)
+      relaxations.push_back({{"time_constant_s", x.time_constant_s}, {"stiffness", matrix_json(x.stiffness)}});
+    j["line_relaxations"] = std::move(relaxations);
+  }
   nlohmann::json channels = nlohmann::json::array();
   if (r.times_s.size() >= 2) {
     for (int d = 0; d < 6; ++d) {

@@ -96,6 +96,13 @@ HullEquations make_hull_equations(const HullDynamicsModel& model, const HullLoad
       require_finite(*lin->damping, "lines.damping");
       eq.total_linear_damping += *lin->damping;
     }
+    for (const LineRelaxation& r : lin->relaxations) {
+      require_finite(r.stiffness, "lines.relaxations[].stiffness");
+      if (!(r.time_constant_s > 0.0) || !std::isfinite(r.time_constant_s)) {
+        throw std::invalid_argument(
+            fmt::format("hull dynamics: a line relaxation needs a time constant > 0 s, got {}", r.time_constant_s));
+      }
+    }
   } else if (!std::get<NonlinearLineForce>(loads.lines)) {
     throw std::invalid_argument("hull dynamics: the nonlinear line force callback is empty");
   }
@@ -131,10 +138,21 @@ Vector6d hull_generalized_force(const HullEquations& eq, double t_s, const Vecto
 void hull_state_derivative(const HullEquations& eq, const VelocityHistory* history, double t_s,
                            const Eigen::VectorXd& y, Eigen::VectorXd& ydot) {
   const Vector6d q = y.head<6>();
-  const Vector6d q_dot = y.tail<6>();
-  ydot.resize(12);
+  const Vector6d q_dot = y.segment<6>(6);
+  ydot.resize(y.size());
   ydot.head<6>() = q_dot;
-  ydot.tail<6>() = eq.total_mass_lu.solve(hull_generalized_force(eq, t_s, q, q_dot, history));
+  Vector6d f = hull_generalized_force(eq, t_s, q, q_dot, history);
+  if (const auto* lin = std::get_if<LinearizedLines>(&eq.loads.lines)) {
+    const Vector6d x = q - lin->equilibrium_offset;
+    for (std::size_t j = 0; j < lin->relaxations.size(); ++j) {
+      const LineRelaxation& r = lin->relaxations[j];
+      const Eigen::Index at = 12 + 6 * static_cast<Eigen::Index>(j);
+      const Vector6d unrelaxed = x - y.segment<6>(at);
+      f -= r.stiffness * unrelaxed;
+      ydot.segment<6>(at) = unrelaxed / r.time_constant_s;
+    }
+  }
+  ydot.segment<6>(6) = eq.total_mass_lu.solve(f);
 }
 
 CvodeOptions default_hull_integrator_options() {
@@ -166,8 +184,21 @@ HullTimeSeries simulate_hull(const HullDynamicsModel& model, const HullLoads& lo
                       t0, k, times[k]));
     }
   }
-  Eigen::VectorXd y0(12);
-  y0 << initial_position, initial_velocity;
+  // The lines' relaxations start relaxed (z = x: no force).
+  const auto* lin = std::get_if<LinearizedLines>(&loads.lines);
+  const Eigen::Index relaxations = lin != nullptr ? static_cast<Eigen::Index>(lin->relaxations.size()) : 0;
+  Eigen::VectorXd y0(12 + 6 * relaxations);
+  y0.head<12>() << initial_position, initial_velocity;
+  for (Eigen::Index j = 0; j < relaxations; ++j) y0.segment<6>(12 + 6 * j) = initial_position - lin->equilibrium_offset;
+  CvodeOptions integrator_options = options.integrator;
+  if (relaxations > 0 && integrator_options.absolute_tolerances &&
+      integrator_options.absolute_tolerances->size() == 12) {
+    // The relaxation states are positions: the positions' tolerances.
+    Eigen::VectorXd atol(y0.size());
+    atol.head<12>() = *integrator_options.absolute_tolerances;
+    for (Eigen::Index j = 0; j < relaxations; ++j) atol.segment<6>(12 + 6 * j) = atol.head<6>();
+    integrator_options.absolute_tolerances = atol;
+  }
 
   // The history is an input of the derivative; only this driver writes it,
   // between CVODE advances that stop exactly at the history times.
@@ -188,7 +219,7 @@ HullTimeSeries simulate_hull(const HullDynamicsModel& model, const HullLoads& lo
       [&eq, history_ptr](double t, const Eigen::VectorXd& y, Eigen::VectorXd& ydot) {
         hull_state_derivative(eq, history_ptr, t, y, ydot);
       },
-      t0, y0, options.integrator);
+      t0, y0, integrator_options);
 
   HullTimeSeries out;
   const auto n_out = static_cast<Eigen::Index>(times.size());
@@ -207,7 +238,7 @@ HullTimeSeries simulate_hull(const HullDynamicsModel& model, const HullLoads& lo
           integrator.set_stop_time(t_next);
           integrator.advance_to(t_next);
         }
-        history.velocities.col(history.count) = integrator.state().tail<6>();
+        history.velocities.col(history.count) = integrator.state().segment<6>(6);
         ++history.count;
       }
       if (t_target > integrator.time_s()) {
@@ -219,7 +250,7 @@ HullTimeSeries simulate_hull(const HullDynamicsModel& model, const HullLoads& lo
     }
     const Eigen::VectorXd& y = t_target == t0 ? y0 : integrator.state();
     out.position.col(k) = y.head<6>();
-    out.velocity.col(k) = y.tail<6>();
+    out.velocity.col(k) = y.segment<6>(6);
   }
   out.statistics = integrator.statistics();
   out.wall_clock_s = wall_start.seconds();

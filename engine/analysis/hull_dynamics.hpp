@@ -66,12 +66,29 @@ struct HullDynamicsModel {
 /// at the static equilibrium q0,  F = F0 − K (q − q0) − B_lines q'.
 /// The enhanced S-C adds B_lines (line damping) and A_lines (line added mass at
 /// the fairleads, added to M).
+/// A relaxation of the lines' stiffness (a Zener, or standard linear solid,
+/// element): with x = q − q0 and an internal state z (6, m and rad),
+///   F = −Δ (x − z),   τ ż = x − z,
+/// i.e. −Δ iωτ/(1 + iωτ) X at frequency ω: nothing for a slow motion (z
+/// follows x), the added stiffness Δ for a fast one, and most damping at
+/// ωτ = 1. A line restrained by a strong current stiffens so at low
+/// frequency: its current-loaded shape relaxes through the water
+/// (engine/lines/fe_line_impedance.hpp).
+struct LineRelaxation {
+  Matrix6d stiffness = Matrix6d::Zero();  ///< Δ, symmetric positive semi-definite, N/m, N·m/rad …
+  double time_constant_s = 0.0;           ///< τ, > 0
+};
+
 struct LinearizedLines {
   Vector6d force_at_equilibrium = Vector6d::Zero();  ///< F0, N, N·m
   Matrix6d stiffness = Matrix6d::Zero();             ///< K = −dF/dq at q0
   Vector6d equilibrium_offset = Vector6d::Zero();    ///< q0, m, rad
   std::optional<Matrix6d> damping;                   ///< B_lines (enhanced S-C)
   std::optional<Matrix6d> added_mass;                ///< A_lines (enhanced S-C)
+  /// The lines' frequency-dependent stiffness (enhanced S-C with the lines'
+  /// dynamic reduction): each adds six states to the hull's equations, which
+  /// start relaxed (z = x: no force).
+  std::vector<LineRelaxation> relaxations;
 };
 
 /// Uncoupled level: the lines as nonlinear quasi-static restoring forces,
@@ -130,7 +147,8 @@ HullEquations make_hull_equations(const HullDynamicsModel& model, const HullLoad
 Vector6d hull_generalized_force(const HullEquations& eq, double t_s, const Vector6d& q, const Vector6d& q_dot,
                                 const VelocityHistory* history);
 
-/// y' = f(model, loads, history, t, y) with y = [q; q']. Writes ydot only.
+/// y' = f(model, loads, history, t, y) with y = [q; q'; z_1 … z_R] (z_j: the
+/// states of the lines' relaxations, LinearizedLines::relaxations). Writes ydot only.
 void hull_state_derivative(const HullEquations& eq, const VelocityHistory* history, double t_s,
                            const Eigen::VectorXd& y, Eigen::VectorXd& ydot);
 

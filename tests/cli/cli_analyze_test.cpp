@@ -185,6 +185,29 @@ TEST(CliAnalyze, AReleaseAfterTheRunIsBadInputNamingTheFlag) {
   EXPECT_NE(result.err.find("--release"), std::string::npos) << result.err;
 }
 
+// The enhanced S-C with the lines' dynamic reduction: the summary carries
+// its relaxations (OC4: three chains, no risers, so one group of two).
+TEST(CliAnalyze, TheDynamicLineReductionWritesItsRelaxations) {
+  const auto out = std::filesystem::temp_directory_path() / ("spiral-analyze-reduction-" + std::to_string(::getpid()));
+  std::filesystem::remove_all(out);
+  const auto result = run_spiral("analyze " + scenario("oc4-semisubmersible.yaml") +
+                                 " --case intact-raft-jonswap --level sc-enhanced --line-reduction dynamic"
+                                 " --duration 300 --out '" +
+                                 out.string() + "'");
+  ASSERT_EQ(result.exit_code, app::kExitOk) << result.err;
+  const auto doc = nlohmann::json::parse(read_text(out / "summary.json"));
+  ASSERT_TRUE(doc.contains("line_relaxations")) << doc.dump().substr(0, 300);
+  ASSERT_EQ(doc["line_relaxations"].size(), 2u);
+  EXPECT_GT(doc["line_relaxations"][0]["time_constant_s"].get<double>(), 0.0);
+  EXPECT_TRUE(doc.contains("line_damping"));
+  const auto bad = run_spiral("analyze " + scenario("oc4-semisubmersible.yaml") +
+                              " --case intact-raft-jonswap --level sc-enhanced --line-reduction sometimes"
+                              " --out /tmp/spiral-never");
+  EXPECT_EQ(bad.exit_code, app::kExitBadInput);
+  EXPECT_NE(bad.err.find("--line-reduction"), std::string::npos) << bad.err;
+  std::filesystem::remove_all(out);
+}
+
 TEST(CliAnalyze, MissingRadiationFileIsBadInputWithFile) {
   const auto dir = std::filesystem::temp_directory_path() / ("spiral-analyze-bad-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
