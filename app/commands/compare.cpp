@@ -43,6 +43,8 @@ class CompareCommand : public Command {
     request.duration_s = duration_s_;
     request.output_step_s = step_s_;
     request.seed = seed_;
+    request.line_reduction =
+        line_reduction_ == "dynamic" ? design::LineReduction::dynamic : design::LineReduction::quasi_static;
     if (isatty(STDERR_FILENO)) request.progress = print_progress;
     const design::LevelComparison comparison = design::compare_levels(loaded, request);
     const std::filesystem::path folder = output_folder(
@@ -73,6 +75,10 @@ class CompareCommand : public Command {
     sub.add_option("--duration", duration_s_, "Simulated time, s (default: 10800)");
     sub.add_option("--step", step_s_, "Output step, s (default: 0.5)");
     sub.add_option("--seed", seed_, "Random seed of the realizations (default: 1)");
+    sub.add_option("--line-reduction", line_reduction_,
+                   "sc-enhanced: the lines' damping from their quasi-static shape (quasi-static, the default) or "
+                   "from their dynamic FE models (dynamic)")
+        ->check(CLI::IsMember({"quasi-static", "dynamic"}));
     sub.add_option("--out", out_, "Output folder (default: out/<project-stem>/compare/<case>-seed<N>)");
   }
 
@@ -80,6 +86,7 @@ class CompareCommand : public Command {
   double duration_s_ = 10800.0;
   double step_s_ = 0.5;
   std::uint64_t seed_ = 1;
+  std::string line_reduction_ = "quasi-static";
   std::string out_;
 };
 

@@ -91,6 +91,7 @@ LevelComparison compare_levels(const ValidatedProject& project, const Comparison
   c.case_name = request.load_case;
   c.seed = request.seed;
   c.duration_s = request.duration_s;
+  c.line_reduction = request.line_reduction;
   for (AnalysisLevel level : {AnalysisLevel::uncoupled, AnalysisLevel::semi_coupled,
                               AnalysisLevel::semi_coupled_enhanced, AnalysisLevel::coupled}) {
     DynamicAnalysisRequest r;
@@ -101,6 +102,7 @@ LevelComparison compare_levels(const ValidatedProject& project, const Comparison
     r.seed = request.seed;
     r.line_dynamics = level != AnalysisLevel::coupled;
     r.coupled_max_steps_between_outputs = request.coupled_max_steps_between_outputs;
+    r.line_reduction = request.line_reduction;
     if (request.progress) {
       const std::string name = to_string(level);
       r.progress = [p = request.progress, name](double f) { p(name, f); };

@@ -11,6 +11,7 @@ nlohmann::json comparison_to_json(const LevelComparison& c) {
   j["load_case"] = c.case_name;
   j["seed"] = c.seed;
   j["duration_s"] = c.duration_s;
+  j["sc_enhanced_line_reduction"] = c.line_reduction == LineReduction::dynamic ? "dynamic" : "quasi-static";
   const LevelSummary* coupled = find_level(c, AnalysisLevel::coupled);
   nlohmann::json levels;
   for (const LevelSummary& l : c.levels) {

@@ -113,11 +113,13 @@ TEST(CliAnalyze, CoupledLevelWritesItsSolverAndTensions) {
 // terminal and comparison.json with the keys the issue names.
 TEST(CliCompare, FourLevelsSideBySide) {
   const auto out = std::filesystem::temp_directory_path() / ("spiral-compare-" + std::to_string(::getpid()));
-  const auto result = run_spiral("compare " + scenario("oc4-semisubmersible.yaml") +
-                                 " --case intact-raft-jonswap --duration 300 --out " + out.string());
+  const auto result =
+      run_spiral("compare " + scenario("oc4-semisubmersible.yaml") +
+                 " --case intact-raft-jonswap --duration 300 --line-reduction dynamic --out " + out.string());
   ASSERT_EQ(result.exit_code, app::kExitOk) << result.err;
   EXPECT_NE(result.out.find("speed-up vs coupled"), std::string::npos) << result.out;
   const nlohmann::json j = nlohmann::json::parse(read_text((out / "comparison.json").string()));
+  EXPECT_EQ(j["sc_enhanced_line_reduction"], "dynamic");
   for (const char* level : {"uncoupled", "sc", "sc-enhanced", "coupled"}) {
     ASSERT_TRUE(j["levels"].contains(level)) << level;
     EXPECT_GT(j["levels"][level]["wall_s"].get<double>(), 0.0) << level;
