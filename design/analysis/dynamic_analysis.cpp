@@ -439,59 +439,54 @@ DynamicModel build_dynamic_model(const ValidatedProject& validated, const Dynami
         fmt::join(request.decay->displacement, ", "), 0.5 * release_s, release_s));
   }
 
-  // Enhanced S-C, dynamic reduction: every line's FE impedance about its
-  // current-loaded static state, fitted for the hull's equations.
-  if (request.level == AnalysisLevel::semi_coupled_enhanced && request.line_reduction == LineReduction::dynamic) {
+  // Enhanced S-C: the lines' damping and added mass (and, reduced
+  // dynamically, their low-frequency stiffening) at the hull.
+  if (request.level == AnalysisLevel::semi_coupled_enhanced) {
     engine::Stopwatch start;
-    const DynamicLineReduction reduced =
-        dynamic_line_reduction(project, *model.case_model.line_types, model.case_model.current, model.statics, damaged);
-    linearized.added_mass = reduced.added_mass;
-    linearized.damping = reduced.damping;
-    linearized.relaxations = reduced.relaxations;
-    model.line_added_mass = reduced.added_mass;
-    model.line_damping = reduced.damping;
-    model.line_relaxations = reduced.relaxations;
+    if (request.line_reduction == LineReduction::dynamic) {
+      // Every line's FE impedance about its current-loaded static state,
+      // fitted for the hull's equations.
+      const DynamicLineReduction reduced = dynamic_line_reduction(project, *model.case_model.line_types,
+                                                                  model.case_model.current, model.statics, damaged);
+      linearized.added_mass = reduced.added_mass;
+      linearized.damping = reduced.damping;
+      linearized.relaxations = reduced.relaxations;
+      model.notes.push_back(fmt::format(
+          "sc-enhanced: the damping, added mass and low-frequency stiffening of {} mooring lines and risers from "
+          "their dynamic FE models' impedance about the current-loaded equilibrium ({} frequencies, {:.3g}-{:.3g} "
+          "rad/s), fitted with a dashpot, an added mass and relaxations of {} (fit residual {:.1f} %; "
+          "design/analysis/line_dynamic_reduction.hpp); the waves' velocities on the lines are not in the drag's "
+          "linearization",
+          reduced.lines, reduced.frequencies, reduced.lowest_frequency_rad_per_s, reduced.highest_frequency_rad_per_s,
+          reduced.relaxation_summary, 100.0 * reduced.relative_residual));
+    } else {
+      // The quasi-static shape derivative, the drag linearized on the
+      // fairlead velocities of a first plain S-C run (same forcing, same seed).
+      const engine::HullTimeSeries plain = engine::simulate_hull(model.hull, model.loads, model.initial_offset,
+                                                                 engine::Vector6d::Zero(), forced_run_options(request));
+      Eigen::Matrix<double, 6, Eigen::Dynamic> motion = plain.position;
+      if (const auto wf = wave_frequency_motions(validated, model, plain.times_s)) motion += *wf;
+      LineArrayModel mooring = build_mooring_model(project, *model.case_model.line_types, damaged);
+      std::vector<Eigen::Vector3d> fairleads_b;
+      for (const auto& line : mooring.lines) fairleads_b.push_back(line->attachment_b());
+      const auto covariance =
+          engine::fairlead_velocity_covariance(fairleads_b, reference_point, motion, request.output_step_s);
+      const LineHydrodynamicsResult lines =
+          line_hydrodynamics(mooring, engine::pose_from_offset(reference_point, model.statics.offset), covariance,
+                             rho_w, model.case_model.current ? &*model.case_model.current : nullptr);
+      linearized.added_mass = lines.added_mass;
+      linearized.damping = lines.damping;
+      model.notes.push_back(
+          "sc-enhanced: mooring-line damping and added mass from the quasi-static line shape derivative "
+          "(normal Morison drag linearized stochastically about the current at each node for the velocities "
+          "of a first sc run, Atalik & Utku 1976); the current's effect on the line shape, the risers' "
+          "damping and line dynamics neglected in these matrices");
+    }
+    model.line_added_mass = linearized.added_mass;
+    model.line_damping = linearized.damping;
+    model.line_relaxations = linearized.relaxations;
     model.loads.lines = linearized;
     model.timing.reduction_s += start.seconds();
-    model.notes.push_back(fmt::format(
-        "sc-enhanced: the damping, added mass and low-frequency stiffening of {} mooring lines and risers from "
-        "their dynamic FE models' impedance about the current-loaded equilibrium ({} frequencies, {:.3g}-{:.3g} "
-        "rad/s), fitted with a dashpot, an added mass and relaxations of {} (fit residual {:.1f} %; "
-        "design/analysis/line_dynamic_reduction.hpp); the waves' velocities on the lines are not in the drag's "
-        "linearization",
-        reduced.lines, reduced.frequencies, reduced.lowest_frequency_rad_per_s, reduced.highest_frequency_rad_per_s,
-        reduced.relaxation_summary, 100.0 * reduced.relative_residual));
-  }
-
-  // Enhanced S-C, quasi-static reduction: line damping and added mass at the
-  // fairleads, the drag linearized on the fairlead velocities of a first
-  // plain S-C run.
-  if (request.level == AnalysisLevel::semi_coupled_enhanced && request.line_reduction == LineReduction::quasi_static) {
-    engine::Stopwatch start;
-    // The plain S-C model as built so far (same forcing, same seed).
-    const engine::HullTimeSeries plain = engine::simulate_hull(model.hull, model.loads, model.initial_offset,
-                                                               engine::Vector6d::Zero(), forced_run_options(request));
-    Eigen::Matrix<double, 6, Eigen::Dynamic> motion = plain.position;
-    if (const auto wf = wave_frequency_motions(validated, model, plain.times_s)) motion += *wf;
-    LineArrayModel mooring = build_mooring_model(project, *model.case_model.line_types, damaged);
-    std::vector<Eigen::Vector3d> fairleads_b;
-    for (const auto& line : mooring.lines) fairleads_b.push_back(line->attachment_b());
-    const auto covariance =
-        engine::fairlead_velocity_covariance(fairleads_b, reference_point, motion, request.output_step_s);
-    const LineHydrodynamicsResult lines =
-        line_hydrodynamics(mooring, engine::pose_from_offset(reference_point, model.statics.offset), covariance, rho_w,
-                           model.case_model.current ? &*model.case_model.current : nullptr);
-    linearized.added_mass = lines.added_mass;
-    linearized.damping = lines.damping;
-    model.line_added_mass = lines.added_mass;
-    model.line_damping = lines.damping;
-    model.loads.lines = linearized;
-    model.timing.reduction_s += start.seconds();
-    model.notes.push_back(
-        "sc-enhanced: mooring-line damping and added mass from the quasi-static line shape derivative "
-        "(normal Morison drag linearized stochastically about the current at each node for the velocities "
-        "of a first sc run, Atalik & Utku 1976); the current's effect on the line shape, the risers' "
-        "damping and line dynamics neglected in these matrices");
   }
   return model;
 }
