@@ -12,6 +12,7 @@
 
 #include "engine/analysis/static_equilibrium.hpp"
 #include "engine/analysis/static_line.hpp"
+#include "engine/lines/fe_line_statics.hpp"
 
 namespace spiral::test {
 
@@ -52,6 +53,24 @@ inline std::vector<std::unique_ptr<engine::StaticLine>> oc4_static_lines(double 
     lines.push_back(std::make_unique<engine::CatenaryStaticLine>(l.name, l.anchor_g, l.fairlead_b, 0.0, l.line));
   }
   return lines;
+}
+
+/// The first OC4 chain as an FE line: 835.35 m in 40 elements, EA and mass
+/// of the MAP deck's chain, normal drag 2 and added mass 1 on 0.0766 m.
+/// (Added mass acts in the dynamics only.)
+inline engine::FeLineModel oc4_fe_chain_model() {
+  engine::FeLineSection section;
+  section.length_m = 835.35;
+  section.EA_N = 7.536e8;
+  section.weight_N_per_m = oc4_lines(0.0).front().line.segments[0].weight_N_per_m;
+  section.mass_kg_per_m = 113.35;
+  section.hydro_diameter_m = 0.0766;
+  section.drag_normal = 2.0;
+  section.added_mass_normal = 1.0;
+  section.element_length_m = 835.35 / 40.0;
+  engine::FeLineModel model;
+  model.sections = {section};
+  return model;
 }
 
 /// The OC4 full system (platform + tower + RNA) hydrostatics as quoted in

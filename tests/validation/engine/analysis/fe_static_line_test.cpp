@@ -34,16 +34,7 @@ constexpr double kStiffnessVsFixedMesh = 1e-6;
 
 std::unique_ptr<FeStaticLine> oc4_fe_line(double current_m_per_s, FeStaticsOptions options = {}) {
   const test::Oc4Line oc4 = test::oc4_lines(0.0).front();
-  FeLineModel model;
-  FeLineSection section;
-  section.length_m = 835.35;
-  section.EA_N = 7.536e8;
-  section.weight_N_per_m = oc4.line.segments[0].weight_N_per_m;
-  section.mass_kg_per_m = 113.35;
-  section.hydro_diameter_m = 0.0766;
-  section.drag_normal = 2.0;
-  section.element_length_m = 835.35 / 40.0;
-  model.sections = {section};
+  const FeLineModel model = test::oc4_fe_chain_model();
   FeEnvironment environment;
   environment.seabed_z_m = -200.0;
   environment.seabed_stiffness_N_per_m2 = 1e7;

@@ -25,16 +25,7 @@ struct Oc4ChainInCurrent {
 
   explicit Oc4ChainInCurrent(double current_m_per_s) {
     const test::Oc4Line oc4 = test::oc4_lines(0.0).front();
-    FeLineSection section;
-    section.length_m = 835.35;
-    section.EA_N = 7.536e8;
-    section.weight_N_per_m = oc4.line.segments[0].weight_N_per_m;
-    section.mass_kg_per_m = 113.35;
-    section.hydro_diameter_m = 0.0766;
-    section.drag_normal = 2.0;
-    section.added_mass_normal = 1.0;
-    section.element_length_m = 835.35 / 40.0;
-    model.sections = {section};
+    model = test::oc4_fe_chain_model();
     environment.statics.seabed_z_m = -200.0;
     environment.statics.seabed_stiffness_N_per_m2 = 1e7;
     environment.statics.current = {{-200.0, {current_m_per_s, 0.3 * current_m_per_s, 0.0}},
