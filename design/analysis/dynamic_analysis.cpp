@@ -443,11 +443,18 @@ DynamicModel build_dynamic_model(const ValidatedProject& validated, const Dynami
   // dynamically, their low-frequency stiffening) at the hull.
   if (request.level == AnalysisLevel::semi_coupled_enhanced) {
     engine::Stopwatch start;
+    // The lines' drag is linearized on the hull motion of a first plain S-C
+    // run (same forcing, same seed), its wave-frequency motion included.
+    const engine::HullTimeSeries plain = engine::simulate_hull(model.hull, model.loads, model.initial_offset,
+                                                               engine::Vector6d::Zero(), forced_run_options(request));
+    Eigen::Matrix<double, 6, Eigen::Dynamic> motion = plain.position;
+    if (const auto wf = wave_frequency_motions(validated, model, plain.times_s)) motion += *wf;
     if (request.line_reduction == LineReduction::dynamic) {
       // Every line's FE impedance about its current-loaded static state,
       // fitted for the hull's equations.
-      const DynamicLineReduction reduced = dynamic_line_reduction(project, *model.case_model.line_types,
-                                                                  model.case_model.current, model.statics, damaged);
+      const DynamicLineReduction reduced =
+          dynamic_line_reduction(project, *model.case_model.line_types, model.case_model.current, model.statics,
+                                 damaged, motion, request.output_step_s);
       linearized.added_mass = reduced.added_mass;
       linearized.damping = reduced.damping;
       linearized.relaxations = reduced.relaxations;
@@ -455,17 +462,13 @@ DynamicModel build_dynamic_model(const ValidatedProject& validated, const Dynami
           "sc-enhanced: the damping, added mass and low-frequency stiffening of {} mooring lines and risers from "
           "their dynamic FE models' impedance about the current-loaded equilibrium ({} frequencies, {:.3g}-{:.3g} "
           "rad/s), fitted with a dashpot, an added mass and relaxations of {} (fit residual {:.1f} %; "
-          "design/analysis/line_dynamic_reduction.hpp); the waves' velocities on the lines are not in the drag's "
-          "linearization",
+          "design/analysis/line_dynamic_reduction.hpp); the normal drag linearized stochastically on the lines' "
+          "quasi-static motion for the velocities of a first sc run (Atalik & Utku 1976); the waves' velocities "
+          "on the lines are not in the drag's linearization",
           reduced.lines, reduced.frequencies, reduced.lowest_frequency_rad_per_s, reduced.highest_frequency_rad_per_s,
           reduced.relaxation_summary, 100.0 * reduced.relative_residual));
     } else {
-      // The quasi-static shape derivative, the drag linearized on the
-      // fairlead velocities of a first plain S-C run (same forcing, same seed).
-      const engine::HullTimeSeries plain = engine::simulate_hull(model.hull, model.loads, model.initial_offset,
-                                                                 engine::Vector6d::Zero(), forced_run_options(request));
-      Eigen::Matrix<double, 6, Eigen::Dynamic> motion = plain.position;
-      if (const auto wf = wave_frequency_motions(validated, model, plain.times_s)) motion += *wf;
+      // The quasi-static shape derivative.
       LineArrayModel mooring = build_mooring_model(project, *model.case_model.line_types, damaged);
       std::vector<Eigen::Vector3d> fairleads_b;
       for (const auto& line : mooring.lines) fairleads_b.push_back(line->attachment_b());

@@ -1,5 +1,6 @@
 #include "design/analysis/line_dynamic_reduction.hpp"
 
+#include <array>
 #include <cmath>
 #include <tuple>
 
@@ -7,6 +8,7 @@
 
 #include "design/analysis/line_dynamics.hpp"
 #include "design/model/riser_model.hpp"
+#include "engine/analysis/fairlead_velocity.hpp"
 #include "engine/analysis/line_relaxation_fit.hpp"
 #include "engine/common/parallel_for.hpp"
 #include "engine/common/rigid_body.hpp"
@@ -26,7 +28,9 @@ constexpr double kHighestFrequency_rad_per_s = 0.2;
 
 DynamicLineReduction dynamic_line_reduction(const Project& project, const std::vector<LineTypeProperties>& types,
                                             const std::optional<engine::CurrentProfile>& current,
-                                            const StaticCaseResult& statics, const std::string& damaged_line) {
+                                            const StaticCaseResult& statics, const std::string& damaged_line,
+                                            const Eigen::Matrix<double, 6, Eigen::Dynamic>& hull_motion,
+                                            double motion_step_s) {
   const engine::HullPose pose = engine::pose_from_offset(project.hull.reference_point_g, statics.offset);
   std::vector<double> omegas{0.0};
   for (int k = 0; k < kBandFrequencies; ++k) {
@@ -58,8 +62,11 @@ DynamicLineReduction dynamic_line_reduction(const Project& project, const std::v
     }
     setup.environment.statics.seabed_axial_friction = 0.0;
     setup.environment.seabed_lateral_friction = 0.0;
+    const std::array<Eigen::Vector3d, 1> attachments{attachment_b};
+    const Eigen::Matrix3d velocity_covariance = engine::fairlead_velocity_covariance(
+        attachments, project.hull.reference_point_g, hull_motion, motion_step_s)[0];
     const std::vector<engine::Matrix3cd> K =
-        engine::end_B_dynamic_stiffness(setup.model, setup.environment, setup.statics, omegas);
+        engine::end_B_dynamic_stiffness(setup.model, setup.environment, setup.statics, omegas, velocity_covariance);
     Eigen::Matrix<double, 3, 6> T;
     T << Eigen::Matrix3d::Identity(), -engine::cross_product_matrix(pose.rotation * attachment_b);
     const Eigen::Matrix<std::complex<double>, 3, 6> Tc = T.cast<std::complex<double>>();

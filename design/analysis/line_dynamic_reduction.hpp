@@ -12,16 +12,20 @@
 // carry (docs/decisions/enhanced-sc-accuracy.md). The S-C's K stays the
 // static one (K_dyn(0)); the relaxations add to it as frequency rises.
 //
-// The drag is linearized about the current (the line at rest): the waves'
-// velocities on the line are not in it. Seabed friction is left out (it
+// The drag is linearized stochastically on each line's own motion: the
+// hull's motion record (its low- and wave-frequency motion) gives each
+// fairlead's velocity covariance, and the line follows its fairlead
+// quasi-statically in the expected drag slope (as the quasi-static
+// reduction does); the waves' own velocities on the line are not in it.
+// Seabed friction is left out (it
 // has no linear form at rest; with it the default FPS's offset std moved
 // by 0.03 %).
 //
-// Measured on the default FPS (1800 s, seed 1), horizontal-offset std
-// against the coupled level: lc1 −3.9 %, lc2 −3.4 %, lc5 −1.1 % (the
-// quasi-static reduction: +0.1 %, −6.4 %, −8.8 %); the reduction costs
-// ≈ 1 s of CPU for 16 mooring lines and 12 risers
-// (docs/decisions/enhanced-sc-accuracy.md).
+// Measured against the coupled level (default FPS 1800 s, OC4 1200 s, seed
+// 1), horizontal-offset std: lc1 −4.6 %, lc2 −3.5 %, lc3 −3.3 %, lc4
+// −4.5 %, lc5 −1.1 %, OC4 +1.5 % (the quasi-static reduction: +0.1 %,
+// −6.3 %, −8.3 %, −6.2 %, −8.8 %, +2.9 %); the reduction costs ≈ 1 s of
+// CPU for 16 mooring lines and 12 risers (docs/decisions/enhanced-sc-accuracy.md).
 //
 // Errors: engine::SolverError naming the line when its FE statics fail.
 
@@ -52,9 +56,13 @@ struct DynamicLineReduction {
 /// hull's equilibrium of `statics` in `current`; the mooring lines and the
 /// risers fitted apart. A mooring line's FE statics start again from its
 /// catenary profile in `statics` when the default initial shape fails (as
-/// the coupled level's do).
+/// the coupled level's do). `hull_motion` (offsets from the origin, m and
+/// rad, one column per `motion_step_s`) linearizes the lines' drag; with
+/// fewer than three columns the drag is linearized about the current.
 DynamicLineReduction dynamic_line_reduction(const Project& project, const std::vector<LineTypeProperties>& types,
                                             const std::optional<engine::CurrentProfile>& current,
-                                            const StaticCaseResult& statics, const std::string& damaged_line);
+                                            const StaticCaseResult& statics, const std::string& damaged_line,
+                                            const Eigen::Matrix<double, 6, Eigen::Dynamic>& hull_motion,
+                                            double motion_step_s);
 
 }  // namespace spiral::design

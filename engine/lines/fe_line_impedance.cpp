@@ -6,70 +6,158 @@
 
 #include "engine/common/solver_error.hpp"
 #include "engine/lines/fe_dynamic_line.hpp"
+#include "engine/lines/stochastic_drag.hpp"
 
 namespace spiral::engine {
+namespace {
+
+using Complex = std::complex<double>;
+
+/// D(ω) = K + iω C + ω² M of the line, partitioned into its free DOFs (f)
+/// and end B's position (B).
+struct PartitionedDynamicMatrix {
+  Eigen::SparseMatrix<Complex> ff;
+  Eigen::Matrix<Complex, Eigen::Dynamic, 3> fB;
+  Eigen::Matrix<Complex, 3, Eigen::Dynamic> Bf;
+  Matrix3cd BB;
+};
+
+struct DofPartition {
+  std::vector<int> index;  // free DOF number, −1 for a fixed DOF
+  int free_count = 0;
+  int end_B = 0;  // end B's first position DOF
+  int input_of(int dof) const { return dof >= end_B && dof < end_B + 3 ? dof - end_B : -1; }
+};
+
+PartitionedDynamicMatrix partitioned_matrix(const fe_detail::DynamicLine& line, const DofPartition& dofs,
+                                            double omega) {
+  std::vector<Eigen::Triplet<Complex>> ff;
+  PartitionedDynamicMatrix D;
+  D.fB = Eigen::Matrix<Complex, Eigen::Dynamic, 3>::Zero(dofs.free_count, 3);
+  D.Bf = Eigen::Matrix<Complex, 3, Eigen::Dynamic>::Zero(3, dofs.free_count);
+  D.BB = Matrix3cd::Zero();
+  for (std::size_t e = 0; e < line.p.elements.size(); ++e) {
+    const ancf::ElementDynamicMatrices& m = line.element_matrices[e];
+    for (int a = 0; a < fe_detail::kElementDofs; ++a) {
+      const int ga = line.element_dofs[e][static_cast<std::size_t>(a)];
+      for (int b = 0; b < fe_detail::kElementDofs; ++b) {
+        const int gb = line.element_dofs[e][static_cast<std::size_t>(b)];
+        const auto k = static_cast<std::size_t>(fe_detail::kElementDofs * a + b);
+        const Complex d(m.K[k] + omega * omega * m.M[k], omega * m.C[k]);
+        const int ia = dofs.index[static_cast<std::size_t>(ga)], ib = dofs.index[static_cast<std::size_t>(gb)];
+        const int xa = dofs.input_of(ga), xb = dofs.input_of(gb);
+        if (ia >= 0 && ib >= 0)
+          ff.emplace_back(ia, ib, d);
+        else if (ia >= 0 && xb >= 0)
+          D.fB(ia, xb) += d;
+        else if (xa >= 0 && ib >= 0)
+          D.Bf(xa, ib) += d;
+        else if (xa >= 0 && xb >= 0)
+          D.BB(xa, xb) += d;
+      }
+    }
+  }
+  D.ff.resize(dofs.free_count, dofs.free_count);
+  D.ff.setFromTriplets(ff.begin(), ff.end());
+  return D;
+}
+
+/// Re-linearizes every element's normal drag in C on the line's own motion:
+/// the expected slope of |w| w (stochastic_drag.hpp) for the normal relative
+/// velocity w = current − ṙ with ṙ the quasi-static response of the line to
+/// end B's velocity, ṙ = J v_B, J = −K_ff⁻¹ K_fB at each Gauss point —
+/// the enhanced S-C's quasi-static reduction does the same with the
+/// catenary's shape derivative (design/analysis/line_hydrodynamics.hpp).
+/// The tangential drag keeps its slope at the current (its coefficient is a
+/// tenth of the normal one's, and a motion along the line is small).
+void linearize_drag_on_motion(fe_detail::DynamicLine& line, const DofPartition& dofs,
+                              const Eigen::Matrix<Complex, Eigen::Dynamic, 3>& static_response,
+                              const Eigen::Matrix3d& end_B_velocity_covariance, const Eigen::VectorXd& q0) {
+  for (std::size_t e = 0; e < line.p.elements.size(); ++e) {
+    const ancf::ElementProperties& element = line.p.elements[e];
+    if (!(element.normal_drag_N_s2_per_m3 > 0.0)) continue;
+    // Each element DOF's quasi-static motion per unit end-B motion.
+    Eigen::Matrix<double, fe_detail::kElementDofs, 3> transfer =
+        Eigen::Matrix<double, fe_detail::kElementDofs, 3>::Zero();
+    for (int a = 0; a < fe_detail::kElementDofs; ++a) {
+      const int g = line.element_dofs[e][static_cast<std::size_t>(a)];
+      if (const int i = dofs.index[static_cast<std::size_t>(g)]; i >= 0)
+        transfer.row(a) = -static_response.row(i).real();
+      else if (const int x = dofs.input_of(g); x >= 0)
+        transfer(a, x) = 1.0;
+    }
+    const fe_detail::ElementState qe = fe_detail::gather(line.p, q0, e);
+    ancf::ElementFluid fluid;
+    if (!line.still_water) line.fluid_at(line.options.start_time_s, e, qe.data(), fluid);
+    for (std::size_t gp = 0; gp < ancf::kGaussXi.size(); ++gp) {
+      const ancf::ShapeAt& sh = line.shapes[e][gp];
+      Eigen::Vector3d slope = Eigen::Vector3d::Zero();
+      Eigen::Matrix3d J = Eigen::Matrix3d::Zero();
+      for (int k = 0; k < 4; ++k) {
+        slope += sh.dS[k] * Eigen::Vector3d(qe[3 * k], qe[3 * k + 1], qe[3 * k + 2]);
+        J += sh.S[k] * transfer.middleRows<3>(3 * k);
+      }
+      const double stretched = slope.norm();
+      const Eigen::Vector3d t = slope / stretched;
+      const Eigen::Matrix3d Pn = Eigen::Matrix3d::Identity() - t * t.transpose();
+      const Eigen::Vector3d u(fluid.velocity[gp][0], fluid.velocity[gp][1], fluid.velocity[gp][2]);
+      const Eigen::Matrix3d PJ = Pn * J;
+      const Eigen::Matrix3d change = expected_drag_slope(t, Pn * u, PJ * end_B_velocity_covariance * PJ.transpose()) -
+                                     expected_drag_slope(t, Pn * u, Eigen::Matrix3d::Zero());
+      // C = ∂G/∂ṙ and ∂w/∂ṙ = −I.
+      double block[3][3];
+      for (int x = 0; x < 3; ++x)
+        for (int y = 0; y < 3; ++y) block[x][y] = -element.normal_drag_N_s2_per_m3 * stretched * change(x, y);
+      ancf::detail::add_outer(line.element_matrices[e].C, sh.S, sh.S, block, ancf::kGaussW[gp] * element.length_m);
+    }
+  }
+}
+
+}  // namespace
 
 std::vector<Matrix3cd> end_B_dynamic_stiffness(const FeLineModel& model, const FeDynamicEnvironment& environment,
-                                               const FeStaticsResult& state, std::span<const double> omegas_rad_per_s) {
-  using Complex = std::complex<double>;
+                                               const FeStaticsResult& state, std::span<const double> omegas_rad_per_s,
+                                               const Eigen::Matrix3d& end_B_velocity_covariance) {
   fe_detail::DynamicLine line;
   FeDynamicsOptions options;
   options.end_B = FeEndCondition::fixed;                // its DOFs are the input X below
   line.initialize(model, environment, state, options);  // evaluates every element's M, C, K at rest
 
   // Free DOFs numbered 0.. for the sparse system; end B's three position DOFs apart.
-  const int end_B = line.p.r_dof.back();
-  std::vector<int> index(static_cast<std::size_t>(line.n), -1);
-  int free_count = 0;
+  DofPartition dofs;
+  dofs.end_B = line.p.r_dof.back();
+  dofs.index.assign(static_cast<std::size_t>(line.n), -1);
   for (int i = 0; i < line.n; ++i) {
-    if (!line.fixed(i)) index[static_cast<std::size_t>(i)] = free_count++;
+    if (!line.fixed(i)) dofs.index[static_cast<std::size_t>(i)] = dofs.free_count++;
   }
-  auto input_of = [&](int dof) { return dof >= end_B && dof < end_B + 3 ? dof - end_B : -1; };
 
-  std::vector<Matrix3cd> out;
   // One ordering and symbolic analysis for every frequency: the pattern is the mesh's.
   Eigen::SparseLU<Eigen::SparseMatrix<Complex>> lu;
   bool analysed = false;
-  for (const double omega : omegas_rad_per_s) {
-    if (!(omega >= 0.0)) throw SolverError(fmt::format("end_B_dynamic_stiffness: omega must be >= 0, got {}", omega));
-    std::vector<Eigen::Triplet<Complex>> ff;
-    Eigen::Matrix<Complex, Eigen::Dynamic, 3> fB = Eigen::Matrix<Complex, Eigen::Dynamic, 3>::Zero(free_count, 3);
-    Eigen::Matrix<Complex, 3, Eigen::Dynamic> Bf = Eigen::Matrix<Complex, 3, Eigen::Dynamic>::Zero(3, free_count);
-    Matrix3cd BB = Matrix3cd::Zero();
-    for (std::size_t e = 0; e < line.p.elements.size(); ++e) {
-      const ancf::ElementDynamicMatrices& m = line.element_matrices[e];
-      for (int a = 0; a < fe_detail::kElementDofs; ++a) {
-        const int ga = line.element_dofs[e][static_cast<std::size_t>(a)];
-        for (int b = 0; b < fe_detail::kElementDofs; ++b) {
-          const int gb = line.element_dofs[e][static_cast<std::size_t>(b)];
-          const auto k = static_cast<std::size_t>(fe_detail::kElementDofs * a + b);
-          const Complex d(m.K[k] + omega * omega * m.M[k], omega * m.C[k]);
-          const int ia = index[static_cast<std::size_t>(ga)], ib = index[static_cast<std::size_t>(gb)];
-          const int xa = input_of(ga), xb = input_of(gb);
-          if (ia >= 0 && ib >= 0)
-            ff.emplace_back(ia, ib, d);
-          else if (ia >= 0 && xb >= 0)
-            fB(ia, xb) += d;
-          else if (xa >= 0 && ib >= 0)
-            Bf(xa, ib) += d;
-          else if (xa >= 0 && xb >= 0)
-            BB(xa, xb) += d;
-        }
-      }
-    }
-    Eigen::SparseMatrix<Complex> D(free_count, free_count);
-    D.setFromTriplets(ff.begin(), ff.end());
+  auto solve = [&](double omega) {
+    PartitionedDynamicMatrix D = partitioned_matrix(line, dofs, omega);
     if (!analysed) {
-      lu.analyzePattern(D);
+      lu.analyzePattern(D.ff);
       analysed = true;
     }
-    lu.factorize(D);
+    lu.factorize(D.ff);
     if (lu.info() != Eigen::Success) {
       throw SolverError(
           fmt::format("end_B_dynamic_stiffness: the line's dynamic matrix at {} rad/s is singular", omega));
     }
-    const Eigen::Matrix<Complex, Eigen::Dynamic, 3> response = lu.solve(fB);
-    out.push_back(-(BB - Bf * response));
+    const Eigen::Matrix<Complex, Eigen::Dynamic, 3> response = lu.solve(D.fB);
+    return std::pair{std::move(D), response};
+  };
+
+  if (!end_B_velocity_covariance.isZero(0.0)) {
+    linearize_drag_on_motion(line, dofs, solve(0.0).second, end_B_velocity_covariance, state.state);
+  }
+
+  std::vector<Matrix3cd> out;
+  for (const double omega : omegas_rad_per_s) {
+    if (!(omega >= 0.0)) throw SolverError(fmt::format("end_B_dynamic_stiffness: omega must be >= 0, got {}", omega));
+    const auto [D, response] = solve(omega);
+    out.push_back(-(D.BB - D.Bf * response));
   }
   return out;
 }

@@ -19,7 +19,14 @@
 // Re K_dyn grows with ω (docs/decisions/enhanced-sc-accuracy.md).
 //
 // The drag is linearized about the current (the slope of the steady drag,
-// the line at rest): the line's own wave-frequency motion is not in it.
+// the line at rest) or, given the velocity covariance of end B's motion
+// (its low- and wave-frequency motion together), stochastically about it:
+// the expected slope of the normal drag |w| w over the Gaussian normal
+// relative velocity at each Gauss point, the line following end B
+// quasi-statically (stochastic_drag.hpp). A line swept by the hull's wave-
+// frequency motion damps a slow motion more than the current alone does —
+// in a mild current (OC4: 0.5 m/s, the fairleads' WF velocity std ~1 m/s)
+// several times more.
 // Seabed friction, regularized at rest, would enter as a stiff dashpot: it
 // is left out (the caller gives an environment without friction for lines
 // with a laid part).
@@ -39,8 +46,12 @@ namespace spiral::engine {
 using Matrix3cd = Eigen::Matrix<std::complex<double>, 3, 3>;
 
 /// K_dyn(ω) (N/m, complex; global axes) of `model` about the static solution
-/// `state` (end B at its last node) in `environment`, at each ω (rad/s, >= 0).
-std::vector<Matrix3cd> end_B_dynamic_stiffness(const FeLineModel& model, const FeDynamicEnvironment& environment,
-                                               const FeStaticsResult& state, std::span<const double> omegas_rad_per_s);
+/// `state` (end B at its last node) in `environment`, at each ω (rad/s, >= 0);
+/// the drag linearized on end B's motion of velocity covariance
+/// `end_B_velocity_covariance` ((m/s)², global; zero: about the current).
+std::vector<Matrix3cd> end_B_dynamic_stiffness(
+    const FeLineModel& model, const FeDynamicEnvironment& environment, const FeStaticsResult& state,
+    std::span<const double> omegas_rad_per_s,
+    const Eigen::Matrix3d& end_B_velocity_covariance = Eigen::Matrix3d::Zero());
 
 }  // namespace spiral::engine

@@ -1,12 +1,14 @@
 // The enhanced S-C with the lines' dynamic reduction (LineReduction::dynamic,
 // design/analysis/line_dynamic_reduction.hpp) against the coupled level on
-// the default FPS's 45° cases, where the quasi-static reduction is 6–9 %
-// low on the offset's standard deviation (issue 17 §1: within 5 %; lc3's
-// damaged L2 also needs the catenary start of its FE statics).
+// every case of the default FPS and on OC4 (issue 17 §1: the offset's
+// standard deviation within 5 %), where the quasi-static reduction is 6–9 %
+// low in four of the FPS's five cases (lc3's damaged L2 also needs the
+// catenary start of its FE statics).
 //
 // The coupled statistics are stored, not recomputed (a coupled 1800 s run
 // takes 8 minutes): `spiral analyze scenarios/deepwater-fps.yaml --case C
-// --level coupled --duration 1800` (seed 1), 2026-12-07, the build of 06685f9 —
+// --level coupled --duration 1800` (seed 1), 2026-12-07, the build of 06685f9,
+// and OC4's `--case intact-raft-jonswap --duration 1200` —
 // the horizontal offset sqrt(surge² + sway²) of the whole record. A change
 // of the coupled level that moves them must update them here.
 #include <gtest/gtest.h>
@@ -25,31 +27,42 @@ double horizontal_offset_std_m(const DynamicAnalysisResult& r) {
 }
 
 struct Case {
+  const char* scenario;
   const char* name;
+  double duration_s;
   double coupled_offset_std_m;
+  bool quasi_static_misses;  ///< the quasi-static reduction is more than 5 % low there
 };
 
-TEST(ScEnhancedDynamicReduction, The45DegreeCasesComeWithinFivePercentOfCoupled) {
-  const ValidatedProject project =
-      load_validated_project(std::string(SPIRAL_SOURCE_DIR) + "/scenarios/deepwater-fps.yaml");
-  for (const Case& c : {Case{"lc2-survival-collinear-45deg", 1.5644}, Case{"lc3-survival-45deg-damaged-L10", 1.6278},
-                        Case{"lc5-operating-45deg", 0.2685}}) {
+// Measured, dynamic reduction (quasi-static): lc1 −4.6 % (+0.1 %), lc2
+// −3.5 % (−6.3 %), lc3 −3.3 % (−8.3 %), lc4 −4.5 % (−6.2 %), lc5 −1.1 %
+// (−8.8 %), OC4 +1.5 % (+2.9 %).
+TEST(ScEnhancedDynamicReduction, EveryCaseComesWithinFivePercentOfCoupled) {
+  for (const Case& c : {Case{"deepwater-fps", "lc1-survival-collinear-0deg", 1800.0, 1.5436, false},
+                        Case{"deepwater-fps", "lc2-survival-collinear-45deg", 1800.0, 1.5644, true},
+                        Case{"deepwater-fps", "lc3-survival-45deg-damaged-L10", 1800.0, 1.6278, true},
+                        Case{"deepwater-fps", "lc4-survival-noncollinear", 1800.0, 0.7131, true},
+                        Case{"deepwater-fps", "lc5-operating-45deg", 1800.0, 0.2685, true},
+                        Case{"oc4-semisubmersible", "intact-raft-jonswap", 1200.0, 1.0864, false}}) {
+    const ValidatedProject project =
+        load_validated_project(std::string(SPIRAL_SOURCE_DIR) + "/scenarios/" + c.scenario + ".yaml");
     DynamicAnalysisRequest request;
     request.load_case = c.name;
     request.level = AnalysisLevel::semi_coupled_enhanced;
     request.line_reduction = LineReduction::dynamic;
-    request.duration_s = 1800.0;
+    request.duration_s = c.duration_s;
     request.compute_tensions = false;
     const DynamicAnalysisResult dynamic = run_dynamic_analysis(project, request);
-    ASSERT_EQ(dynamic.line_relaxations.size(), 4u) << "two per group: mooring lines and risers";
     const double std_dynamic = horizontal_offset_std_m(dynamic);
     EXPECT_NEAR(std_dynamic, c.coupled_offset_std_m, 0.05 * c.coupled_offset_std_m) << c.name;
 
-    // The quasi-static reduction on the same sea, for contrast: more than 5 %
-    // low (measured −6.3 %, −8.3 %, −8.8 %).
-    request.line_reduction = LineReduction::quasi_static;
-    const double std_quasi_static = horizontal_offset_std_m(run_dynamic_analysis(project, request));
-    EXPECT_LT(std_quasi_static, 0.95 * c.coupled_offset_std_m) << c.name;
+    if (c.quasi_static_misses) {
+      ASSERT_EQ(dynamic.line_relaxations.size(), 4u) << "two per group: mooring lines and risers";
+      // The quasi-static reduction on the same sea, for contrast.
+      request.line_reduction = LineReduction::quasi_static;
+      const double std_quasi_static = horizontal_offset_std_m(run_dynamic_analysis(project, request));
+      EXPECT_LT(std_quasi_static, 0.95 * c.coupled_offset_std_m) << c.name;
+    }
   }
 }
 
