@@ -129,8 +129,9 @@ class AnalyzeCommand : public Command {
                    "The dynamic FE lines' (and the coupled system's) integrator tolerances x this; < 1 for a "
                    "convergence reference (default: 1)");
     sub.add_option("--line-reduction", line_reduction_,
-                   "sc-enhanced: the lines' damping from their quasi-static shape (quasi-static, the default) or "
-                   "from their dynamic FE models (dynamic)")
+                   "sc-enhanced: the lines' damping, added mass and low-frequency stiffening from their dynamic FE "
+                   "models (dynamic, the default) or their damping and added mass from their quasi-static shape "
+                   "(quasi-static)")
         ->check(CLI::IsMember({"quasi-static", "dynamic"}));
     sub.add_option("--decay", decay_,
                    "Free decay: the hull pulled this far from its static equilibrium and released, "
@@ -152,7 +153,7 @@ class AnalyzeCommand : public Command {
   bool line_dynamics_ = false;
   double tolerance_scale_ = 1.0;
   std::vector<double> decay_;
-  std::string line_reduction_ = "quasi-static";
+  std::string line_reduction_ = "dynamic";
   double release_s_ = 300.0;
 };
 

@@ -76,8 +76,9 @@ class CompareCommand : public Command {
     sub.add_option("--step", step_s_, "Output step, s (default: 0.5)");
     sub.add_option("--seed", seed_, "Random seed of the realizations (default: 1)");
     sub.add_option("--line-reduction", line_reduction_,
-                   "sc-enhanced: the lines' damping from their quasi-static shape (quasi-static, the default) or "
-                   "from their dynamic FE models (dynamic)")
+                   "sc-enhanced: the lines' damping, added mass and low-frequency stiffening from their dynamic FE "
+                   "models (dynamic, the default) or their damping and added mass from their quasi-static shape "
+                   "(quasi-static)")
         ->check(CLI::IsMember({"quasi-static", "dynamic"}));
     sub.add_option("--out", out_, "Output folder (default: out/<project-stem>/compare/<case>-seed<N>)");
   }
@@ -86,7 +87,7 @@ class CompareCommand : public Command {
   double duration_s_ = 10800.0;
   double step_s_ = 0.5;
   std::uint64_t seed_ = 1;
-  std::string line_reduction_ = "quasi-static";
+  std::string line_reduction_ = "dynamic";
   std::string out_;
 };
 

@@ -55,8 +55,8 @@ struct LevelComparison {
   std::string case_name;
   std::uint64_t seed = 1;
   double duration_s = 0.0;
-  std::vector<LevelSummary> levels;                            ///< uncoupled, sc, sc-enhanced, coupled
-  LineReduction line_reduction = LineReduction::quasi_static;  ///< sc-enhanced's
+  std::vector<LevelSummary> levels;                       ///< uncoupled, sc, sc-enhanced, coupled
+  LineReduction line_reduction = LineReduction::dynamic;  ///< sc-enhanced's
 };
 
 struct ComparisonRequest {
@@ -64,8 +64,8 @@ struct ComparisonRequest {
   double duration_s = 10800.0;
   double output_step_s = 0.5;
   std::uint64_t seed = 1;
-  long coupled_max_steps_between_outputs = 500000;             ///< DynamicAnalysisRequest's
-  LineReduction line_reduction = LineReduction::quasi_static;  ///< sc-enhanced's (DynamicAnalysisRequest's)
+  long coupled_max_steps_between_outputs = 500000;        ///< DynamicAnalysisRequest's
+  LineReduction line_reduction = LineReduction::dynamic;  ///< sc-enhanced's (DynamicAnalysisRequest's)
   /// Called with (level name, fraction done of that level); may be empty.
   std::function<void(const std::string&, double)> progress;
 };

@@ -24,7 +24,7 @@
 // Measured against the coupled level (default FPS 1800 s, OC4 1200 s, seed
 // 1), horizontal-offset std: lc1 −4.6 %, lc2 −3.5 %, lc3 −3.3 %, lc4
 // −4.5 %, lc5 −1.1 %, OC4 +1.5 % (the quasi-static reduction: +0.1 %,
-// −6.3 %, −8.3 %, −6.2 %, −8.8 %, +2.9 %); the reduction costs ≈ 1 s of
+// −6.3 %, −8.3 %, −6.2 %, −8.8 %, +2.9 %); the reduction costs ≈ 0.9 s of
 // CPU for 16 mooring lines and 12 risers (docs/decisions/enhanced-sc-accuracy.md).
 //
 // Errors: engine::SolverError naming the line when its FE statics fail.

@@ -23,8 +23,10 @@ namespace spiral::design {
 
 namespace {
 
-/// The storms of every stage: 3 h at 0.5 s, the case's seed (stage_dynamics.hpp).
-constexpr const char* kStormOptions = "duration_s=10800 output_step_s=0.5";
+/// The storms of every stage: 3 h at 0.5 s, the case's seed, the lines'
+/// dynamic reduction (stage_dynamics.hpp) — in the task's identity, so that
+/// a store written with the quasi-static reduction is not reused.
+constexpr const char* kStormOptions = "duration_s=10800 output_step_s=0.5 line_reduction=dynamic";
 
 /// What one run shares between its stages.
 struct RunContext {
