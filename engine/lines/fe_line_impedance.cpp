@@ -7,8 +7,10 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <optional>
 #include <vector>
 
+#include "engine/common/complex_band_lu.hpp"
 #include "engine/common/solver_error.hpp"
 #include "engine/lines/fe_dynamic_line.hpp"
 #include "engine/lines/stochastic_drag.hpp"
@@ -18,85 +20,10 @@ namespace {
 
 using Complex = std::complex<double>;
 
-/// A complex band matrix (half bandwidth b, rows of 2b + 1 entries) and its
-/// LU factorisation in the natural order, without interchanges. D(ω) of a
-/// tensioned line at the low-frequency band is dominated by its definite
-/// static stiffness, for which elimination without pivoting is stable
-/// (Higham, Accuracy and Stability of Numerical Algorithms, 2nd ed., §9.4);
-/// a pivot that has lost nearly all of its size says otherwise, and the
-/// caller then solves with a pivoting sparse LU. On a 4,920-DOF riser it is
-/// several times faster than Eigen's SparseLU (COLAMD, supernodes).
-class ComplexBand {
- public:
-  ComplexBand(int n, int half_band)
-      : n_(n), b_(half_band), a_(static_cast<std::size_t>(n) * static_cast<std::size_t>(2 * half_band + 1)) {}
-  int size() const { return n_; }
-  bool in_band(int i, int j) const { return std::abs(i - j) <= b_; }
-  Complex& at(int i, int j) { return a_[index(i, j)]; }
-
-  /// In place; false when a pivot is smaller than 1e-10 of its row's
-  /// largest entry before elimination (then the factor is not usable).
-  bool factorize() {
-    std::vector<double> row_size(static_cast<std::size_t>(n_), 0.0);
-    for (int i = 0; i < n_; ++i)
-      for (int j = std::max(0, i - b_); j <= std::min(n_ - 1, i + b_); ++j)
-        row_size[static_cast<std::size_t>(i)] = std::max(row_size[static_cast<std::size_t>(i)], std::abs(at(i, j)));
-    for (int k = 0; k < n_; ++k) {
-      const Complex pivot = at(k, k);
-      if (!(std::abs(pivot) > 1e-10 * row_size[static_cast<std::size_t>(k)])) return false;
-      const Complex inverse_pivot = 1.0 / pivot;
-      const int last = std::min(n_ - 1, k + b_);
-      for (int i = k + 1; i <= last; ++i) {
-        Complex& l = at(i, k);
-        if (l == Complex(0.0)) continue;
-        l *= inverse_pivot;
-        const Complex* u = &a_[index(k, k + 1)];
-        Complex* row = &a_[index(i, k + 1)];
-        for (int j = 0; j < last - k; ++j) row[j] -= l * u[j];
-      }
-    }
-    return true;
-  }
-
-  /// Solves A X = B in place after factorize().
-  template <class Matrix>
-  void solve_in_place(Matrix& x) const {
-    for (Eigen::Index c = 0; c < x.cols(); ++c) {
-      for (int i = 0; i < n_; ++i) {
-        Complex sum = x(i, c);
-        for (int j = std::max(0, i - b_); j < i; ++j) sum -= a_[index(i, j)] * x(j, c);
-        x(i, c) = sum;
-      }
-      for (int i = n_ - 1; i >= 0; --i) {
-        Complex sum = x(i, c);
-        for (int j = i + 1; j <= std::min(n_ - 1, i + b_); ++j) sum -= a_[index(i, j)] * x(j, c);
-        x(i, c) = sum / a_[index(i, i)];
-      }
-    }
-  }
-
-  Eigen::SparseMatrix<Complex> to_sparse() const {
-    std::vector<Eigen::Triplet<Complex>> entries;
-    for (int i = 0; i < n_; ++i)
-      for (int j = std::max(0, i - b_); j <= std::min(n_ - 1, i + b_); ++j)
-        if (a_[index(i, j)] != Complex(0.0)) entries.emplace_back(i, j, a_[index(i, j)]);
-    Eigen::SparseMatrix<Complex> m(n_, n_);
-    m.setFromTriplets(entries.begin(), entries.end());
-    return m;
-  }
-
- private:
-  std::size_t index(int i, int j) const {
-    return static_cast<std::size_t>(i) * static_cast<std::size_t>(2 * b_ + 1) + static_cast<std::size_t>(j - i + b_);
-  }
-  int n_, b_;
-  std::vector<Complex> a_;
-};
-
 /// D(ω) = K + iω C + ω² M of the line, partitioned into its free DOFs (f)
 /// and end B's position (B).
 struct PartitionedDynamicMatrix {
-  ComplexBand ff;
+  ComplexBandLu ff;  // free DOFs in the mesh's order: within the mesh's band
   Eigen::Matrix<Complex, Eigen::Dynamic, 3> fB;
   Eigen::Matrix<Complex, 3, Eigen::Dynamic> Bf;
   Matrix3cd BB;
@@ -111,7 +38,7 @@ struct DofPartition {
 
 PartitionedDynamicMatrix partitioned_matrix(const fe_detail::DynamicLine& line, const DofPartition& dofs,
                                             double omega) {
-  PartitionedDynamicMatrix D{ComplexBand(dofs.free_count, line.p.band), {}, {}, {}};
+  PartitionedDynamicMatrix D{ComplexBandLu(dofs.free_count, line.p.band), {}, {}, {}};
   D.fB = Eigen::Matrix<Complex, Eigen::Dynamic, 3>::Zero(dofs.free_count, 3);
   D.Bf = Eigen::Matrix<Complex, 3, Eigen::Dynamic>::Zero(3, dofs.free_count);
   D.BB = Matrix3cd::Zero();
@@ -227,7 +154,7 @@ std::vector<Matrix3cd> end_B_dynamic_stiffness(const FeLineModel& model, const F
   auto solve = [&](double omega) {
     PartitionedDynamicMatrix D = partitioned_matrix(line, dofs, omega);
     Eigen::Matrix<Complex, Eigen::Dynamic, 3> response = D.fB;
-    ComplexBand factor = D.ff;
+    ComplexBandLu factor = D.ff;
     if (factor.factorize()) {
       factor.solve_in_place(response);
     } else {
@@ -241,15 +168,27 @@ std::vector<Matrix3cd> end_B_dynamic_stiffness(const FeLineModel& model, const F
     return std::pair{std::move(D), std::move(response)};
   };
 
+  auto condensed = [](const PartitionedDynamicMatrix& D, const Eigen::Matrix<Complex, Eigen::Dynamic, 3>& response) {
+    return Matrix3cd(-(D.BB - D.Bf * response));
+  };
+  // At ω = 0 the damping does not enter: the solve that gives the drag's
+  // transfer gives K_dyn(0) too.
+  std::optional<Matrix3cd> at_rest;
   if (!end_B_velocity_covariance.isZero(0.0)) {
-    linearize_drag_on_motion(line, dofs, solve(0.0).second, end_B_velocity_covariance, state.state);
+    const auto [D, response] = solve(0.0);
+    at_rest = condensed(D, response);
+    linearize_drag_on_motion(line, dofs, response, end_B_velocity_covariance, state.state);
   }
 
   std::vector<Matrix3cd> out;
   for (const double omega : omegas_rad_per_s) {
     if (!(omega >= 0.0)) throw SolverError(fmt::format("end_B_dynamic_stiffness: omega must be >= 0, got {}", omega));
+    if (omega == 0.0 && at_rest) {
+      out.push_back(*at_rest);
+      continue;
+    }
     const auto [D, response] = solve(omega);
-    out.push_back(-(D.BB - D.Bf * response));
+    out.push_back(condensed(D, response));
   }
   return out;
 }
