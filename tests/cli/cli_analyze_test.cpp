@@ -8,12 +8,13 @@
 
 #include "app/exit_codes.hpp"
 #include "support/run_command.hpp"
+#include "support/temp_folder.hpp"
 
 namespace spiral::test {
 namespace {
 
 TEST(CliAnalyze, ScRunWritesCsvAndJson) {
-  const auto out = std::filesystem::temp_directory_path() / ("spiral-analyze-" + std::to_string(::getpid()));
+  const auto out = spiral::test::scratch_root() / ("spiral-analyze-" + std::to_string(::getpid()));
   std::filesystem::remove_all(out);
   const auto result =
       run_spiral("analyze " + scenario("oc4-semisubmersible.yaml") +
@@ -59,7 +60,7 @@ TEST(CliAnalyze, ScRunWritesCsvAndJson) {
 }
 
 TEST(CliAnalyze, LineDynamicsWritesDynamicTensions) {
-  const auto out = std::filesystem::temp_directory_path() / ("spiral-analyze-dyn-" + std::to_string(::getpid()));
+  const auto out = spiral::test::scratch_root() / ("spiral-analyze-dyn-" + std::to_string(::getpid()));
   std::filesystem::remove_all(out);
   const auto result =
       run_spiral("analyze " + scenario("oc4-semisubmersible.yaml") +
@@ -88,7 +89,7 @@ TEST(CliAnalyze, LineDynamicsWritesDynamicTensions) {
 // its integrator statistics in the summary and the coupled tensions as
 // channels.
 TEST(CliAnalyze, CoupledLevelWritesItsSolverAndTensions) {
-  const auto out = std::filesystem::temp_directory_path() / ("spiral-coupled-" + std::to_string(::getpid()));
+  const auto out = spiral::test::scratch_root() / ("spiral-coupled-" + std::to_string(::getpid()));
   const auto result = run_spiral("analyze " + scenario("oc4-semisubmersible.yaml") +
                                  " --case intact-raft-jonswap --level coupled --duration 120 --out " + out.string());
   ASSERT_EQ(result.exit_code, app::kExitOk) << result.err;
@@ -112,7 +113,7 @@ TEST(CliAnalyze, CoupledLevelWritesItsSolverAndTensions) {
 // `spiral compare`: the four levels on one realization, a table on the
 // terminal and comparison.json with the keys the issue names.
 TEST(CliCompare, FourLevelsSideBySide) {
-  const auto out = std::filesystem::temp_directory_path() / ("spiral-compare-" + std::to_string(::getpid()));
+  const auto out = spiral::test::scratch_root() / ("spiral-compare-" + std::to_string(::getpid()));
   const auto result =
       run_spiral("compare " + scenario("oc4-semisubmersible.yaml") +
                  " --case intact-raft-jonswap --duration 300 --line-reduction dynamic --out " + out.string());
@@ -161,7 +162,7 @@ TEST(CliAnalyze, AZeroToleranceScaleIsBadInputNamingTheField) {
 // A free decay: pulled 5 m in surge, released at 300 s; the summary gives
 // the half cycles (OC4's surge period is about 113 s).
 TEST(CliAnalyze, AFreeDecayReportsItsHalfCycles) {
-  const auto out = std::filesystem::temp_directory_path() / ("spiral-analyze-decay-" + std::to_string(::getpid()));
+  const auto out = spiral::test::scratch_root() / ("spiral-analyze-decay-" + std::to_string(::getpid()));
   std::filesystem::remove_all(out);
   const auto result = run_spiral("analyze " + scenario("oc4-semisubmersible.yaml") +
                                  " --case intact-still-water --level sc --duration 900 --decay 5,0,0,0,0,0"
@@ -190,7 +191,7 @@ TEST(CliAnalyze, AReleaseAfterTheRunIsBadInputNamingTheFlag) {
 // The enhanced S-C with the lines' dynamic reduction: the summary carries
 // its relaxations (OC4: three chains, no risers, so one group of two).
 TEST(CliAnalyze, TheDynamicLineReductionWritesItsRelaxations) {
-  const auto out = std::filesystem::temp_directory_path() / ("spiral-analyze-reduction-" + std::to_string(::getpid()));
+  const auto out = spiral::test::scratch_root() / ("spiral-analyze-reduction-" + std::to_string(::getpid()));
   std::filesystem::remove_all(out);
   const auto result = run_spiral("analyze " + scenario("oc4-semisubmersible.yaml") +
                                  " --case intact-raft-jonswap --level sc-enhanced --line-reduction dynamic"
@@ -211,7 +212,7 @@ TEST(CliAnalyze, TheDynamicLineReductionWritesItsRelaxations) {
 }
 
 TEST(CliAnalyze, MissingRadiationFileIsBadInputWithFile) {
-  const auto dir = std::filesystem::temp_directory_path() / ("spiral-analyze-bad-" + std::to_string(::getpid()));
+  const auto dir = spiral::test::scratch_root() / ("spiral-analyze-bad-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   std::string text = read_text(std::string(SPIRAL_SOURCE_DIR) + "/scenarios/oc4-semisubmersible.yaml");
   const std::string key = "radiation_file: data/hydro/oc4-semi/marin_semi.1";

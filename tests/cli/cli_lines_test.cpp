@@ -11,6 +11,7 @@
 
 #include "app/exit_codes.hpp"
 #include "support/run_command.hpp"
+#include "support/temp_folder.hpp"
 
 namespace spiral::test {
 namespace {
@@ -21,7 +22,7 @@ const std::string kSurge = std::string("'") + SPIRAL_TEST_DATA_DIR + "/motion/oc
 const std::string kUneven = std::string("'") + SPIRAL_TEST_DATA_DIR + "/motion/uneven-heave-pitch.txt'";
 
 std::filesystem::path temp_folder(const std::string& name) {
-  return std::filesystem::temp_directory_path() / ("spiral-" + std::to_string(::getpid()) + "-" + name);
+  return spiral::test::scratch_root() / ("spiral-" + std::to_string(::getpid()) + "-" + name);
 }
 
 TEST(CliLines, Oc4LinesUnderASurgeHistoryWriteSeriesAndChecks) {

@@ -10,6 +10,7 @@
 
 #include "app/exit_codes.hpp"
 #include "support/run_command.hpp"
+#include "support/temp_folder.hpp"
 
 namespace spiral::test {
 namespace {
@@ -20,7 +21,7 @@ const std::string kIeaDeck =
     std::string("'") + SPIRAL_TEST_DATA_DIR + "/validation/iea15-umaine-semi/IEA-15-240-RWT-UMaineSemi_MoorDyn.dat'";
 
 std::filesystem::path temp_file(const std::string& name) {
-  return std::filesystem::temp_directory_path() / ("spiral-" + std::to_string(::getpid()) + "-" + name);
+  return spiral::test::scratch_root() / ("spiral-" + std::to_string(::getpid()) + "-" + name);
 }
 
 TEST(CliMoorDyn, ImportWritesAProjectThatValidates) {

@@ -9,6 +9,7 @@
 
 #include "app/exit_codes.hpp"
 #include "support/run_command.hpp"
+#include "support/temp_folder.hpp"
 
 namespace spiral::test {
 namespace {
@@ -22,7 +23,7 @@ constexpr double kMapLaidLength_m = 242.345;
 constexpr double kMapTolerance = 2e-5;
 
 std::filesystem::path write_project(const std::string& name, const std::string& text) {
-  const auto path = std::filesystem::temp_directory_path() / name;
+  const auto path = spiral::test::scratch_root() / name;
   std::ofstream(path) << text;
   return path;
 }

@@ -11,6 +11,8 @@
 #include <sstream>
 #include <string>
 
+#include "support/temp_folder.hpp"
+
 namespace spiral::test {
 
 struct CommandResult {
@@ -29,8 +31,8 @@ inline std::string read_text(const std::filesystem::path& path) {
 /// `arguments` is appended to the executable path as shell words (quote them yourself).
 inline CommandResult run_spiral(const std::string& arguments) {
   static int counter = 0;
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("spiral-cli-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
+  const auto dir =
+      spiral::test::scratch_root() / ("spiral-cli-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
   std::filesystem::create_directories(dir);
   const std::string command = std::string("'") + SPIRAL_EXECUTABLE + "' " + arguments + " >'" + (dir / "out").string() +
                               "' 2>'" + (dir / "err").string() + "' </dev/null";
@@ -50,7 +52,7 @@ inline std::string write_temp_project(const std::string& name, const std::string
   file_name += std::to_string(::getpid());
   file_name += '-';
   file_name += name;
-  const auto path = std::filesystem::temp_directory_path() / file_name;
+  const auto path = spiral::test::scratch_root() / file_name;
   std::ofstream(path) << text;
   std::string quoted = "'";
   quoted += path.string();

@@ -15,6 +15,7 @@
 #include "design/project/project_validation.hpp"
 #include "design/project/validated_project.hpp"
 #include "support/project_fixture.hpp"
+#include "support/temp_folder.hpp"
 
 namespace spiral::design {
 namespace {
@@ -132,7 +133,7 @@ TEST(LoadCaseMatrix, BadEntriesAreReportedWithPositions) {
 }
 
 TEST(LoadCaseMatrix, LoadedProjectHoldsTheGeneratedCases) {
-  const auto file = std::filesystem::temp_directory_path() / ("spiral-matrix-" + std::to_string(::getpid()) + ".yaml");
+  const auto file = spiral::test::scratch_root() / ("spiral-matrix-" + std::to_string(::getpid()) + ".yaml");
   std::ofstream(file) << with_matrix("  - {environment: storm, headings_deg: [0.0, 180.0], damaged: [L0]}\n");
   const ValidatedProject p = load_validated_project(file);
   std::filesystem::remove(file);

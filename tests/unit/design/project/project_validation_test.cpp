@@ -13,6 +13,7 @@
 
 #include "design/project/project_loader.hpp"
 #include "support/project_fixture.hpp"
+#include "support/temp_folder.hpp"
 
 namespace spiral::design {
 namespace {
@@ -314,7 +315,7 @@ TEST(ProjectValidation, MeanDriftFileMustExist) {
 }
 
 TEST(ProjectValidation, MeanDriftFileThatExistsIsAccepted) {
-  const std::filesystem::path folder = std::filesystem::temp_directory_path() / "spiral-validation-mean-drift";
+  const std::filesystem::path folder = spiral::test::scratch_root() / "spiral-validation-mean-drift";
   std::filesystem::create_directories(folder);
   std::ofstream(folder / "hull.12d") << "    0.62832E+01    0.62832E+01    0.0    0.0    1    0.0    "
                                         "0.0    0.0    0.0\n";

@@ -18,6 +18,7 @@
 
 #include "design/project/input_error.hpp"
 #include "design/results/results_store.hpp"
+#include "support/temp_folder.hpp"
 
 namespace spiral::design {
 namespace {
@@ -43,7 +44,7 @@ std::string replaced(std::string text, const std::string& from, const std::strin
 
 /// The OC4 scenario in a temporary folder, its data files by absolute path.
 std::filesystem::path oc4_variant(const std::string& name, const std::string& from = {}, const std::string& to = {}) {
-  const auto dir = std::filesystem::temp_directory_path() / ("spiral-run-" + name + "-" + std::to_string(::getpid()));
+  const auto dir = spiral::test::scratch_root() / ("spiral-run-" + name + "-" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   std::string text = replaced(oc4_text(), "data/hydro/", std::string(SPIRAL_SOURCE_DIR) + "/scenarios/data/hydro/");

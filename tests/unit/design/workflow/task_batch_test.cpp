@@ -13,12 +13,13 @@
 #include <vector>
 
 #include "engine/common/solver_error.hpp"
+#include "support/temp_folder.hpp"
 
 namespace spiral::design {
 namespace {
 
 std::filesystem::path store_path(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / ("spiral-batch-" + name + "-" + std::to_string(::getpid()));
+  const auto dir = spiral::test::scratch_root() / ("spiral-batch-" + name + "-" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   return results_store_file(dir);
 }

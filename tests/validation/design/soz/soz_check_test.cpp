@@ -17,6 +17,7 @@
 #include "design/model/environment_loads.hpp"
 #include "design/soz/soz.hpp"
 #include "support/soz_project.hpp"
+#include "support/temp_folder.hpp"
 
 namespace spiral::design {
 namespace {
@@ -95,8 +96,7 @@ ValidatedProject two_risers_three_cases() {
               "      profile: [[0.0, 1.0], [-400.0, 0.5]]\n");
   const std::string lc2 = "  - {name: lc2, environment: current-east, condition: extreme}\n";
   text.insert(text.find(lc2) + lc2.size(), "  - {name: lc3, environment: same-current, condition: extreme}\n");
-  const std::filesystem::path file =
-      std::filesystem::temp_directory_path() / fmt::format("spiral-{}-soz-zones.yaml", ::getpid());
+  const std::filesystem::path file = spiral::test::scratch_root() / fmt::format("spiral-{}-soz-zones.yaml", ::getpid());
   std::ofstream(file) << text;
   ValidatedProject p = load_validated_project(file);
   std::filesystem::remove(file);
