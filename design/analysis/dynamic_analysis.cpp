@@ -449,25 +449,35 @@ DynamicModel build_dynamic_model(const ValidatedProject& validated, const Dynami
                                                                engine::Vector6d::Zero(), forced_run_options(request));
     Eigen::Matrix<double, 6, Eigen::Dynamic> motion = plain.position;
     if (const auto wf = wave_frequency_motions(validated, model, plain.times_s)) motion += *wf;
+    model.line_reduction = LineReduction::quasi_static;
     if (request.line_reduction == LineReduction::dynamic) {
       // Every line's FE impedance about its current-loaded static state,
       // fitted for the hull's equations.
       const DynamicLineReduction reduced =
           dynamic_line_reduction(project, *model.case_model.line_types, model.case_model.current, model.statics,
                                  damaged, motion, request.output_step_s);
-      linearized.added_mass = reduced.added_mass;
-      linearized.damping = reduced.damping;
-      linearized.relaxations = reduced.relaxations;
-      model.notes.push_back(fmt::format(
-          "sc-enhanced: the damping, added mass and low-frequency stiffening of {} mooring lines and risers from "
-          "their dynamic FE models' impedance about the current-loaded equilibrium ({} frequencies, {:.3g}-{:.3g} "
-          "rad/s), fitted with a dashpot, an added mass and relaxations of {} (fit residual {:.1f} %; "
-          "design/analysis/line_dynamic_reduction.hpp); the normal drag linearized stochastically on the lines' "
-          "quasi-static motion for the velocities of a first sc run (Atalik & Utku 1976); the waves' velocities "
-          "on the lines are not in the drag's linearization",
-          reduced.lines, reduced.frequencies, reduced.lowest_frequency_rad_per_s, reduced.highest_frequency_rad_per_s,
-          reduced.relaxation_summary, 100.0 * reduced.relative_residual));
-    } else {
+      if (reduced.unusable_reason.empty()) {
+        model.line_reduction = LineReduction::dynamic;
+        linearized.added_mass = reduced.added_mass;
+        linearized.damping = reduced.damping;
+        linearized.relaxations = reduced.relaxations;
+        model.notes.push_back(fmt::format(
+            "sc-enhanced: the damping, added mass and low-frequency stiffening of {} mooring lines and risers from "
+            "their dynamic FE models' impedance about the current-loaded equilibrium ({} frequencies, {:.3g}-{:.3g} "
+            "rad/s), fitted with a dashpot, an added mass and relaxations of {} (fit residual {:.1f} %; "
+            "design/analysis/line_dynamic_reduction.hpp); the normal drag linearized stochastically on the lines' "
+            "quasi-static motion for the velocities of a first sc run (Atalik & Utku 1976); the waves' velocities "
+            "on the lines are not in the drag's linearization",
+            reduced.lines, reduced.frequencies, reduced.lowest_frequency_rad_per_s, reduced.highest_frequency_rad_per_s,
+            reduced.relaxation_summary, 100.0 * reduced.relative_residual));
+      } else {
+        model.notes.push_back(fmt::format(
+            "sc-enhanced: the lines' dynamic reduction is not used, {}; their quasi-static reduction instead "
+            "(design/analysis/line_dynamic_reduction.hpp)",
+            reduced.unusable_reason));
+      }
+    }
+    if (model.line_reduction == LineReduction::quasi_static) {
       // The quasi-static shape derivative.
       LineArrayModel mooring = build_mooring_model(project, *model.case_model.line_types, damaged);
       std::vector<Eigen::Vector3d> fairleads_b;
@@ -508,6 +518,7 @@ DynamicAnalysisResult result_of_model(const DynamicModel& model, const DynamicAn
   result.line_added_mass = model.line_added_mass;
   result.line_damping = model.line_damping;
   result.line_relaxations = model.line_relaxations;
+  result.line_reduction = model.line_reduction;
   result.notes = model.notes;
   result.timing = model.timing;
   return result;

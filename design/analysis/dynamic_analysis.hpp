@@ -174,6 +174,9 @@ struct DynamicModel {
   std::optional<engine::Matrix6d> line_added_mass;             ///< sc-enhanced
   std::optional<engine::Matrix6d> line_damping;                ///< sc-enhanced
   std::vector<engine::LineRelaxation> line_relaxations;        ///< sc-enhanced, dynamic reduction
+  /// sc-enhanced: the reduction applied (quasi-static where the dynamic
+  /// one was asked but its fit could not stand for the lines: notes say why).
+  std::optional<LineReduction> line_reduction;
   /// hull.hydrodynamics.radiation: memory — A(inf), the kernel and their diagnostics.
   std::optional<engine::RadiationMemory> radiation_memory;
   /// Morison hull in waves: the LF/WF split frequency of the integrated
@@ -221,6 +224,7 @@ struct DynamicAnalysisResult {
   std::optional<engine::Matrix6d> line_added_mass;
   std::optional<engine::Matrix6d> line_damping;
   std::vector<engine::LineRelaxation> line_relaxations;  ///< sc-enhanced, dynamic reduction
+  std::optional<LineReduction> line_reduction;           ///< sc-enhanced: the one applied (DynamicModel's)
   engine::CvodeStatistics solver;                        ///< hull integrator (not the coupled level)
   /// Coupled level: the one IDA integration of hull + lines, and its size.
   std::optional<engine::IdaStatistics> coupled_solver;

@@ -117,6 +117,7 @@ LevelComparison compare_levels(const ValidatedProject& project, const Comparison
       c.levels.push_back(std::move(s));
       continue;
     }
+    if (result.line_reduction) c.line_reduction = *result.line_reduction;  // as applied: see DynamicModel
     c.levels.push_back(summarize_level(result));
   }
   return c;

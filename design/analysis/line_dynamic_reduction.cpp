@@ -1,7 +1,10 @@
 #include "design/analysis/line_dynamic_reduction.hpp"
 
 #include <array>
+#include <algorithm>
 #include <cmath>
+#include <numbers>
+#include <span>
 #include <tuple>
 
 #include <fmt/format.h>
@@ -23,6 +26,33 @@ namespace {
 constexpr int kBandFrequencies = 10;
 constexpr double kLowestFrequency_rad_per_s = 0.005;
 constexpr double kHighestFrequency_rad_per_s = 0.2;
+
+/// A fit whose residual is above this does not represent its group's
+/// impedance. Within the band a line can have a resonance of its own (the
+/// IEA 15 MW VolturnUS-S's 850 m chains in 200 m of water near 0.13 rad/s:
+/// its damping peaks there and the fit left 84 %), which a dashpot and
+/// relaxations cannot hold: the band is then shortened from the top,
+/// one frequency at a time, down to kFewestBandFrequencies (the default
+/// FPS's and OC4's fits leave 3–7 % over the whole band).
+constexpr double kLargestFitResidual = 0.15;
+constexpr std::size_t kFewestBandFrequencies = 6;
+/// The band kept must reach this far above the hull's highest surge, sway
+/// or yaw natural frequency, whose response the reduction is for.
+constexpr double kBandMarginOverHullModes = 1.2;
+
+/// The hull's highest natural frequency in surge, sway or yaw (rad/s) at
+/// the static case (with the dynamic stiffness the S-C levels use).
+double highest_horizontal_natural_frequency(const StaticCaseResult& statics) {
+  const std::vector<NaturalMode>& modes =
+      statics.dynamic_natural_modes.empty() ? statics.natural_modes : statics.dynamic_natural_modes;
+  double highest = 0.0;
+  for (const NaturalMode& mode : modes) {
+    if ((mode.dominant_dof == "surge" || mode.dominant_dof == "sway" || mode.dominant_dof == "yaw") &&
+        mode.period_s > 0.0)
+      highest = std::max(highest, 2.0 * std::numbers::pi / mode.period_s);
+  }
+  return highest;
+}
 
 }  // namespace
 
@@ -82,6 +112,7 @@ DynamicLineReduction dynamic_line_reduction(const Project& project, const std::v
   out.frequencies = kBandFrequencies;
   out.lowest_frequency_rad_per_s = kLowestFrequency_rad_per_s;
   out.highest_frequency_rad_per_s = kHighestFrequency_rad_per_s;
+  out.largest_usable_residual = kLargestFitResidual;
   const int mooring_count = static_cast<int>(moorings.size());
   for (const auto& [first, last, group] :
        {std::tuple{0, mooring_count, "mooring lines"}, std::tuple{mooring_count, count, "risers"}}) {
@@ -96,7 +127,15 @@ DynamicLineReduction dynamic_line_reduction(const Project& project, const std::v
       increase.push_back(total[k] - total[0]);
       weights.push_back(1.0 / total[k].norm());
     }
-    const engine::LineRelaxationFit fit = engine::fit_line_relaxation(band, increase, weights, 2);
+    std::size_t kept = band.size();
+    const auto fit_over = [&](std::size_t n) {
+      return engine::fit_line_relaxation(std::span(band).first(n), std::span(increase).first(n),
+                                         std::span(weights).first(n), 2);
+    };
+    engine::LineRelaxationFit fit = fit_over(kept);
+    while (fit.relative_residual > kLargestFitResidual && kept > kFewestBandFrequencies) fit = fit_over(--kept);
+    out.frequencies = std::min(out.frequencies, static_cast<int>(kept));
+    out.highest_frequency_rad_per_s = std::min(out.highest_frequency_rad_per_s, band[kept - 1]);
     out.damping += fit.damping;
     out.added_mass += fit.added_mass;
     out.relaxations.insert(out.relaxations.end(), fit.relaxations.begin(), fit.relaxations.end());
@@ -104,6 +143,19 @@ DynamicLineReduction dynamic_line_reduction(const Project& project, const std::v
     if (!out.relaxation_summary.empty()) out.relaxation_summary += "; ";
     out.relaxation_summary += fmt::format("{:.3g} s, {:.3g} s ({})", fit.relaxations.front().time_constant_s,
                                           fit.relaxations.back().time_constant_s, group);
+  }
+  const double hull_mode_rad_per_s = highest_horizontal_natural_frequency(statics);
+  if (out.relative_residual > kLargestFitResidual) {
+    out.unusable_reason = fmt::format(
+        "the lines' impedance is not a dashpot, an added mass and relaxations: the fit leaves {:.0f} % (at most "
+        "{:.0f} %) over {:.3g}-{:.3g} rad/s",
+        100.0 * out.relative_residual, 100.0 * kLargestFitResidual, out.lowest_frequency_rad_per_s,
+        out.highest_frequency_rad_per_s);
+  } else if (out.highest_frequency_rad_per_s < kBandMarginOverHullModes * hull_mode_rad_per_s) {
+    out.unusable_reason = fmt::format(
+        "the band the fit holds (up to {:.3g} rad/s; a resonance of the lines above it) does not reach {:g} x the "
+        "hull's highest surge, sway or yaw natural frequency ({:.3g} rad/s)",
+        out.highest_frequency_rad_per_s, kBandMarginOverHullModes, hull_mode_rad_per_s);
   }
   return out;
 }

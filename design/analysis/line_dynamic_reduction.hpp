@@ -47,14 +47,22 @@ struct DynamicLineReduction {
   std::vector<engine::LineRelaxation> relaxations;
   double relative_residual = 0.0;  ///< of the fit over the band (the worse of the two groups)
   int lines = 0;                   ///< the lines reduced
-  int frequencies = 0;             ///< of the band
-  double lowest_frequency_rad_per_s = 0.0, highest_frequency_rad_per_s = 0.0;
+  int frequencies = 0;             ///< of the band fitted (the shorter of the two groups')
+  double lowest_frequency_rad_per_s = 0.0, highest_frequency_rad_per_s = 0.0;  ///< of the band fitted
   std::string relaxation_summary;  ///< "14.4 s, 112 s (mooring lines); … (risers)"
+  double largest_usable_residual = 0.0;
+  /// Why the fit cannot stand for the lines (a residual above
+  /// largest_usable_residual even over a shortened band, or a band that no
+  /// longer covers the hull's surge, sway and yaw modes); empty: usable.
+  std::string unusable_reason;
 };
 
 /// Every intact mooring line (not `damaged_line`) and every riser, at the
 /// hull's equilibrium of `statics` in `current`; the mooring lines and the
-/// risers fitted apart. A mooring line's FE statics start again from its
+/// risers fitted apart, each group over the band or, when a resonance of
+/// the lines in it leaves more than 15 % of the fit, over the band
+/// shortened from the top (unusable_reason says when that is not enough).
+/// A mooring line's FE statics start again from its
 /// catenary profile in `statics` when the default initial shape fails (as
 /// the coupled level's do). `hull_motion` (offsets from the origin, m and
 /// rad, one column per `motion_step_s`) linearizes the lines' drag; with

@@ -121,6 +121,7 @@ nlohmann::json dynamic_analysis_to_json(const DynamicAnalysisResult& r, const st
   j["mean_slow_drift_force_N"] = drift;
   if (r.line_added_mass) j["line_added_mass"] = matrix_json(*r.line_added_mass);
   if (r.line_damping) j["line_damping"] = matrix_json(*r.line_damping);
+  if (r.line_reduction) j["line_reduction"] = *r.line_reduction == LineReduction::dynamic ? "dynamic" : "quasi-static";
   if (!r.line_relaxations.empty()) {
     nlohmann::json relaxations = nlohmann::json::array();
     for (const engine::LineRelaxation& x : r.line_relaxations)

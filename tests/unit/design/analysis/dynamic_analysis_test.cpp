@@ -519,6 +519,34 @@ TEST(ScAnalysis, EnhancedScAddsSymmetricLineDampingAndAddedMass) {
             << " kg), damping surge " << (*r.line_damping)(0, 0) << " N s/m\n";
 }
 
+// When the dynamic reduction's fit cannot stand for the lines over a band
+// that covers the hull's surge, sway and yaw modes, the enhanced S-C says
+// so and takes the quasi-static reduction: here OC4's static case given
+// with a yaw mode of 20 s (0.31 rad/s, above the 0.2 rad/s band).
+TEST(ScAnalysis, AFitThatMissesTheHullsModesFallsBackToTheQuasiStaticReduction) {
+  const ValidatedProject p = load_validated_project(kOc4);
+  StaticCaseRequest statics_request;
+  statics_request.load_case = "intact-raft-jonswap";
+  statics_request.lines_carry_current = true;
+  StaticCaseResult statics = run_static_case(p, statics_request);
+  statics.natural_modes.push_back({20.0, "yaw"});
+  statics.dynamic_natural_modes.push_back({20.0, "yaw"});
+  DynamicAnalysisRequest request;
+  request.load_case = "intact-raft-jonswap";
+  request.level = AnalysisLevel::semi_coupled_enhanced;
+  request.duration_s = 600.0;
+  request.compute_tensions = false;
+  request.statics = &statics;
+  const DynamicAnalysisResult r = run_dynamic_analysis(p, request);
+  ASSERT_EQ(r.line_reduction, LineReduction::quasi_static);
+  EXPECT_TRUE(r.line_relaxations.empty());
+  bool said = false;
+  for (const std::string& note : r.notes)
+    said = said || (note.find("dynamic reduction is not used") != std::string::npos &&
+                    note.find("natural frequency (0.314 rad/s)") != std::string::npos);
+  EXPECT_TRUE(said) << "the notes say why";
+}
+
 // The dynamic reduction's inertia is the lines' dynamic one: their structural
 // mass moves with the hull as much as their added mass does (the FE lines'
 // M holds both), so its scale is the lines' whole mass — on OC4's chains 30×
