@@ -69,9 +69,10 @@ PartitionedDynamicMatrix partitioned_matrix(const fe_detail::DynamicLine& line, 
 /// Re-linearizes every element's normal drag in C on the line's own motion:
 /// the expected slope of |w| w (stochastic_drag.hpp) for the normal relative
 /// velocity w = current − ṙ with ṙ the quasi-static response of the line to
-/// end B's velocity, ṙ = J v_B, J = −K_ff⁻¹ K_fB at each Gauss point —
-/// the enhanced S-C's quasi-static reduction does the same with the
-/// catenary's shape derivative (design/analysis/line_hydrodynamics.hpp).
+/// end B's velocity, ṙ = J v_B, J = −K_ff⁻¹ K_fB interpolated to the
+/// element's middle (see below) — the enhanced S-C's quasi-static reduction
+/// does the same with the catenary's shape derivative
+/// (design/analysis/line_hydrodynamics.hpp).
 /// The tangential drag keeps its slope at the current (its coefficient is a
 /// tenth of the normal one's, and a motion along the line is small).
 void linearize_drag_on_motion(fe_detail::DynamicLine& line, const DofPartition& dofs,
