@@ -626,6 +626,7 @@ DynamicAnalysisResult run_dynamic_analysis(const ValidatedProject& validated, co
     lines.current = model.case_model.current;
     lines.line_types = model.case_model.line_types;
     lines.static_offset = model.initial_offset;
+    lines.static_lines = &model.statics.lines;
     lines.t0_s = result.times_s(0);
     lines.dt_s = result.times_s(1) - result.times_s(0);
     lines.motion = result.total;

@@ -245,7 +245,13 @@ std::vector<LineDynamicsSeries> run_line_dynamics(const Project& project, const 
       const MooringLine& line = *lines[k];
       out[k] = run_one(
           project, k, line.name, "line", line.fairlead_b,
-          [&](const Eigen::Vector3d& top) { return dynamic_mooring_line(project, line, types, input.current, top); },
+          [&](const Eigen::Vector3d& top) {
+            const std::vector<engine::LineProfilePoint>* known_shape = nullptr;
+            if (input.static_lines)
+              for (const LineStaticsRow& row : *input.static_lines)
+                if (row.name == line.name) known_shape = &row.profile;
+            return dynamic_mooring_line(project, line, types, input.current, top, known_shape);
+          },
           input);
     } else {
       const Riser& riser = *risers[k - lines.size()];

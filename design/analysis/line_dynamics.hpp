@@ -39,6 +39,7 @@
 
 #include "design/project/line_properties.hpp"
 #include "design/project/project.hpp"
+#include "design/analysis/statics_study.hpp"
 #include "design/model/riser_model.hpp"
 #include "engine/numerics/sundials_ida.hpp"
 #include "engine/common/eigen_types.hpp"
@@ -100,6 +101,10 @@ struct LineDynamicsInput {
   std::shared_ptr<const engine::WaveRealization> sea;
   /// The project's resolved line types (a case model's); null: resolved here.
   std::shared_ptr<const std::vector<LineTypeProperties>> line_types;
+  /// The static case's mooring lines at static_offset (null: none): a
+  /// line whose FE statics fail from the default initial shape starts again
+  /// from its profile there, as the coupled level's lines do.
+  const std::vector<LineStaticsRow>* static_lines = nullptr;
 };
 
 struct LineDynamicsSeries {

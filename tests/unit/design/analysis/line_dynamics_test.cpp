@@ -175,5 +175,36 @@ TEST(DynamicMooringLine, StartsAgainFromTheElasticCatenaryWhenTheDefaultStartFai
   EXPECT_NEAR(still.statics.node_tension_N.back(), row->fairlead_tension_N, 0.01 * row->fairlead_tension_N);
 }
 
+// The same line under the S-C levels' prescribed motion (`analyze --level
+// sc-enhanced --line-dynamics` of lc3 failed on it): at the S-C static case's
+// equilibrium (current on the lines) its FE statics fail from the default
+// start, and the line starts again from the static case's profile as the
+// coupled level's lines do. The hull held there keeps the static case's
+// tension (the same FE line and current: measured 1e-6; tolerance 1e-3).
+TEST(LineDynamics, ALineThatFailsFromTheDefaultStartStartsFromTheStaticCase) {
+  ValidatedProject vp = load_validated_project(std::string(SPIRAL_SOURCE_DIR) + "/scenarios/deepwater-fps.yaml");
+  StaticCaseRequest request;
+  request.load_case = "lc3-survival-45deg-damaged-L10";
+  request.lines_carry_current = true;
+  const StaticCaseResult statics = run_static_case(vp, request);
+  const auto environment = std::find_if(vp.project.environments.begin(), vp.project.environments.end(),
+                                        [&](const Environment& e) { return e.name == statics.environment; });
+  LineDynamicsInput in = surge_motion(0.0, 100.0, 2.0);
+  for (Eigen::Index k = 0; k < in.motion.cols(); ++k) in.motion.col(k) = statics.offset;
+  in.static_offset = statics.offset;
+  in.damaged_line = "L10";
+  in.current = current_profile_of(*environment);
+  in.include_risers = false;
+  in.only = {"L2"};
+  EXPECT_THROW(run_line_dynamics(vp.project, in), engine::SolverError);
+
+  in.static_lines = &statics.lines;
+  const std::vector<LineDynamicsSeries> out = run_line_dynamics(vp.project, in);
+  ASSERT_EQ(out.size(), 1u);
+  const auto row =
+      std::find_if(statics.lines.begin(), statics.lines.end(), [](const LineStaticsRow& r) { return r.name == "L2"; });
+  EXPECT_NEAR(out[0].tension_N.back(), row->fairlead_tension_N, 1e-3 * row->fairlead_tension_N);
+}
+
 }  // namespace
 }  // namespace spiral::design
