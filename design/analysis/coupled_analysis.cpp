@@ -90,11 +90,9 @@ DynamicAnalysisResult run_coupled_analysis(const ValidatedProject& validated, co
       out.name = line.name;
       out.attachment_b_m = line.fairlead_b;
       // The case's elastic catenary of this line, a second start for its FE statics.
-      const std::vector<engine::LineProfilePoint>* known_shape = nullptr;
-      for (const LineStaticsRow& row : model.statics.lines)
-        if (row.name == line.name) known_shape = &row.profile;
       setup = dynamic_mooring_line(project, line, types, current,
-                                   pose0.reference_point_g + pose0.rotation * line.fairlead_b, known_shape);
+                                   pose0.reference_point_g + pose0.rotation * line.fairlead_b,
+                                   line_profile(model.statics.lines, line.name));
     } else {
       const Riser& riser = project.risers[static_cast<std::size_t>(i) - moorings.size()];
       const RiserDesign design = riser_design(project, riser);

@@ -80,11 +80,8 @@ DynamicLineReduction dynamic_line_reduction(const Project& project, const std::v
     if (i < static_cast<int>(moorings.size())) {
       const MooringLine& line = *moorings[static_cast<std::size_t>(i)];
       attachment_b = line.fairlead_b;
-      const std::vector<engine::LineProfilePoint>* known_shape = nullptr;
-      for (const LineStaticsRow& row : statics.lines)
-        if (row.name == line.name) known_shape = &row.profile;
       setup = dynamic_mooring_line(project, line, types, current, pose.reference_point_g + pose.rotation * attachment_b,
-                                   known_shape);
+                                   line_profile(statics.lines, line.name));
     } else {
       const RiserDesign design = riser_design(project, project.risers[static_cast<std::size_t>(i) - moorings.size()]);
       attachment_b = design.hang_off_b;

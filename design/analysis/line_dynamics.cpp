@@ -246,11 +246,8 @@ std::vector<LineDynamicsSeries> run_line_dynamics(const Project& project, const 
       out[k] = run_one(
           project, k, line.name, "line", line.fairlead_b,
           [&](const Eigen::Vector3d& top) {
-            const std::vector<engine::LineProfilePoint>* known_shape = nullptr;
-            if (input.static_lines)
-              for (const LineStaticsRow& row : *input.static_lines)
-                if (row.name == line.name) known_shape = &row.profile;
-            return dynamic_mooring_line(project, line, types, input.current, top, known_shape);
+            return dynamic_mooring_line(project, line, types, input.current, top,
+                                        input.static_lines ? line_profile(*input.static_lines, line.name) : nullptr);
           },
           input);
     } else {

@@ -81,4 +81,11 @@ StaticsResult run_statics(LineArrayModel& model, const engine::Vector6d& offset)
   return result;
 }
 
+const std::vector<engine::LineProfilePoint>* line_profile(const std::vector<LineStaticsRow>& lines,
+                                                          const std::string& name) {
+  for (const LineStaticsRow& row : lines)
+    if (row.name == name) return &row.profile;
+  return nullptr;
+}
+
 }  // namespace spiral::design

@@ -54,4 +54,9 @@ std::vector<LineStaticsRow> line_statics_rows(const LineArrayModel& model,
 /// Solves the mooring of `model` at `offset`. Throws engine::SolverError naming the line.
 StaticsResult run_statics(LineArrayModel& model, const engine::Vector6d& offset);
 
+/// The profile of the line named `name` among `lines`; null when it is not
+/// there (a second start for that line's FE statics, dynamic_mooring_line).
+const std::vector<engine::LineProfilePoint>* line_profile(const std::vector<LineStaticsRow>& lines,
+                                                          const std::string& name);
+
 }  // namespace spiral::design
