@@ -62,10 +62,6 @@ struct HullDynamicsModel {
   std::optional<RetardationKernel> radiation_memory;      ///< Cummins memory; A must be A(inf)
 };
 
-/// Semi-coupled line model (DESIGN.md §1, step 2): the line array linearized
-/// at the static equilibrium q0,  F = F0 − K (q − q0) − B_lines q'.
-/// The enhanced S-C adds B_lines (line damping) and A_lines (line added mass at
-/// the fairleads, added to M).
 /// A relaxation of the lines' stiffness (a Zener, or standard linear solid,
 /// element): with x = q − q0 and an internal state z (6, m and rad),
 ///   F = −Δ (x − z),   τ ż = x − z,
@@ -79,6 +75,11 @@ struct LineRelaxation {
   double time_constant_s = 0.0;           ///< τ, > 0
 };
 
+/// Semi-coupled line model (DESIGN.md §1, step 2): the line array linearized
+/// at the static equilibrium q0,  F = F0 − K (q − q0) − B_lines q'.
+/// The enhanced S-C adds B_lines (line damping) and A_lines (line added mass at
+/// the fairleads, added to M), and with the lines' dynamic reduction their
+/// relaxations.
 struct LinearizedLines {
   Vector6d force_at_equilibrium = Vector6d::Zero();  ///< F0, N, N·m
   Matrix6d stiffness = Matrix6d::Zero();             ///< K = −dF/dq at q0
