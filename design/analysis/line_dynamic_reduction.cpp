@@ -94,9 +94,8 @@ DynamicLineReduction dynamic_line_reduction(const Project& project, const std::v
         attachments, project.hull.reference_point_g, hull_motion, motion_step_s)[0];
     const std::vector<engine::Matrix3cd> K =
         engine::end_B_dynamic_stiffness(setup.model, setup.environment, setup.statics, omegas, velocity_covariance);
-    Eigen::Matrix<double, 3, 6> T;
-    T << Eigen::Matrix3d::Identity(), -engine::cross_product_matrix(pose.rotation * attachment_b);
-    const Eigen::Matrix<std::complex<double>, 3, 6> Tc = T.cast<std::complex<double>>();
+    const Eigen::Matrix<std::complex<double>, 3, 6> Tc =
+        engine::point_jacobian(pose.rotation * attachment_b).cast<std::complex<double>>();
     for (const engine::Matrix3cd& k : K) mapped[static_cast<std::size_t>(i)].push_back(Tc.transpose() * k * Tc);
   });
 

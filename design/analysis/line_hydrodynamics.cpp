@@ -86,8 +86,7 @@ LineHydrodynamicsResult line_hydrodynamics(LineArrayModel& model, const engine::
              J[j];
     }
     out.line_drag_velocity_std_m_per_s.push_back(n > 0 ? sigma_sum / static_cast<double>(n) : 0.0);
-    Eigen::Matrix<double, 3, 6> T;
-    T << Eigen::Matrix3d::Identity(), -engine::cross_product_matrix(arm);
+    const Eigen::Matrix<double, 3, 6> T = engine::point_jacobian(arm);
     out.added_mass += T.transpose() * A_f * T;
     out.damping += T.transpose() * B_f * T;
   }

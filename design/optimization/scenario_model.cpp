@@ -272,8 +272,7 @@ ScenarioResponse ScenarioModel::evaluate(const Eigen::VectorXd& payouts_m, bool 
       const engine::CatenarySegment& top = catenary.line().segments.back();
       const Eigen::Vector3d& e = catenary.last_direction_g();
       // Fairlead displacement per group, then the in-plane spans.
-      const Eigen::Matrix<double, 3, Eigen::Dynamic> dp =
-          dq.topRows<3>() - engine::cross_product_matrix(arm) * dq.bottomRows<3>();
+      const Eigen::Matrix<double, 3, Eigen::Dynamic> dp = engine::point_jacobian(arm) * dq;
       Eigen::Matrix<double, 2, Eigen::Dynamic> dspan(2, group_count);
       dspan.row(0) = e.transpose() * dp;
       dspan.row(1) = dp.row(2);

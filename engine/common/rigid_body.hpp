@@ -65,6 +65,17 @@ inline Eigen::Matrix3d cross_product_matrix(const Eigen::Vector3d& a) {
   return m;
 }
 
+/// J = [I, −[r×]]: the small rigid-body motion (translation, rotation) of
+/// the reference point → the motion of the body point at arm r (global
+/// axes), and by its transpose a force at that point → the force and moment
+/// about the reference point; Jᵀ K J carries a point's 3×3 stiffness (or
+/// damping, mass) to the body's 6×6.
+inline Eigen::Matrix<double, 3, 6> point_jacobian(const Eigen::Vector3d& r) {
+  Eigen::Matrix<double, 3, 6> J;
+  J << Eigen::Matrix3d::Identity(), -cross_product_matrix(r);
+  return J;
+}
+
 /// The 6×6 rigid-body mass matrix about the reference point (body axes =
 /// global axes at rest) of a body of mass m with its centre of gravity at
 /// r_g and inertia tensor I_g about the centre of gravity:

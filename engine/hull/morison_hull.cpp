@@ -9,6 +9,8 @@
 #include <utility>
 #include <vector>
 
+#include "engine/common/rigid_body.hpp"
+
 namespace spiral::engine {
 namespace {
 
@@ -20,14 +22,6 @@ void check_non_negative(double value, int member, const char* what) {
     throw std::invalid_argument(
         fmt::format("Morison hull: member {}: {} must be finite and >= 0, got {}", member, what, value));
   }
-}
-
-/// J = [I, −[r]x]: rigid-body velocity (v, w) -> velocity of the point r.
-Eigen::Matrix<double, 3, 6> point_jacobian(const Eigen::Vector3d& r) {
-  Eigen::Matrix<double, 3, 6> J;
-  J.leftCols<3>().setIdentity();
-  J.rightCols<3>() << 0.0, r.z(), -r.y(), -r.z(), 0.0, r.x(), r.y(), -r.x(), 0.0;
-  return J;
 }
 
 /// Depth profiles of linear wave theory at z (global, <= 0) per unit

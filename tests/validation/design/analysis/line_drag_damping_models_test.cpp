@@ -45,8 +45,7 @@ TEST(LineDragDampingModels, TheCatenaryAndTheFeLineDampTheSameMotionAlike) {
       setup.environment.seabed_lateral_friction = 0.0;
       const engine::Matrix3cd K =
           engine::end_B_dynamic_stiffness(setup.model, setup.environment, setup.statics, omegas, covariance).front();
-      Eigen::Matrix<double, 3, 6> T;
-      T << Eigen::Matrix3d::Identity(), -engine::cross_product_matrix(arm_g);
+      const Eigen::Matrix<double, 3, 6> T = engine::point_jacobian(arm_g);
       B += T.transpose() * (K.imag() / omegas.front()) * T;
     }
     return B;
