@@ -4,6 +4,7 @@
 #include <Eigen/QR>
 #include <fmt/format.h>
 
+#include <array>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -82,9 +83,14 @@ LineRelaxationFit fit_line_relaxation(std::span<const double> omegas, std::span<
       candidates.push_back({grid[static_cast<std::size_t>(i)], grid[static_cast<std::size_t>(j)]});
   }
 
+  // Each entry's weighted data, the right-hand side of every candidate's fit.
+  std::array<Eigen::VectorXd, 36> rhs;
   double data_norm2 = 0.0;
   for (int r = 0; r < 6; ++r)
-    for (int c = 0; c < 6; ++c) data_norm2 += entry_data(data, weights, r, c).squaredNorm();
+    for (int c = 0; c < 6; ++c) {
+      rhs[static_cast<std::size_t>(6 * r + c)] = entry_data(data, weights, r, c);
+      data_norm2 += rhs[static_cast<std::size_t>(6 * r + c)].squaredNorm();
+    }
 
   // For each choice of time constants: B, A and Δ_j by least squares, made
   // passive, and the residual of that passive model. The least-squares
@@ -99,7 +105,7 @@ LineRelaxationFit fit_line_relaxation(std::span<const double> omegas, std::span<
     std::vector<Matrix6d> coefficients(2 + taus.size(), Matrix6d::Zero());
     for (int r = 0; r < 6; ++r) {
       for (int c = 0; c < 6; ++c) {
-        const Eigen::VectorXd x = qr.solve(entry_data(data, weights, r, c));
+        const Eigen::VectorXd x = qr.solve(rhs[static_cast<std::size_t>(6 * r + c)]);
         for (std::size_t m = 0; m < coefficients.size(); ++m) coefficients[m](r, c) = x(static_cast<Eigen::Index>(m));
       }
     }
