@@ -108,7 +108,6 @@ DynamicLineReduction dynamic_line_reduction(const Project& project, const std::v
   out.frequencies = kBandFrequencies;
   out.lowest_frequency_rad_per_s = kLowestFrequency_rad_per_s;
   out.highest_frequency_rad_per_s = kHighestFrequency_rad_per_s;
-  out.largest_usable_residual = kLargestFitResidual;
   const int mooring_count = static_cast<int>(moorings.size());
   for (const auto& [first, last, group] :
        {std::tuple{0, mooring_count, "mooring lines"}, std::tuple{mooring_count, count, "risers"}}) {

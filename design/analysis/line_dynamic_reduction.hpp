@@ -50,10 +50,9 @@ struct DynamicLineReduction {
   int frequencies = 0;             ///< of the band fitted (the shorter of the two groups')
   double lowest_frequency_rad_per_s = 0.0, highest_frequency_rad_per_s = 0.0;  ///< of the band fitted
   std::string relaxation_summary;  ///< "14.4 s, 112 s (mooring lines); … (risers)"
-  double largest_usable_residual = 0.0;
-  /// Why the fit cannot stand for the lines (a residual above
-  /// largest_usable_residual even over a shortened band, or a band that no
-  /// longer covers the hull's surge, sway and yaw modes); empty: usable.
+  /// Why the fit cannot stand for the lines (a residual above 15 % even
+  /// over a shortened band, or a band that no longer covers the hull's
+  /// surge, sway and yaw modes); empty: usable.
   std::string unusable_reason;
 };
 
