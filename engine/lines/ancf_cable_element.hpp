@@ -98,10 +98,12 @@ inline CurrentSegment current_segment(const LoadContext& ctx, double z) {
     return s;
   }
   // The top row's height belongs to the constant part above the table.
-  const double below_top = std::nextafter(c.back().z_m, -INFINITY);
+  // (Taken only where used: nextafter is a libm call, and this runs at
+  // Gauss points of every line at every residual.)
+  const auto below_top = [&c] { return std::nextafter(c.back().z_m, -INFINITY); };
   if (z >= c.back().z_m) {
     s.velocity = f * c.back().velocity_m_per_s;
-    s.above_m = below_top;
+    s.above_m = below_top();
     return s;
   }
   std::size_t i = 1;
@@ -112,7 +114,7 @@ inline CurrentSegment current_segment(const LoadContext& ctx, double z) {
   s.shear = f * (p1.velocity_m_per_s - p0.velocity_m_per_s) / (p1.z_m - p0.z_m);
   s.z_ref_m = p0.z_m;
   s.above_m = p0.z_m;
-  s.up_to_m = i + 1 == c.size() ? below_top : p1.z_m;
+  s.up_to_m = i + 1 == c.size() ? below_top() : p1.z_m;
   return s;
 }
 

@@ -50,7 +50,7 @@ struct DynamicLine final : ImplicitSystem {
   std::vector<ancf::GaussShapes> shapes;                    // element lengths are fixed
   std::vector<std::array<double, 2>> end_force_offset_N;    // N_0 at ξ = 0, 1 per element (node tensions)
   ancf::LoadContext static_ctx;                             // no current: the drag is dynamic
-  ancf::LoadContext current_ctx;                            // for current_at
+  ancf::LoadContext current_ctx;                            // for CurrentLookup
   std::vector<CurrentProfilePoint> current;
   ancf::SeabedDynamics bed;
   WaveKinematicsFn waves;
@@ -144,13 +144,14 @@ struct DynamicLine final : ImplicitSystem {
       wave_a = element_wave_acceleration[e];
     }
     const RampValue ramp = element_waves ? smooth_ramp(t - options.start_time_s, sea_ramp_s) : RampValue{};
+    ancf::CurrentLookup current_lookup(current_ctx);
     for (std::size_t gp = 0; gp < ancf::kGaussXi.size(); ++gp) {
       const ancf::ShapeAt& sh = shapes[e][gp];
       Eigen::Vector3d r = Eigen::Vector3d::Zero();
       for (int k = 0; k < 4; ++k) r += sh.S[k] * Eigen::Vector3d(qe[3 * k], qe[3 * k + 1], qe[3 * k + 2]);
       Eigen::Vector3d u = Eigen::Vector3d::Zero(), a = Eigen::Vector3d::Zero();
       if (!current.empty()) {
-        const ancf::V3<double> c = ancf::current_at<double>(current_ctx, r.z());
+        const ancf::V3<double> c = current_lookup.at(r.z()).at(r.z());
         u = {c.x, c.y, c.z};
       }
       if (waves) {
