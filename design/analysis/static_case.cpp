@@ -17,13 +17,14 @@
 #include "engine/analysis/static_equilibrium.hpp"
 #include "engine/common/stopwatch.hpp"
 #include "engine/common/table_range_error.hpp"
+#include "engine/common/dof_names.hpp"
 
 namespace spiral::design {
 
 namespace {
 
 constexpr double kRadToDeg = 180.0 / std::numbers::pi;
-constexpr const char* kDofNames[6] = {"surge", "sway", "heave", "roll", "pitch", "yaw"};
+using engine::kDofNames;
 
 OffsetSummary summarize_offset(const engine::Vector6d& offset, double depth_m) {
   OffsetSummary s;

@@ -10,12 +10,12 @@
 
 #include "engine/common/rigid_body.hpp"
 #include "engine/common/table_range_error.hpp"
+#include "engine/common/dof_names.hpp"
 
 namespace spiral::engine {
 
 namespace {
 
-constexpr const char* kDofNames[6] = {"surge", "sway", "heave", "roll", "pitch", "yaw"};
 constexpr int kMaxLineSearchHalvings = 10;
 
 struct Evaluation {

@@ -7,10 +7,11 @@
 #include <numbers>
 #include <vector>
 
+#include "engine/common/dof_names.hpp"
+
 namespace spiral::engine {
 namespace {
 
-constexpr const char* kDofNames[6] = {"surge", "sway", "heave", "roll", "pitch", "yaw"};
 constexpr std::size_t kMinimumFrequencies = 8;
 
 /// int_a^b (K_a + s (t − a)) f(w t) dt for f = cos or sin, exact (integration

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "report/terminal/statics_table.hpp"
+#include "engine/common/dof_names.hpp"
 
 namespace spiral::report {
 
@@ -10,7 +11,7 @@ using namespace design;
 
 namespace {
 
-constexpr const char* kDofNames[6] = {"surge", "sway", "heave", "roll", "pitch", "yaw"};
+using engine::kDofNames;
 
 std::string case_heading(const StaticCaseResult& r, const std::string& project_name) {
   return fmt::format("{} — case '{}' (environment {}, {}{})\n", project_name, r.case_name, r.environment,
