@@ -22,6 +22,7 @@
 #include "engine/analysis/fairlead_velocity.hpp"
 #include "engine/analysis/forcing_table.hpp"
 #include "engine/analysis/line_array.hpp"
+#include "engine/analysis/low_frequency_damping.hpp"
 #include "engine/numerics/sampled_trajectory.hpp"
 #include "engine/numerics/statistics.hpp"
 #include "engine/environment/wave_realization.hpp"
@@ -34,6 +35,7 @@
 #include "engine/hull/radiation_memory.hpp"
 #include "engine/hull/slow_drift.hpp"
 #include "engine/hull/wamit_3.hpp"
+#include "engine/common/dof_names.hpp"
 #include "engine/common/stopwatch.hpp"
 #include "engine/common/table_range_error.hpp"
 
@@ -67,6 +69,23 @@ constexpr double kForcedRunAbsTolRotation = 1e-8;
 /// the wave band is then wholly WF, the moored surge/sway/yaw modes (periods
 /// of minutes) wholly LF.
 constexpr double kMorisonSplitFraction = 0.5;
+
+// Below this fraction of critical damping in surge, sway or yaw the run's
+// notes warn that its slow-drift response is resonance-dominated on damping
+// the model barely has (engine/analysis/low_frequency_damping.hpp: the
+// response grows as 1/sqrt(ζ)). Moored semisubmersibles and FPSOs show 2–10 %
+// in decay tests, most of it from the hull's viscous drag, wave-drift
+// damping and the lines' drag (Faltinsen 1990, §5.5; API RP 2SK §6.3.3's
+// guidance to take the LF damping from model tests), so 1 % is well below
+// any real hull's and above a model that has left all of them out.
+constexpr double kLightLowFrequencyDampingRatio = 0.01;
+constexpr std::array<int, 3> kSlowDriftDofs = {0, 1, 5};
+// ... of a degree of freedom that moves: below these low-frequency standard
+// deviations its slow motion is too small to matter to offsets and tensions
+// (0.1 deg of yaw moves a fairlead 70 m off the centre by 0.12 m), whatever
+// its damping — as the unexcited sway and yaw of a collinear sea.
+constexpr double kSmallestSlowMotion_m = 0.1;
+constexpr double kSmallestSlowMotion_rad = 0.1 * std::numbers::pi / 180.0;
 
 /// A free decay's rotations are kept within this (30 deg): the hull models
 /// (hydrostatics at the mean waterline, small-angle radiation) are not meant
@@ -556,6 +575,7 @@ DynamicAnalysisResult run_dynamic_analysis(const ValidatedProject& validated, co
 
   // Low-frequency dynamics from the static equilibrium, at rest.
   const engine::HullSimulationOptions options = forced_run_options(request);
+  const engine::HullEquations equations = engine::make_hull_equations(model.hull, model.loads);
   if (request.progress && model.loads.external) {
     // Progress from the integrator's time (the force is evaluated at
     // increasing t, up to retried steps); reports at 1 % steps only.
@@ -578,6 +598,7 @@ DynamicAnalysisResult run_dynamic_analysis(const ValidatedProject& validated, co
   result.low_frequency = lf.position;
   result.solver = lf.statistics;
   result.timing.dynamics_s = lf.wall_clock_s;
+  result.low_frequency_damping = engine::low_frequency_damping(equations, lf, kSlowDriftDofs);
 
   // Wave-frequency motions.
   engine::Stopwatch start;
@@ -610,6 +631,30 @@ DynamicAnalysisResult run_dynamic_analysis(const ValidatedProject& validated, co
   }
   result.total = result.low_frequency + result.wave_frequency;
   result.timing.wave_frequency_s = start.seconds();
+
+  // A slow mode that moves, on next to no damping.
+  std::vector<std::string> light;
+  for (const engine::DofDamping& d : result.low_frequency_damping) {
+    const Eigen::VectorXd slow = result.low_frequency.row(d.dof).transpose();
+    if (slow.size() < 2) break;
+    const double std_dev =
+        engine::channel_moments(std::span<const double>(slow.data(), static_cast<std::size_t>(slow.size()))).std_dev;
+    const double floor = d.dof < 3 ? kSmallestSlowMotion_m : kSmallestSlowMotion_rad;
+    if (d.natural_period_s > 0.0 && d.damping_ratio < kLightLowFrequencyDampingRatio && std_dev >= floor) {
+      light.push_back(fmt::format("{} ({:.0f} s, {:.2f} %)", engine::kDofNames[static_cast<std::size_t>(d.dof)],
+                                  d.natural_period_s, 100.0 * d.damping_ratio));
+    }
+  }
+  if (!light.empty()) {
+    const bool enhanced = request.level == AnalysisLevel::semi_coupled_enhanced;
+    result.notes.push_back(fmt::format(
+        "warning: all but undamped at the natural period: {} of critical damping (the hull's damping, current, "
+        "wind and member drag{}, linearized over this run), below {:g} %: the slow-drift response is resonant on "
+        "damping the model barely has. Give the hull its low-frequency damping (hull.hydrodynamics "
+        "linear_damping / quadratic_damping, e.g. from a decay test){}",
+        fmt::join(light, ", "), enhanced ? " and the lines' damping" : "", 100.0 * kLightLowFrequencyDampingRatio,
+        enhanced ? "" : ", or run the enhanced S-C, which adds the lines' damping (--level sc-enhanced)"));
+  }
 
   // Quasi-static fairlead tensions at the total motion.
   start.restart();

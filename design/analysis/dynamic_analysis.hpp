@@ -67,6 +67,7 @@
 #include "design/analysis/static_case.hpp"
 #include "design/project/validated_project.hpp"
 #include "engine/analysis/hull_dynamics.hpp"
+#include "engine/analysis/low_frequency_damping.hpp"
 #include "engine/hull/radiation_memory.hpp"
 #include "engine/hull/wamit_1.hpp"
 #include "engine/hull/wamit_3.hpp"
@@ -226,6 +227,9 @@ struct DynamicAnalysisResult {
   std::vector<engine::LineRelaxation> line_relaxations;  ///< sc-enhanced, dynamic reduction
   std::optional<LineReduction> line_reduction;           ///< sc-enhanced: the one applied (DynamicModel's)
   engine::CvodeStatistics solver;                        ///< hull integrator (not the coupled level)
+  /// Surge, sway and yaw as equivalent linear oscillators over the run (not
+  /// the coupled level; engine/analysis/low_frequency_damping.hpp).
+  std::vector<engine::DofDamping> low_frequency_damping;
   /// Coupled level: the one IDA integration of hull + lines, and its size.
   std::optional<engine::IdaStatistics> coupled_solver;
   long coupled_state_size = 0;
