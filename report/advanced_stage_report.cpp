@@ -270,7 +270,7 @@ Section case_section(const design::CriticalCaseVerification& c) {
                     "clock).",
                     c.case_name, c.coupled->solver_steps, c.coupled->wall_s)});
     for (Block& b : storm_blocks(*c.coupled, id + "-coupled")) s.blocks.push_back(std::move(b));
-    for (const std::string& note : c.coupled->notes) s.blocks.emplace_back(Paragraph{"Note: " + note + "."});
+    for (const std::string& note : c.coupled->notes) s.blocks.emplace_back(note_paragraph(note));
   }
   return s;
 }

@@ -8,6 +8,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <variant>
 #include <vector>
@@ -49,6 +50,15 @@ struct Figure {
 struct Paragraph {
   std::string text;
 };
+
+/// A result's note as a paragraph: "Warning: …" for the notes the design
+/// layer marks "warning: " (something the engineer should act on, e.g. an
+/// all but undamped slow mode), "Note: …" for the others.
+inline Paragraph note_paragraph(const std::string& note) {
+  constexpr std::string_view kWarning = "warning: ";
+  if (note.starts_with(kWarning)) return {"Warning: " + note.substr(kWarning.size()) + "."};
+  return {"Note: " + note + "."};
+}
 
 struct KeyValues {
   std::vector<std::pair<std::string, std::string>> items;

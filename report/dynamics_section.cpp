@@ -257,7 +257,7 @@ Section dynamics_section(const design::StageDynamics& d, const std::string& code
                            text(fmt::format("{:.1f} m", e.allowable_m)), num(e.ratio, 3), verdict(e.passes)});
   }
   s.blocks.emplace_back(checks);
-  for (const std::string& note : d.notes) s.blocks.emplace_back(Paragraph{"Note: " + note + "."});
+  for (const std::string& note : d.notes) s.blocks.emplace_back(note_paragraph(note));
   return s;
 }
 

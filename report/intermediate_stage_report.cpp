@@ -130,7 +130,7 @@ ReportDocument intermediate_stage_report(const design::ValidatedProject& vp, con
                               design::to_string(c.governing_measure), design::to_string(c.storm.level), c.storm.wall_s,
                               c.storm.solver_steps)});
     for (Block& b : storm_blocks(c.storm, "storm-" + slug(c.storm.case_name))) s.blocks.push_back(std::move(b));
-    for (const std::string& note : c.storm.notes) s.blocks.emplace_back(Paragraph{"Note: " + note + "."});
+    for (const std::string& note : c.storm.notes) s.blocks.emplace_back(note_paragraph(note));
     doc.sections.push_back(std::move(s));
   }
   return doc;

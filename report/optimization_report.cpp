@@ -192,7 +192,7 @@ ReportDocument optimization_report(const design::ValidatedProject& vp, const des
 
   Section history{"Iteration history", {}, true};
   history.blocks.emplace_back(history_figure(r));
-  for (const std::string& n : r.notes) history.blocks.emplace_back(Paragraph{"Note: " + n + "."});
+  for (const std::string& n : r.notes) history.blocks.emplace_back(note_paragraph(n));
   doc.sections.push_back(std::move(history));
 
   if (study) {

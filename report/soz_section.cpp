@@ -183,7 +183,7 @@ Section soz_section(const design::SozResult& z, const std::vector<design::Offset
                           num(c.ratio, 3), text(c.governing_riser), verdict(c.passes)});
   }
   s.blocks.emplace_back(check);
-  for (const std::string& note : z.notes) s.blocks.emplace_back(Paragraph{"Note: " + note + "."});
+  for (const std::string& note : z.notes) s.blocks.emplace_back(note_paragraph(note));
   return s;
 }
 

@@ -68,7 +68,8 @@ void print_run_summary(const design::DynamicAnalysisResult& result, double durat
                  *std::max_element(dy.begin(), dy.end()) / 1e3);
     }
   }
-  for (const auto& note : result.notes) fmt::print("  note: {}\n", note);
+  // The design layer marks what the engineer should act on "warning: ".
+  for (const auto& note : result.notes) fmt::print("  {}{}\n", note.starts_with("warning: ") ? "" : "note: ", note);
 }
 
 class AnalyzeCommand : public Command {

@@ -56,6 +56,12 @@ TEST(CliAnalyze, ScRunWritesCsvAndJson) {
     EXPECT_GE(doc["timing_s"][step].get<double>(), 0.0) << step;
   }
   EXPECT_GT(doc["solver"]["steps"].get<long>(), 0);
+  // OC4's hull has no viscous damping and the plain S-C no line damping: its
+  // slow surge is all but undamped, which the run reports and warns of.
+  EXPECT_LT(doc["low_frequency_damping"]["surge"]["damping_ratio"].get<double>(), 1e-3);
+  EXPECT_NEAR(doc["low_frequency_damping"]["surge"]["natural_period_s"].get<double>(), 110.0, 5.0);
+  EXPECT_NE(result.out.find("\n  warning: all but undamped at the natural period: surge ("), std::string::npos)
+      << result.out;
   std::filesystem::remove_all(out);
 }
 

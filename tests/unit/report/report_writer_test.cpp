@@ -89,6 +89,14 @@ TEST(ReportWriter, FailureHalfwayLeavesTheOldReportAndNoTemporaryFolder) {
   fs::remove_all(dir);
 }
 
+// A note the design layer marks "warning: " reads as a warning in the
+// report; every other note as a note.
+TEST(ReportWriter, WarningNotesReadAsWarnings) {
+  EXPECT_EQ(note_paragraph("warning: surge is all but undamped").text, "Warning: surge is all but undamped.");
+  EXPECT_EQ(note_paragraph("current on the lines").text, "Note: current on the lines.");
+  EXPECT_EQ(note_paragraph("a warning: inside").text, "Note: a warning: inside.");
+}
+
 TEST(ReportWriter, CsvQuotesTextAndKeepsFullPrecision) {
   Table t{
       "t", "", {"Name", "Value"}, {{{"a, b", std::nullopt, CellStatus::none}, {"1.2", 1.23456789, CellStatus::none}}}};
