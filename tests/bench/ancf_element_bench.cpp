@@ -11,6 +11,7 @@
 #include <benchmark/benchmark.h>
 
 #include "engine/lines/ancf_cable_element.hpp"
+#include "engine/lines/ancf_dynamic_loads.hpp"
 
 namespace spiral::engine {
 namespace {
@@ -102,6 +103,36 @@ void BM_AncfElementForcesAndTangent(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_AncfElementForcesAndTangent)->ArgName("touchdown")->Arg(0)->Arg(1);
+
+// The dynamics' Newton matrices of the same element (M, C, K; the coupled
+// level's full setups re-evaluate them for every element that moved: 14 % of
+// the deep-water lc1 coupled profile, 2026-12-07), moving in a wave-
+// and current-driven flow, with added mass and drag.
+void BM_AncfElementNewtonMatrices(benchmark::State& state) {
+  Setup s = riser_element(state.range(0) != 0);
+  ancf::DynamicElementProperties d;
+  d.mass_kg_per_m = 190.0;
+  d.added_mass_normal_kg_per_m = 160.0;
+  d.displaced_mass_kg_per_m = 160.0;
+  ancf::SeabedDynamics bed;
+  bed.damping_N_s_per_m2 = 1.0e3;
+  bed.axial_friction = 0.5;
+  bed.lateral_friction = 0.5;
+  ancf::ElementFluid fluid;
+  for (std::size_t gp = 0; gp < 5; ++gp) {
+    fluid.velocity[gp] = {1.2 + 0.05 * static_cast<double>(gp), 0.2, -0.1};
+    fluid.acceleration[gp] = {0.1, 0.02, 0.05};
+  }
+  const std::array<double, 12> v = {0.3, 0.05, -0.2, 1e-4, 0.0, 2e-4, 0.35, 0.04, -0.25, 2e-4, 1e-5, 1e-4};
+  const ancf::GaussShapes shapes = ancf::gauss_shapes(s.element.length_m);
+  ancf::ElementDynamicMatrices m;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(s.q);
+    ancf::element_newton_matrices(s.element, d, shapes, s.load, bed, &fluid, s.q.data(), v.data(), m);
+    benchmark::DoNotOptimize(m);
+  }
+}
+BENCHMARK(BM_AncfElementNewtonMatrices)->ArgName("touchdown")->Arg(0)->Arg(1);
 
 }  // namespace
 }  // namespace spiral::engine
