@@ -60,11 +60,13 @@ namespace spiral::design {
 /// the ends, grow past what the wave-frequency motion then needs and ring
 /// the risers' lightly damped axial modes; ×0.1 takes 2.1× the steps (1.9×
 /// the time; docs/decisions/enhanced-sc-accuracy.md). Without WF motion the
-/// defaults are within 0.5 %. The coupled level used this scale too until
-/// its lines' error was found to be the Newton iteration's on old element
-/// matrices: it now sets its Newton matrix up at every step instead
-/// (engine::CoupledOptions::steps_between_full_setups). The prescribed lines'
-/// error is not that: with a setup at every step and the single-line
+/// defaults are within 0.5 %. The coupled level uses this scale too, with
+/// its Newton matrix set up at every step
+/// (engine::CoupledOptions::steps_between_full_setups): the setup alone had
+/// been taken for enough on lc2's survival sea (+3 to +5 %), but left the
+/// risers' std +10 to +13 % on lc1 and +27 to +37 % on lc5 against 0.03 of
+/// the tolerances (2026-12-07; with both, within 1.6 %). The prescribed lines'
+/// error is not the Newton iteration's: with a setup at every step and the single-line
 /// tolerances, lc5's risers (100 s, std after 30 s) are still +47 to +88 %
 /// against 0.03 of them (0.1: +0.6 to +1.3 %); each line alone takes its own,
 /// longer steps, where in the coupled system the most demanding line sets

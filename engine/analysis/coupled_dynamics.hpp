@@ -122,7 +122,11 @@ struct CoupledOptions {
   /// seabed contact changed, on its old element matrices. 8 rather than
   /// IDA's 20: without wave-frequency motion, lc1 600 s, 2,221 → 1,927 steps,
   /// statistics within 0.7 % (5: no fewer steps, more setups). Under
-  /// wave-frequency motion the risers' top tension needs 1 (below).
+  /// wave-frequency motion the risers' top tension needs 1 (below), and
+  /// tighter line tolerances too: the design layer sets 0.1 of them
+  /// (design/analysis/coupled_analysis.cpp), as the measurements after the
+  /// next paragraph's showed (on the operating case lc5 the setup alone
+  /// left the risers' std +27 to +37 %).
   ///
   /// Why 1 under WF motion: there the elements near the tops turn within a
   /// step, the Newton iteration on old element matrices converges slowly,

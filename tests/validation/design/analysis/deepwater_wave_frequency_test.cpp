@@ -125,20 +125,22 @@ TEST(DeepwaterWaveFrequency, TheScStormMovesAtWaveFrequency) {
 TEST(DeepwaterWaveFrequency, TheCoupledRisersTopTensionIsConvergedUnderWaveFrequencyMotion) {
   // The same risers under (nearly) the same motion, integrated two ways: in
   // the coupled system with the hull, and alone with the enhanced S-C
-  // motion prescribed at the hang-off (line_dynamics, at
-  // kWaveFrequencyLineToleranceScale of the single-line tolerances). Under
-  // WF motion the coupled level sets its Newton matrix up at every step
-  // (CoupledOptions::steps_between_full_setups): with a setup every 8 steps
-  // its risers' std came out +30 to +111 % at the single-line tolerances
-  // (lc2, 100 s), and before this scheme the level needed 0.1 of those. What
-  // remains between the two is the levels' slightly different low-frequency
-  // motion and the coupled lines' wave kinematics at their displaced
-  // positions: 4.4 % at most on lc2's first 100 s (P6 +4.4 %, P1 +0.9 %,
-  // E1 -0.5 %), so 8 % per riser.
+  // motion prescribed at the hang-off (line_dynamics). Under WF motion both
+  // run the lines at kWaveFrequencyLineToleranceScale of the single-line
+  // tolerances, and the coupled level sets its Newton matrix up at every
+  // step (CoupledOptions::steps_between_full_setups). With the setup alone
+  // its risers' std came out +28 to +36 % here (an error of about 20 kN rms,
+  // large against the operating sea's 20-70 kN std; +10 to +13 % on lc1's
+  // survival sea), with a setup every 8 steps worse still. What remains
+  // between the two is the levels' slightly different low-frequency motion
+  // and the coupled lines' wave kinematics at their displaced positions:
+  // 3.1 % at most on lc5's first 100 s (E1 and P5 -3.1 %, P7 0.0 %), so 6 %
+  // per riser. (Against 0.03 of the tolerances, 200 s: the coupled risers
+  // within 1.5 %, the prescribed ones within 4.9 %.)
   const ValidatedProject vp = load_validated_project(kDeepwater);
   ASSERT_EQ(vp.project.hull.hydrodynamics->excitation, ExcitationSource::morison_maccamy_fuchs);
   DynamicAnalysisRequest request;
-  request.load_case = "lc2-survival-collinear-45deg";
+  request.load_case = "lc5-operating-45deg";
   request.duration_s = 100.0;
   request.level = AnalysisLevel::coupled;
   const DynamicAnalysisResult coupled = run_dynamic_analysis(vp, request);
@@ -148,13 +150,15 @@ TEST(DeepwaterWaveFrequency, TheCoupledRisersTopTensionIsConvergedUnderWaveFrequ
   ASSERT_TRUE(coupled.wave_frequency_computed);
   ASSERT_TRUE(coupled.coupled_solver);
   // A full setup at every step (partial updates: a step's retries and
-  // seabed contact changes), refreshing the elements that moved: about 60 %
-  // of the element matrices are kept (CoupledOptions::element_refresh_slope).
+  // seabed contact changes), refreshing the elements that moved: most
+  // element matrices are kept (CoupledOptions::element_refresh_slope; 80 %
+  // in this operating sea, about 60 % in lc2's survival sea), and the ones
+  // near the tops evaluated again.
   const engine::IdaStatistics& solver = *coupled.coupled_solver;
   EXPECT_GE(solver.newton_matrix_setups - solver.newton_matrix_updates, solver.steps);
   const long visits = coupled.coupled_element_matrices_kept + coupled.coupled_element_matrix_evaluations;
   EXPECT_GT(coupled.coupled_element_matrices_kept, visits / 4);
-  EXPECT_GT(coupled.coupled_element_matrix_evaluations, visits / 4);
+  EXPECT_GT(coupled.coupled_element_matrix_evaluations, visits / 10);
   std::cout << "coupled: " << solver.steps << " steps, " << solver.newton_matrix_setups << " setups ("
             << solver.newton_matrix_updates << " partial); element matrices " << coupled.coupled_element_matrices_kept
             << " kept, " << coupled.coupled_element_matrix_evaluations << " evaluated\n";
@@ -181,7 +185,7 @@ TEST(DeepwaterWaveFrequency, TheCoupledRisersTopTensionIsConvergedUnderWaveFrequ
     const double sp = std_after_30s(p->tension_N, prescribed.times_s);
     std::cout << riser.name << ": top-tension std coupled " << sc * 1e-3 << " kN, prescribed " << sp * 1e-3 << " kN ("
               << 100.0 * (sc / sp - 1.0) << " %)\n";
-    EXPECT_NEAR(sc / sp, 1.0, 0.08) << riser.name;
+    EXPECT_NEAR(sc / sp, 1.0, 0.06) << riser.name;
     ++risers;
   }
   EXPECT_EQ(risers, 12);
