@@ -17,6 +17,7 @@
 #include "design/results/results_store.hpp"
 #include "design/workflow/task_batch.hpp"
 #include "engine/common/solver_error.hpp"
+#include "design/analysis/line_dynamics.hpp"
 #include "engine/common/stopwatch.hpp"
 
 namespace spiral::design {
@@ -27,6 +28,15 @@ namespace {
 /// dynamic reduction (stage_dynamics.hpp) — in the task's identity, so that
 /// a store written with the quasi-static reduction is not reused.
 constexpr const char* kStormOptions = "duration_s=10800 output_step_s=0.5 line_reduction=dynamic";
+
+/// The coupled verifications' integrator convention under wave-frequency
+/// motion (design/analysis/coupled_analysis.cpp: the lines at
+/// kWaveFrequencyLineToleranceScale of the single-line tolerances since
+/// 7b8091a), in the task's identity, so that a store written before it (the
+/// risers' top-tension std +10 to +37 %) is not reused.
+std::string verification_options() {
+  return fmt::format("wf_line_tolerance_scale={:g}", kWaveFrequencyLineToleranceScale);
+}
 
 /// What one run shares between its stages.
 struct RunContext {
@@ -358,8 +368,8 @@ StageRun run_advanced(const RunContext& ctx, const Iteration& it, const Intermed
     batch.add<CriticalCaseVerification>(
         identity(it, "verification", name, to_string(AnalysisLevel::coupled),
                  static_cast<std::uint64_t>(case_seed(vp.project, name)),
-                 fmt::format("duration_s={} output_step_s={} max_steps={} rank={} score={:.17g}", base.duration_s,
-                             base.output_step_s, max_steps, ranked.rank, ranked.score)),
+                 fmt::format("duration_s={} output_step_s={} max_steps={} rank={} score={:.17g} {}", base.duration_s,
+                             base.output_step_s, max_steps, ranked.rank, ranked.score, verification_options())),
         [&vp, &intermediate, &ranked, base, max_steps] {
           return verify_critical_case(vp, intermediate, ranked, base, max_steps);
         },
