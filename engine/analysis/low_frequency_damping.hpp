@@ -6,7 +6,7 @@
 // A moored floater's slow surge, sway and yaw are resonant at periods of
 // 60–300 s, where radiation damping has vanished; their response grows as
 // 1/sqrt(ζ) under the broad-band slow-drift force (Faltinsen, Sea Loads on
-// Ships and Offshore Structures, 1990, §5.5), so a model with next to no
+// Ships and Offshore Structures, 1990, ch. 5), so a model with next to no
 // damping there — a hull without viscous damping, lines reduced without
 // their drag — gives a resonant response that no measurement would show.
 // This says so, from the run itself.
