@@ -8,11 +8,11 @@
 #include <functional>
 #include <optional>
 #include <string>
-#include <string_view>
 #include <utility>
 #include <variant>
 #include <vector>
 
+#include "design/project/warning_note.hpp"
 #include "report/image.hpp"
 
 // cairo's context type, declared as cairo.h does, so that users of the
@@ -51,13 +51,10 @@ struct Paragraph {
   std::string text;
 };
 
-/// A result's note as a paragraph: "Warning: …" for the notes the design
-/// layer marks "warning: " (something the engineer should act on, e.g. an
-/// all but undamped slow mode), "Note: …" for the others.
+/// A result's note as a paragraph: "Warning: …" for a warning
+/// (design/project/warning_note.hpp), "Note: …" for the others.
 inline Paragraph note_paragraph(const std::string& note) {
-  constexpr std::string_view kWarning = "warning: ";
-  if (note.starts_with(kWarning)) return {"Warning: " + note.substr(kWarning.size()) + "."};
-  return {"Note: " + note + "."};
+  return {std::string(design::is_warning(note) ? "Warning: " : "Note: ") + std::string(design::note_text(note)) + "."};
 }
 
 struct KeyValues {

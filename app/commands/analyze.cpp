@@ -21,6 +21,7 @@
 #include "design/analysis/dynamic_analysis.hpp"
 #include "design/project/validated_project.hpp"
 #include "design/results/dynamic_analysis_output.hpp"
+#include "design/project/warning_note.hpp"
 
 namespace spiral::app {
 namespace {
@@ -68,8 +69,8 @@ void print_run_summary(const design::DynamicAnalysisResult& result, double durat
                  *std::max_element(dy.begin(), dy.end()) / 1e3);
     }
   }
-  // The design layer marks what the engineer should act on "warning: ".
-  for (const auto& note : result.notes) fmt::print("  {}{}\n", note.starts_with("warning: ") ? "" : "note: ", note);
+  // Warnings (design/project/warning_note.hpp) print as they are written.
+  for (const auto& note : result.notes) fmt::print("  {}{}\n", design::is_warning(note) ? "" : "note: ", note);
 }
 
 class AnalyzeCommand : public Command {

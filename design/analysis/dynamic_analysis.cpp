@@ -18,6 +18,7 @@
 #include "design/analysis/line_dynamic_reduction.hpp"
 #include "design/analysis/line_hydrodynamics.hpp"
 #include "design/model/mooring_model.hpp"
+#include "design/project/warning_note.hpp"
 #include "design/project/project_validation.hpp"
 #include "engine/analysis/fairlead_velocity.hpp"
 #include "engine/analysis/forcing_table.hpp"
@@ -648,13 +649,13 @@ DynamicAnalysisResult run_dynamic_analysis(const ValidatedProject& validated, co
   }
   if (!light.empty()) {
     const bool enhanced = request.level == AnalysisLevel::semi_coupled_enhanced;
-    result.notes.push_back(fmt::format(
-        "warning: all but undamped at the natural period: {} of critical damping (the hull's damping, current, "
+    result.notes.push_back(warning_note(fmt::format(
+        "all but undamped at the natural period: {} of critical damping (the hull's damping, current, "
         "wind and member drag{}, linearized over this run), below {:g} %: the slow-drift response is resonant on "
         "damping the model barely has. Give the hull its low-frequency damping (hull.hydrodynamics "
         "linear_damping / quadratic_damping, e.g. from a decay test){}",
         fmt::join(light, ", "), enhanced ? " and the lines' damping" : "", 100.0 * kLightLowFrequencyDampingRatio,
-        enhanced ? "" : ", or run the enhanced S-C, which adds the lines' damping (--level sc-enhanced)"));
+        enhanced ? "" : ", or run the enhanced S-C, which adds the lines' damping (--level sc-enhanced)")));
   }
 
   // Quasi-static fairlead tensions at the total motion.

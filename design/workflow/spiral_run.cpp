@@ -9,6 +9,7 @@
 #include <sstream>
 #include <thread>
 
+#include "design/analysis/line_dynamics.hpp"
 #include "design/project/model_hash.hpp"
 #include "design/project/project_edit.hpp"
 #include "design/project/request_error.hpp"
@@ -17,7 +18,6 @@
 #include "design/results/results_store.hpp"
 #include "design/workflow/task_batch.hpp"
 #include "engine/common/solver_error.hpp"
-#include "design/analysis/line_dynamics.hpp"
 #include "engine/common/stopwatch.hpp"
 
 namespace spiral::design {
