@@ -55,10 +55,16 @@ std::string model_hash(const std::filesystem::path& file) {
 }
 
 std::string project_content_hash(const std::filesystem::path& project_file, const Project& project) {
+  // `extends` names where a variation's base is, which enters by its
+  // content below: left out, a project and its base moved together (a clone
+  // elsewhere, spiral run's iteration files, which extend by absolute path)
+  // keep their hash and their stored results.
   const auto canonical_yaml = [](const std::filesystem::path& file) {
     YAML::Emitter canonical;
     try {
-      canonical << YAML::LoadFile(file.string());
+      YAML::Node tree = YAML::LoadFile(file.string());
+      if (tree.IsMap()) tree.remove("extends");
+      canonical << tree;
     } catch (const YAML::Exception& e) {
       throw std::runtime_error(fmt::format("{}: cannot read the project file: {}", file.string(), e.what()));
     }

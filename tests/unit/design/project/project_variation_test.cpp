@@ -219,5 +219,23 @@ TEST(ProjectVariation, TheContentHashCoversTheBase) {
   fs::remove_all(dir);
 }
 
+// Where the base lies is not the model: the same variation extending the
+// same base from another folder (a clone elsewhere; spiral run's iteration
+// files extend by absolute path) hashes alike, so its stored results are
+// found again.
+TEST(ProjectVariation, TheContentHashDoesNotDependOnWhereTheBaseLies) {
+  const fs::path dir = fresh_folder("spiral-variation-hash-moved");
+  write(dir / "base.yaml", kMinimal);
+  write(dir / "variation.yaml", kVariation);
+  write(dir / "elsewhere" / "base-copy.yaml", kMinimal);
+  write(dir / "absolute.yaml",
+        replace(kVariation, "extends: base.yaml", "extends: " + (dir / "elsewhere" / "base-copy.yaml").string()));
+  const auto hash = [](const fs::path& file) { return project_content_hash(file, load_project(file)); };
+  EXPECT_EQ(hash(dir / "absolute.yaml"), hash(dir / "variation.yaml"));
+  write(dir / "elsewhere" / "base-copy.yaml", replace(kMinimal, "length: 550.0", "length: 551.0"));
+  EXPECT_NE(hash(dir / "absolute.yaml"), hash(dir / "variation.yaml"));
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace spiral::design
