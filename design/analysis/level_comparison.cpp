@@ -56,6 +56,7 @@ LevelSummary summarize_level(const DynamicAnalysisResult& result) {
   s.line_dynamics_wall_s = result.timing.line_dynamics_s;
   s.channels = summarize_channels(result);
   s.notes = result.notes;
+  s.low_frequency_damping = result.low_frequency_damping;
   s.coupled_solver = result.coupled_solver;
   return s;
 }

@@ -45,6 +45,9 @@ struct LevelSummary {
   double line_dynamics_wall_s = 0.0;  ///< prescribed-motion FE lines (non-coupled levels)
   std::vector<ChannelSummary> channels;
   std::vector<std::string> notes;
+  /// Surge, sway and yaw as equivalent linear oscillators over the level's
+  /// run (not the coupled level: DynamicAnalysisResult).
+  std::vector<engine::DofDamping> low_frequency_damping;
   std::optional<engine::IdaStatistics> coupled_solver;
   /// The solver failure that stopped this level (its channels are then
   /// empty); the other levels still run.

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "engine/common/dof_names.hpp"
+
 namespace spiral::design {
 
 nlohmann::json comparison_to_json(const LevelComparison& c) {
@@ -54,6 +56,14 @@ nlohmann::json comparison_to_json(const LevelComparison& c) {
                       {"residual_evaluations", l.coupled_solver->residual_evaluations},
                       {"jacobian_evaluations", l.coupled_solver->newton_matrix_setups},
                       {"error_test_failures", l.coupled_solver->error_test_failures}};
+    }
+    if (!l.low_frequency_damping.empty()) {
+      nlohmann::json damping = nlohmann::json::object();
+      for (const engine::DofDamping& d : l.low_frequency_damping) {
+        damping[engine::kDofNames[static_cast<std::size_t>(d.dof)]] = {{"natural_period_s", d.natural_period_s},
+                                                                       {"damping_ratio", d.damping_ratio}};
+      }
+      lj["low_frequency_damping"] = std::move(damping);
     }
     lj["notes"] = l.notes;
     levels[to_string(l.level)] = lj;

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 namespace spiral::report {
 
 using namespace design;
@@ -41,6 +43,19 @@ std::string comparison_table(const LevelComparison& c) {
       if (ch.name.rfind("qs_tension_", 0) == 0) row(ch.name, 1e-3, "kN");
     }
   }
+  // How much of critical the slow surge is damped at each level (the
+  // coupled level's lines are not reduced to a damping): the reason a level
+  // without line damping overshoots.
+  std::string damping = fmt::format("{:<24}", "surge LF damping [%]");
+  for (const LevelSummary& l : c.levels) {
+    const auto surge = std::find_if(l.low_frequency_damping.begin(), l.low_frequency_damping.end(),
+                                    [](const engine::DofDamping& d) { return d.dof == 0; });
+    damping += fmt::format(
+        " | {:>24}", surge == l.low_frequency_damping.end() || surge->natural_period_s <= 0.0
+                         ? std::string("-")
+                         : fmt::format("{:.2f} at {:.0f} s", 100.0 * surge->damping_ratio, surge->natural_period_s));
+  }
+  out += damping + "\n";
   std::string cost = fmt::format("{:<24}", "wall-clock [s]");
   std::string speed = fmt::format("{:<24}", "speed-up vs coupled");
   for (const LevelSummary& l : c.levels) {

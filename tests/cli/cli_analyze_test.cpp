@@ -135,6 +135,12 @@ TEST(CliCompare, FourLevelsSideBySide) {
   EXPECT_GT(j["levels"]["sc"]["speedup_vs_coupled"].get<double>(), 1.0);
   EXPECT_TRUE(j["levels"]["sc"]["channels"]["offset_m"].contains("diff_pct_vs_coupled"));
   EXPECT_TRUE(j["levels"]["coupled"]["channels"].contains("tension_L2_N"));
+  // OC4's hull has no viscous damping: its slow surge is damped by the lines
+  // alone, which only the enhanced S-C reduces to a damping.
+  EXPECT_LT(j["levels"]["sc"]["low_frequency_damping"]["surge"]["damping_ratio"].get<double>(), 1e-3);
+  EXPECT_GT(j["levels"]["sc-enhanced"]["low_frequency_damping"]["surge"]["damping_ratio"].get<double>(), 0.02);
+  EXPECT_FALSE(j["levels"]["coupled"].contains("low_frequency_damping"));
+  EXPECT_NE(result.out.find("surge LF damping [%]"), std::string::npos) << result.out;
   // The trade-off plot beside the table (cairo writes the text as glyphs).
   const std::string svg = read_text((out / "comparison.svg").string());
   EXPECT_NE(svg.find("<svg"), std::string::npos);

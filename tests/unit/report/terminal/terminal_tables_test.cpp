@@ -43,10 +43,22 @@ TEST(TerminalTables, ComparisonTableGivesMpmDifferenceAgainstCoupled) {
   };
   c.levels.push_back(level(design::AnalysisLevel::semi_coupled, 11.0, 1.0));
   c.levels.push_back(level(design::AnalysisLevel::coupled, 10.0, 100.0));
+  engine::DofDamping surge;
+  surge.dof = 0;
+  surge.natural_period_s = 110.4;
+  surge.damping_ratio = 0.0412;
+  c.levels.front().low_frequency_damping.push_back(surge);
   const std::string table = comparison_table(c);
   EXPECT_NE(table.find("offset_m [m]"), std::string::npos) << table;
   EXPECT_NE(table.find("+10%"), std::string::npos) << table;    // sc against coupled
   EXPECT_NE(table.find("100.0x"), std::string::npos) << table;  // speed-up of sc
+  // The slow surge's damping ratio of each level that reduces the lines to
+  // one; the coupled level has none.
+  const std::size_t row = table.find("surge LF damping [%]");
+  ASSERT_NE(row, std::string::npos) << table;
+  const std::string line = table.substr(row, table.find('\n', row) - row);
+  EXPECT_NE(line.find("4.12 at 110 s"), std::string::npos) << line;
+  EXPECT_NE(line.find("| " + std::string(23, ' ') + "-"), std::string::npos) << line;
 }
 
 }  // namespace
