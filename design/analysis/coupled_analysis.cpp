@@ -54,6 +54,15 @@ engine::PrescribedHullMotionFn ramped_wave_motion(const Eigen::Matrix<double, 6,
   };
 }
 
+/// The lines' integrator tolerances (relative, shared with the hull, and
+/// absolute) × factor.
+void scale_line_tolerances(engine::CoupledOptions& options, double factor) {
+  options.relative_tolerance *= factor;
+  options.position_tolerance_m *= factor;
+  options.slope_tolerance *= factor;
+  options.velocity_tolerance_m_per_s *= factor;
+}
+
 }  // namespace
 
 DynamicAnalysisResult run_coupled_analysis(const ValidatedProject& validated, const DynamicAnalysisRequest& request) {
@@ -130,10 +139,7 @@ DynamicAnalysisResult run_coupled_analysis(const ValidatedProject& validated, co
   options.threads = engine::worker_count(count);
   options.take_freed_cores = true;
   const double scale = request.tolerance_scale;
-  options.relative_tolerance *= scale;
-  options.position_tolerance_m *= scale;
-  options.slope_tolerance *= scale;
-  options.velocity_tolerance_m_per_s *= scale;
+  scale_line_tolerances(options, scale);
   options.hull_position_tolerance_m *= scale;
   options.hull_rotation_tolerance_rad *= scale;
   if (options.wave_frequency_motion) {
@@ -150,10 +156,7 @@ DynamicAnalysisResult run_coupled_analysis(const ValidatedProject& validated, co
     options.steps_between_full_setups = 1;
     options.element_refresh_slope = kWaveFrequencyElementRefreshSlope;
     options.element_refresh_velocity_m_per_s = kWaveFrequencyElementRefreshVelocity_m_per_s;
-    options.relative_tolerance *= kWaveFrequencyLineToleranceScale;
-    options.position_tolerance_m *= kWaveFrequencyLineToleranceScale;
-    options.slope_tolerance *= kWaveFrequencyLineToleranceScale;
-    options.velocity_tolerance_m_per_s *= kWaveFrequencyLineToleranceScale;
+    scale_line_tolerances(options, kWaveFrequencyLineToleranceScale);
     result.notes.push_back(fmt::format(
         "coupled: under wave-frequency motion the Newton matrix is set up afresh at every step, with the "
         "element matrices of every element that moved, and the lines' tolerances are {:g} of the single-line "
