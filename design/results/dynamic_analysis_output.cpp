@@ -120,22 +120,8 @@ nlohmann::json dynamic_analysis_to_json(const DynamicAnalysisResult& r, const st
   nlohmann::json drift = nlohmann::json::array();
   for (int d = 0; d < 6; ++d) drift.push_back(r.mean_slow_drift_force(d));
   j["mean_slow_drift_force_N"] = drift;
-  if (!r.low_frequency_damping.empty()) {
-    // Surge, sway and yaw as equivalent linear oscillators over the run
-    // (engine/analysis/low_frequency_damping.hpp); SI, yaw per radian (a
-    // ratio and a period need no unit of angle).
-    nlohmann::json damping = nlohmann::json::object();
-    for (const engine::DofDamping& d : r.low_frequency_damping) {
-      const bool angle = d.dof >= 3;
-      damping[kDofNames[static_cast<std::size_t>(d.dof)]] = {
-          {"natural_period_s", d.natural_period_s},
-          {"damping_ratio", d.damping_ratio},
-          {angle ? "mass_kg_m2" : "mass_kg", d.mass},
-          {angle ? "stiffness_N_m_per_rad" : "stiffness_N_per_m", d.stiffness},
-          {angle ? "damping_N_m_s_per_rad" : "damping_N_s_per_m", d.damping}};
-    }
-    j["low_frequency_damping"] = std::move(damping);
-  }
+  if (!r.low_frequency_damping.empty())
+    j["low_frequency_damping"] = low_frequency_damping_to_json(r.low_frequency_damping);
   if (r.line_added_mass) j["line_added_mass"] = matrix_json(*r.line_added_mass);
   if (r.line_damping) j["line_damping"] = matrix_json(*r.line_damping);
   if (r.line_reduction) j["line_reduction"] = *r.line_reduction == LineReduction::dynamic ? "dynamic" : "quasi-static";
@@ -201,6 +187,21 @@ nlohmann::json dynamic_analysis_to_json(const DynamicAnalysisResult& r, const st
   }
   j["notes"] = r.notes;
   return j;
+}
+
+nlohmann::json low_frequency_damping_to_json(const std::vector<engine::DofDamping>& oscillators) {
+  // SI, rotations per radian (a ratio and a period need no unit of angle).
+  nlohmann::json out = nlohmann::json::object();
+  for (const engine::DofDamping& d : oscillators) {
+    const bool angle = d.dof >= 3;
+    out[kDofNames[static_cast<std::size_t>(d.dof)]] = {
+        {"natural_period_s", d.natural_period_s},
+        {"damping_ratio", d.damping_ratio},
+        {angle ? "mass_kg_m2" : "mass_kg", d.mass},
+        {angle ? "stiffness_N_m_per_rad" : "stiffness_N_per_m", d.stiffness},
+        {angle ? "damping_N_m_s_per_rad" : "damping_N_s_per_m", d.damping}};
+  }
+  return out;
 }
 
 }  // namespace spiral::design

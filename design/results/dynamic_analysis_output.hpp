@@ -31,4 +31,10 @@ std::string dynamic_time_series_csv(const DynamicAnalysisResult& result);
 /// "extremes_unavailable" with the reason instead of the MPMs.
 nlohmann::json dynamic_analysis_to_json(const DynamicAnalysisResult& result, const std::string& project_name);
 
+/// Equivalent linear oscillators (engine/analysis/low_frequency_damping.hpp)
+/// keyed by DOF name: natural period, damping ratio, and the mass,
+/// stiffness and damping behind them, SI, rotations per radian — the same
+/// object in summary.json and comparison.json.
+nlohmann::json low_frequency_damping_to_json(const std::vector<engine::DofDamping>& oscillators);
+
 }  // namespace spiral::design

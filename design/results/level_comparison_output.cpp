@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "engine/common/dof_names.hpp"
+#include "design/results/dynamic_analysis_output.hpp"
 
 namespace spiral::design {
 
@@ -57,14 +57,8 @@ nlohmann::json comparison_to_json(const LevelComparison& c) {
                       {"jacobian_evaluations", l.coupled_solver->newton_matrix_setups},
                       {"error_test_failures", l.coupled_solver->error_test_failures}};
     }
-    if (!l.low_frequency_damping.empty()) {
-      nlohmann::json damping = nlohmann::json::object();
-      for (const engine::DofDamping& d : l.low_frequency_damping) {
-        damping[engine::kDofNames[static_cast<std::size_t>(d.dof)]] = {{"natural_period_s", d.natural_period_s},
-                                                                       {"damping_ratio", d.damping_ratio}};
-      }
-      lj["low_frequency_damping"] = std::move(damping);
-    }
+    if (!l.low_frequency_damping.empty())
+      lj["low_frequency_damping"] = low_frequency_damping_to_json(l.low_frequency_damping);
     lj["notes"] = l.notes;
     levels[to_string(l.level)] = lj;
   }
