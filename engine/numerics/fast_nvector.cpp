@@ -177,9 +177,72 @@ int dot_prod_multi(int nvec, N_Vector x, N_Vector* Y, realtype* d) {
   return 0;
 }
 
+// nvector_serial.c's own arithmetic, for an integrator whose adaptive step
+// sequence hangs on the last bit (CVODE's error test on a few dozen states):
+// the linear sum's special cases (a = b sums first, c (x + y)) and the
+// reductions as one running sum in index order.
+void linear_sum_as_library(realtype a, N_Vector x, realtype b, N_Vector y, N_Vector z) {
+  if (a == b || a == -b) {
+    const double *xv = NV_DATA_S(x), *yv = NV_DATA_S(y);
+    double* zv = NV_DATA_S(z);
+    const bool sum = a == b && !((b == 1.0 && z == y) || (a == 1.0 && z == x));
+    const bool difference = a == -b && a != 1.0 && a != -1.0 && !((b == 1.0 && z == y) || (a == 1.0 && z == x));
+    if (sum && a != 1.0) {
+      for (sunindextype i = 0; i < NV_LENGTH_S(z); ++i) zv[i] = a * (xv[i] + yv[i]);
+      return;
+    }
+    if (difference) {
+      for (sunindextype i = 0; i < NV_LENGTH_S(z); ++i) zv[i] = a * (xv[i] - yv[i]);
+      return;
+    }
+  }
+  linear_sum(a, x, b, y, z);
+}
+template <class Term>
+double in_order_sum(Eigen::Index n, const Term& term) {
+  double sum = 0.0;
+  for (Eigen::Index i = 0; i < n; ++i) sum += term(i);
+  return sum;
+}
+realtype dot_in_order(N_Vector x, N_Vector y) {
+  const double *a = NV_DATA_S(x), *b = NV_DATA_S(y);
+  return in_order_sum(NV_LENGTH_S(x), [&](Eigen::Index i) { return a[i] * b[i]; });
+}
+realtype wrms_norm_in_order(N_Vector x, N_Vector w) {
+  const double *a = NV_DATA_S(x), *b = NV_DATA_S(w);
+  const double sum = in_order_sum(NV_LENGTH_S(x), [&](Eigen::Index i) {
+    const double p = a[i] * b[i];
+    return p * p;
+  });
+  return std::sqrt(sum / static_cast<double>(NV_LENGTH_S(x)));
+}
+realtype wrms_norm_mask_in_order(N_Vector x, N_Vector w, N_Vector id) {
+  const double *a = NV_DATA_S(x), *b = NV_DATA_S(w), *m = NV_DATA_S(id);
+  const double sum = in_order_sum(NV_LENGTH_S(x), [&](Eigen::Index i) {
+    const double p = a[i] * b[i];
+    return m[i] > 0.0 ? p * p : 0.0;
+  });
+  return std::sqrt(sum / static_cast<double>(NV_LENGTH_S(x)));
+}
+realtype wl2_norm_in_order(N_Vector x, N_Vector w) {
+  const double *a = NV_DATA_S(x), *b = NV_DATA_S(w);
+  return std::sqrt(in_order_sum(NV_LENGTH_S(x), [&](Eigen::Index i) {
+    const double p = a[i] * b[i];
+    return p * p;
+  }));
+}
+realtype l1_norm_in_order(N_Vector x) {
+  const double* a = NV_DATA_S(x);
+  return in_order_sum(NV_LENGTH_S(x), [&](Eigen::Index i) { return std::abs(a[i]); });
+}
+int dot_prod_multi_in_order(int nvec, N_Vector x, N_Vector* Y, realtype* d) {
+  for (int j = 0; j < nvec; ++j) d[j] = dot_in_order(x, Y[j]);
+  return 0;
+}
+
 }  // namespace
 
-void install(N_Vector v) {
+void install(N_Vector v, Arithmetic arithmetic) {
   N_Vector_Ops o = v->ops;
   o->nvlinearsum = &linear_sum;
   o->nvconst = &constant;
@@ -202,6 +265,15 @@ void install(N_Vector v) {
   o->nvlinearcombination = &linear_combination;
   o->nvscaleaddmulti = &scale_add_multi;
   o->nvdotprodmulti = &dot_prod_multi;
+  if (arithmetic == Arithmetic::library) {
+    o->nvlinearsum = &linear_sum_as_library;
+    o->nvdotprod = &dot_in_order;
+    o->nvwrmsnorm = &wrms_norm_in_order;
+    o->nvwrmsnormmask = &wrms_norm_mask_in_order;
+    o->nvwl2norm = &wl2_norm_in_order;
+    o->nvl1norm = &l1_norm_in_order;
+    o->nvdotprodmulti = &dot_prod_multi_in_order;
+  }
 }
 
 void set_solve_context(WorkerPool* pool, const std::vector<Eigen::Index>* error_groups) {

@@ -1,10 +1,12 @@
 #include "engine/numerics/sundials_cvode.hpp"
 
+#include "engine/numerics/fast_dense.hpp"
+#include "engine/numerics/fast_nvector.hpp"
+
 #include <cvode/cvode.h>
 #include <fmt/format.h>
 #include <nvector/nvector_serial.h>
 #include <sundials/sundials_context.h>
-#include <sunlinsol/sunlinsol_dense.h>
 #include <sunmatrix/sunmatrix_dense.h>
 #include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
 
@@ -178,6 +180,8 @@ CvodeIntegrator::CvodeIntegrator(OdeRightHandSide rhs, double t0_s, const Eigen:
   }
   m.y = N_VNew_Serial(n, m.context);
   if (m.y == nullptr) throw SolverError("CVODE setup: N_VNew_Serial failed");
+  // Before CVodeInit, so that every vector CVODE clones from y has them.
+  fast_nvector::install(m.y, fast_nvector::Arithmetic::library);
   Eigen::Map<Eigen::VectorXd>(N_VGetArrayPointer_Serial(m.y), y0.size()) = y0;
 
   const int lmm = options.method == CvodeMethod::bdf_newton_dense ? CV_BDF : CV_ADAMS;
@@ -200,10 +204,11 @@ CvodeIntegrator::CvodeIntegrator(OdeRightHandSide rhs, double t0_s, const Eigen:
     m.check(CVodeSetNonlinearSolver(m.cvode, m.nonlinear_solver), "CVodeSetNonlinearSolver");
   } else {
     m.matrix = SUNDenseMatrix(n, n, m.context);
-    m.linear_solver = SUNLinSol_Dense(m.y, m.matrix, m.context);
+    m.linear_solver = fast_dense::make_lu_solver(n, m.context);
     if (m.matrix == nullptr || m.linear_solver == nullptr) {
       throw SolverError("CVODE setup: dense matrix / linear solver creation failed");
     }
+    fast_dense::install(m.matrix);
     m.check(CVodeSetLinearSolver(m.cvode, m.linear_solver, m.matrix), "CVodeSetLinearSolver");
   }
   m.check(CVodeSetMaxNumSteps(m.cvode, options.max_steps_between_outputs), "CVodeSetMaxNumSteps");
