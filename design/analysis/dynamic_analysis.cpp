@@ -469,7 +469,8 @@ DynamicModel build_dynamic_model(const ValidatedProject& validated, const Dynami
     const engine::HullTimeSeries plain = engine::simulate_hull(model.hull, model.loads, model.initial_offset,
                                                                engine::Vector6d::Zero(), forced_run_options(request));
     Eigen::Matrix<double, 6, Eigen::Dynamic> motion = plain.position;
-    if (const auto wf = wave_frequency_motions(validated, model, plain.times_s)) motion += *wf;
+    model.wave_frequency_at_outputs = wave_frequency_motions(validated, model, plain.times_s);
+    if (model.wave_frequency_at_outputs) motion += *model.wave_frequency_at_outputs;
     model.line_reduction = LineReduction::quasi_static;
     if (request.line_reduction == LineReduction::dynamic) {
       // Every line's FE impedance about its current-loaded static state,
@@ -622,7 +623,9 @@ DynamicAnalysisResult run_dynamic_analysis(const ValidatedProject& validated, co
         fmt::format("Morison hull: low- and wave-frequency motions integrated together with the member "
                     "loads; split by a zero-phase low-pass at {:.3g} rad/s ({:g} x the lowest wave frequency)",
                     model.wave_split_frequency_rad_per_s, kMorisonSplitFraction));
-  } else if (auto wf = wave_frequency_motions(validated, model, lf.times_s)) {
+  } else if (auto wf = model.wave_frequency_at_outputs && model.wave_frequency_at_outputs->cols() == lf.times_s.size()
+                           ? std::move(model.wave_frequency_at_outputs)
+                           : wave_frequency_motions(validated, model, lf.times_s)) {
     result.wave_frequency = std::move(*wf);
     result.wave_frequency_computed = true;
   } else if (environment.waves) {

@@ -189,6 +189,10 @@ struct DynamicModel {
   /// The case's seeded wave realization (empty without waves): the slow
   /// drift, the Morison hull and the dynamic lines all see this one sea.
   std::shared_ptr<const engine::WaveRealization> sea;
+  /// sc-enhanced: the wave-frequency motions at the output times (a
+  /// function of time alone), computed for the lines' drag linearization and
+  /// taken again for the result; empty without them.
+  std::optional<Eigen::Matrix<double, 6, Eigen::Dynamic>> wave_frequency_at_outputs;
   std::vector<std::string> notes;
   AnalysisTimings timing;  ///< equilibrium, reduction and forcing: what building the model cost
 };
