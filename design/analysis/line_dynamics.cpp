@@ -38,11 +38,12 @@ engine::FeDynamicEnvironment dynamic_environment(const Project& project,
 
 /// The position at unstretched arc length `s_m` from the anchor along a
 /// profile (linear between its points, its ends held beyond them).
-Eigen::Vector3d profile_position(const std::vector<engine::LineProfilePoint>& profile, double s_m) {
+template <class Point>
+Eigen::Vector3d profile_position(const std::vector<Point>& profile, double s_m) {
   if (s_m <= profile.front().arc_length_m) return profile.front().position_g;
   for (std::size_t i = 1; i < profile.size(); ++i) {
-    const engine::LineProfilePoint& a = profile[i - 1];
-    const engine::LineProfilePoint& b = profile[i];
+    const Point& a = profile[i - 1];
+    const Point& b = profile[i];
     if (s_m <= b.arc_length_m) {
       const double span = b.arc_length_m - a.arc_length_m;
       const double t = span > 0.0 ? (s_m - a.arc_length_m) / span : 1.0;
@@ -98,12 +99,21 @@ DynamicLineSetup dynamic_mooring_line(const Project& project, const MooringLine&
 }
 
 DynamicLineSetup dynamic_riser(const Project& project, const RiserDesign& design,
-                               const std::optional<engine::CurrentProfile>& current,
-                               const Eigen::Vector3d& hang_off_g) {
+                               const std::optional<engine::CurrentProfile>& current, const Eigen::Vector3d& hang_off_g,
+                               const std::vector<RiserProfilePoint>* equilibrium) {
   DynamicLineSetup setup;
   setup.model = design.fe_model;
   setup.environment = dynamic_environment(project, current, design.sections.front().properties.hydrodynamic_diameter_m);
-  const std::unique_ptr<engine::FeStaticLine> line = riser_static_line(project, design, current);
+  engine::FeStaticsOptions options;
+  if (equilibrium && equilibrium->size() >= 2) {
+    options.initial_shape = [equilibrium](double s_m) { return profile_position(*equilibrium, s_m); };
+    options.initial_shape_is_equilibrium = true;
+    // Every FE node, the one moved onto the touchdown point included.
+    if (equilibrium->size() == engine::fe_line_mesh(design.fe_model).size())
+      for (const RiserProfilePoint& point : *equilibrium)
+        options.warm_start_node_arc_length_m.push_back(point.arc_length_m);
+  }
+  const std::unique_ptr<engine::FeStaticLine> line = riser_static_line(project, design, current, options);
   try {
     line->solve(hang_off_g);
   } catch (const engine::SolverError& e) {

@@ -40,6 +40,7 @@
 #include "design/project/line_properties.hpp"
 #include "design/project/project.hpp"
 #include "design/analysis/statics_study.hpp"
+#include "design/criteria/riser_checks.hpp"
 #include "design/model/riser_model.hpp"
 #include "engine/numerics/sundials_ida.hpp"
 #include "engine/common/eigen_types.hpp"
@@ -135,8 +136,13 @@ DynamicLineSetup dynamic_mooring_line(const Project& project, const MooringLine&
                                       const Eigen::Vector3d& top_g,
                                       const std::vector<engine::LineProfilePoint>* known_shape = nullptr);
 /// A riser (FE with bending, from its foot to the hang-off at `top_g`).
+/// `equilibrium` (optional): its FE node profile solved at these ends in this
+/// current before (a static case's RiserStaticsRow::profile): Newton starts
+/// from it (engine::FeStaticsOptions::initial_shape_is_equilibrium) instead
+/// of swinging a cold shape into the current.
 DynamicLineSetup dynamic_riser(const Project& project, const RiserDesign& design,
-                               const std::optional<engine::CurrentProfile>& current, const Eigen::Vector3d& top_g);
+                               const std::optional<engine::CurrentProfile>& current, const Eigen::Vector3d& top_g,
+                               const std::vector<RiserProfilePoint>* equilibrium = nullptr);
 
 /// The output times of `input` (t0 + k dt over the motion).
 std::vector<double> line_dynamics_output_times(const LineDynamicsInput& input);

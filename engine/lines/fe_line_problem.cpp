@@ -338,6 +338,8 @@ Eigen::VectorXd initial_state(Problem& p, const FeLineModel& m, const FeEnvironm
   } else {
     const InitialShape catenary = default_initial_shape(m, env, ends.end_A_m, ends.end_B_m);
     std::function<Eigen::Vector3d(double)> shape = o.initial_shape ? o.initial_shape : catenary.position_m;
+    const bool equilibrium = o.initial_shape && o.initial_shape_is_equilibrium;
+    if (equilibrium && !o.warm_start_node_arc_length_m.empty()) set_node_arc_lengths(p, o.warm_start_node_arc_length_m);
     for (std::size_t i = 0; i < static_cast<std::size_t>(p.n_nodes); ++i) q.segment<3>(p.r_dof[i]) = shape(p.mesh.s[i]);
     // Slopes: the derivative of the shape with respect to unstretched arc
     // length (central difference), which carries the stretch of a shape laid
@@ -357,7 +359,8 @@ Eigen::VectorXd initial_state(Problem& p, const FeLineModel& m, const FeEnvironm
       Eigen::Vector3d t_in = joint ? d_in : central, t_out = joint ? d_out : central;
       if (i == 0) t_in = t_out = d_out;
       if (i + 1 == static_cast<std::size_t>(p.n_nodes)) t_in = t_out = d_in;
-      if (o.initial_shape) {
+      // An equilibrium's shape carries its own stretch.
+      if (o.initial_shape && !equilibrium) {
         auto seeded = [&](const Eigen::Vector3d& t, std::size_t e) {
           const Eigen::Vector3d u = t.normalized();
           const double cos_theta = std::max(std::hypot(u.x(), u.y()), 0.1);

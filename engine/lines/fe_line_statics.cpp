@@ -141,7 +141,7 @@ FeStaticsResult solve_fe_line_statics(const FeLineModel& model, const FeEnvironm
   NewtonOutcome last;
   const double k_target = environment.seabed_stiffness_N_per_m2;
   bool done = false;
-  if (options.warm_start_state) {
+  if (options.warm_start_state || (options.initial_shape && options.initial_shape_is_equilibrium)) {
     // No continuation from a warm state: they restart from zero current, and
     // the cold start below (swung into the current) is cheaper and surer.
     last = solve_with_current_steps(p, options, q, t, counters, {.continuations = false});

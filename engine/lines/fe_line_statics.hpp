@@ -164,12 +164,20 @@ struct FeStaticsOptions {
   /// vertical plane through A and B, lying on the seabed from A if A is on it;
   /// a straight line if the line is shorter than the chord.
   std::function<Eigen::Vector3d(double arc_length_m)> initial_shape;
+  /// initial_shape is an equilibrium of this same problem already (e.g. the
+  /// node profile a static case stored): Newton starts from it as from a
+  /// warm state — its slopes from the shape alone, no swing into the current
+  /// and no continuation — at the node arc lengths
+  /// warm_start_node_arc_length_m if given (a node moved onto the touchdown
+  /// point); if that fails, from the default shape as a cold solve.
+  bool initial_shape_is_equilibrium = false;
   /// Converged state of a previous solve on the same model (same mesh) to warm
   /// start from (FeStaticsResult::state); takes precedence over initial_shape.
   std::optional<Eigen::VectorXd> warm_start_state;
   /// Node arc lengths of that solution (FeStaticsResult::node_arc_length_m),
   /// which differ from the model's mesh where a node was moved onto the
-  /// touchdown point; optional, used with warm_start_state.
+  /// touchdown point; optional, used with warm_start_state or an
+  /// initial_shape_is_equilibrium.
   std::vector<double> warm_start_node_arc_length_m;
   /// Factorised Jacobian of that solution (FeStaticsResult::tangent); the
   /// warm solve predicts the first-order response to the end displacements

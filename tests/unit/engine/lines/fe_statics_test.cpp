@@ -1,6 +1,7 @@
 // Unit tests of the FE line statics: loads (drag conventions, current, point
 // loads), seabed penalty contact, warm starts, and the error channel.
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -324,15 +325,13 @@ TEST(FeStatics, StrongCrossCurrentOnAFlexibleRiserConverges) {
   EXPECT_GT(r.end_B_force_N.y(), 0.0);
 }
 
-// A cold solve under current starts from the catenary swung rigidly into the
-// current (fe_line_newton.cpp). A steel catenary riser in 1800 m under a
-// 1.5 m/s current at 45° to its plane (tests/bench BM_SteelCatenaryRiserCurrentCold):
-// before the swing, 283 Newton iterations through 14 current-continuation
-// stages. It must land on the equilibrium reached the slow way: warm starts
-// along a ramp of the drag (current speed²) in twentieths.
-TEST(FeStatics, ColdSolveUnderCurrentSwingsIntoIt) {
-  constexpr int kMaxColdIterations = 60;  // measured 40: 12 direct, 4 seabed stages, touchdown moves
-  constexpr int kRampSteps = 20;
+// A steel catenary riser in 1800 m under a current at 45° to its plane
+// (tests/bench BM_SteelCatenaryRiserCurrentCold).
+struct CatenaryRiserCase {
+  FeLineModel model;
+  FeLineEnds ends;
+};
+CatenaryRiserCase steel_catenary_riser() {
   constexpr double od = 0.2731, wt = 0.0254, E = 207e9, g = 9.80665;
   const double id = od - 2.0 * wt;
   const double a_steel = M_PI / 4.0 * (od * od - id * id);
@@ -349,18 +348,30 @@ TEST(FeStatics, ColdSolveUnderCurrentSwingsIntoIt) {
   FeLineModel m;
   m.sections = {s};
   m.refinement = FeRefinementZone{400.0, 200.0, 2.0};
-  const FeLineEnds ends{{-span_m, 0.0, -1800.0}, {0.0, 0.0, -20.0}};
-  auto environment = [](double surface_speed_m_per_s) {
-    FeEnvironment env;
-    env.seabed_z_m = -1800.0;
-    env.seabed_stiffness_N_per_m2 = 1e7;
-    const Eigen::Vector3d direction(std::cos(M_PI / 4), std::sin(M_PI / 4), 0.0);
-    for (int i = 0; i <= 18; ++i) {
-      const double z = -1800.0 + 100.0 * i;
-      env.current.push_back({z, surface_speed_m_per_s * std::pow((z + 1800.0) / 1800.0, 1.0 / 7.0) * direction});
-    }
-    return env;
-  };
+  return {m, FeLineEnds{{-span_m, 0.0, -1800.0}, {0.0, 0.0, -20.0}}};
+}
+FeEnvironment riser_environment(double surface_speed_m_per_s) {
+  FeEnvironment env;
+  env.seabed_z_m = -1800.0;
+  env.seabed_stiffness_N_per_m2 = 1e7;
+  const Eigen::Vector3d direction(std::cos(M_PI / 4), std::sin(M_PI / 4), 0.0);
+  for (int i = 0; i <= 18; ++i) {
+    const double z = -1800.0 + 100.0 * i;
+    env.current.push_back({z, surface_speed_m_per_s * std::pow((z + 1800.0) / 1800.0, 1.0 / 7.0) * direction});
+  }
+  return env;
+}
+
+// A cold solve under current starts from the catenary swung rigidly into the
+// current (fe_line_newton.cpp). The riser above under 1.5 m/s: before the
+// swing, 283 Newton iterations through 14 current-continuation stages. It
+// must land on the equilibrium reached the slow way: warm starts along a
+// ramp of the drag (current speed²) in twentieths.
+TEST(FeStatics, ColdSolveUnderCurrentSwingsIntoIt) {
+  constexpr int kMaxColdIterations = 60;  // measured 40: 12 direct, 4 seabed stages, touchdown moves
+  constexpr int kRampSteps = 20;
+  const auto [m, ends] = steel_catenary_riser();
+  const auto environment = riser_environment;
   const auto cold = solve_fe_line_statics(m, environment(1.5), ends);
   EXPECT_LE(cold.iterations, kMaxColdIterations);
   FeStaticsResult ramped = solve_fe_line_statics(m, environment(0.0), ends);
@@ -378,6 +389,38 @@ TEST(FeStatics, ColdSolveUnderCurrentSwingsIntoIt) {
   EXPECT_LT((cold.end_A_force_N - ramped.end_A_force_N).norm(), balance_N);
   EXPECT_GT(cold.node_position_m[cold.node_position_m.size() / 2].y(),
             10.0);  // swung downstream, m
+}
+
+// A static case keeps its risers' FE node profiles (positions and arc
+// lengths); the enhanced S-C's line reduction solves the same riser at the
+// same ends again, from that profile (initial_shape_is_equilibrium): Newton
+// from there, without the cold start's swing and seabed continuation, lands
+// on the same equilibrium.
+TEST(FeStatics, AStoredEquilibriumProfileIsNewtonsStart) {
+  constexpr int kMaxIterations = 5;  // measured 3; the cold solve takes 40
+  const auto [m, ends] = steel_catenary_riser();
+  const FeEnvironment env = riser_environment(1.5);
+  const auto cold = solve_fe_line_statics(m, env, ends);
+  FeStaticsOptions o;
+  o.initial_shape = [&cold](double s_m) {
+    const auto& s = cold.node_arc_length_m;
+    const auto it = std::upper_bound(s.begin(), s.end(), s_m);
+    if (it == s.begin()) return cold.node_position_m.front();
+    if (it == s.end()) return cold.node_position_m.back();
+    const auto i = static_cast<std::size_t>(it - s.begin());
+    const double t = (s_m - s[i - 1]) / (s[i] - s[i - 1]);
+    return Eigen::Vector3d(cold.node_position_m[i - 1] + t * (cold.node_position_m[i] - cold.node_position_m[i - 1]));
+  };
+  o.initial_shape_is_equilibrium = true;
+  o.warm_start_node_arc_length_m = cold.node_arc_length_m;
+  const auto again = solve_fe_line_statics(m, env, ends, o);
+  EXPECT_LE(again.iterations, kMaxIterations);
+  const double balance_N = static_cast<double>(cold.node_position_m.size()) * (cold.residual_N + again.residual_N);
+  EXPECT_LT((again.end_B_force_N - cold.end_B_force_N).norm(), balance_N);
+  EXPECT_LT((again.end_A_force_N - cold.end_A_force_N).norm(), balance_N);
+  ASSERT_EQ(again.node_arc_length_m.size(), cold.node_arc_length_m.size());
+  for (std::size_t i = 0; i < cold.node_position_m.size(); ++i)
+    EXPECT_LT((again.node_position_m[i] - cold.node_position_m[i]).norm(), 1e-6) << "node " << i;  // m
 }
 
 // Lazy-wave riser: riser – 400 m buoyancy section (net uplift) – riser. The
