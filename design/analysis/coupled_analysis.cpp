@@ -107,7 +107,8 @@ DynamicAnalysisResult run_coupled_analysis(const ValidatedProject& validated, co
       const RiserDesign design = riser_design(project, riser);
       out.name = riser.name;
       out.attachment_b_m = design.hang_off_b;
-      setup = dynamic_riser(project, design, current, pose0.reference_point_g + pose0.rotation * design.hang_off_b);
+      setup = dynamic_riser(project, design, current, pose0.reference_point_g + pose0.rotation * design.hang_off_b,
+                            riser_profile(model.statics.risers, riser.name));
     }
     out.model = std::move(setup.model);
     out.environment = std::move(setup.environment);

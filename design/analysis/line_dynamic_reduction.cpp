@@ -85,11 +85,9 @@ DynamicLineReduction dynamic_line_reduction(const Project& project, const std::v
     } else {
       const RiserDesign design = riser_design(project, project.risers[static_cast<std::size_t>(i) - moorings.size()]);
       attachment_b = design.hang_off_b;
-      // From the static case's own FE solution of the riser there, where it kept one.
-      const auto row = std::find_if(statics.risers.begin(), statics.risers.end(),
-                                    [&](const RiserStaticsRow& r) { return r.name == design.name; });
+      // From the static case's own FE solution of the riser there.
       setup = dynamic_riser(project, design, current, pose.reference_point_g + pose.rotation * attachment_b,
-                            row != statics.risers.end() ? &row->profile : nullptr);
+                            riser_profile(statics.risers, design.name));
     }
     setup.environment.statics.seabed_axial_friction = 0.0;
     setup.environment.seabed_lateral_friction = 0.0;

@@ -24,6 +24,13 @@ Eigen::Vector3d flex_joint_axis_b(const RiserDesign& design) {
   return {s * std::cos(design.azimuth_rad), s * std::sin(design.azimuth_rad), -std::cos(design.design_top_angle_rad)};
 }
 
+const std::vector<RiserProfilePoint>* riser_profile(const std::vector<RiserStaticsRow>& risers,
+                                                    const std::string& name) {
+  for (const RiserStaticsRow& row : risers)
+    if (row.name == name) return &row.profile;
+  return nullptr;
+}
+
 RiserStaticsRow riser_statics_row(const Project& project, const RiserDesign& design,
                                   const engine::FeStaticsResult& solution, DesignCondition condition,
                                   const Eigen::Matrix3d& hull_rotation) {

@@ -73,6 +73,11 @@ struct RiserStaticsRow {
   std::vector<RiserProfilePoint> profile;  ///< every FE node, foot first
 };
 
+/// The profile of the riser named `name` among `risers`; null when it is not
+/// there (a start for that riser's FE statics at the same ends, dynamic_riser).
+const std::vector<RiserProfilePoint>* riser_profile(const std::vector<RiserStaticsRow>& risers,
+                                                    const std::string& name);
+
 /// Post-processes an FE solution of the riser, the hull's rotation
 /// `hull_rotation` (body to global) placing its flex-joint axis.
 RiserStaticsRow riser_statics_row(const Project& project, const RiserDesign& design,
