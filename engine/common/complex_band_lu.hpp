@@ -74,6 +74,45 @@ class ComplexBandLu {
     }
   }
 
+  /// left A⁻¹ right after factorize(), for blocks that are zero before some
+  /// row of `right` and some column of `left` (a condensation onto an end of
+  /// the band: an FE line's end B). As (left U⁻¹)(L⁻¹ right), the two
+  /// triangular solves start where their blocks do, so the cost is that of the
+  /// blocks' tails, not of two passes over the whole band.
+  template <class Left, class Right>
+  Eigen::Matrix<Complex, Eigen::Dynamic, Eigen::Dynamic> inverse_form(const Left& left, const Right& right) const {
+    const auto first_nonzero = [this](const auto& entry) {
+      for (int i = 0; i < n_; ++i)
+        if (entry(i) != Complex(0.0)) return i;
+      return n_;
+    };
+    int first_row = n_, first_column = n_;
+    for (Eigen::Index c = 0; c < right.cols(); ++c)
+      first_row = std::min(first_row, first_nonzero([&](int i) { return Complex(right(i, c)); }));
+    for (Eigen::Index r = 0; r < left.rows(); ++r)
+      first_column = std::min(first_column, first_nonzero([&](int j) { return Complex(left(r, j)); }));
+    // X = L⁻¹ right (unit lower), zero above first_row.
+    Eigen::Matrix<Complex, Eigen::Dynamic, Eigen::Dynamic> x =
+        Eigen::Matrix<Complex, Eigen::Dynamic, Eigen::Dynamic>::Zero(n_, right.cols());
+    for (Eigen::Index c = 0; c < right.cols(); ++c)
+      for (int i = first_row; i < n_; ++i) {
+        Complex sum = right(i, c);
+        for (int j = std::max(first_row, i - b_); j < i; ++j) sum -= a_[index(i, j)] * x(j, c);
+        x(i, c) = sum;
+      }
+    // Y = left U⁻¹ (Y U = left, column by column), zero before first_column.
+    Eigen::Matrix<Complex, Eigen::Dynamic, Eigen::Dynamic> y =
+        Eigen::Matrix<Complex, Eigen::Dynamic, Eigen::Dynamic>::Zero(left.rows(), n_);
+    for (Eigen::Index r = 0; r < left.rows(); ++r)
+      for (int j = first_column; j < n_; ++j) {
+        Complex sum = left(r, j);
+        for (int i = std::max(first_column, j - b_); i < j; ++i) sum -= y(r, i) * a_[index(i, j)];
+        y(r, j) = sum / a_[index(j, j)];
+      }
+    const int from = std::max(first_row, first_column);
+    return y.rightCols(n_ - from) * x.bottomRows(n_ - from);
+  }
+
   /// The matrix (before factorize()) for another solver.
   Eigen::SparseMatrix<Complex> to_sparse() const {
     std::vector<Eigen::Triplet<Complex>> entries;

@@ -172,6 +172,14 @@ std::vector<Matrix3cd> end_B_dynamic_stiffness(const FeLineModel& model, const F
   auto condensed = [](const PartitionedDynamicMatrix& D, const Eigen::Matrix<Complex, Eigen::Dynamic, 3>& response) {
     return Matrix3cd(-(D.BB - D.Bf * response));
   };
+  // The condensation alone: D_Bf D_ff⁻¹ D_fB from the factors' tails
+  // (ComplexBandLu::inverse_form) instead of three solves over the whole line.
+  auto condensed_at = [&](double omega) {
+    PartitionedDynamicMatrix D = partitioned_matrix(line, dofs, omega);
+    if (D.ff.factorize()) return Matrix3cd(-(D.BB - D.ff.inverse_form(D.Bf, D.fB)));
+    const auto [again, response] = solve(omega);
+    return condensed(again, response);
+  };
   // At ω = 0 the damping does not enter: the solve that gives the drag's
   // transfer gives K_dyn(0) too.
   std::optional<Matrix3cd> at_rest;
@@ -188,8 +196,7 @@ std::vector<Matrix3cd> end_B_dynamic_stiffness(const FeLineModel& model, const F
       out.push_back(*at_rest);
       continue;
     }
-    const auto [D, response] = solve(omega);
-    out.push_back(condensed(D, response));
+    out.push_back(condensed_at(omega));
   }
   return out;
 }
