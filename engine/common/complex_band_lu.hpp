@@ -36,13 +36,17 @@ class ComplexBandLu {
   /// entry before elimination (the matrix is then partly eliminated and of
   /// no use: factor a copy when another solver may need the matrix).
   bool factorize() {
+    // Sizes as max(|re|, |im|), within √2 of the modulus, which is plenty for
+    // a 1e-10 test and spares a hypot per band entry (a tenth of the
+    // enhanced S-C's line reduction).
+    const auto size = [](const Complex& z) { return std::max(std::abs(z.real()), std::abs(z.imag())); };
     std::vector<double> row_size(static_cast<std::size_t>(n_), 0.0);
     for (int i = 0; i < n_; ++i)
       for (int j = std::max(0, i - b_); j <= std::min(n_ - 1, i + b_); ++j)
-        row_size[static_cast<std::size_t>(i)] = std::max(row_size[static_cast<std::size_t>(i)], std::abs(at(i, j)));
+        row_size[static_cast<std::size_t>(i)] = std::max(row_size[static_cast<std::size_t>(i)], size(at(i, j)));
     for (int k = 0; k < n_; ++k) {
       const Complex pivot = at(k, k);
-      if (!(std::abs(pivot) > 1e-10 * row_size[static_cast<std::size_t>(k)])) return false;
+      if (!(size(pivot) > 1e-10 * row_size[static_cast<std::size_t>(k)])) return false;
       const Complex inverse_pivot = 1.0 / pivot;
       const int last = std::min(n_ - 1, k + b_);
       for (int i = k + 1; i <= last; ++i) {
