@@ -72,34 +72,58 @@ struct SymmetricBand {
 /// rows and zero columns (their corrections are the right-hand side's).
 class NewtonMatrix {
  public:
+  /// The zero matrix of this size (the matrix assembled, not its factors).
   void reset(int size, int half_band) {
     n_ = size;
     b_ = half_band;
-    band_.reset(size, half_band);
+    assembled_.reset(size, half_band);
+    factored_ = Factored::none;
   }
-  /// Entry (i, j), i ≥ j, i − j ≤ half band.
-  double& lower(int i, int j) { return band_.lower(i, j); }
-  /// The lower band, column-major (SymmetricBand::offset).
-  double* lower_data() { return band_.lower_data(); }
+  /// Entry (i, j), i ≥ j, i − j ≤ half band, of the matrix assembled.
+  double& lower(int i, int j) { return assembled_.lower(i, j); }
+  /// The assembled lower band, column-major (SymmetricBand::offset).
+  double* lower_data() { return assembled_.lower_data(); }
 
-  /// Factors; false if singular (both factorisations failed).
-  bool factorize() {
-    copy_ = band_.a;
-    cholesky_ = cholesky();
-    if (cholesky_) return true;
+  /// Factors the assembled matrix; false if singular (both factorisations
+  /// failed). `first_changed_column`: the assembled matrix equals the one
+  /// factored last in its columns before this one (n: in every column).
+  /// Cholesky's columns before it are then that factorisation's, and it
+  /// refactors from there: the trailing updates of the b columns before
+  /// it replayed on the fresh columns, then the columns themselves — each
+  /// entry updated by the same operations in the same order as a whole
+  /// factorisation, so the factors are the same bit for bit.
+  bool factorize(int first_changed_column = 0) {
+    const bool partial = factored_ == Factored::cholesky && first_changed_column > 0 &&
+                         band_.a.size() == assembled_.a.size() && inv_diagonal_.size() == static_cast<std::size_t>(n_);
+    if (partial && first_changed_column >= n_) return true;
+    if (factored_ == Factored::lu && first_changed_column >= n_) return true;
+    const int from = partial ? first_changed_column : 0;
+    if (partial) {
+      std::copy(assembled_.a.begin() + static_cast<std::ptrdiff_t>(from) * (b_ + 1), assembled_.a.end(),
+                band_.a.begin() + static_cast<std::ptrdiff_t>(from) * (b_ + 1));
+    } else {
+      band_.a = assembled_.a;
+      inv_diagonal_.resize(static_cast<std::size_t>(n_));
+    }
+    if (cholesky(from)) {
+      factored_ = Factored::cholesky;
+      return true;
+    }
     lu_.reset(n_, b_, b_);
     for (int j = 0; j < n_; ++j) {
       for (int i = j; i <= std::min(n_ - 1, j + b_); ++i) {
-        const double v = copy_[SymmetricBand::offset(i, j, b_)];
+        const double v = assembled_.a[SymmetricBand::offset(i, j, b_)];
         lu_.at(i, j) = v;
         lu_.at(j, i) = v;
       }
     }
-    return lu_.factorize();
+    const bool ok = lu_.factorize();
+    factored_ = ok ? Factored::lu : Factored::none;
+    return ok;
   }
 
   void solve_in_place(Eigen::VectorXd& x) const {
-    if (!cholesky_) {
+    if (factored_ != Factored::cholesky) {
       lu_.solve_in_place(x);
     } else {
       solve_columns<1>(x.data(), 0);
@@ -112,7 +136,7 @@ class NewtonMatrix {
   /// bit), with the forward substitution started at that row (above it the
   /// solution of L y = x is zero) and the factor read once for the three.
   void solve_end_columns(Eigen::Matrix<double, Eigen::Dynamic, 3>& x, int first_nonzero) const {
-    if (!cholesky_) {
+    if (factored_ != Factored::cholesky) {
       for (int c = 0; c < 3; ++c) lu_.solve_in_place(x.col(c));
     } else {
       solve_columns<3>(x.data(), first_nonzero);
@@ -170,18 +194,28 @@ class NewtonMatrix {
     }
   }
 
-  bool cholesky() {
-    inv_diagonal_.resize(static_cast<std::size_t>(n_));
-    if (b_ == 11) return cholesky_kd<11>();
-    if (b_ == 14) return cholesky_kd<14>();
-    return cholesky_kd<0>();
+  /// Columns from `from` on; those before it are factors already (and their
+  /// trailing updates of columns from `from` on are replayed first).
+  bool cholesky(int from) {
+    if (b_ == 11) return cholesky_kd<11>(from);
+    if (b_ == 14) return cholesky_kd<14>(from);
+    return cholesky_kd<0>(from);
   }
 
   template <int KD>
-  bool cholesky_kd() {
+  bool cholesky_kd(int from) {
     const int b = kd<KD>(), ld = b + 1;
     double* l = band_.a.data();
-    for (int j = 0; j < n_; ++j) {
+    for (int j = std::max(0, from - b); j < from; ++j) {
+      const double* col = l + static_cast<std::ptrdiff_t>(j) * ld;
+      const int km = std::min(b, n_ - 1 - j);
+      for (int c = from - j; c <= km; ++c) {
+        double* target = l + static_cast<std::ptrdiff_t>(j + c) * ld - c;
+        const double f = col[c];
+        for (int r = c; r <= km; ++r) target[r] -= col[r] * f;
+      }
+    }
+    for (int j = from; j < n_; ++j) {
       double* col = l + static_cast<std::ptrdiff_t>(j) * ld;
       if (!(col[0] > 0.0)) return false;
       const double d = std::sqrt(col[0]);
@@ -208,11 +242,13 @@ class NewtonMatrix {
     return true;
   }
 
+  enum class Factored { none, cholesky, lu };
   int n_ = 0, b_ = 0;
-  SymmetricBand band_;  // the lower band; Cholesky factors in place
-  std::vector<double> copy_, inv_diagonal_;
+  SymmetricBand assembled_;  // the matrix
+  SymmetricBand band_;       // its Cholesky factors (lower band)
+  std::vector<double> inv_diagonal_;
   BandMatrix lu_;
-  bool cholesky_ = true;
+  Factored factored_ = Factored::none;
 };
 
 }  // namespace spiral::engine::fe_detail
