@@ -65,9 +65,13 @@ struct DynamicLine final : ImplicitSystem {
   std::vector<int> fixed_dofs;
   SymmetricBand D;                                             // c_j M − C at the setup's c_j
   std::vector<ancf::ElementDynamicMatrices> element_matrices;  // of the last evaluation
-  // Per element: (12 i + j, position in the lower bands) of each entry
-  // with i, j free and global j ≤ global i.
-  std::vector<std::vector<std::pair<int, int>>> lower_entries;
+  // Per element: each entry with i, j free and global j ≤ global i.
+  struct LowerEntry {
+    int ij;      // 12 i + j in the element's matrices
+    int at;      // position in the lower bands
+    int column;  // global j, the band column it sits in
+  };
+  std::vector<std::vector<LowerEntry>> lower_entries;
   std::vector<double> contact_at_setup, contact_now;  // per element, fraction in seabed contact
   std::vector<char> element_stale;                    // contact changed since its evaluation
   // The combination S and D hold (combine_matrices): its coefficients, the
@@ -319,11 +323,11 @@ struct DynamicLine final : ImplicitSystem {
     const double cB = D_cj.value_or(0.0);
     const auto add = [&](std::size_t e, auto&& take) {
       const ancf::ElementDynamicMatrices& em = element_matrices[e];
-      for (const auto& [ij, at] : lower_entries[e]) {
-        if (!take(at)) continue;
-        const auto k = static_cast<std::size_t>(ij);
-        s_lower[at] += cM * em.M[k] + cC * em.C[k] + cK * em.K[k];
-        if (d_lower != nullptr) d_lower[at] += cB * em.M[k] - em.C[k];
+      for (const LowerEntry& entry : lower_entries[e]) {
+        if (!take(entry.column)) continue;
+        const auto k = static_cast<std::size_t>(entry.ij);
+        s_lower[entry.at] += cM * em.M[k] + cC * em.C[k] + cK * em.K[k];
+        if (d_lower != nullptr) d_lower[entry.at] += cB * em.M[k] - em.C[k];
       }
     };
     if (!combined.same(cM, cC, cK, D_cj)) {
@@ -342,8 +346,8 @@ struct DynamicLine final : ImplicitSystem {
     if (column_elements.empty()) {
       column_elements.assign(static_cast<std::size_t>(n), {});
       for (std::size_t e = 0; e < elements; ++e)
-        for (const auto& entry : lower_entries[e]) {
-          auto& list = column_elements[static_cast<std::size_t>(entry.second / ld)];
+        for (const LowerEntry& entry : lower_entries[e]) {
+          auto& list = column_elements[static_cast<std::size_t>(entry.column)];
           if (list.empty() || list.back() != static_cast<int>(e)) list.push_back(static_cast<int>(e));
         }
       dirty_column.assign(static_cast<std::size_t>(n), 0);
@@ -353,8 +357,8 @@ struct DynamicLine final : ImplicitSystem {
     for (std::size_t e = 0; e < elements; ++e) {
       if (element_changed[e] == 0) continue;
       element_changed[e] = 0;
-      for (const auto& entry : lower_entries[e]) {
-        const int column = entry.second / ld;
+      for (const LowerEntry& entry : lower_entries[e]) {
+        const int column = entry.column;
         if (dirty_column[static_cast<std::size_t>(column)] == 0) {
           dirty_column[static_cast<std::size_t>(column)] = 1;
           columns.push_back(column);
@@ -378,7 +382,7 @@ struct DynamicLine final : ImplicitSystem {
     for (std::size_t e = first_element; e <= last_element && e < elements; ++e) {
       if (element_touched[e] == 0) continue;
       element_touched[e] = 0;
-      add(e, [&](int at) { return dirty_column[static_cast<std::size_t>(at / ld)] != 0; });
+      add(e, [&](int column) { return dirty_column[static_cast<std::size_t>(column)] != 0; });
     }
     for (int i : fixed_dofs)
       if (dirty_column[static_cast<std::size_t>(i)] != 0) S.lower(i, i) = 1.0;

@@ -148,8 +148,8 @@ DynamicLine::Start DynamicLine::initialize(const FeLineModel& model, const FeDyn
       for (int j = 0; j < kElementDofs; ++j) {
         const int gi = dof[static_cast<std::size_t>(i)], gj = dof[static_cast<std::size_t>(j)];
         if (gj > gi || m.fixed(gi) || m.fixed(gj)) continue;
-        m.lower_entries[e].emplace_back(kElementDofs * i + j,
-                                        static_cast<int>(SymmetricBand::offset(gi, gj, m.p.band)));
+        m.lower_entries[e].push_back(
+            {kElementDofs * i + j, static_cast<int>(SymmetricBand::offset(gi, gj, m.p.band)), gj});
       }
     }
   }
