@@ -37,20 +37,19 @@ engine::FeDynamicEnvironment dynamic_environment(const Project& project,
 }
 
 /// The position at unstretched arc length `s_m` from the anchor along a
-/// profile (linear between its points, its ends held beyond them).
+/// profile (linear between its points, its ends held beyond them). A
+/// riser's profile has a point per FE node (≈ 900) and the FE start asks
+/// at every node: the segment by bisection.
 template <class Point>
 Eigen::Vector3d profile_position(const std::vector<Point>& profile, double s_m) {
   if (s_m <= profile.front().arc_length_m) return profile.front().position_g;
-  for (std::size_t i = 1; i < profile.size(); ++i) {
-    const Point& a = profile[i - 1];
-    const Point& b = profile[i];
-    if (s_m <= b.arc_length_m) {
-      const double span = b.arc_length_m - a.arc_length_m;
-      const double t = span > 0.0 ? (s_m - a.arc_length_m) / span : 1.0;
-      return a.position_g + t * (b.position_g - a.position_g);
-    }
-  }
-  return profile.back().position_g;
+  const auto b = std::partition_point(profile.begin() + 1, profile.end(),
+                                      [s_m](const Point& point) { return point.arc_length_m < s_m; });
+  if (b == profile.end()) return profile.back().position_g;
+  const Point& a = *(b - 1);
+  const double span = b->arc_length_m - a.arc_length_m;
+  const double t = span > 0.0 ? (s_m - a.arc_length_m) / span : 1.0;
+  return a.position_g + t * (b->position_g - a.position_g);
 }
 
 }  // namespace
