@@ -208,29 +208,21 @@ realtype dot_in_order(N_Vector x, N_Vector y) {
   const double *a = NV_DATA_S(x), *b = NV_DATA_S(y);
   return in_order_sum(NV_LENGTH_S(x), [&](Eigen::Index i) { return a[i] * b[i]; });
 }
-realtype wrms_norm_in_order(N_Vector x, N_Vector w) {
+/// Σ (x w)², the terms with mask > 0 (no mask: all).
+double weighted_square_sum_in_order(N_Vector x, N_Vector w, const double* mask = nullptr) {
   const double *a = NV_DATA_S(x), *b = NV_DATA_S(w);
-  const double sum = in_order_sum(NV_LENGTH_S(x), [&](Eigen::Index i) {
+  return in_order_sum(NV_LENGTH_S(x), [&](Eigen::Index i) {
     const double p = a[i] * b[i];
-    return p * p;
+    return mask == nullptr || mask[i] > 0.0 ? p * p : 0.0;
   });
-  return std::sqrt(sum / static_cast<double>(NV_LENGTH_S(x)));
+}
+realtype wrms_norm_in_order(N_Vector x, N_Vector w) {
+  return std::sqrt(weighted_square_sum_in_order(x, w) / static_cast<double>(NV_LENGTH_S(x)));
 }
 realtype wrms_norm_mask_in_order(N_Vector x, N_Vector w, N_Vector id) {
-  const double *a = NV_DATA_S(x), *b = NV_DATA_S(w), *m = NV_DATA_S(id);
-  const double sum = in_order_sum(NV_LENGTH_S(x), [&](Eigen::Index i) {
-    const double p = a[i] * b[i];
-    return m[i] > 0.0 ? p * p : 0.0;
-  });
-  return std::sqrt(sum / static_cast<double>(NV_LENGTH_S(x)));
+  return std::sqrt(weighted_square_sum_in_order(x, w, NV_DATA_S(id)) / static_cast<double>(NV_LENGTH_S(x)));
 }
-realtype wl2_norm_in_order(N_Vector x, N_Vector w) {
-  const double *a = NV_DATA_S(x), *b = NV_DATA_S(w);
-  return std::sqrt(in_order_sum(NV_LENGTH_S(x), [&](Eigen::Index i) {
-    const double p = a[i] * b[i];
-    return p * p;
-  }));
-}
+realtype wl2_norm_in_order(N_Vector x, N_Vector w) { return std::sqrt(weighted_square_sum_in_order(x, w)); }
 realtype l1_norm_in_order(N_Vector x) {
   const double* a = NV_DATA_S(x);
   return in_order_sum(NV_LENGTH_S(x), [&](Eigen::Index i) { return std::abs(a[i]); });
