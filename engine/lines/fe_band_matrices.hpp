@@ -95,8 +95,7 @@ class NewtonMatrix {
   bool factorize(int first_changed_column = 0) {
     const bool partial = factored_ == Factored::cholesky && first_changed_column > 0 &&
                          band_.a.size() == assembled_.a.size() && inv_diagonal_.size() == static_cast<std::size_t>(n_);
-    if (partial && first_changed_column >= n_) return true;
-    if (factored_ == Factored::lu && first_changed_column >= n_) return true;
+    if (factored_ != Factored::none && first_changed_column >= n_) return true;  // nothing changed
     const int from = partial ? first_changed_column : 0;
     if (partial) {
       std::copy(assembled_.a.begin() + static_cast<std::ptrdiff_t>(from) * (b_ + 1), assembled_.a.end(),

@@ -86,8 +86,8 @@ struct DynamicLine final : ImplicitSystem {
   } combined;
   std::vector<char> element_changed;
   int first_changed_column = 0;
-  std::vector<char> dirty_column, element_touched;
-  std::vector<std::vector<int>> column_elements;  // per column, the elements with entries in it (ascending)
+  std::vector<char> dirty_column, element_touched;  // workspace of the combination, per column and element
+  std::vector<std::vector<int>> column_elements;    // per column, the elements with entries in it (ascending)
 
   bool fixed(int i) const { return p.fixed[static_cast<std::size_t>(i)] != 0; }
 
@@ -255,7 +255,7 @@ struct DynamicLine final : ImplicitSystem {
         ancf::element_newton_matrices(p.elements[e], dyn[e], shapes[e], static_ctx, bed, still_water ? nullptr : &fluid,
                                       x.q.data(), x.v.data(), element_matrices[e]);
     element_stale[e] = 0;
-    if (e < element_changed.size()) element_changed[e] = 1;
+    element_changed[e] = 1;
     if (e < evaluated_at.size()) evaluated_at[e] = refresh_key(t, e, x);
     ++element_evaluations;
   }
@@ -317,7 +317,6 @@ struct DynamicLine final : ImplicitSystem {
   /// column changed.
   void combine_matrices(double cM, double cC, double cK, std::optional<double> D_cj) {
     const std::size_t elements = p.elements.size();
-    if (element_changed.size() != elements) element_changed.assign(elements, 1);
     double* s_lower = nullptr;
     double* d_lower = nullptr;
     const double cB = D_cj.value_or(0.0);
@@ -343,16 +342,6 @@ struct DynamicLine final : ImplicitSystem {
       return;
     }
     const int ld = p.band + 1;
-    if (column_elements.empty()) {
-      column_elements.assign(static_cast<std::size_t>(n), {});
-      for (std::size_t e = 0; e < elements; ++e)
-        for (const LowerEntry& entry : lower_entries[e]) {
-          auto& list = column_elements[static_cast<std::size_t>(entry.column)];
-          if (list.empty() || list.back() != static_cast<int>(e)) list.push_back(static_cast<int>(e));
-        }
-      dirty_column.assign(static_cast<std::size_t>(n), 0);
-      element_touched.assign(elements, 0);
-    }
     std::vector<int> columns;
     for (std::size_t e = 0; e < elements; ++e) {
       if (element_changed[e] == 0) continue;

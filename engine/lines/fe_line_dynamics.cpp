@@ -142,6 +142,7 @@ DynamicLine::Start DynamicLine::initialize(const FeLineModel& model, const FeDyn
     invalid_dynamics("mesh: the last element does not end at end B");
   m.element_matrices.resize(m.p.elements.size());
   m.lower_entries.resize(m.p.elements.size());
+  m.column_elements.assign(static_cast<std::size_t>(m.n), {});
   for (std::size_t e = 0; e < m.p.elements.size(); ++e) {
     const auto& dof = m.element_dofs[e];
     for (int i = 0; i < kElementDofs; ++i) {
@@ -150,9 +151,14 @@ DynamicLine::Start DynamicLine::initialize(const FeLineModel& model, const FeDyn
         if (gj > gi || m.fixed(gi) || m.fixed(gj)) continue;
         m.lower_entries[e].push_back(
             {kElementDofs * i + j, static_cast<int>(SymmetricBand::offset(gi, gj, m.p.band)), gj});
+        auto& list = m.column_elements[static_cast<std::size_t>(gj)];
+        if (list.empty() || list.back() != static_cast<int>(e)) list.push_back(static_cast<int>(e));
       }
     }
   }
+  m.element_changed.assign(m.p.elements.size(), 1);
+  m.element_touched.assign(m.p.elements.size(), 0);
+  m.dirty_column.assign(static_cast<std::size_t>(m.n), 0);
   m.element_stale.assign(m.p.elements.size(), 0);
   m.contact_at_setup.assign(m.p.elements.size(), 0.0);
   m.contact_now.assign(m.p.elements.size(), 0.0);
