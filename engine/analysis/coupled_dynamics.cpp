@@ -208,22 +208,14 @@ class CoupledSystem final : public ImplicitSystem {
   void solve_newton_system(double cj, Eigen::Ref<Eigen::VectorXd> b) override {
     const Vector6d b_q = b.head<6>(), b_v = b.segment<6>(6);
     for_each_line([&](LineBlock& blk) {
-      auto seg = b.segment(blk.offset, blk.size);
-      const int rb = blk.line.p.r_dof.back(), n = blk.line.n;
-      const Eigen::Vector3d b_qB = seg.segment<3>(rb), b_vB = seg.segment<3>(n + rb);
-      blk.beta = cj * b_qB + blk.setup_jacobian * b_q - b_vB;
-      blk.phi = blk.line.solve_free(seg, blk.beta);
+      blk.beta = blk.setup_jacobian * b_q;
+      blk.phi = blk.line.solve_free(b.segment(blk.offset, blk.size), blk.beta);
     });
     Vector6d rhs = b_v + hull_D_ * b_q;
-    for (const LineBlock& blk : blocks_) {
-      const Eigen::Vector3d b_qB = b.segment<3>(blk.offset + blk.line.p.r_dof.back());
-      rhs += blk.setup_jacobian.transpose() * (blk.phi - blk.line.end_B_schur * b_qB);
-    }
+    for (const LineBlock& blk : blocks_) rhs += blk.setup_jacobian.transpose() * blk.phi;
     const Vector6d dq = hull_lu_.solve(rhs);
     for_each_line([&](LineBlock& blk) {
-      auto seg = b.segment(blk.offset, blk.size);
-      const Eigen::Vector3d b_qB = seg.segment<3>(blk.line.p.r_dof.back());
-      blk.line.finish_solve(cj, seg, blk.setup_jacobian * dq + b_qB, blk.beta);
+      blk.line.finish_solve(cj, b.segment(blk.offset, blk.size), blk.setup_jacobian * dq, blk.beta);
     });
     b.head<6>() = dq;
     b.segment<6>(6) = cj * dq - b_q;

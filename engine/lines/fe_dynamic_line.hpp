@@ -481,15 +481,27 @@ struct DynamicLine final : ImplicitSystem {
 
   // --- End B attached: the line's part of the coupled Newton solve ---
   //
-  // With end B moving with a body, the line's Newton system keeps its
-  // reduced form S δq = b_v + D β over all DOFs, where β = b_q at the free
-  // DOFs and, at end B, β_B = c b_qB + P b_qh − b_vB (the end's velocity
-  // correction written as c δq_B − β_B, P the end's 3 × 6 body Jacobian):
-  //   δq_f = y_f − X δq_B,   y_f = S_ff⁻¹ (b_vf + D_ff β_f + D_fB β_B),
+  // With end B moving with a body, the residual sees end B where the body
+  // puts it: apply_prescribed overwrites the end's position, velocity and
+  // acceleration with the body's (end_B_attached), and the line's own
+  // end-B rows only ask that its states equal them. So the forces change
+  // with the body's correction alone: end B moves by δx_B = P δq_h and its
+  // velocity by c δx_B − β_B, β_B = P b_qh (P the end's 3 × 6 body
+  // Jacobian, b_qh the body's position rows), as a free DOF's velocity
+  // moves by c δq − b_q. The line's Newton system keeps its reduced form
+  // S δq = b_v + D β over all DOFs (β = b_q at the free DOFs):
+  //   δq_f = y_f − X δx_B,   y_f = S_ff⁻¹ (b_vf + D_ff β_f + D_fB β_B),
   // and the end force G_B (the line's force on the body) changes by
-  //   δG_B = φ − Σ_B δq_B,   φ = −S_Bf y_f + D_Bf β_f + D_BB β_B,
+  //   δG_B = φ − Σ_B δx_B,   φ = −S_Bf y_f + D_Bf β_f + D_BB β_B,
   // Σ_B = S_BB − S_Bf X (the line's dynamic stiffness at its end: the
   // Schur complement of the free DOFs). Only the last element touches end B.
+  // The end's own rows are corrected by what they lack besides: their
+  // residual b_qB, b_vB (nonzero at a predictor, where the line's and the
+  // body's extrapolations of the end differ). Counting that difference as
+  // a motion of end B, as this solve once did, moved the free DOFs by
+  // −X b_qB that the residual had never seen, and the next iteration took
+  // it back: the coupled Newton iteration converged at a rate ≈ 0.5 instead
+  // of the single lines' ≈ 0.02 (docs/decisions/coupled-dynamics-performance.md).
 
   double end_S_at(int i, int j) const { return end_S[static_cast<std::size_t>(kElementDofs * i + j)]; }
   double end_D_at(int i, int j) const { return end_D[static_cast<std::size_t>(kElementDofs * i + j)]; }
@@ -555,14 +567,15 @@ struct DynamicLine final : ImplicitSystem {
     return phi;
   }
 
-  /// Second half: the corrections of every DOF written into b, given end B's.
-  void finish_solve(double cj, Eigen::Ref<Eigen::VectorXd> b, const Eigen::Vector3d& dq_B,
+  /// Second half: the corrections of every DOF written into b, given end
+  /// B's motion δx_B = P δq_h and β_B of solve_free.
+  void finish_solve(double cj, Eigen::Ref<Eigen::VectorXd> b, const Eigen::Vector3d& motion_B,
                     const Eigen::Vector3d& beta_B) {
-    rhs.noalias() -= end_B_influence * dq_B;
-    write_corrections(cj, b);
+    rhs.noalias() -= end_B_influence * motion_B;
+    write_corrections(cj, b);  // end B's rows: their own residuals b_qB, b_vB
     const int rb = p.r_dof.back();
-    b.segment<3>(rb) = dq_B;
-    b.segment<3>(n + rb) = cj * dq_B - beta_B;
+    b.segment<3>(rb) += motion_B;
+    b.segment<3>(n + rb) += cj * motion_B - beta_B;
   }
 
   /// The line's force on end B at the last residual evaluation.
