@@ -122,26 +122,16 @@ struct CoupledOptions {
   /// seabed contact changed, on its old element matrices. 8 rather than
   /// IDA's 20: without wave-frequency motion, lc1 600 s, 2,221 → 1,927 steps,
   /// statistics within 0.7 % (5: no fewer steps, more setups). Under
-  /// wave-frequency motion the risers' top tension needs 1 (below), and
-  /// tighter line tolerances too: the design layer sets 0.1 of them
-  /// (design/analysis/coupled_analysis.cpp), as the measurements after the
-  /// next paragraph's showed (on the operating case lc5 the setup alone
-  /// left the risers' std +27 to +37 %).
-  ///
-  /// Why 1 under WF motion: there the elements near the tops turn within a
-  /// step, the Newton iteration on old element matrices converges slowly,
-  /// and IDA's test (the rate of the last solve times the first correction)
-  /// accepts iterates whose error shows in the risers' top tension — the
-  /// state the hull sees is converged, the tension is not. Measured on the
-  /// default FPS, lc2, 100 s, the 12 risers' top-tension std after 30 s
-  /// against a run at 0.1 of the line tolerances whose test takes a fresh
-  /// rate after every refactor (IDA's own rule after a setup; 1.2× the time):
-  /// at the single-line tolerances and 8 steps +30 to +111 %; a setup every
-  /// 2 steps +14 to +32 %; a Newton test 10× stricter, or on the max-norm,
-  /// +36 to +118 %; every step +3.2 to +5.2 % in 738 steps — as good as 0.1
-  /// of the line tolerances at 8 steps (+2.9 to +4.0 %, 1,934 steps), and
-  /// 13 % faster (docs/decisions/coupled-dynamics-performance.md, "Under
-  /// wave-frequency motion the risers' top tension is a Newton effect").
+  /// wave-frequency motion, default FPS, 200 s, the 12 risers' top-tension
+  /// std against 0.03 of the tolerances (std after 60 s): a setup at every
+  /// step +1.9 to +2.5 % on lc5 and +0.9 to +1.0 % on lc1; every 8 steps
+  /// +1.0 to +1.2 % and +0.5 to +0.6 %, in 0.59 of the time (lc5 27.1 →
+  /// 16.0 s, lc1 43.8 → 26.1 s). A setup at every step had been needed
+  /// there while the split solve counted the predictors' difference at end
+  /// B as a motion of the end (fe_dynamic_line.hpp, "End B attached"): on a
+  /// stale matrix the iteration then converged too slowly for IDA's test
+  /// (docs/decisions/coupled-dynamics-performance.md, "The coupled Newton
+  /// solve and end B").
   int steps_between_full_setups = 8;
   /// With these, a full setup re-evaluates only the elements that have
   /// moved since their matrices were evaluated: a slope component (r',
@@ -149,17 +139,17 @@ struct CoupledOptions {
   /// element_refresh_slope, or a node's velocity or the sea's at the element
   /// by more than element_refresh_velocity_m_per_s; the others keep theirs
   /// (a change of seabed contact re-evaluates an element in any case). 0
-  /// (the default): every element at every full setup. For a full setup at
-  /// every step (WF motion, above), whose point is the turning elements near
-  /// the tops: those are the ones refreshed. Measured on the default FPS,
-  /// lc2, 100 s, WF motion: 1e-4 and 0.05 m/s keep 61 % of the element
-  /// matrices, the run takes the same 738 steps, 1,732 residuals and 2
-  /// failed Newton solves, every output stays within 8.5e-5 of its range of
-  /// the every-element run's, and the run is 14 % faster; 1e-3 and 0.3 m/s
-  /// keep 93 %, fail 77 Newton solves and take 856 steps. With a full setup
-  /// only every 8 steps the kept matrices are older than the partial
-  /// updates' (OC4 free decay: 1e-4 and 0.05 m/s, 849 → 1,031 steps), so
-  /// these are for a setup at every step
+  /// (the default): every element at every full setup. Measured on the
+  /// default FPS, lc2, 100 s, WF motion, a setup at every step: 1e-4 and
+  /// 0.05 m/s keep 61 % of the element matrices, the run takes the same 738
+  /// steps, 1,732 residuals and 2 failed Newton solves, every output stays
+  /// within 8.5e-5 of its range of the every-element run's, and the run is
+  /// 14 % faster; 1e-3 and 0.3 m/s keep 93 %, fail 77 Newton solves and
+  /// take 856 steps. With a setup every 8 steps under WF motion: lc5 200 s
+  /// 18.8 → 16.0 s, lc1 26.6 → 26.1 s, the risers' std as close to the
+  /// reference. Without WF motion the kept matrices are older than the
+  /// partial updates' (OC4 free decay: 1e-4 and 0.05 m/s, 849 → 1,031
+  /// steps), so the design layer sets these under WF motion only
   /// (docs/decisions/coupled-dynamics-performance.md, "Selective refresh").
   double element_refresh_slope = 0.0;
   double element_refresh_velocity_m_per_s = 0.0;
