@@ -61,12 +61,11 @@ namespace spiral::design {
 /// the ends, grow past what the wave-frequency motion then needs and ring
 /// the risers' lightly damped axial modes; ×0.1 takes 2.1× the steps (1.9×
 /// the time; docs/decisions/enhanced-sc-accuracy.md). Without WF motion the
-/// defaults are within 0.5 %. The coupled level uses this scale too, with
-/// its Newton matrix set up at every step
-/// (engine::CoupledOptions::steps_between_full_setups): the setup alone had
-/// been taken for enough on lc2's survival sea (+3 to +5 %), but left the
-/// risers' std +10 to +13 % on lc1 and +27 to +37 % on lc5 against 0.03 of
-/// the tolerances (2026-12-07; with both, within 1.6 %). The prescribed lines'
+/// defaults are within 0.5 %. The coupled level uses this scale too: at the
+/// single-line tolerances its risers' std is +10 to +12 % on lc5 and +2 to
+/// +3 % on lc1 against 0.03 of the tolerances, with it within 1.2 % and
+/// 0.6 % (200 s, std after 60 s, a full setup every 8 steps; 2026-12-07,
+/// after the coupled Newton solve's end-B fix, 8f7a11a). The prescribed lines'
 /// error is not the Newton iteration's: with a setup at every step and the single-line
 /// tolerances, lc5's risers (100 s, std after 30 s) are still +47 to +88 %
 /// against 0.03 of them (0.1: +0.6 to +1.3 %); each line alone takes its own,

@@ -25,6 +25,7 @@
 #include "design/project/validated_project.hpp"
 #include "engine/environment/wave_realization.hpp"
 #include "engine/hull/motion_raos.hpp"
+#include "engine/analysis/coupled_dynamics.hpp"
 #include "engine/numerics/statistics.hpp"
 
 namespace spiral::design {
@@ -149,12 +150,14 @@ TEST(DeepwaterWaveFrequency, TheCoupledRisersTopTensionIsConvergedUnderWaveFrequ
   const DynamicAnalysisResult prescribed = run_dynamic_analysis(vp, request);
   ASSERT_TRUE(coupled.wave_frequency_computed);
   ASSERT_TRUE(coupled.coupled_solver);
-  // A full setup at least every 8 steps (partial updates between them for
-  // c_j and seabed contact changes), refreshing the elements that moved:
-  // most element matrices are kept (CoupledOptions::element_refresh_slope),
-  // and the ones near the tops evaluated again.
+  // A full setup at least every CoupledOptions::steps_between_full_setups
+  // steps (partial updates between them for c_j and seabed contact
+  // changes), refreshing the elements that moved: most element matrices are
+  // kept (CoupledOptions::element_refresh_slope), and the ones near the tops
+  // evaluated again.
   const engine::IdaStatistics& solver = *coupled.coupled_solver;
-  EXPECT_GE(8 * (solver.newton_matrix_setups - solver.newton_matrix_updates), solver.steps);
+  const long between_setups = engine::CoupledOptions{}.steps_between_full_setups;
+  EXPECT_GE(between_setups * (solver.newton_matrix_setups - solver.newton_matrix_updates), solver.steps);
   const long visits = coupled.coupled_element_matrices_kept + coupled.coupled_element_matrix_evaluations;
   EXPECT_GT(coupled.coupled_element_matrices_kept, visits / 4);
   EXPECT_GT(coupled.coupled_element_matrix_evaluations, visits / 10);
