@@ -308,10 +308,11 @@ struct DynamicLine final : ImplicitSystem {
   /// identity rows and zero columns in S and nothing in D.
   ///
   /// With the coefficients of the last combination, only the columns of the
-  /// elements evaluated since are combined again (a full setup at every step
-  /// under wave-frequency motion keeps most elements' matrices, and c_j
-  /// rarely changes between setups: the combination was 12 % of a coupled
-  /// run, bound by memory). Each entry of those columns is summed afresh
+  /// elements evaluated since are combined again (a full setup under
+  /// wave-frequency motion keeps most elements' matrices, and c_j rarely
+  /// changes between setups: with a setup at every step, as the coupled
+  /// level then had, the combination was 12 % of a coupled run, bound by
+  /// memory). Each entry of those columns is summed afresh
   /// over its elements in their order, so it is the full combination's
   /// value bit for bit. factorize_newton_matrix() refactors from the first
   /// column changed.
