@@ -141,28 +141,20 @@ DynamicAnalysisResult run_coupled_analysis(const ValidatedProject& validated, co
   options.threads = engine::worker_count(count);
   options.take_freed_cores = true;
   const double scale = request.tolerance_scale;
-  scale_line_tolerances(options, scale);
+  scale_line_tolerances(options, scale * kCoupledLineToleranceScale);
   options.hull_position_tolerance_m *= scale;
   options.hull_rotation_tolerance_rad *= scale;
+  result.notes.push_back(fmt::format(
+      "coupled: the lines' integrator tolerances are {:g} of the single-line defaults (at those the risers' "
+      "top-tension std under wave-frequency motion, and a lightly damped heave, are not converged)",
+      kCoupledLineToleranceScale));
   if (options.wave_frequency_motion) {
-    // Under WF motion the risers' top tension needs 0.1 of the single-line
-    // tolerances, as the prescribed-motion lines of the S-C levels: at the
-    // single-line ones their std is +10 to +12 % against 0.03 of the
-    // tolerances on the operating case lc5 and +2 to +3 % on lc1 (the slope
-    // tolerance's scale: 2e-6 of a riser's EA is ≈ 8 kN, against the
-    // operating sea's 20–70 kN std); with 0.1 of them within 1.2 % and
-    // 0.6 % (200 s, std after 60 s). Full setups every
-    // CoupledOptions::steps_between_full_setups (8) steps, each refreshing
-    // only the elements that moved (docs/decisions/coupled-dynamics-performance.md,
-    // "The coupled Newton solve and end B").
+    // Full setups every CoupledOptions::steps_between_full_setups (8)
+    // steps, each refreshing only the elements that moved
+    // (docs/decisions/coupled-dynamics-performance.md, "The coupled Newton
+    // solve and end B").
     options.element_refresh_slope = kWaveFrequencyElementRefreshSlope;
     options.element_refresh_velocity_m_per_s = kWaveFrequencyElementRefreshVelocity_m_per_s;
-    scale_line_tolerances(options, kWaveFrequencyLineToleranceScale);
-    result.notes.push_back(
-        fmt::format("coupled: under wave-frequency motion the lines' tolerances are {:g} of the single-line "
-                    "defaults (at those the risers' top-tension std is not converged), and a full Newton-matrix "
-                    "setup re-evaluates only the elements that moved",
-                    kWaveFrequencyLineToleranceScale));
   }
   options.max_steps_between_outputs = request.coupled_max_steps_between_outputs;
   engine::HullLoads loads;

@@ -9,7 +9,7 @@
 #include <sstream>
 #include <thread>
 
-#include "design/analysis/line_dynamics.hpp"
+#include "design/analysis/coupled_analysis.hpp"
 #include "design/project/model_hash.hpp"
 #include "design/project/project_edit.hpp"
 #include "design/project/request_error.hpp"
@@ -29,15 +29,15 @@ namespace {
 /// a store written with the quasi-static reduction is not reused.
 constexpr const char* kStormOptions = "duration_s=10800 output_step_s=0.5 line_reduction=dynamic";
 
-/// The coupled verifications' integrator convention under wave-frequency
-/// motion (design/analysis/coupled_analysis.cpp: the lines at
-/// kWaveFrequencyLineToleranceScale of the single-line tolerances since
-/// 7b8091a; the Newton solve's end B from the hull's correction alone and
-/// full setups every 8 steps since 8f7a11a, which moved the risers'
-/// top-tension std by up to 2 %), in the task's identity, so that a store
-/// written before either is not reused.
+/// The coupled verifications' integrator convention (the lines at
+/// kCoupledLineToleranceScale of the single-line tolerances: under
+/// wave-frequency motion since 7b8091a, always since the change that
+/// introduced the constant; the Newton solve's end B from the hull's
+/// correction alone and full setups every 8 steps since 8f7a11a, which moved
+/// the risers' top-tension std by up to 2 %), in the task's identity, so
+/// that a store written before any of them is not reused.
 std::string verification_options() {
-  return fmt::format("wf_line_tolerance_scale={:g} coupled_newton=2", kWaveFrequencyLineToleranceScale);
+  return fmt::format("coupled_line_tolerance_scale={:g} coupled_newton=2", kCoupledLineToleranceScale);
 }
 
 /// What one run shares between its stages.
