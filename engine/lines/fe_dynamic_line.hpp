@@ -347,8 +347,10 @@ struct DynamicLine final : ImplicitSystem {
     for (std::size_t e = 0; e < elements; ++e) {
       if (element_changed[e] == 0) continue;
       element_changed[e] = 0;
-      for (const LowerEntry& entry : lower_entries[e]) {
-        const int column = entry.column;
+      // The columns of its lower entries are its free DOFs (each has its
+      // diagonal entry): 12 to read instead of 78 entries.
+      for (const int column : element_dofs[e]) {
+        if (fixed(column)) continue;
         if (dirty_column[static_cast<std::size_t>(column)] == 0) {
           dirty_column[static_cast<std::size_t>(column)] = 1;
           columns.push_back(column);
