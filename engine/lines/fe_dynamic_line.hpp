@@ -312,10 +312,9 @@ struct DynamicLine final : ImplicitSystem {
   /// wave-frequency motion keeps most elements' matrices, and c_j rarely
   /// changes between setups: with a setup at every step, as the coupled
   /// level then had, the combination was 12 % of a coupled run, bound by
-  /// memory). Each entry of those columns is summed afresh
-  /// over its elements in their order, so it is the full combination's
-  /// value bit for bit. factorize_newton_matrix() refactors from the first
-  /// column changed.
+  /// memory). Each entry of those columns is summed afresh over its elements
+  /// in their order, so it is the full combination's value bit for bit.
+  /// factorize_newton_matrix() refactors from the first column changed.
   void combine_matrices(double cM, double cC, double cK, std::optional<double> D_cj) {
     const std::size_t elements = p.elements.size();
     double* s_lower = nullptr;
