@@ -224,7 +224,7 @@ DynamicAnalysisResult run_coupled_analysis(const ValidatedProject& validated, co
       fmt::format("coupled: hull and {} dynamic FE lines ({} mooring lines, {} risers) in one IDA system of "
                   "{} states; wave-frequency motion built up over the first {:g} s; current on the lines{}",
                   count, moorings.size(), project.risers.size(), series.state_size, request.line_dynamics_ramp_s,
-                  model.sea ? ", linear wave kinematics at each element's midpoint (to 0.5 m)" : ""));
+                  model.sea ? ", " + line_wave_kinematics_note(*model.sea) : std::string()));
   return result;
 }
 

@@ -686,17 +686,16 @@ DynamicAnalysisResult run_dynamic_analysis(const ValidatedProject& validated, co
     lines.sea = model.sea;
     result.dynamic_tensions = run_line_dynamics(project, lines);
     result.timing.line_dynamics_s = start.seconds();
-    result.notes.push_back(
-        fmt::format("dynamic tensions: FE mooring lines and risers with the total hull motion "
-                    "prescribed at the fairleads and hang-offs, built up over the "
-                    "first {:g} s; current on the lines{}{}",
-                    request.line_dynamics_ramp_s,
-                    model.sea ? " and linear wave kinematics at each element's midpoint (to 0.5 m)" : "",
-                    result.wave_frequency_computed
-                        ? fmt::format("; under the wave-frequency motion their tolerances are {:g} of the "
-                                      "single-line defaults",
-                                      kWaveFrequencyLineToleranceScale)
-                        : std::string()));
+    result.notes.push_back(fmt::format(
+        "dynamic tensions: FE mooring lines and risers with the total hull motion "
+        "prescribed at the fairleads and hang-offs, built up over the "
+        "first {:g} s; current on the lines{}{}",
+        request.line_dynamics_ramp_s, model.sea ? " and " + line_wave_kinematics_note(*model.sea) : std::string(),
+        result.wave_frequency_computed
+            ? fmt::format("; under the wave-frequency motion their tolerances are {:g} of the "
+                          "single-line defaults",
+                          kWaveFrequencyLineToleranceScale)
+            : std::string()));
   }
   return result;
 }

@@ -15,6 +15,7 @@
 #include "engine/common/parallel_for.hpp"
 #include "engine/lines/fe_line_dynamics.hpp"
 #include "engine/common/stopwatch.hpp"
+#include "engine/environment/fixed_point_wave_kinematics.hpp"
 
 namespace spiral::design {
 namespace {
@@ -121,6 +122,13 @@ DynamicLineSetup dynamic_riser(const Project& project, const RiserDesign& design
   }
   setup.statics = *line->last_result();
   return setup;
+}
+
+std::string line_wave_kinematics_note(const engine::WaveRealization& sea) {
+  return fmt::format(
+      "linear wave kinematics at each element's midpoint (followed to 0.5 m), summed every {:.3g} s and "
+      "interpolated cubically in time (rms error 1e-3 of the acceleration)",
+      engine::FixedPointWaveKinematics::default_sample_interval_s(sea));
 }
 
 namespace {

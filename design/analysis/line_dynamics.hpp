@@ -143,6 +143,11 @@ DynamicLineSetup dynamic_riser(const Project& project, const RiserDesign& design
                                const std::optional<engine::CurrentProfile>& current, const Eigen::Vector3d& top_g,
                                const std::vector<RiserProfilePoint>* equilibrium = nullptr);
 
+/// How the dynamic FE lines carry a sea, for the analyses' notes: linear
+/// kinematics at each element's midpoint, summed on a time grid and
+/// interpolated (engine/environment/fixed_point_wave_kinematics.hpp).
+std::string line_wave_kinematics_note(const engine::WaveRealization& sea);
+
 /// The output times of `input` (t0 + k dt over the motion).
 std::vector<double> line_dynamics_output_times(const LineDynamicsInput& input);
 

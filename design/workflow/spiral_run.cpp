@@ -34,10 +34,13 @@ constexpr const char* kStormOptions = "duration_s=10800 output_step_s=0.5 line_r
 /// wave-frequency motion since 7b8091a, always since the change that
 /// introduced the constant; the Newton solve's end B from the hull's
 /// correction alone and full setups every 8 steps since 8f7a11a, which moved
-/// the risers' top-tension std by up to 2 %), in the task's identity, so
-/// that a store written before any of them is not reused.
+/// the risers' top-tension std by up to 2 %; the lines' wave kinematics
+/// sampled in time and interpolated since the change that added
+/// `line_waves=sampled`), in the task's identity, so that a store written
+/// before any of them is not reused.
 std::string verification_options() {
-  return fmt::format("coupled_line_tolerance_scale={:g} coupled_newton=2", kCoupledLineToleranceScale);
+  return fmt::format("coupled_line_tolerance_scale={:g} coupled_newton=2 line_waves=sampled",
+                     kCoupledLineToleranceScale);
 }
 
 /// What one run shares between its stages.

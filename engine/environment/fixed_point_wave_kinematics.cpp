@@ -8,11 +8,14 @@
 namespace spiral::engine {
 
 FixedPointWaveKinematics::FixedPointWaveKinematics(std::shared_ptr<const WaveRealization> sea,
-                                                   const std::vector<Eigen::Vector3d>& points, double cutoff)
-    : sea_(std::move(sea)) {
+                                                   const std::vector<Eigen::Vector3d>& points, double cutoff,
+                                                   double sample_interval_s)
+    : sea_(std::move(sea)), interval_s_(sample_interval_s) {
   if (!sea_) throw std::invalid_argument("fixed-point wave kinematics: no sea");
   if (!(cutoff > 0.0 && cutoff < 1.0))
     throw std::invalid_argument("fixed-point wave kinematics: cutoff must be in (0, 1)");
+  if (!(sample_interval_s >= 0.0 && std::isfinite(sample_interval_s)))
+    throw std::invalid_argument("fixed-point wave kinematics: sample interval must be >= 0 s");
   const auto& c = sea_->components;
   order_.resize(c.size());
   std::iota(order_.begin(), order_.end(), std::size_t{0});
@@ -31,10 +34,40 @@ FixedPointWaveKinematics::FixedPointWaveKinematics(std::shared_ptr<const WaveRea
   for (std::size_t p = 0; p < points.size(); ++p) set_point(points_[p], points[p]);
 }
 
+double FixedPointWaveKinematics::default_sample_interval_s(const WaveRealization& sea) {
+  // rms error / rms acceleration = Δ⁴ √(Σ (a ω² c ω⁴)²) / √(Σ (a ω²)²),
+  // c = (9/16) / 24: solved for Δ at kSampledAccelerationError.
+  constexpr double c = 9.0 / 16.0 / 24.0;
+  double error_sq = 0.0, signal_sq = 0.0;
+  for (const WaveComponent& w : sea.components) {
+    const double acc = w.amplitude_m * w.omega_rad_per_s * w.omega_rad_per_s;
+    error_sq += std::pow(acc * c * std::pow(w.omega_rad_per_s, 4), 2);
+    signal_sq += acc * acc;
+  }
+  if (!(error_sq > 0.0)) return kMaxSampleInterval_s;
+  const double per_s4 = std::sqrt(error_sq / signal_sq);  // the ratio at Δ = 1 s
+  return std::min(kMaxSampleInterval_s, std::pow(kSampledAccelerationError / per_s4, 0.25));
+}
+
 void FixedPointWaveKinematics::move_point(std::size_t point, const Eigen::Vector3d& position) {
   if (point >= points_.size()) throw std::out_of_range("fixed-point wave kinematics: no such point");
   points_[point] = Point{};
   set_point(points_[point], position);
+  // The held samples of the point are summed anew at the next evaluation,
+  // all moved points of a slot under one set of time phases.
+  if (interval_s_ > 0.0 && std::find(moved_.begin(), moved_.end(), point) == moved_.end()) moved_.push_back(point);
+}
+
+void FixedPointWaveKinematics::resample_moved() const {
+  if (moved_.empty()) return;
+  for (Slot& s : slots_) {
+    if (s.at.empty()) continue;
+    time_phases(static_cast<double>(s.index) * interval_s_, max_count_, cos_wt_.data(), sin_wt_.data());
+    for (std::size_t p : moved_) {
+      s.at[p] = points_[p].count > 0 ? at_point(points_[p], cos_wt_.data(), sin_wt_.data()) : Sample{};
+    }
+  }
+  moved_.clear();
 }
 
 void FixedPointWaveKinematics::set_point(Point& out, const Eigen::Vector3d& x) {
@@ -74,13 +107,74 @@ void FixedPointWaveKinematics::time_phases(double t_s, std::size_t count, double
   }
 }
 
+const FixedPointWaveKinematics::Slot& FixedPointWaveKinematics::slot(std::int64_t index) const {
+  Slot& s = slots_[static_cast<std::size_t>(((index % kSlots) + kSlots) % kSlots)];
+  if (s.index == index && !s.at.empty()) return s;
+  s.index = index;
+  s.at.assign(points_.size(), Sample{});
+  time_phases(static_cast<double>(index) * interval_s_, max_count_, cos_wt_.data(), sin_wt_.data());
+  for (std::size_t p = 0; p < points_.size(); ++p) {
+    if (points_[p].count > 0) s.at[p] = at_point(points_[p], cos_wt_.data(), sin_wt_.data());
+  }
+  ++full_sums_;
+  return s;
+}
+
+namespace {
+// Cubic Lagrange weights of the nodes −1, 0, 1, 2 at s ∈ [0, 1).
+std::array<double, 4> lagrange_weights(double s) {
+  return {-s * (s - 1.0) * (s - 2.0) / 6.0, (s + 1.0) * (s - 1.0) * (s - 2.0) / 2.0, -(s + 1.0) * s * (s - 2.0) / 2.0,
+          (s + 1.0) * s * (s - 1.0) / 6.0};
+}
+}  // namespace
+
+bool FixedPointWaveKinematics::interpolate_point(std::size_t point, const std::array<const Slot*, 4>& slots,
+                                                 const std::array<double, 4>& w, Eigen::Vector3d& velocity,
+                                                 Eigen::Vector3d& acceleration) const {
+  for (const Slot* s : slots) {
+    if (!s->at[point].wet) return false;
+  }
+  const Point& pt = points_[point];
+  double eta = 0.0;
+  for (int k = 0; k < 4; ++k) eta += w[k] * slots[k]->at[point].eta_m;
+  if (pt.z_m > eta) return true;  // dry between wet samples: under a trough
+  for (int k = 0; k < 4; ++k) {
+    velocity += w[k] * slots[k]->at[point].velocity;
+    acceleration += w[k] * slots[k]->at[point].acceleration;
+  }
+  return true;
+}
+
 void FixedPointWaveKinematics::evaluate(double t_s, std::vector<Eigen::Vector3d>& velocity,
                                         std::vector<Eigen::Vector3d>& acceleration) const {
-  time_phases(t_s, max_count_, cos_wt_.data(), sin_wt_.data());
   velocity.assign(points_.size(), Eigen::Vector3d::Zero());
   acceleration.assign(points_.size(), Eigen::Vector3d::Zero());
+  if (interval_s_ > 0.0) {
+    resample_moved();
+    const double x = t_s / interval_s_, base = std::floor(x);
+    const auto i0 = static_cast<std::int64_t>(base);
+    const std::array<double, 4> w = lagrange_weights(x - base);
+    const std::array<const Slot*, 4> slots = {&slot(i0 - 1), &slot(i0), &slot(i0 + 1), &slot(i0 + 2)};
+    bool phases_at_t = false;  // cos_wt_, sin_wt_ hold the phases at t_s (for points summed directly)
+    for (std::size_t p = 0; p < points_.size(); ++p) {
+      if (points_[p].count == 0) continue;
+      if (interpolate_point(p, slots, w, velocity[p], acceleration[p])) continue;
+      if (!phases_at_t) time_phases(t_s, max_count_, cos_wt_.data(), sin_wt_.data());
+      phases_at_t = true;
+      const Sample sum = at_point(points_[p], cos_wt_.data(), sin_wt_.data());
+      velocity[p] = sum.velocity;
+      acceleration[p] = sum.acceleration;
+    }
+    return;
+  }
+  time_phases(t_s, max_count_, cos_wt_.data(), sin_wt_.data());
+  ++full_sums_;
   for (std::size_t p = 0; p < points_.size(); ++p) {
-    if (points_[p].count > 0) at_point(points_[p], cos_wt_.data(), sin_wt_.data(), velocity[p], acceleration[p]);
+    if (points_[p].count > 0) {
+      const Sample sum = at_point(points_[p], cos_wt_.data(), sin_wt_.data());
+      velocity[p] = sum.velocity;
+      acceleration[p] = sum.acceleration;
+    }
   }
 }
 
@@ -90,15 +184,32 @@ void FixedPointWaveKinematics::evaluate_point(double t_s, std::size_t point, Eig
   acceleration.setZero();
   const Point& pt = points_[point];
   if (pt.count == 0) return;
+  if (interval_s_ > 0.0) {
+    resample_moved();
+    // From the grid when its four samples are held (an output time inside
+    // the last step's): the same kinematics the residual saw.
+    const double x = t_s / interval_s_, base = std::floor(x);
+    const auto i0 = static_cast<std::int64_t>(base);
+    std::array<const Slot*, 4> slots{};
+    bool held = true;
+    for (int k = 0; k < 4; ++k) {
+      const Slot& s = slots_[static_cast<std::size_t>((((i0 - 1 + k) % kSlots) + kSlots) % kSlots)];
+      held = held && s.index == i0 - 1 + k && !s.at.empty();
+      slots[k] = &s;
+    }
+    if (held && interpolate_point(point, slots, lagrange_weights(x - base), velocity, acceleration)) return;
+  }
   thread_local std::vector<double> cos_wt, sin_wt;
   cos_wt.resize(pt.count);
   sin_wt.resize(pt.count);
   time_phases(t_s, pt.count, cos_wt.data(), sin_wt.data());
-  at_point(pt, cos_wt.data(), sin_wt.data(), velocity, acceleration);
+  const Sample sum = at_point(pt, cos_wt.data(), sin_wt.data());
+  velocity = sum.velocity;
+  acceleration = sum.acceleration;
 }
 
-void FixedPointWaveKinematics::at_point(const Point& pt, const double* cos_wt, const double* sin_wt,
-                                        Eigen::Vector3d& velocity, Eigen::Vector3d& acceleration) const {
+FixedPointWaveKinematics::Sample FixedPointWaveKinematics::at_point(const Point& pt, const double* cos_wt,
+                                                                    const double* sin_wt) const {
   const std::optional<double>& h = sea_->water_depth_m;
   // Wheeler stretching (DNV-RP-C205 §3.2.3): the profiles at
   // z' = (z − η) h / (h + η) (deep water z − η), η from the point's kept
@@ -107,7 +218,10 @@ void FixedPointWaveKinematics::at_point(const Point& pt, const double* cos_wt, c
   // error (k Δz)³/6 ≤ (k a)³/6 — 1e-3 at a steepness k a of 0.18.
   double eta = 0.0;
   for (std::size_t j = 0; j < pt.count; ++j) eta += pt.elevation_c[j] * cos_wt[j] - pt.elevation_s[j] * sin_wt[j];
-  if (pt.z_m > eta) return;  // in a trough above the surface: dry
+  Sample out;
+  out.eta_m = eta;
+  if (pt.z_m > eta) return out;  // in a trough above the surface: dry
+  out.wet = true;
   const double z_stretched = h ? (pt.z_m - eta) * *h / (*h + eta) : pt.z_m - eta;
   const double dz = z_stretched - pt.z_m;
   double ux = 0.0, uy = 0.0, uz = 0.0, ax = 0.0, ay = 0.0, az = 0.0;
@@ -128,8 +242,9 @@ void FixedPointWaveKinematics::at_point(const Point& pt, const double* cos_wt, c
     uz -= same * yv + kdz * yh;
     az -= omega * (same * xv + kdz * xh);
   }
-  velocity = {ux, uy, uz};
-  acceleration = {ax, ay, az};
+  out.velocity = {ux, uy, uz};
+  out.acceleration = {ax, ay, az};
+  return out;
 }
 
 }  // namespace spiral::engine

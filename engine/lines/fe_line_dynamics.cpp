@@ -44,6 +44,9 @@ void validate_dynamics(const FeLineModel& model, const FeDynamicEnvironment& env
             ">= 0 N s/m2");
   check_env("friction_velocity_m_per_s", env.friction_velocity_m_per_s, env.friction_velocity_m_per_s > 0.0, "> 0 m/s");
   check_env("sea_ramp_s", env.sea_ramp_s, env.sea_ramp_s >= 0.0, ">= 0 s");
+  if (env.sea_sample_interval_s) {
+    check_env("sea_sample_interval_s", *env.sea_sample_interval_s, *env.sea_sample_interval_s >= 0.0, ">= 0 s");
+  }
   if (o.end_B == FeEndCondition::prescribed && !o.end_B_motion)
     invalid_dynamics("end_B_motion: required when end B is prescribed");
   if (o.end_A == FeEndCondition::prescribed) invalid_dynamics("end_A: may be fixed or free (prescribe end B)");
@@ -124,7 +127,9 @@ DynamicLine::Start DynamicLine::initialize(const FeLineModel& model, const FeDyn
       const fe_detail::ElementState qe = fe_detail::gather(m.p, q0, e);
       midpoints.push_back(fe_detail::position(ancf::shape_at(0.5, m.p.elements[e].length_m), qe));
     }
-    m.element_waves = std::make_unique<FixedPointWaveKinematics>(environment.sea, midpoints);
+    const double interval_s = environment.sea_sample_interval_s.value_or(
+        FixedPointWaveKinematics::default_sample_interval_s(*environment.sea));
+    m.element_waves = std::make_unique<FixedPointWaveKinematics>(environment.sea, midpoints, 1e-3, interval_s);
     m.sea_ramp_s = environment.sea_ramp_s;
   }
   m.element_dofs.resize(m.p.elements.size());

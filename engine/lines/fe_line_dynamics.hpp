@@ -96,6 +96,12 @@ struct FeDynamicEnvironment {
   /// from the start time (engine::smooth_ramp), as the hull motion is: a
   /// line at rest cannot meet the full wave flow at once. >= 0.
   double sea_ramp_s = 0.0;
+  /// The sea's sums taken on a time grid of this interval and interpolated
+  /// between (FixedPointWaveKinematics, "Sampled in time"): unset, the
+  /// interval for which every component errs by < 4e-4 of its amplitude
+  /// (FixedPointWaveKinematics::default_sample_interval_s); 0: summed at
+  /// every residual time. >= 0.
+  std::optional<double> sea_sample_interval_s;
 };
 
 /// Position, velocity and acceleration of a prescribed end at time t (global).

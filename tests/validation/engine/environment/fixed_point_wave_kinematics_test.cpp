@@ -7,7 +7,10 @@
 //  * a short-crested sea: wave_kinematics within the depth cutoff (1e-3 of
 //    each component's surface profile) and the expansion's error;
 //  * points above the still-water level and below every component's reach
-//    are still.
+//    are still;
+//  * sampled in time: the direct sums within the cubic interpolant's
+//    Lagrange remainder, the wet/dry state exact but within the
+//    interpolated η's error of the surface, and a moved point resampled.
 #include "engine/environment/fixed_point_wave_kinematics.hpp"
 
 #include <gtest/gtest.h>
@@ -155,6 +158,103 @@ TEST(FixedPointWaveKinematics, DryAndDeepPointsAreStill) {
   EXPECT_TRUE(kin.still(0));
   EXPECT_TRUE(kin.still(1));
   EXPECT_FALSE(kin.still(2));
+}
+
+// Sampled in time against summed at every time, the same object otherwise.
+// Bound per component (Lagrange remainder of the cubic on its middle
+// interval): (9/16) (ω Δ)⁴ / 24 of its amplitude — for the velocity a ω,
+// for the acceleration a ω². The stretched profiles multiply components by
+// η (k η terms, frequencies up to 2 ω_max): the bound is taken at 2 ω, 16×,
+// which holds them. Near the surface a point the interpolated η puts on the
+// other side of the surface than the direct one is allowed where the two η
+// differ by the same bound — and only there.
+TEST(FixedPointWaveKinematics, SampledInTimeIsTheDirectSumWithinTheInterpolationBound) {
+  const auto sea = short_crested_sea(11);
+  const double interval_s = FixedPointWaveKinematics::default_sample_interval_s(*sea);
+  // ω_max = 5 ω_p = 2.62 rad/s; a JONSWAP sea reaches the rms error at ω_max Δ ≈ 0.6.
+  const double omega_max = 5.0 * 2.0 * std::numbers::pi / 12.0;
+  EXPECT_GT(omega_max * interval_s, 0.5);
+  EXPECT_LT(omega_max * interval_s, 0.7);
+  const std::vector<Eigen::Vector3d> points = {
+      {0.0, 0.0, -0.5}, {5.0, 3.0, -3.0}, {-40.0, 25.0, -20.0}, {100.0, -10.0, -150.0}, {0.0, 0.0, -600.0}};
+  const FixedPointWaveKinematics direct(sea, points);
+  const FixedPointWaveKinematics sampled(sea, points, 1e-3, interval_s);
+  double u_bound = 0.0, a_bound = 0.0, eta_bound = 0.0;
+  for (const WaveComponent& c : sea->components) {
+    const double wd = 2.0 * c.omega_rad_per_s * interval_s;
+    const double r = 9.0 / 16.0 * std::pow(wd, 4) / 24.0;
+    eta_bound += r * c.amplitude_m;
+    u_bound += r * c.amplitude_m * c.omega_rad_per_s;
+    a_bound += r * c.amplitude_m * c.omega_rad_per_s * c.omega_rad_per_s;
+  }
+  ASSERT_LT(eta_bound, 0.1);
+  std::vector<Eigen::Vector3d> u1, a1, u2, a2;
+  int compared = 0, dry = 0, near_surface = 0;
+  double worst_u = 0.0;
+  std::vector<double> error_sq(points.size(), 0.0), signal_sq(points.size(), 0.0);
+  // Forward with IDA-like steps, some of them retried from an earlier time.
+  double t = 300.0;
+  for (int i = 0; i < 3000; ++i) {
+    t += (i % 7 == 3) ? -0.05 : 0.0371;
+    direct.evaluate(t, u1, a1);
+    sampled.evaluate(t, u2, a2);
+    for (std::size_t p = 0; p < points.size(); ++p) {
+      const double eta = surface_elevation_m(*sea, points[p].x(), points[p].y(), t);
+      if (std::abs(eta - points[p].z()) < eta_bound) {
+        ++near_surface;
+        continue;
+      }
+      if (u1[p].isZero()) ++dry;
+      EXPECT_LT((u2[p] - u1[p]).norm(), u_bound) << "point " << p << " t " << t;
+      EXPECT_LT((a2[p] - a1[p]).norm(), a_bound) << "point " << p << " t " << t;
+      worst_u = std::max(worst_u, (u2[p] - u1[p]).norm());
+      error_sq[p] += (a2[p] - a1[p]).squaredNorm();
+      signal_sq[p] += a1[p].squaredNorm();
+      ++compared;
+    }
+  }
+  EXPECT_GT(dry, 100);  // the shallow points were dry at times, and agreed
+  // The rms error the interval was chosen for (1e-3 of the rms acceleration
+  // of the linear sums), the stretching's products included.
+  for (std::size_t p = 0; p + 1 < points.size(); ++p) {
+    EXPECT_LT(std::sqrt(error_sq[p] / signal_sq[p]), 1.5e-3) << "point " << p;
+    RecordProperty("rms_acceleration_error_" + std::to_string(p),
+                   std::to_string(std::sqrt(error_sq[p] / signal_sq[p])));
+  }
+  EXPECT_LT(near_surface, 100);  // of 15,000
+  EXPECT_GT(compared, 14900);
+  // About one summed sample per interval, not one per time asked.
+  EXPECT_LT(sampled.full_sums(), static_cast<long>(3000 * 0.0371 / interval_s) + 20);
+  EXPECT_EQ(direct.full_sums(), 3000);
+  // A single point from the held grid samples: the whole evaluation's value.
+  Eigen::Vector3d u_point, a_point;
+  sampled.evaluate_point(t, 2, u_point, a_point);
+  EXPECT_EQ(u_point, u2[2]);
+  EXPECT_EQ(a_point, a2[2]);
+  RecordProperty("worst_velocity_error_m_per_s", std::to_string(worst_u));
+  RecordProperty("velocity_bound_m_per_s", std::to_string(u_bound));
+}
+
+// A point moved while samples are held is resampled: afterwards it is the
+// point built there, sampled on the same grid.
+TEST(FixedPointWaveKinematics, AMovedSampledPointIsResampled) {
+  const auto sea = short_crested_sea(5);
+  const double interval_s = 0.2;
+  FixedPointWaveKinematics moving(sea, {{0.0, 0.0, -120.0}, {10.0, 0.0, -30.0}}, 1e-3, interval_s);
+  std::vector<Eigen::Vector3d> u1, a1, u2, a2;
+  moving.evaluate(400.05, u1, a1);
+  const std::vector<Eigen::Vector3d> targets = {{3.0, -2.0, -8.0}, {12.5, 1.0, -300.0}};
+  moving.move_point(0, targets[0]);
+  moving.move_point(1, targets[1]);
+  const FixedPointWaveKinematics built(sea, targets, 1e-3, interval_s);
+  for (double t : {400.07, 400.31, 400.12}) {
+    moving.evaluate(t, u1, a1);
+    built.evaluate(t, u2, a2);
+    for (std::size_t p = 0; p < targets.size(); ++p) {
+      EXPECT_EQ(u1[p], u2[p]) << p;
+      EXPECT_EQ(a1[p], a2[p]) << p;
+    }
+  }
 }
 
 }  // namespace
