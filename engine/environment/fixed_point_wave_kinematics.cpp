@@ -108,7 +108,7 @@ void FixedPointWaveKinematics::time_phases(double t_s, std::size_t count, double
 }
 
 const FixedPointWaveKinematics::Slot& FixedPointWaveKinematics::slot(std::int64_t index) const {
-  Slot& s = slots_[static_cast<std::size_t>(((index % kSlots) + kSlots) % kSlots)];
+  Slot& s = slots_[ring(index)];
   if (s.index == index && !s.at.empty()) return s;
   s.index = index;
   s.at.assign(points_.size(), Sample{});
@@ -193,9 +193,8 @@ void FixedPointWaveKinematics::evaluate_point(double t_s, std::size_t point, Eig
     std::array<const Slot*, 4> slots{};
     bool held = true;
     for (int k = 0; k < 4; ++k) {
-      const Slot& s = slots_[static_cast<std::size_t>((((i0 - 1 + k) % kSlots) + kSlots) % kSlots)];
-      held = held && s.index == i0 - 1 + k && !s.at.empty();
-      slots[k] = &s;
+      slots[k] = &slots_[ring(i0 - 1 + k)];
+      held = held && slots[k]->index == i0 - 1 + k && !slots[k]->at.empty();
     }
     if (held && interpolate_point(point, slots, lagrange_weights(x - base), velocity, acceleration)) return;
   }

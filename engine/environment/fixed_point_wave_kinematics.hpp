@@ -112,6 +112,7 @@ class FixedPointWaveKinematics {
   };
   // Eight slots: the four of a time and the last ones IDA may step back to.
   static constexpr std::int64_t kSlots = 8;
+  static std::size_t ring(std::int64_t index) { return static_cast<std::size_t>(((index % kSlots) + kSlots) % kSlots); }
 
   void set_point(Point& out, const Eigen::Vector3d& position);
   /// cos ω_j t, sin ω_j t of the first `count` (sorted) components.
