@@ -35,7 +35,7 @@
 // c = (9/16)/24 (the Lagrange remainder on the middle interval); the
 // default interval holds the rms error of the acceleration, summed over the
 // components, to 1e-3 of the rms acceleration (of the velocity ≈ 4e-4):
-// ω_max Δ ≈ 0.6 for a JONSWAP sea cut at 5 ω_p, Δ = 0.27 s at Tp 14 s,
+// ω_max Δ ≈ 0.6 for a JONSWAP sea cut at 5 ω_p, Δ ≈ 0.28 s at Tp 14 s,
 // where an IDA step of the coupled storm is ≈ 0.06 s. The wet/dry test is
 // exact in form: η is interpolated as well and a point above it is dry; a
 // point dry at any of the four samples (the kinematics jump to zero there,

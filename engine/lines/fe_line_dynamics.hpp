@@ -98,9 +98,9 @@ struct FeDynamicEnvironment {
   double sea_ramp_s = 0.0;
   /// The sea's sums taken on a time grid of this interval and interpolated
   /// between (FixedPointWaveKinematics, "Sampled in time"): unset, the
-  /// interval for which every component errs by < 4e-4 of its amplitude
-  /// (FixedPointWaveKinematics::default_sample_interval_s); 0: summed at
-  /// every residual time. >= 0.
+  /// interval at which the interpolated acceleration's rms error is 1e-3
+  /// of the rms acceleration (FixedPointWaveKinematics::
+  /// default_sample_interval_s); 0: summed at every residual time. >= 0.
   std::optional<double> sea_sample_interval_s;
 };
 
