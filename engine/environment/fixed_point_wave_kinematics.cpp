@@ -120,13 +120,13 @@ const FixedPointWaveKinematics::Slot& FixedPointWaveKinematics::slot(std::int64_
   return s;
 }
 
-namespace {
-// Cubic Lagrange weights of the nodes −1, 0, 1, 2 at s ∈ [0, 1).
-std::array<double, 4> lagrange_weights(double s) {
-  return {-s * (s - 1.0) * (s - 2.0) / 6.0, (s + 1.0) * (s - 1.0) * (s - 2.0) / 2.0, -(s + 1.0) * s * (s - 2.0) / 2.0,
-          (s + 1.0) * s * (s - 1.0) / 6.0};
+FixedPointWaveKinematics::GridTime FixedPointWaveKinematics::grid_time(double t_s) const {
+  const double x = t_s / interval_s_, base = std::floor(x), u = x - base;
+  // Cubic Lagrange weights of the nodes −1, 0, 1, 2 at u ∈ [0, 1).
+  return {static_cast<std::int64_t>(base) - 1,
+          {-u * (u - 1.0) * (u - 2.0) / 6.0, (u + 1.0) * (u - 1.0) * (u - 2.0) / 2.0, -(u + 1.0) * u * (u - 2.0) / 2.0,
+           (u + 1.0) * u * (u - 1.0) / 6.0}};
 }
-}  // namespace
 
 bool FixedPointWaveKinematics::interpolate_point(std::size_t point, const std::array<const Slot*, 4>& slots,
                                                  const std::array<double, 4>& w, Eigen::Vector3d& velocity,
@@ -151,14 +151,13 @@ void FixedPointWaveKinematics::evaluate(double t_s, std::vector<Eigen::Vector3d>
   acceleration.assign(points_.size(), Eigen::Vector3d::Zero());
   if (interval_s_ > 0.0) {
     resample_moved();
-    const double x = t_s / interval_s_, base = std::floor(x);
-    const auto i0 = static_cast<std::int64_t>(base);
-    const std::array<double, 4> w = lagrange_weights(x - base);
-    const std::array<const Slot*, 4> slots = {&slot(i0 - 1), &slot(i0), &slot(i0 + 1), &slot(i0 + 2)};
+    const GridTime g = grid_time(t_s);
+    const std::array<const Slot*, 4> slots = {&slot(g.first), &slot(g.first + 1), &slot(g.first + 2),
+                                              &slot(g.first + 3)};
     bool phases_at_t = false;  // cos_wt_, sin_wt_ hold the phases at t_s (for points summed directly)
     for (std::size_t p = 0; p < points_.size(); ++p) {
       if (points_[p].count == 0) continue;
-      if (interpolate_point(p, slots, w, velocity[p], acceleration[p])) continue;
+      if (interpolate_point(p, slots, g.weights, velocity[p], acceleration[p])) continue;
       if (!phases_at_t) time_phases(t_s, max_count_, cos_wt_.data(), sin_wt_.data());
       phases_at_t = true;
       const Sample sum = at_point(points_[p], cos_wt_.data(), sin_wt_.data());
@@ -188,15 +187,14 @@ void FixedPointWaveKinematics::evaluate_point(double t_s, std::size_t point, Eig
     resample_moved();
     // From the grid when its four samples are held (an output time inside
     // the last step's): the same kinematics the residual saw.
-    const double x = t_s / interval_s_, base = std::floor(x);
-    const auto i0 = static_cast<std::int64_t>(base);
+    const GridTime g = grid_time(t_s);
     std::array<const Slot*, 4> slots{};
     bool held = true;
     for (int k = 0; k < 4; ++k) {
-      slots[k] = &slots_[ring(i0 - 1 + k)];
-      held = held && slots[k]->index == i0 - 1 + k && !slots[k]->at.empty();
+      slots[k] = &slots_[ring(g.first + k)];
+      held = held && slots[k]->index == g.first + k && !slots[k]->at.empty();
     }
-    if (held && interpolate_point(point, slots, lagrange_weights(x - base), velocity, acceleration)) return;
+    if (held && interpolate_point(point, slots, g.weights, velocity, acceleration)) return;
   }
   thread_local std::vector<double> cos_wt, sin_wt;
   cos_wt.resize(pt.count);

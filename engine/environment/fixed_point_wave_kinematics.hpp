@@ -114,6 +114,14 @@ class FixedPointWaveKinematics {
   static constexpr std::int64_t kSlots = 8;
   static std::size_t ring(std::int64_t index) { return static_cast<std::size_t>(((index % kSlots) + kSlots) % kSlots); }
 
+  // The four grid nodes around a time (first … first + 3, t between the
+  // middle two) and their interpolation weights there.
+  struct GridTime {
+    std::int64_t first = 0;
+    std::array<double, 4> weights{};
+  };
+  GridTime grid_time(double t_s) const;
+
   void set_point(Point& out, const Eigen::Vector3d& position);
   /// cos ω_j t, sin ω_j t of the first `count` (sorted) components.
   void time_phases(double t_s, std::size_t count, double* cos_wt, double* sin_wt) const;

@@ -77,58 +77,45 @@ void BM_FirstOrderExcitation3h(benchmark::State& state) {
 }
 BENCHMARK(BM_FirstOrderExcitation3h)->Unit(benchmark::kMillisecond);
 
-// The deep-water survival sea (Hs 12 m, Tp 14 s, 1800 m, 200 components).
-std::shared_ptr<const WaveRealization> fixed_point_sea() {
+// Times the fixed-point kinematics of the deep-water survival sea (Hs 12 m,
+// Tp 14 s, 1800 m, 200 components) at 1,000 points 1 m apart from the
+// surface down to 1,000 m — the upper part of a riser or mooring line, where
+// the components reach (deeper points drop out by the depth cutoff) —
+// asked every step_s, sampled in time at sample_interval_s (0: summed at
+// every time; < 0: the default interval).
+void time_fixed_point_kinematics(benchmark::State& state, double sample_interval_s, double step_s) {
   WaveRealizationInput in;
   in.spectrum = make_jonswap_spectrum({12.0, 14.0, 3.01});
   in.components_per_direction = 200;
   in.water_depth_m = 1800.0;
   in.seed = 1;
-  return std::make_shared<const WaveRealization>(make_wave_realization(in));
-}
-
-// 1,000 points 1 m apart from the surface down to 1,000 m.
-std::vector<Eigen::Vector3d> fixed_points() {
+  const auto sea = std::make_shared<const WaveRealization>(make_wave_realization(in));
   std::vector<Eigen::Vector3d> points;
   for (int i = 0; i < 1000; ++i) points.push_back({0.3 * i, 0.1 * i, -1.0 - 1.0 * i});
-  return points;
+  const double interval_s =
+      sample_interval_s < 0.0 ? FixedPointWaveKinematics::default_sample_interval_s(*sea) : sample_interval_s;
+  const FixedPointWaveKinematics kinematics(sea, points, 1e-3, interval_s);
+  std::vector<Eigen::Vector3d> u, a;
+  double t = 0.0;
+  for (auto _ : state) {
+    kinematics.evaluate(t, u, a);
+    benchmark::DoNotOptimize(u.data());
+    t += step_s;
+  }
+  state.counters["interval_s"] = kinematics.sample_interval_s();
 }
 
 }  // namespace
 
-// The fixed-point kinematics the dynamic FE lines use (one evaluation per
-// IDA step and line): the deep-water survival sea (Hs 12 m, Tp 14 s, 1800 m,
-// 200 components) at 1,000 points 1 m apart from the surface down to
-// 1,000 m — the upper part of a riser or mooring line, where the components
-// reach (deeper points drop out by the depth cutoff).
-void BM_FixedPointKinematics1000Points(benchmark::State& state) {
-  const auto s = fixed_point_sea();
-  const std::vector<Eigen::Vector3d> points = fixed_points();
-  const FixedPointWaveKinematics kinematics(s, points);
-  std::vector<Eigen::Vector3d> u, a;
-  double t = 0.0;
-  for (auto _ : state) {
-    kinematics.evaluate(t, u, a);
-    benchmark::DoNotOptimize(u.data());
-    t += 0.3;
-  }
-}
+// The fixed-point kinematics the dynamic FE lines use, summed at every time
+// asked (one evaluation per IDA step and line).
+void BM_FixedPointKinematics1000Points(benchmark::State& state) { time_fixed_point_kinematics(state, 0.0, 0.3); }
 BENCHMARK(BM_FixedPointKinematics1000Points)->Unit(benchmark::kMicrosecond);
 
-// The same points sampled in time at the default interval (0.25 s for this
+// The same points sampled in time at the default interval (0.28 s for this
 // sea) and asked at the coupled storm's step of ≈ 0.06 s: one evaluation
 // on average, the grid sums included.
 void BM_FixedPointKinematicsSampled1000Points(benchmark::State& state) {
-  const auto s = fixed_point_sea();
-  const std::vector<Eigen::Vector3d> points = fixed_points();
-  const FixedPointWaveKinematics kinematics(s, points, 1e-3, FixedPointWaveKinematics::default_sample_interval_s(*s));
-  std::vector<Eigen::Vector3d> u, a;
-  double t = 0.0;
-  for (auto _ : state) {
-    kinematics.evaluate(t, u, a);
-    benchmark::DoNotOptimize(u.data());
-    t += 0.06;
-  }
-  state.counters["interval_s"] = kinematics.sample_interval_s();
+  time_fixed_point_kinematics(state, -1.0, 0.06);
 }
 BENCHMARK(BM_FixedPointKinematicsSampled1000Points)->Unit(benchmark::kMicrosecond);
