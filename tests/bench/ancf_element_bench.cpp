@@ -104,32 +104,62 @@ void BM_AncfElementForcesAndTangent(benchmark::State& state) {
 }
 BENCHMARK(BM_AncfElementForcesAndTangent)->ArgName("touchdown")->Arg(0)->Arg(1);
 
-// The dynamics' Newton matrices of the same element (M, C, K; the coupled
-// level's full setups re-evaluate them for every element that moved: 14 % of
-// the deep-water lc1 coupled profile, 2026-12-07), moving in a wave-
-// and current-driven flow, with added mass and drag.
-void BM_AncfElementNewtonMatrices(benchmark::State& state) {
-  Setup s = riser_element(state.range(0) != 0);
+/// The same element moving in a wave- and current-driven flow, with added
+/// mass, drag and seabed damping and friction: what the dynamics' kernels see.
+struct MovingElement {
   ancf::DynamicElementProperties d;
-  d.mass_kg_per_m = 190.0;
-  d.added_mass_normal_kg_per_m = 160.0;
-  d.displaced_mass_kg_per_m = 160.0;
   ancf::SeabedDynamics bed;
-  bed.damping_N_s_per_m2 = 1.0e3;
-  bed.axial_friction = 0.5;
-  bed.lateral_friction = 0.5;
   ancf::ElementFluid fluid;
-  for (std::size_t gp = 0; gp < 5; ++gp) {
-    fluid.velocity[gp] = {1.2 + 0.05 * static_cast<double>(gp), 0.2, -0.1};
-    fluid.acceleration[gp] = {0.1, 0.02, 0.05};
+  std::array<double, 12> v = {0.3, 0.05, -0.2, 1e-4, 0.0, 2e-4, 0.35, 0.04, -0.25, 2e-4, 1e-5, 1e-4};
+  std::array<double, 12> acc = {0.05, 0.01, -0.02, 1e-5, 0.0, 2e-5, 0.06, 0.01, -0.03, 2e-5, 1e-6, 1e-5};
+};
+
+MovingElement moving_element() {
+  MovingElement m;
+  m.d.mass_kg_per_m = 190.0;
+  m.d.added_mass_normal_kg_per_m = 160.0;
+  m.d.displaced_mass_kg_per_m = 160.0;
+  m.bed.damping_N_s_per_m2 = 1.0e3;
+  m.bed.axial_friction = 0.5;
+  m.bed.lateral_friction = 0.5;
+  for (std::size_t gp = 0; gp < ancf::kGaussXi.size(); ++gp) {
+    m.fluid.velocity[gp] = {1.2 + 0.05 * static_cast<double>(gp), 0.2, -0.1};
+    m.fluid.acceleration[gp] = {0.1, 0.02, 0.05};
   }
-  const std::array<double, 12> v = {0.3, 0.05, -0.2, 1e-4, 0.0, 2e-4, 0.35, 0.04, -0.25, 2e-4, 1e-5, 1e-4};
+  return m;
+}
+
+// The dynamics' residual kernel: every force on the element in one pass (the
+// FE line dynamics and the coupled level evaluate it for every element at
+// every residual; its cost per element, times the elements and the residuals
+// per simulated second, is the floor under issue 17 §2 and §3:
+// docs/decisions/coupled-dynamics-performance.md, "The floor").
+void BM_AncfDynamicElementForces(benchmark::State& state) {
+  Setup s = riser_element(state.range(0) != 0);
+  const MovingElement m = moving_element();
   const ancf::GaussShapes shapes = ancf::gauss_shapes(s.element.length_m);
-  ancf::ElementDynamicMatrices m;
+  std::array<double, 12> g{};
   for (auto _ : state) {
     benchmark::DoNotOptimize(s.q);
-    ancf::element_newton_matrices(s.element, d, shapes, s.load, bed, &fluid, s.q.data(), v.data(), m);
-    benchmark::DoNotOptimize(m);
+    ancf::dynamic_element_forces(s.element, m.d, shapes, s.load, m.bed, &m.fluid, s.q.data(), m.v.data(), m.acc.data(),
+                                 g.data());
+    benchmark::DoNotOptimize(g);
+  }
+}
+BENCHMARK(BM_AncfDynamicElementForces)->ArgName("touchdown")->Arg(0)->Arg(1);
+
+// The dynamics' Newton matrices of the same element (M, C, K; the coupled
+// level's full setups re-evaluate them for every element that moved: 14 % of
+// the deep-water lc1 coupled profile, 2026-12-07).
+void BM_AncfElementNewtonMatrices(benchmark::State& state) {
+  Setup s = riser_element(state.range(0) != 0);
+  const MovingElement m = moving_element();
+  const ancf::GaussShapes shapes = ancf::gauss_shapes(s.element.length_m);
+  ancf::ElementDynamicMatrices matrices;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(s.q);
+    ancf::element_newton_matrices(s.element, m.d, shapes, s.load, m.bed, &m.fluid, s.q.data(), m.v.data(), matrices);
+    benchmark::DoNotOptimize(matrices);
   }
 }
 BENCHMARK(BM_AncfElementNewtonMatrices)->ArgName("touchdown")->Arg(0)->Arg(1);
