@@ -89,6 +89,7 @@ class AnalyzeCommand : public Command {
     request.seed = seed_;
     request.line_dynamics = line_dynamics_;
     request.tolerance_scale = tolerance_scale_;
+    request.detailed_line_mesh = detailed_mesh_;
     request.line_reduction =
         line_reduction_ == "dynamic" ? design::LineReduction::dynamic : design::LineReduction::quasi_static;
     if (!decay_.empty()) {
@@ -130,6 +131,9 @@ class AnalyzeCommand : public Command {
     sub.add_option("--tolerance-scale", tolerance_scale_,
                    "The dynamic FE lines' (and the coupled system's) integrator tolerances x this; < 1 for a "
                    "convergence reference (default: 1)");
+    sub.add_flag("--detailed-mesh", detailed_mesh_,
+                 "The coupled level's and --line-dynamics' FE lines on each line's own fe mesh instead of the "
+                 "project's global_analysis.element_length (to check that mesh)");
     sub.add_option("--line-reduction", line_reduction_,
                    "sc-enhanced: the lines' damping, added mass and low-frequency stiffening from their dynamic FE "
                    "models (dynamic, the default) or their damping and added mass from their quasi-static shape "
@@ -154,6 +158,7 @@ class AnalyzeCommand : public Command {
   std::string out_;
   bool line_dynamics_ = false;
   double tolerance_scale_ = 1.0;
+  bool detailed_mesh_ = false;
   std::vector<double> decay_;
   std::string line_reduction_ = "dynamic";
   double release_s_ = 300.0;

@@ -45,6 +45,7 @@ class CompareCommand : public Command {
     request.seed = seed_;
     request.line_reduction =
         line_reduction_ == "dynamic" ? design::LineReduction::dynamic : design::LineReduction::quasi_static;
+    request.detailed_line_mesh = detailed_mesh_;
     if (isatty(STDERR_FILENO)) request.progress = print_progress;
     const design::LevelComparison comparison = design::compare_levels(loaded, request);
     const std::filesystem::path folder = output_folder(
@@ -80,6 +81,10 @@ class CompareCommand : public Command {
                    "models (dynamic, the default) or their damping and added mass from their quasi-static shape "
                    "(quasi-static)")
         ->check(CLI::IsMember({"quasi-static", "dynamic"}));
+    sub.add_flag("--detailed-mesh", detailed_mesh_,
+                 "The dynamic FE lines (the coupled level, the other levels' dynamic tensions) on each line's own fe "
+                 "mesh instead of the project's "
+                 "global_analysis.element_length");
     sub.add_option("--out", out_, "Output folder (default: out/<project-stem>/compare/<case>-seed<N>)");
   }
 
@@ -88,6 +93,7 @@ class CompareCommand : public Command {
   double step_s_ = 0.5;
   std::uint64_t seed_ = 1;
   std::string line_reduction_ = "dynamic";
+  bool detailed_mesh_ = false;
   std::string out_;
 };
 

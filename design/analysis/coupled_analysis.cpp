@@ -91,6 +91,8 @@ DynamicAnalysisResult run_coupled_analysis(const ValidatedProject& validated, co
     if (l.name != damaged) moorings.push_back(&l);
   }
   const int count = static_cast<int>(moorings.size() + project.risers.size());
+  const LineMesh mesh = request.detailed_line_mesh ? LineMesh::own : LineMesh::global_analysis;
+  if (mesh == LineMesh::global_analysis) result.line_element_length_m = project.global_analysis.element_length_m;
   std::vector<engine::CoupledLine> lines(static_cast<std::size_t>(count));
   engine::parallel_for(count, engine::worker_count(count), [&](int i) {
     engine::CoupledLine& out = lines[static_cast<std::size_t>(i)];
@@ -102,14 +104,14 @@ DynamicAnalysisResult run_coupled_analysis(const ValidatedProject& validated, co
       // The case's elastic catenary of this line, a second start for its FE statics.
       setup = dynamic_mooring_line(project, line, types, current,
                                    pose0.reference_point_g + pose0.rotation * line.fairlead_b,
-                                   line_profile(model.statics.lines, line.name));
+                                   line_profile(model.statics.lines, line.name), mesh);
     } else {
       const Riser& riser = project.risers[static_cast<std::size_t>(i) - moorings.size()];
       const RiserDesign design = riser_design(project, riser);
       out.name = riser.name;
       out.attachment_b_m = design.hang_off_b;
       setup = dynamic_riser(project, design, current, pose0.reference_point_g + pose0.rotation * design.hang_off_b,
-                            riser_profile(model.statics.risers, riser.name));
+                            riser_profile(model.statics.risers, riser.name), mesh);
     }
     out.model = std::move(setup.model);
     out.environment = std::move(setup.environment);
@@ -220,11 +222,16 @@ DynamicAnalysisResult run_coupled_analysis(const ValidatedProject& validated, co
     result.notes.push_back(fmt::format("coupled: {} had the largest local error at {} of {} outputs (it sets the step)",
                                        part, series.step_limiting_outputs[worst], series.times_s.size() - 1));
   }
+  long elements = 0;
+  for (const engine::CoupledLine& line : lines)
+    elements += static_cast<long>(engine::fe_line_mesh(line.model).size()) - 1;
+  const std::string mesh_note = line_mesh_note(project, mesh, elements);
   result.notes.push_back(
       fmt::format("coupled: hull and {} dynamic FE lines ({} mooring lines, {} risers) in one IDA system of "
-                  "{} states; wave-frequency motion built up over the first {:g} s; current on the lines{}",
+                  "{} states; wave-frequency motion built up over the first {:g} s; current on the lines{}{}",
                   count, moorings.size(), project.risers.size(), series.state_size, request.line_dynamics_ramp_s,
-                  model.sea ? ", " + line_wave_kinematics_note(*model.sea) : std::string()));
+                  model.sea ? ", " + line_wave_kinematics_note(*model.sea) : std::string(),
+                  mesh_note.empty() ? std::string() : "; " + mesh_note));
   return result;
 }
 

@@ -684,18 +684,23 @@ DynamicAnalysisResult run_dynamic_analysis(const ValidatedProject& validated, co
     lines.tolerance_scale = request.tolerance_scale;
     if (result.wave_frequency_computed) lines.tolerance_scale *= kWaveFrequencyLineToleranceScale;
     lines.sea = model.sea;
+    lines.mesh = request.detailed_line_mesh ? LineMesh::own : LineMesh::global_analysis;
+    if (lines.mesh == LineMesh::global_analysis)
+      result.line_element_length_m = project.global_analysis.element_length_m;
     result.dynamic_tensions = run_line_dynamics(project, lines);
     result.timing.line_dynamics_s = start.seconds();
+    const std::string mesh = line_mesh_note(project, lines.mesh, dynamic_line_elements(result.dynamic_tensions));
     result.notes.push_back(fmt::format(
         "dynamic tensions: FE mooring lines and risers with the total hull motion "
         "prescribed at the fairleads and hang-offs, built up over the "
-        "first {:g} s; current on the lines{}{}",
+        "first {:g} s; current on the lines{}{}{}",
         request.line_dynamics_ramp_s, model.sea ? " and " + line_wave_kinematics_note(*model.sea) : std::string(),
         result.wave_frequency_computed
             ? fmt::format("; under the wave-frequency motion their tolerances are {:g} of the "
                           "single-line defaults",
                           kWaveFrequencyLineToleranceScale)
-            : std::string()));
+            : std::string(),
+        mesh.empty() ? std::string() : "; " + mesh));
   }
   return result;
 }

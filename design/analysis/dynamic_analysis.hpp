@@ -111,6 +111,10 @@ struct DynamicAnalysisRequest {
   /// convergence reference (the accuracy–time curve of
   /// docs/decisions/coupled-dynamics-performance.md), > 0.
   double tolerance_scale = 1.0;
+  /// The coupled level's and `line_dynamics`' FE lines on each line's own
+  /// `fe` mesh instead of the project's global_analysis one (a check of that
+  /// mesh; no effect when the project sets none).
+  bool detailed_line_mesh = false;
   /// A free decay, as in a model basin: the hull is pulled from the level's
   /// static equilibrium by the constant force (C + K) d — C the
   /// hydrostatic stiffness, K the lines' S-C stiffness there, so d is where
@@ -213,7 +217,10 @@ struct DynamicAnalysisResult {
   std::string environment;
   AnalysisLevel level = AnalysisLevel::semi_coupled;
   std::uint64_t seed = 1;
-  double tolerance_scale = 1.0;                            ///< the request's
+  double tolerance_scale = 1.0;  ///< the request's
+  /// The global-analysis element length the dynamic FE lines (coupled level,
+  /// line_dynamics) ran on, m; absent: each line's own mesh.
+  std::optional<double> line_element_length_m;
   std::optional<DynamicAnalysisRequest::FreeDecay> decay;  ///< the request's
   Eigen::VectorXd times_s;
   Eigen::Matrix<double, 6, Eigen::Dynamic> low_frequency;   ///< m, rad

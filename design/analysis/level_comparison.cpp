@@ -104,6 +104,7 @@ LevelComparison compare_levels(const ValidatedProject& project, const Comparison
     r.line_dynamics = level != AnalysisLevel::coupled;
     r.coupled_max_steps_between_outputs = request.coupled_max_steps_between_outputs;
     r.line_reduction = request.line_reduction;
+    r.detailed_line_mesh = request.detailed_line_mesh;
     if (request.progress) {
       const std::string name = to_string(level);
       r.progress = [p = request.progress, name](double f) { p(name, f); };

@@ -69,6 +69,7 @@ struct ComparisonRequest {
   std::uint64_t seed = 1;
   long coupled_max_steps_between_outputs = 500000;        ///< DynamicAnalysisRequest's
   LineReduction line_reduction = LineReduction::dynamic;  ///< sc-enhanced's (DynamicAnalysisRequest's)
+  bool detailed_line_mesh = false;                        ///< DynamicAnalysisRequest's
   /// Called with (level name, fraction done of that level); may be empty.
   std::function<void(const std::string&, double)> progress;
 };

@@ -59,9 +59,9 @@ DynamicLineSetup dynamic_mooring_line(const Project& project, const MooringLine&
                                       const std::vector<LineTypeProperties>& types,
                                       const std::optional<engine::CurrentProfile>& current,
                                       const Eigen::Vector3d& fairlead_g,
-                                      const std::vector<engine::LineProfilePoint>* known_shape) {
+                                      const std::vector<engine::LineProfilePoint>* known_shape, LineMesh mesh) {
   DynamicLineSetup setup;
-  setup.model = fe_line_model(project, line, types);
+  setup.model = with_line_mesh(project, mesh, fe_line_model(project, line, types));
   engine::FeLineModel& model = setup.model;
   setup.environment = dynamic_environment(project, current, model.sections.front().hydro_diameter_m);
   try {
@@ -98,9 +98,11 @@ DynamicLineSetup dynamic_mooring_line(const Project& project, const MooringLine&
   return setup;
 }
 
-DynamicLineSetup dynamic_riser(const Project& project, const RiserDesign& design,
+DynamicLineSetup dynamic_riser(const Project& project, const RiserDesign& own_mesh_design,
                                const std::optional<engine::CurrentProfile>& current, const Eigen::Vector3d& hang_off_g,
-                               const std::vector<RiserProfilePoint>* equilibrium) {
+                               const std::vector<RiserProfilePoint>* equilibrium, LineMesh mesh) {
+  RiserDesign design = own_mesh_design;
+  design.fe_model = with_line_mesh(project, mesh, std::move(design.fe_model));
   DynamicLineSetup setup;
   setup.model = design.fe_model;
   setup.environment = dynamic_environment(project, current, design.sections.front().properties.hydrodynamic_diameter_m);
@@ -122,6 +124,29 @@ DynamicLineSetup dynamic_riser(const Project& project, const RiserDesign& design
   }
   setup.statics = *line->last_result();
   return setup;
+}
+
+engine::FeLineModel with_line_mesh(const Project& project, LineMesh mesh, engine::FeLineModel model) {
+  const std::optional<double>& length = project.global_analysis.element_length_m;
+  if (mesh != LineMesh::global_analysis || !length) return model;
+  for (engine::FeLineSection& section : model.sections) section.element_length_m = *length;
+  model.refinement.reset();
+  return model;
+}
+
+long dynamic_line_elements(const std::vector<LineDynamicsSeries>& series) {
+  long elements = 0;
+  for (const LineDynamicsSeries& s : series) elements += s.elements;
+  return elements;
+}
+
+std::string line_mesh_note(const Project& project, LineMesh mesh, long elements) {
+  const std::optional<double>& length = project.global_analysis.element_length_m;
+  if (mesh != LineMesh::global_analysis || !length) return {};
+  return fmt::format(
+      "the lines on the global-analysis mesh (global_analysis.element_length: elements of at most {:g} m, {} in "
+      "all); the statics, the stiffness, the SOZ and the riser checks on each line's own fe mesh",
+      *length, elements);
 }
 
 std::string line_wave_kinematics_note(const engine::WaveRealization& sea) {
@@ -183,6 +208,7 @@ LineDynamicsSeries run_one(const Project& project, std::size_t index, const std:
 
   LineDynamicsSeries series;
   series.line = name;
+  series.elements = static_cast<long>(engine::fe_line_mesh(model).size()) - 1;
   const std::vector<double> times = line_dynamics_output_times(input);
   const std::size_t n = times.size();
   series.tension_N.resize(n);
@@ -264,7 +290,8 @@ std::vector<LineDynamicsSeries> run_line_dynamics(const Project& project, const 
           project, k, line.name, "line", line.fairlead_b,
           [&](const Eigen::Vector3d& top) {
             return dynamic_mooring_line(project, line, types, input.current, top,
-                                        input.static_lines ? line_profile(*input.static_lines, line.name) : nullptr);
+                                        input.static_lines ? line_profile(*input.static_lines, line.name) : nullptr,
+                                        input.mesh);
           },
           input);
     } else {
@@ -272,7 +299,10 @@ std::vector<LineDynamicsSeries> run_line_dynamics(const Project& project, const 
       const RiserDesign design = riser_design(project, riser);
       out[k] = run_one(
           project, k, riser.name, "riser", design.hang_off_b,
-          [&](const Eigen::Vector3d& top) { return dynamic_riser(project, design, input.current, top); }, input);
+          [&](const Eigen::Vector3d& top) {
+            return dynamic_riser(project, design, input.current, top, nullptr, input.mesh);
+          },
+          input);
     }
   });
   return out;

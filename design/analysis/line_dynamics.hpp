@@ -73,6 +73,12 @@ namespace spiral::design {
 /// the step for all.
 inline constexpr double kWaveFrequencyLineToleranceScale = 0.1;
 
+/// Which mesh a dynamic FE line gets: its own `fe` mesh (the local
+/// analysis: `spiral lines --motion`'s riser criteria along the line), or the
+/// project's global-analysis mesh where it sets one (`global_analysis`: the
+/// coupled level and `--line-dynamics`, whose outputs are the top tensions).
+enum class LineMesh { own, global_analysis };
+
 struct LineDynamicsInput {
   std::string damaged_line;                                   ///< excluded mooring line ("" intact)
   std::optional<engine::CurrentProfile> current;              ///< on the lines
@@ -94,6 +100,7 @@ struct LineDynamicsInput {
   /// Multiplies every integrator tolerance (FeDynamicsOptions): < 1 for a
   /// reference run, > 0.
   double tolerance_scale = 1.0;
+  LineMesh mesh = LineMesh::own;
   /// Called at every output sample with the line's index in the result (the
   /// mooring lines, then the risers), the sample's index and the line's state
   /// (one line's calls come from one thread, in order; lines run in parallel).
@@ -112,6 +119,7 @@ struct LineDynamicsInput {
 struct LineDynamicsSeries {
   std::string line;               ///< mooring line or riser name
   std::vector<double> tension_N;  ///< top (fairlead, hang-off) tension at the motion's sample times
+  long elements = 0;              ///< the line's FE elements
   engine::IdaStatistics solver;
   double wall_s = 0.0;
 };
@@ -133,7 +141,8 @@ DynamicLineSetup dynamic_mooring_line(const Project& project, const MooringLine&
                                       const std::vector<LineTypeProperties>& types,
                                       const std::optional<engine::CurrentProfile>& current,
                                       const Eigen::Vector3d& top_g,
-                                      const std::vector<engine::LineProfilePoint>* known_shape = nullptr);
+                                      const std::vector<engine::LineProfilePoint>* known_shape = nullptr,
+                                      LineMesh mesh = LineMesh::own);
 /// A riser (FE with bending, from its foot to the hang-off at `top_g`).
 /// `equilibrium` (optional): its FE node profile solved at these ends in this
 /// current before (a static case's RiserStaticsRow::profile): Newton starts
@@ -141,7 +150,20 @@ DynamicLineSetup dynamic_mooring_line(const Project& project, const MooringLine&
 /// of swinging a cold shape into the current.
 DynamicLineSetup dynamic_riser(const Project& project, const RiserDesign& design,
                                const std::optional<engine::CurrentProfile>& current, const Eigen::Vector3d& top_g,
-                               const std::vector<RiserProfilePoint>* equilibrium = nullptr);
+                               const std::vector<RiserProfilePoint>* equilibrium = nullptr,
+                               LineMesh mesh = LineMesh::own);
+
+/// The line's FE model on the project's global-analysis mesh where `mesh`
+/// asks for it and the project sets one: every section in equal elements of
+/// at most global_analysis.element_length, no touchdown refinement.
+engine::FeLineModel with_line_mesh(const Project& project, LineMesh mesh, engine::FeLineModel model);
+
+/// The elements of every line of `series`.
+long dynamic_line_elements(const std::vector<LineDynamicsSeries>& series);
+
+/// How the coupled level's or --line-dynamics' lines are meshed, for the
+/// analyses' notes ("" on each line's own mesh).
+std::string line_mesh_note(const Project& project, LineMesh mesh, long elements);
 
 /// How the dynamic FE lines carry a sea, for the analyses' notes: linear
 /// kinematics at each element's midpoint, summed on a time grid and

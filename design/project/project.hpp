@@ -88,6 +88,20 @@ struct FeMesh {
   bool operator==(const FeMesh&) const = default;
 };
 
+/// The lines' mesh in the global (time-domain) analyses (`global_analysis`):
+/// the coupled level's FE lines and the prescribed-motion FE lines of
+/// `--line-dynamics`. Their outputs are the hull's motions and the lines' top
+/// tensions, which a mesh far coarser than the statics' converges for
+/// (docs/decisions/global-analysis-mesh.md); the statics, the stiffness, the
+/// SOZ, the riser checks and the S-C line reduction keep each line's `fe`.
+struct GlobalAnalysis {
+  /// Every section of every mooring line and riser in equal elements of at
+  /// most this length, no touchdown refinement (m, > 0; absent: each line's
+  /// own `fe` mesh).
+  std::optional<double> element_length_m;
+  bool operator==(const GlobalAnalysis&) const = default;
+};
+
 struct MooringLine {
   std::string name;
   Eigen::Vector3d anchor_g = Eigen::Vector3d::Zero();    ///< global frame, m
@@ -588,6 +602,7 @@ struct Project {
   Criteria criteria;
   std::vector<Stage> stages;  ///< absent in YAML: preliminary, intermediate, advanced
   std::optional<Optimization> optimization;
+  GlobalAnalysis global_analysis;
   /// Where each field came from, so later passes report file:line:col.
   /// Empty for projects built in code.
   SourceMap source_map;

@@ -63,6 +63,8 @@ void read_project(MapReader& r, Project& p, const std::filesystem::path& base_fo
     p.stages[2].name = "advanced";
   }
   r.map("optimization", kOptional, [&](MapReader& o) { p.optimization = read_optimization(o); });
+  r.map("global_analysis", kOptional,
+        [&](MapReader& g) { p.global_analysis.element_length_m = g.number("element_length", "m", kOptional); });
 }
 
 [[noreturn]] void throw_issues(std::vector<InputIssue> issues) {

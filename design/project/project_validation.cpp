@@ -47,6 +47,7 @@ std::vector<InputIssue> check_project(const Project& project, const LineCheckTab
   check_criteria(project, r);
   check_stages(project, r);
   check_optimization(project, line_types, r);
+  check_global_analysis(project, r);
   sort_in_file_order(issues);
   return issues;
 }

@@ -48,6 +48,39 @@ void check_fe_mesh(Reporter& r, const std::string& at, const FeMesh& mesh) {
   }
 }
 
+void check_global_analysis(const Project& p, Reporter& r) {
+  const std::optional<double>& length = p.global_analysis.element_length_m;
+  if (!length) return;
+  const std::string at = "global_analysis.element_length";
+  positive(r, at, *length, "m", "fe_mesh_positive");
+  if (!(*length > 0.0)) return;
+  // The shortest line or riser: the one the element length must fit.
+  std::string shortest;
+  double shortest_m = 0.0;
+  const auto consider = [&](const std::string& name, double length_m) {
+    if (shortest.empty() || length_m < shortest_m) {
+      shortest = name;
+      shortest_m = length_m;
+    }
+  };
+  for (const MooringLine& line : p.mooring.lines) {
+    double total_m = 0.0;
+    for (const LineSegment& segment : line.segments) total_m += segment.length_m;
+    consider(fmt::format("mooring line {}", line.name), total_m);
+  }
+  for (const Riser& riser : p.risers) {
+    double total_m = 0.0;
+    for (const RiserSection& section : riser.sections) total_m += section.length_m;
+    consider(fmt::format("riser {}", riser.name), total_m);
+  }
+  if (!shortest.empty() && shortest_m / *length < kMinGlobalElementsPerLine) {
+    r.fail(at, "global_analysis_elements",
+           fmt::format("{} m leaves {} ({:.0f} m) {:.1f} elements; at most {:.3g} m ({:.0f} elements per line)",
+                       *length, shortest, shortest_m, shortest_m / *length, shortest_m / kMinGlobalElementsPerLine,
+                       kMinGlobalElementsPerLine));
+  }
+}
+
 void check_file(Reporter& r, const std::string& at, const std::filesystem::path& file) {
   if (!std::filesystem::is_regular_file(file)) {
     r.fail(at, "file_exists", fmt::format("file not found: {}", file.string()));

@@ -90,6 +90,10 @@ std::string defined_list(const std::vector<T>& items) {
 /// The EA/MBL/weight of a line type: the resolved table first, explicit input second.
 LineCheckProperties check_properties(const Project& p, const LineCheckTable& table, const std::string& type);
 
+/// A global-analysis mesh coarser than this many elements per line is not a
+/// mesh of the line's shape: 2,740 m at the default FPS's 40 m has 69.
+inline constexpr double kMinGlobalElementsPerLine = 10.0;
+
 /// FE discretization of a line or riser at `at` (its `fe` map).
 void check_fe_mesh(Reporter& r, const std::string& at, const FeMesh& mesh);
 /// A file the project refers to exists (file_exists).
@@ -113,5 +117,8 @@ void check_criteria(const Project& p, Reporter& r);
 void check_stages(const Project& p, Reporter& r);
 /// Groups, bounds (ordered, no line left too short), cases and limits of `optimization`.
 void check_optimization(const Project& p, const LineCheckTable& table, Reporter& r);
+/// `global_analysis.element_length`: > 0, and at least kMinGlobalElementsPerLine
+/// elements on the shortest mooring line or riser.
+void check_global_analysis(const Project& p, Reporter& r);
 
 }  // namespace spiral::design::validation_detail

@@ -86,6 +86,8 @@ nlohmann::json dynamic_analysis_to_json(const DynamicAnalysisResult& r, const st
   j["duration_s"] = r.times_s.size() > 0 ? r.times_s(r.times_s.size() - 1) : 0.0;
   j["output_step_s"] = dt;
   j["tolerance_scale"] = r.tolerance_scale;
+  j["line_element_length_m"] =
+      r.line_element_length_m ? nlohmann::json(*r.line_element_length_m) : nlohmann::json(nullptr);
   if (r.decay) {
     // A free decay: what was asked, and the half cycles of every displaced
     // degree of freedom's low-frequency motion about the static equilibrium

@@ -61,8 +61,10 @@ void run(benchmark::State& state, design::AnalysisLevel level) {
 // process, which includes whatever ran before in it).
 /// The coupled storm of lc1; range(0): duration, s. `with_drift`: with the
 /// OC4 mean-drift table added (slow drift the shipped scenario lacks: larger
-/// low-frequency motions, more contact changes, more steps).
-void coupled_storm(benchmark::State& state, bool with_drift) {
+/// low-frequency motions, more contact changes, more steps). `detailed_mesh`:
+/// the lines on their own fe meshes instead of the scenario's 40 m
+/// global-analysis mesh (docs/decisions/global-analysis-mesh.md).
+void coupled_storm(benchmark::State& state, bool with_drift, bool detailed_mesh = false) {
   const design::ValidatedProject project =
       with_drift ? deepwater_with_drift()
                  : design::load_validated_project(std::string(SPIRAL_SOURCE_DIR) + "/scenarios/deepwater-fps.yaml");
@@ -70,6 +72,7 @@ void coupled_storm(benchmark::State& state, bool with_drift) {
   request.load_case = "lc1-survival-collinear-0deg";
   request.level = design::AnalysisLevel::coupled;
   request.duration_s = static_cast<double>(state.range(0));
+  request.detailed_line_mesh = detailed_mesh;
   design::DynamicAnalysisResult result;
   for (auto _ : state) {
     result = design::run_dynamic_analysis(project, request);
@@ -93,6 +96,7 @@ void coupled_storm(benchmark::State& state, bool with_drift) {
 // The benchmark of the coupled-analysis issue: the default scenario as shipped.
 void BM_DeepwaterCoupledStorm(benchmark::State& state) { coupled_storm(state, false); }
 void BM_DeepwaterCoupledStormWithDrift(benchmark::State& state) { coupled_storm(state, true); }
+void BM_DeepwaterCoupledStormDetailedMesh(benchmark::State& state) { coupled_storm(state, false, true); }
 
 void BM_DeepwaterScStorm3h(benchmark::State& state) { run(state, design::AnalysisLevel::semi_coupled); }
 void BM_DeepwaterUncoupledStorm3h(benchmark::State& state) { run(state, design::AnalysisLevel::uncoupled); }
@@ -102,5 +106,6 @@ BENCHMARK(BM_DeepwaterUncoupledStorm3h)->Unit(benchmark::kSecond)->Iterations(1)
 BENCHMARK(BM_DeepwaterCoupledStorm)->Arg(600)->Unit(benchmark::kSecond)->Iterations(1);
 BENCHMARK(BM_DeepwaterCoupledStorm)->Arg(10800)->Unit(benchmark::kSecond)->Iterations(1);
 BENCHMARK(BM_DeepwaterCoupledStormWithDrift)->Arg(10800)->Unit(benchmark::kSecond)->Iterations(1);
+BENCHMARK(BM_DeepwaterCoupledStormDetailedMesh)->Arg(600)->Unit(benchmark::kSecond)->Iterations(1);
 
 }  // namespace

@@ -208,3 +208,33 @@ TEST(LineDynamics, ALineThatFailsFromTheDefaultStartStartsFromTheStaticCase) {
 
 }  // namespace
 }  // namespace spiral::design
+
+namespace spiral::design {
+namespace {
+
+// The global-analysis mesh (Project::global_analysis): every section of a
+// riser in equal elements of at most the given length, its touchdown
+// refinement dropped; its own mesh where asked for or where the project
+// sets none.
+TEST(LineMesh, TheGlobalAnalysisMeshRemeshesEverySectionWithoutRefinement) {
+  ValidatedProject p = load_validated_project(std::string(SPIRAL_SOURCE_DIR) + "/scenarios/deepwater-fps.yaml");
+  p.project.global_analysis.element_length_m.reset();
+  const RiserDesign design = riser_design(p.project, p.project.risers.front());
+  ASSERT_TRUE(design.fe_model.refinement.has_value());  // the 1 m touchdown zone
+  const std::size_t own_nodes = engine::fe_line_mesh(design.fe_model).size();
+  EXPECT_EQ(with_line_mesh(p.project, LineMesh::global_analysis, design.fe_model), design.fe_model);
+
+  p.project.global_analysis.element_length_m = 40.0;
+  EXPECT_EQ(with_line_mesh(p.project, LineMesh::own, design.fe_model), design.fe_model);
+  const engine::FeLineModel global = with_line_mesh(p.project, LineMesh::global_analysis, design.fe_model);
+  EXPECT_FALSE(global.refinement.has_value());
+  const std::vector<double> nodes = engine::fe_line_mesh(global);
+  double length_m = 0.0;
+  for (const engine::FeLineSection& section : global.sections) length_m += section.length_m;
+  EXPECT_EQ(nodes.size(), static_cast<std::size_t>(std::ceil(length_m / 40.0)) + 1);  // one section: 2,490 m
+  for (std::size_t i = 1; i < nodes.size(); ++i) EXPECT_LE(nodes[i] - nodes[i - 1], 40.0 + 1e-9);
+  EXPECT_GT(own_nodes, 10 * nodes.size());
+}
+
+}  // namespace
+}  // namespace spiral::design

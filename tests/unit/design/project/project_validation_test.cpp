@@ -273,6 +273,20 @@ TEST(ProjectValidation, TouchdownRefinementMustBeFinerThanTheMesh) {
   EXPECT_EQ(issues[0].message, "must be <= element_length 10 m (a refinement), got 20 m");
 }
 
+TEST(ProjectValidation, GlobalAnalysisMeshMustBePositive) {
+  const auto issues = check(kMinimal + "global_analysis: {element_length: -40.0}\n");
+  expect_single(issues, "fe_mesh_positive", "global_analysis.element_length");
+  EXPECT_EQ(issues[0].message, "must be > 0 m, got -40 m");
+}
+
+TEST(ProjectValidation, GlobalAnalysisMeshNeedsTenElementsOnTheShortestLine) {
+  // L1 is 550 m, the riser 300 m: 40 m leaves the riser 7.5 elements.
+  EXPECT_TRUE(check(kMinimal + kSteelRiser + "global_analysis: {element_length: 30.0}\n").empty());
+  const auto issues = check(kMinimal + kSteelRiser + "global_analysis: {element_length: 40.0}\n");
+  expect_single(issues, "global_analysis_elements", "global_analysis.element_length");
+  EXPECT_EQ(issues[0].message, "40 m leaves riser R1 (300 m) 7.5 elements; at most 30 m (10 elements per line)");
+}
+
 TEST(ProjectValidation, CoefficientListsMustMatchTheHeadings) {
   const auto issues =
       check(with_hull("  wind_coefficients: {headings_deg: [0, 90, 180], surge: [1, 0, -1], sway: [0, 1],"
