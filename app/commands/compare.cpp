@@ -82,9 +82,8 @@ class CompareCommand : public Command {
                    "(quasi-static)")
         ->check(CLI::IsMember({"quasi-static", "dynamic"}));
     sub.add_flag("--detailed-mesh", detailed_mesh_,
-                 "The dynamic FE lines (the coupled level, the other levels' dynamic tensions) on each line's own fe "
-                 "mesh instead of the project's "
-                 "global_analysis.element_length");
+                 "The dynamic FE lines (the coupled level, the other levels' dynamic tensions) on each line's "
+                 "own fe mesh instead of the project's global_analysis.element_length");
     sub.add_option("--out", out_, "Output folder (default: out/<project-stem>/compare/<case>-seed<N>)");
   }
 

@@ -689,7 +689,7 @@ DynamicAnalysisResult run_dynamic_analysis(const ValidatedProject& validated, co
       result.line_element_length_m = project.global_analysis.element_length_m;
     result.dynamic_tensions = run_line_dynamics(project, lines);
     result.timing.line_dynamics_s = start.seconds();
-    const std::string mesh = line_mesh_note(project, lines.mesh, dynamic_line_elements(result.dynamic_tensions));
+    const std::string mesh_note = line_mesh_note(project, lines.mesh, dynamic_line_elements(result.dynamic_tensions));
     result.notes.push_back(fmt::format(
         "dynamic tensions: FE mooring lines and risers with the total hull motion "
         "prescribed at the fairleads and hang-offs, built up over the "
@@ -700,7 +700,7 @@ DynamicAnalysisResult run_dynamic_analysis(const ValidatedProject& validated, co
                           "single-line defaults",
                           kWaveFrequencyLineToleranceScale)
             : std::string(),
-        mesh.empty() ? std::string() : "; " + mesh));
+        mesh_note.empty() ? std::string() : "; " + mesh_note));
   }
   return result;
 }

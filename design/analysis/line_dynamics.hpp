@@ -100,6 +100,7 @@ struct LineDynamicsInput {
   /// Multiplies every integrator tolerance (FeDynamicsOptions): < 1 for a
   /// reference run, > 0.
   double tolerance_scale = 1.0;
+  /// The lines' mesh: their own, or the project's global-analysis one.
   LineMesh mesh = LineMesh::own;
   /// Called at every output sample with the line's index in the result (the
   /// mooring lines, then the risers), the sample's index and the line's state

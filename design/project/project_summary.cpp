@@ -57,6 +57,9 @@ std::string project_summary(const Project& project, const std::vector<LineTypePr
   out += fmt::format("Environments: {}\n", project.environments.size());
   out += fmt::format("Load cases: {}\n", project.load_cases.size());
   out += fmt::format("Stages: {}\n", project.stages.size());
+  if (const auto& length = project.global_analysis.element_length_m)
+    out += fmt::format(
+        "Global analysis: the coupled level's and --line-dynamics' lines in elements of at most {:g} m\n", *length);
   return out;
 }
 
