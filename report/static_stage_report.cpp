@@ -97,6 +97,12 @@ Section model_summary_section(const design::ValidatedProject& vp, const std::str
     kv.items.emplace_back("Offset limit", fmt::format("{:g} % of depth = {:.1f} m", *p.criteria.max_offset_pct_depth,
                                                       *p.criteria.max_offset_pct_depth / 100.0 * p.site.depth_m));
   }
+  if (const auto& length = p.global_analysis.element_length_m) {
+    kv.items.emplace_back("Global-analysis mesh",
+                          fmt::format("{:g} m elements on every line in the coupled runs and dynamic tensions (statics "
+                                      "and riser checks on each line's own mesh)",
+                                      *length));
+  }
   s.blocks.emplace_back(kv);
 
   Table types{"line-types",
