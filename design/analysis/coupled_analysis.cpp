@@ -223,8 +223,7 @@ DynamicAnalysisResult run_coupled_analysis(const ValidatedProject& validated, co
                                        part, series.step_limiting_outputs[worst], series.times_s.size() - 1));
   }
   long elements = 0;
-  for (const engine::CoupledLine& line : lines)
-    elements += static_cast<long>(engine::fe_line_mesh(line.model).size()) - 1;
+  for (const engine::CoupledLine& line : lines) elements += fe_elements(line.model);
   const std::string mesh_note = line_mesh_note(project, mesh, elements);
   result.notes.push_back(
       fmt::format("coupled: hull and {} dynamic FE lines ({} mooring lines, {} risers) in one IDA system of "

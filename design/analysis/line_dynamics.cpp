@@ -134,6 +134,8 @@ engine::FeLineModel with_line_mesh(const Project& project, LineMesh mesh, engine
   return model;
 }
 
+long fe_elements(const engine::FeLineModel& model) { return static_cast<long>(engine::fe_line_mesh(model).size()) - 1; }
+
 long dynamic_line_elements(const std::vector<LineDynamicsSeries>& series) {
   long elements = 0;
   for (const LineDynamicsSeries& s : series) elements += s.elements;
@@ -208,7 +210,7 @@ LineDynamicsSeries run_one(const Project& project, std::size_t index, const std:
 
   LineDynamicsSeries series;
   series.line = name;
-  series.elements = static_cast<long>(engine::fe_line_mesh(model).size()) - 1;
+  series.elements = fe_elements(model);
   const std::vector<double> times = line_dynamics_output_times(input);
   const std::size_t n = times.size();
   series.tension_N.resize(n);

@@ -159,6 +159,8 @@ DynamicLineSetup dynamic_riser(const Project& project, const RiserDesign& design
 /// at most global_analysis.element_length, no touchdown refinement.
 engine::FeLineModel with_line_mesh(const Project& project, LineMesh mesh, engine::FeLineModel model);
 
+/// The FE elements of a line's model.
+long fe_elements(const engine::FeLineModel& model);
 /// The elements of every line of `series`.
 long dynamic_line_elements(const std::vector<LineDynamicsSeries>& series);
 
