@@ -116,6 +116,27 @@ TEST(CliAnalyze, CoupledLevelWritesItsSolverAndTensions) {
   std::filesystem::remove_all(out);
 }
 
+// The default FPS's coupled level on its 40 m global-analysis mesh, and on
+// the lines' own meshes with --detailed-mesh: the summary says which, the
+// state count shows it.
+TEST(CliAnalyze, TheCoupledLevelRunsOnTheGlobalMeshUnlessAskedForTheDetailedOne) {
+  const auto out = spiral::test::scratch_root() / ("spiral-global-mesh-" + std::to_string(::getpid()));
+  const std::string run = "analyze " + scenario("deepwater-fps.yaml") +
+                          " --case lc5-operating-45deg --level coupled --duration 4 --out " + out.string();
+  const auto global = run_spiral(run + "/global");
+  ASSERT_EQ(global.exit_code, app::kExitOk) << global.err;
+  const auto detailed = run_spiral(run + "/detailed --detailed-mesh");
+  ASSERT_EQ(detailed.exit_code, app::kExitOk) << detailed.err;
+  const nlohmann::json g = nlohmann::json::parse(read_text((out / "global" / "summary.json").string()));
+  const nlohmann::json d = nlohmann::json::parse(read_text((out / "detailed" / "summary.json").string()));
+  EXPECT_EQ(g["line_element_length_m"], 40.0);
+  EXPECT_TRUE(d["line_element_length_m"].is_null());
+  EXPECT_NE(global.out.find("global-analysis mesh"), std::string::npos) << global.out;
+  EXPECT_EQ(detailed.out.find("global-analysis mesh"), std::string::npos) << detailed.out;
+  EXPECT_LT(g["coupled_solver"]["states"].get<long>() * 5, d["coupled_solver"]["states"].get<long>());
+  std::filesystem::remove_all(out);
+}
+
 // `spiral compare`: the four levels on one realization, a table on the
 // terminal and comparison.json with the keys the issue names.
 TEST(CliCompare, FourLevelsSideBySide) {
