@@ -239,7 +239,7 @@ std::vector<LinePayout> line_payouts(const ValidatedProject& validated, const st
       row.name = name;
       row.group = groups[g].name;
       row.payout_m = payouts(static_cast<Eigen::Index>(g));
-      for (const LineSegment& s : line.segments) row.length_before_m += s.length_m;
+      row.length_before_m = total_length_m(line);
       row.length_after_m = row.length_before_m + row.payout_m;
       row.top_segment_before_m = line.segments.back().length_m;
       row.top_segment_after_m = row.top_segment_before_m + row.payout_m;

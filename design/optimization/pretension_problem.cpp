@@ -25,12 +25,6 @@ constexpr double kRadToDeg = 180.0 / std::numbers::pi;
 // gradient is taken as zero there (the ratio itself is ~0).
 constexpr double kNoOffset_m = 1e-9;
 
-double total_length_m(const MooringLine& line) {
-  double total = 0.0;
-  for (const LineSegment& s : line.segments) total += s.length_m;
-  return total;
-}
-
 const LoadCase& load_case_named(const Project& project, const std::string& name) {
   return *std::find_if(project.load_cases.begin(), project.load_cases.end(),
                        [&](const LoadCase& c) { return c.name == name; });

@@ -82,6 +82,18 @@ const char* to_string(MooringCode code) {
   return "?";
 }
 
+double total_length_m(const MooringLine& line) {
+  double total = 0.0;
+  for (const LineSegment& s : line.segments) total += s.length_m;
+  return total;
+}
+
+double total_length_m(const Riser& riser) {
+  double total = 0.0;
+  for (const RiserSection& s : riser.sections) total += s.length_m;
+  return total;
+}
+
 const char* to_string(LineModel model) {
   switch (model) {
     case LineModel::catenary:

@@ -626,6 +626,10 @@ const char* to_string(DamagedConditions damaged);
 /// `base` with the values given in `overrides` replacing its own.
 RiserCriteria with_overrides(RiserCriteria base, const RiserCriteriaOverrides& overrides);
 
+/// Unstretched length of a mooring line (its segments) or a riser (its sections), m.
+double total_length_m(const MooringLine& line);
+double total_length_m(const Riser& riser);
+
 /// The criteria a riser of `kind` gets where neither `criteria.risers` nor
 /// the riser gives a value (docs/project-format.md, "Riser criteria", for the
 /// sources):

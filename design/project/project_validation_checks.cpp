@@ -63,16 +63,9 @@ void check_global_analysis(const Project& p, Reporter& r) {
       shortest_m = length_m;
     }
   };
-  for (const MooringLine& line : p.mooring.lines) {
-    double total_m = 0.0;
-    for (const LineSegment& segment : line.segments) total_m += segment.length_m;
-    consider(fmt::format("mooring line {}", line.name), total_m);
-  }
-  for (const Riser& riser : p.risers) {
-    double total_m = 0.0;
-    for (const RiserSection& section : riser.sections) total_m += section.length_m;
-    consider(fmt::format("riser {}", riser.name), total_m);
-  }
+  for (const MooringLine& line : p.mooring.lines)
+    consider(fmt::format("mooring line {}", line.name), total_length_m(line));
+  for (const Riser& riser : p.risers) consider(fmt::format("riser {}", riser.name), total_length_m(riser));
   if (!shortest.empty() && shortest_m / *length < kMinGlobalElementsPerLine) {
     r.fail(at, "global_analysis_elements",
            fmt::format("{} m leaves {} ({:.0f} m) {:.1f} elements; at most {:.3g} m ({:.0f} elements per line)",

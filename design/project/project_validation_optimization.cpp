@@ -11,12 +11,6 @@ namespace spiral::design::validation_detail {
 
 namespace {
 
-double total_length_m(const MooringLine& line) {
-  double total = 0.0;
-  for (const LineSegment& s : line.segments) total += s.length_m;
-  return total;
-}
-
 /// A haul-in `min_m` that leaves a line of the group without a top segment,
 /// or so short that even straight between anchor and fairlead at rest it
 /// would need more than its weakest segment's MBL (the straight-line lower
