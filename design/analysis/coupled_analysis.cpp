@@ -92,7 +92,7 @@ DynamicAnalysisResult run_coupled_analysis(const ValidatedProject& validated, co
   }
   const int count = static_cast<int>(moorings.size() + project.risers.size());
   const LineMesh mesh = request.detailed_line_mesh ? LineMesh::own : LineMesh::global_analysis;
-  if (mesh == LineMesh::global_analysis) result.line_element_length_m = project.global_analysis.element_length_m;
+  result.line_element_length_m = global_element_length_m(project, mesh);
   std::vector<engine::CoupledLine> lines(static_cast<std::size_t>(count));
   engine::parallel_for(count, engine::worker_count(count), [&](int i) {
     engine::CoupledLine& out = lines[static_cast<std::size_t>(i)];

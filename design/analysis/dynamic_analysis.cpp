@@ -685,8 +685,7 @@ DynamicAnalysisResult run_dynamic_analysis(const ValidatedProject& validated, co
     if (result.wave_frequency_computed) lines.tolerance_scale *= kWaveFrequencyLineToleranceScale;
     lines.sea = model.sea;
     lines.mesh = request.detailed_line_mesh ? LineMesh::own : LineMesh::global_analysis;
-    if (lines.mesh == LineMesh::global_analysis)
-      result.line_element_length_m = project.global_analysis.element_length_m;
+    result.line_element_length_m = global_element_length_m(project, lines.mesh);
     result.dynamic_tensions = run_line_dynamics(project, lines);
     result.timing.line_dynamics_s = start.seconds();
     const std::string mesh_note = line_mesh_note(project, lines.mesh, dynamic_line_elements(result.dynamic_tensions));

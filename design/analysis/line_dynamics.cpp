@@ -126,9 +126,13 @@ DynamicLineSetup dynamic_riser(const Project& project, const RiserDesign& own_me
   return setup;
 }
 
+std::optional<double> global_element_length_m(const Project& project, LineMesh mesh) {
+  return mesh == LineMesh::global_analysis ? project.global_analysis.element_length_m : std::nullopt;
+}
+
 engine::FeLineModel with_line_mesh(const Project& project, LineMesh mesh, engine::FeLineModel model) {
-  const std::optional<double>& length = project.global_analysis.element_length_m;
-  if (mesh != LineMesh::global_analysis || !length) return model;
+  const std::optional<double> length = global_element_length_m(project, mesh);
+  if (!length) return model;
   for (engine::FeLineSection& section : model.sections) section.element_length_m = *length;
   model.refinement.reset();
   return model;
@@ -143,8 +147,8 @@ long dynamic_line_elements(const std::vector<LineDynamicsSeries>& series) {
 }
 
 std::string line_mesh_note(const Project& project, LineMesh mesh, long elements) {
-  const std::optional<double>& length = project.global_analysis.element_length_m;
-  if (mesh != LineMesh::global_analysis || !length) return {};
+  const std::optional<double> length = global_element_length_m(project, mesh);
+  if (!length) return {};
   return fmt::format(
       "the lines on the global-analysis mesh (global_analysis.element_length: elements of at most {:g} m, {} in "
       "all); the statics, the stiffness, the SOZ and the riser checks on each line's own fe mesh",

@@ -154,6 +154,11 @@ DynamicLineSetup dynamic_riser(const Project& project, const RiserDesign& design
                                const std::vector<RiserProfilePoint>* equilibrium = nullptr,
                                LineMesh mesh = LineMesh::own);
 
+/// The element length of the global-analysis mesh where `mesh` asks for it
+/// and the project sets one (global_analysis.element_length); otherwise
+/// none: each line keeps its own mesh.
+std::optional<double> global_element_length_m(const Project& project, LineMesh mesh);
+
 /// The line's FE model on the project's global-analysis mesh where `mesh`
 /// asks for it and the project sets one: every section in equal elements of
 /// at most global_analysis.element_length, no touchdown refinement.
