@@ -51,23 +51,10 @@ double FixedPointWaveKinematics::default_sample_interval_s(const WaveRealization
 
 void FixedPointWaveKinematics::move_point(std::size_t point, const Eigen::Vector3d& position) {
   if (point >= points_.size()) throw std::out_of_range("fixed-point wave kinematics: no such point");
-  points_[point] = Point{};
-  set_point(points_[point], position);
-  // The held samples of the point are summed anew at the next evaluation,
-  // all moved points of a slot under one set of time phases.
-  if (interval_s_ > 0.0 && std::find(moved_.begin(), moved_.end(), point) == moved_.end()) moved_.push_back(point);
-}
-
-void FixedPointWaveKinematics::resample_moved() const {
-  if (moved_.empty()) return;
-  for (Slot& s : slots_) {
-    if (s.at.empty()) continue;
-    time_phases(static_cast<double>(s.index) * interval_s_, max_count_, cos_wt_.data(), sin_wt_.data());
-    for (std::size_t p : moved_) {
-      s.at[p] = points_[p].count > 0 ? at_point(points_[p], cos_wt_.data(), sin_wt_.data()) : Sample{};
-    }
-  }
-  moved_.clear();
+  Point& pt = points_[point];
+  pt.count = 0;  // set_point keeps the amplitude vectors' storage
+  ++pt.generation;
+  set_point(pt, position);
 }
 
 void FixedPointWaveKinematics::set_point(Point& out, const Eigen::Vector3d& x) {
@@ -107,17 +94,42 @@ void FixedPointWaveKinematics::time_phases(double t_s, std::size_t count, double
   }
 }
 
-const FixedPointWaveKinematics::Slot& FixedPointWaveKinematics::slot(std::int64_t index) const {
+FixedPointWaveKinematics::Slot& FixedPointWaveKinematics::slot(std::int64_t index) const {
   Slot& s = slots_[ring(index)];
   if (s.index == index && !s.at.empty()) return s;
   s.index = index;
-  s.at.assign(points_.size(), Sample{});
-  time_phases(static_cast<double>(index) * interval_s_, max_count_, cos_wt_.data(), sin_wt_.data());
+  s.at.assign(points_.size(), HeldSample{});
+  s.cos_wt.resize(max_count_);
+  s.sin_wt.resize(max_count_);
+  time_phases(static_cast<double>(index) * interval_s_, max_count_, s.cos_wt.data(), s.sin_wt.data());
   for (std::size_t p = 0; p < points_.size(); ++p) {
-    if (points_[p].count > 0) s.at[p] = at_point(points_[p], cos_wt_.data(), sin_wt_.data());
+    s.at[p].generation = points_[p].generation;
+    if (points_[p].count > 0) s.at[p].sample = at_point(points_[p], s.cos_wt.data(), s.sin_wt.data());
   }
   ++full_sums_;
   return s;
+}
+
+const FixedPointWaveKinematics::Sample& FixedPointWaveKinematics::held_sample(Slot& s, std::size_t point) const {
+  HeldSample& held = s.at[point];
+  const Point& pt = points_[point];
+  if (held.generation == pt.generation) return held.sample;
+  // Moved since the slot was summed: summed anew under the slot's phases,
+  // extended (as time_phases computes them) if the point now keeps more
+  // components than any point did then.
+  if (s.cos_wt.size() < pt.count) {
+    const std::size_t had = s.cos_wt.size();
+    s.cos_wt.resize(pt.count);
+    s.sin_wt.resize(pt.count);
+    const double t_s = static_cast<double>(s.index) * interval_s_;
+    for (std::size_t j = had; j < pt.count; ++j) {
+      s.cos_wt[j] = std::cos(omega_[j] * t_s);
+      s.sin_wt[j] = std::sin(omega_[j] * t_s);
+    }
+  }
+  held.sample = pt.count > 0 ? at_point(pt, s.cos_wt.data(), s.sin_wt.data()) : Sample{};
+  held.generation = pt.generation;
+  return held.sample;
 }
 
 FixedPointWaveKinematics::GridTime FixedPointWaveKinematics::grid_time(double t_s) const {
@@ -128,19 +140,20 @@ FixedPointWaveKinematics::GridTime FixedPointWaveKinematics::grid_time(double t_
            (u + 1.0) * u * (u - 1.0) / 6.0}};
 }
 
-bool FixedPointWaveKinematics::interpolate_point(std::size_t point, const std::array<const Slot*, 4>& slots,
+bool FixedPointWaveKinematics::interpolate_point(std::size_t point, const std::array<Slot*, 4>& slots,
                                                  const std::array<double, 4>& w, Eigen::Vector3d& velocity,
                                                  Eigen::Vector3d& acceleration) const {
-  for (const Slot* s : slots) {
-    if (!s->at[point].wet) return false;
-  }
-  const Point& pt = points_[point];
-  double eta = 0.0;
-  for (int k = 0; k < 4; ++k) eta += w[k] * slots[k]->at[point].eta_m;
-  if (pt.z_m > eta) return true;  // dry between wet samples: under a trough
+  std::array<const Sample*, 4> at{};
   for (int k = 0; k < 4; ++k) {
-    velocity += w[k] * slots[k]->at[point].velocity;
-    acceleration += w[k] * slots[k]->at[point].acceleration;
+    at[k] = &held_sample(*slots[k], point);
+    if (!at[k]->wet) return false;
+  }
+  double eta = 0.0;
+  for (int k = 0; k < 4; ++k) eta += w[k] * at[k]->eta_m;
+  if (points_[point].z_m > eta) return true;  // dry between wet samples: under a trough
+  for (int k = 0; k < 4; ++k) {
+    velocity += w[k] * at[k]->velocity;
+    acceleration += w[k] * at[k]->acceleration;
   }
   return true;
 }
@@ -150,10 +163,8 @@ void FixedPointWaveKinematics::evaluate(double t_s, std::vector<Eigen::Vector3d>
   velocity.assign(points_.size(), Eigen::Vector3d::Zero());
   acceleration.assign(points_.size(), Eigen::Vector3d::Zero());
   if (interval_s_ > 0.0) {
-    resample_moved();
     const GridTime g = grid_time(t_s);
-    const std::array<const Slot*, 4> slots = {&slot(g.first), &slot(g.first + 1), &slot(g.first + 2),
-                                              &slot(g.first + 3)};
+    const std::array<Slot*, 4> slots = {&slot(g.first), &slot(g.first + 1), &slot(g.first + 2), &slot(g.first + 3)};
     bool phases_at_t = false;  // cos_wt_, sin_wt_ hold the phases at t_s (for points summed directly)
     for (std::size_t p = 0; p < points_.size(); ++p) {
       if (points_[p].count == 0) continue;
@@ -184,11 +195,10 @@ void FixedPointWaveKinematics::evaluate_point(double t_s, std::size_t point, Eig
   const Point& pt = points_[point];
   if (pt.count == 0) return;
   if (interval_s_ > 0.0) {
-    resample_moved();
     // From the grid when its four samples are held (an output time inside
     // the last step's): the same kinematics the residual saw.
     const GridTime g = grid_time(t_s);
-    std::array<const Slot*, 4> slots{};
+    std::array<Slot*, 4> slots{};
     bool held = true;
     for (int k = 0; k < 4; ++k) {
       slots[k] = &slots_[ring(g.first + k)];

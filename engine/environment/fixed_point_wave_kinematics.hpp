@@ -39,7 +39,10 @@
 // where an IDA step of the coupled storm is ≈ 0.06 s. The wet/dry test is
 // exact in form: η is interpolated as well and a point above it is dry; a
 // point dry at any of the four samples (the kinematics jump to zero there,
-// which no polynomial follows) is summed directly at t.
+// which no polynomial follows) is summed directly at t. A moved point's
+// held samples are summed anew when they are next used, under the phases the
+// slot keeps: a point that moves at every output costs one sum per grid
+// sample it is read at, not one sin/cos per component and held sample.
 
 #include <Eigen/Core>
 #include <array>
@@ -72,8 +75,9 @@ class FixedPointWaveKinematics {
   /// Where a point's kinematics are evaluated (global).
   const Eigen::Vector3d& position(std::size_t point) const { return points_[point].position_m; }
   /// Moves a point: its amplitudes are computed anew at `position` (one
-  /// sin/cos pair and depth profile per component it keeps). Not while
-  /// another thread evaluates this object.
+  /// sin/cos pair and depth profile per component it keeps); its held
+  /// samples are summed anew where next read. Not while another thread
+  /// evaluates this object.
   void move_point(std::size_t point, const Eigen::Vector3d& position);
   /// How many times the sums over every point were taken (direct
   /// evaluations, or grid samples when sampled in time).
@@ -97,6 +101,7 @@ class FixedPointWaveKinematics {
     std::vector<double> elevation_c, elevation_s;    // a cos ψ, a sin ψ
     double z_m = 0.0;
     Eigen::Vector3d position_m = Eigen::Vector3d::Zero();
+    std::uint64_t generation = 0;  // moves so far: a held sample of an older one is stale
   };
   // The sums at one point and time: velocity, acceleration, η, and whether
   // the point is below η.
@@ -105,10 +110,17 @@ class FixedPointWaveKinematics {
     double eta_m = 0.0;
     bool wet = false;
   };
-  // The samples of every point at the grid time index · Δ.
+  // A held sample and the generation of the point it was summed for.
+  struct HeldSample {
+    Sample sample;
+    std::uint64_t generation = 0;
+  };
+  // The samples of every point at the grid time index · Δ, and the time
+  // phases they were summed under (for the points moved since).
   struct Slot {
     std::int64_t index = std::numeric_limits<std::int64_t>::min();
-    std::vector<Sample> at;
+    std::vector<HeldSample> at;
+    std::vector<double> cos_wt, sin_wt;  // of the first max_count_ components when filled
   };
   // Eight slots: the four of a time and the last ones IDA may step back to.
   static constexpr std::int64_t kSlots = 8;
@@ -127,13 +139,14 @@ class FixedPointWaveKinematics {
   void time_phases(double t_s, std::size_t count, double* cos_wt, double* sin_wt) const;
   Sample at_point(const Point& pt, const double* cos_wt, const double* sin_wt) const;
   /// The slot of grid index `index`, summed if it is not held.
-  const Slot& slot(std::int64_t index) const;
-  /// The held samples of the points moved since the last evaluation, summed anew.
-  void resample_moved() const;
+  Slot& slot(std::int64_t index) const;
+  /// The sample of a point in a held slot, summed anew if the point has
+  /// moved since it was taken.
+  const Sample& held_sample(Slot& s, std::size_t point) const;
   /// Adds the kinematics of one point interpolated from four slots (weights
   /// w) to velocity and acceleration (zero where it is dry); false, adding
   /// nothing, where a sample is dry: the caller sums at t.
-  bool interpolate_point(std::size_t point, const std::array<const Slot*, 4>& slots, const std::array<double, 4>& w,
+  bool interpolate_point(std::size_t point, const std::array<Slot*, 4>& slots, const std::array<double, 4>& w,
                          Eigen::Vector3d& velocity, Eigen::Vector3d& acceleration) const;
 
   std::shared_ptr<const WaveRealization> sea_;
@@ -145,7 +158,6 @@ class FixedPointWaveKinematics {
   mutable std::vector<double> cos_wt_, sin_wt_;  // per component (sorted), of the last t
   double interval_s_ = 0.0;
   mutable std::array<Slot, kSlots> slots_;  // grid index i in slots_[i mod kSlots]
-  mutable std::vector<std::size_t> moved_;  // points moved since their samples were summed
   mutable long full_sums_ = 0;
 };
 

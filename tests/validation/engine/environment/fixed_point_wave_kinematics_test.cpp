@@ -255,6 +255,15 @@ TEST(FixedPointWaveKinematics, AMovedSampledPointIsResampled) {
       EXPECT_EQ(a1[p], a2[p]) << p;
     }
   }
+  // Moved again while its samples are held: one point's value at a held
+  // time (an output's end force) is the point built there as well.
+  moving.move_point(1, targets[0]);
+  const FixedPointWaveKinematics built_there(sea, {targets[1], targets[0]}, 1e-3, interval_s);
+  built_there.evaluate(400.12, u2, a2);
+  Eigen::Vector3d u, a;
+  moving.evaluate_point(400.12, 1, u, a);
+  EXPECT_EQ(u, u2[1]);
+  EXPECT_EQ(a, a2[1]);
 }
 
 }  // namespace
