@@ -157,8 +157,10 @@ std::string line_mesh_note(const Project& project, LineMesh mesh, long elements)
 
 std::string line_wave_kinematics_note(const engine::WaveRealization& sea) {
   return fmt::format(
-      "linear wave kinematics at each element's midpoint (followed to 0.5 m), summed every {:.3g} s and "
-      "interpolated cubically in time (rms error 1e-3 of the acceleration)",
+      "linear wave kinematics at each element's midpoint, at its Gauss points in the wave zone (where the midpoint "
+      "would err by more than 1e-3 of the surface velocity), carried to the line's present position by their "
+      "gradients and moved at 2 m, summed every {:.3g} s and interpolated cubically in time (rms error 1e-3 of the "
+      "acceleration)",
       engine::FixedPointWaveKinematics::default_sample_interval_s(sea));
 }
 

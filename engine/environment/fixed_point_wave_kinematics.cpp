@@ -28,6 +28,12 @@ FixedPointWaveKinematics::FixedPointWaveKinematics(std::shared_ptr<const WaveRea
     wavenumber_.push_back(c[j].wavenumber_rad_per_m);
     cos_heading_.push_back(c[j].cos_heading);
     sin_heading_.push_back(c[j].sin_heading);
+    const double k = c[j].wavenumber_rad_per_m, cb = c[j].cos_heading, sb = c[j].sin_heading;
+    k_cc_.push_back(k * cb * cb);
+    k_cs_.push_back(k * cb * sb);
+    k_ss_.push_back(k * sb * sb);
+    k_c_.push_back(k * cb);
+    k_s_.push_back(k * sb);
   }
   log_cutoff_ = std::log(cutoff);
   points_.resize(points.size());
@@ -47,6 +53,18 @@ double FixedPointWaveKinematics::default_sample_interval_s(const WaveRealization
   if (!(error_sq > 0.0)) return kMaxSampleInterval_s;
   const double per_s4 = std::sqrt(error_sq / signal_sq);  // the ratio at Δ = 1 s
   return std::min(kMaxSampleInterval_s, std::pow(kSampledAccelerationError / per_s4, 0.25));
+}
+
+double FixedPointWaveKinematics::midpoint_error(const WaveRealization& sea, double top_z_m, double length_m) {
+  const double z = std::min(top_z_m, 0.0);
+  double error = 0.0, amplitude = 0.0;
+  for (const WaveComponent& w : sea.components) {
+    const double velocity = w.amplitude_m * w.omega_rad_per_s;
+    const double kl = w.wavenumber_rad_per_m * length_m;
+    error += velocity * wave_profiles(w, z, sea.water_depth_m).ch_over_sh * kl * kl / 24.0;
+    amplitude += velocity * wave_profiles(w, 0.0, sea.water_depth_m).ch_over_sh;
+  }
+  return amplitude > 0.0 ? error / amplitude : 0.0;
 }
 
 void FixedPointWaveKinematics::move_point(std::size_t point, const Eigen::Vector3d& position) {
@@ -142,7 +160,7 @@ FixedPointWaveKinematics::GridTime FixedPointWaveKinematics::grid_time(double t_
 
 bool FixedPointWaveKinematics::interpolate_point(std::size_t point, const std::array<Slot*, 4>& slots,
                                                  const std::array<double, 4>& w, Eigen::Vector3d& velocity,
-                                                 Eigen::Vector3d& acceleration) const {
+                                                 Eigen::Vector3d& acceleration, Gradients* gradients) const {
   std::array<const Sample*, 4> at{};
   for (int k = 0; k < 4; ++k) {
     at[k] = &held_sample(*slots[k], point);
@@ -155,43 +173,53 @@ bool FixedPointWaveKinematics::interpolate_point(std::size_t point, const std::a
     velocity += w[k] * at[k]->velocity;
     acceleration += w[k] * at[k]->acceleration;
   }
+  if (gradients != nullptr) {
+    for (int k = 0; k < 4; ++k) {
+      gradients->velocity_per_s += w[k] * at[k]->gradients.velocity_per_s;
+      gradients->acceleration_per_s2 += w[k] * at[k]->gradients.acceleration_per_s2;
+    }
+  }
   return true;
 }
 
 void FixedPointWaveKinematics::evaluate(double t_s, std::vector<Eigen::Vector3d>& velocity,
-                                        std::vector<Eigen::Vector3d>& acceleration) const {
+                                        std::vector<Eigen::Vector3d>& acceleration,
+                                        std::vector<Gradients>* gradients) const {
   velocity.assign(points_.size(), Eigen::Vector3d::Zero());
   acceleration.assign(points_.size(), Eigen::Vector3d::Zero());
+  if (gradients != nullptr) gradients->assign(points_.size(), Gradients{});
+  const auto take = [&](std::size_t p, const Sample& sum) {
+    velocity[p] = sum.velocity;
+    acceleration[p] = sum.acceleration;
+    if (gradients != nullptr) (*gradients)[p] = sum.gradients;
+  };
   if (interval_s_ > 0.0) {
     const GridTime g = grid_time(t_s);
     const std::array<Slot*, 4> slots = {&slot(g.first), &slot(g.first + 1), &slot(g.first + 2), &slot(g.first + 3)};
     bool phases_at_t = false;  // cos_wt_, sin_wt_ hold the phases at t_s (for points summed directly)
     for (std::size_t p = 0; p < points_.size(); ++p) {
       if (points_[p].count == 0) continue;
-      if (interpolate_point(p, slots, g.weights, velocity[p], acceleration[p])) continue;
+      if (interpolate_point(p, slots, g.weights, velocity[p], acceleration[p],
+                            gradients != nullptr ? &(*gradients)[p] : nullptr))
+        continue;
       if (!phases_at_t) time_phases(t_s, max_count_, cos_wt_.data(), sin_wt_.data());
       phases_at_t = true;
-      const Sample sum = at_point(points_[p], cos_wt_.data(), sin_wt_.data());
-      velocity[p] = sum.velocity;
-      acceleration[p] = sum.acceleration;
+      take(p, at_point(points_[p], cos_wt_.data(), sin_wt_.data()));
     }
     return;
   }
   time_phases(t_s, max_count_, cos_wt_.data(), sin_wt_.data());
   ++full_sums_;
   for (std::size_t p = 0; p < points_.size(); ++p) {
-    if (points_[p].count > 0) {
-      const Sample sum = at_point(points_[p], cos_wt_.data(), sin_wt_.data());
-      velocity[p] = sum.velocity;
-      acceleration[p] = sum.acceleration;
-    }
+    if (points_[p].count > 0) take(p, at_point(points_[p], cos_wt_.data(), sin_wt_.data()));
   }
 }
 
 void FixedPointWaveKinematics::evaluate_point(double t_s, std::size_t point, Eigen::Vector3d& velocity,
-                                              Eigen::Vector3d& acceleration) const {
+                                              Eigen::Vector3d& acceleration, Gradients* gradients) const {
   velocity.setZero();
   acceleration.setZero();
+  if (gradients != nullptr) *gradients = Gradients{};
   const Point& pt = points_[point];
   if (pt.count == 0) return;
   if (interval_s_ > 0.0) {
@@ -204,7 +232,7 @@ void FixedPointWaveKinematics::evaluate_point(double t_s, std::size_t point, Eig
       slots[k] = &slots_[ring(g.first + k)];
       held = held && slots[k]->index == g.first + k && !slots[k]->at.empty();
     }
-    if (held && interpolate_point(point, slots, g.weights, velocity, acceleration)) return;
+    if (held && interpolate_point(point, slots, g.weights, velocity, acceleration, gradients)) return;
   }
   thread_local std::vector<double> cos_wt, sin_wt;
   cos_wt.resize(pt.count);
@@ -213,6 +241,7 @@ void FixedPointWaveKinematics::evaluate_point(double t_s, std::size_t point, Eig
   const Sample sum = at_point(pt, cos_wt.data(), sin_wt.data());
   velocity = sum.velocity;
   acceleration = sum.acceleration;
+  if (gradients != nullptr) *gradients = sum.gradients;
 }
 
 FixedPointWaveKinematics::Sample FixedPointWaveKinematics::at_point(const Point& pt, const double* cos_wt,
@@ -232,6 +261,14 @@ FixedPointWaveKinematics::Sample FixedPointWaveKinematics::at_point(const Point&
   const double z_stretched = h ? (pt.z_m - eta) * *h / (*h + eta) : pt.z_m - eta;
   const double dz = z_stretched - pt.z_m;
   double ux = 0.0, uy = 0.0, uz = 0.0, ax = 0.0, ay = 0.0, az = 0.0;
+  // The gradients' six independent sums each (∂θ/∂x = −k cos β,
+  // ∂θ/∂y = −k sin β, f_h' = k f_v, f_v' = k f_h, with the stretched
+  // profiles): ∂u_x/∂x = Σ k cos²β ŷ_h, ∂u_x/∂y = Σ k cos β sin β ŷ_h,
+  // ∂u_y/∂y = Σ k sin²β ŷ_h, ∂u_x/∂z = ∂u_z/∂x = Σ k cos β x̂_v,
+  // ∂u_y/∂z = Σ k sin β x̂_v, ∂u_z/∂z = −Σ k ŷ_h; the acceleration's are
+  // their time derivatives (ŷ_h' = ω x̂_h, x̂_v' = −ω ŷ_v).
+  double gxx = 0.0, gxy = 0.0, gyy = 0.0, gxz = 0.0, gyz = 0.0, gzz = 0.0;
+  double hxx = 0.0, hxy = 0.0, hyy = 0.0, hxz = 0.0, hyz = 0.0, hzz = 0.0;
   for (std::size_t j = 0; j < pt.count; ++j) {
     const double C = cos_wt[j], S = sin_wt[j], omega = omega_[j];
     const double kdz = wavenumber_[j] * dz, same = 1.0 + 0.5 * kdz * kdz;
@@ -240,17 +277,36 @@ FixedPointWaveKinematics::Sample FixedPointWaveKinematics::at_point(const Point&
     const double yh = pt.horizontal_c[j] * S + pt.horizontal_s[j] * C;  // a ω f_h sin θ
     const double xv = pt.vertical_c[j] * C - pt.vertical_s[j] * S;
     const double yv = pt.vertical_c[j] * S + pt.vertical_s[j] * C;
+    // The stretched a ω f cos θ, a ω f sin θ (x̂_h, ŷ_h, x̂_v, ŷ_v).
     const double u_h = same * xh + kdz * xv;
-    const double du_h = -omega * (same * yh + kdz * yv);
+    const double yh_s = same * yh + kdz * yv;
+    const double xv_s = same * xv + kdz * xh;
+    const double yv_s = same * yv + kdz * yh;
+    const double du_h = -omega * yh_s;
     ux += u_h * cos_heading_[j];
     uy += u_h * sin_heading_[j];
     ax += du_h * cos_heading_[j];
     ay += du_h * sin_heading_[j];
-    uz -= same * yv + kdz * yh;
-    az -= omega * (same * xv + kdz * xh);
+    uz -= yv_s;
+    az -= omega * xv_s;
+    gxx += k_cc_[j] * yh_s;
+    gxy += k_cs_[j] * yh_s;
+    gyy += k_ss_[j] * yh_s;
+    gxz += k_c_[j] * xv_s;
+    gyz += k_s_[j] * xv_s;
+    gzz -= wavenumber_[j] * yh_s;
+    const double wxh = omega * u_h, wyv = omega * yv_s;
+    hxx += k_cc_[j] * wxh;
+    hxy += k_cs_[j] * wxh;
+    hyy += k_ss_[j] * wxh;
+    hxz -= k_c_[j] * wyv;
+    hyz -= k_s_[j] * wyv;
+    hzz -= wavenumber_[j] * wxh;
   }
   out.velocity = {ux, uy, uz};
   out.acceleration = {ax, ay, az};
+  out.gradients.velocity_per_s << gxx, gxy, gxz, gxy, gyy, gyz, gxz, gyz, gzz;
+  out.gradients.acceleration_per_s2 << hxx, hxy, hxz, hxy, hyy, hyz, hxz, hyz, hzz;
   return out;
 }
 

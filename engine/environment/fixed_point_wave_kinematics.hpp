@@ -16,8 +16,10 @@
 // fixed is the phase k Δ of the element's excursion Δ from it: for the
 // points' static positions k σ ≈ 0.03 rad/m × 1–3 m = 0.03–0.1 rad in the
 // deep-water storm (surge std 1.1 m) — MoorDyn's original approach
-// (kinematics at the nodes' initial positions, Hall 2015); the lines move a
-// point when its element has drifted from it (move_point).
+// (kinematics at the nodes' initial positions, Hall 2015). The lines take
+// the gradients as well and carry each value to where the line now is, to
+// first order (the error (k Δ)²/2), and move a point when it has drifted
+// far enough for that to matter (move_point).
 //
 // Profiles: linear theory (DNV-RP-C205 §3.2.2) with Wheeler stretching
 // (§3.2.3) to second order in k Δz about the point's z (evaluate() says
@@ -71,6 +73,16 @@ class FixedPointWaveKinematics {
   static constexpr double kMaxSampleInterval_s = 1.0;
   double sample_interval_s() const { return interval_s_; }
 
+  /// How far one point's velocity may stand for a straight piece of line
+  /// `length_m` long whose highest point is at `top_z_m`: the mean over the
+  /// piece of each component's depth profile and phase differs from their
+  /// value at its middle by at most (k ℓ)²/24 of it (the mean of e^{k x}
+  /// over ±ℓ/2 is sinh(kℓ/2)/(kℓ/2) = 1 + (kℓ)²/24 + …, and of e^{i k x}
+  /// likewise), so this returns Σ a ω f_h(top) (k ℓ)²/24 / Σ a ω: the error
+  /// bound as a fraction of the sea's velocity amplitude at the still-water
+  /// level.
+  static double midpoint_error(const WaveRealization& sea, double top_z_m, double length_m);
+
   std::size_t size() const { return points_.size(); }
   /// Where a point's kinematics are evaluated (global).
   const Eigen::Vector3d& position(std::size_t point) const { return points_[point].position_m; }
@@ -85,13 +97,23 @@ class FixedPointWaveKinematics {
   /// True where no component reaches the point (deep, or above the water).
   bool still(std::size_t point) const { return points_[point].count == 0; }
 
-  /// Velocity and local acceleration at every point at time t (global).
+  /// ∂u_i/∂x_j and ∂a_i/∂x_j at a point (symmetric: the flow is
+  /// irrotational; trace 0: incompressible), of the unstretched linear
+  /// fields: u(p + d) = u(p) + G_u d + O((k d)²) for a position near the
+  /// point, which is how a line follows its element between moves.
+  struct Gradients {
+    Eigen::Matrix3d velocity_per_s = Eigen::Matrix3d::Zero();
+    Eigen::Matrix3d acceleration_per_s2 = Eigen::Matrix3d::Zero();
+  };
+
+  /// Velocity and local acceleration at every point at time t (global),
+  /// and their gradients if asked for.
   void evaluate(double t_s, std::vector<Eigen::Vector3d>& velocity_m_per_s,
-                std::vector<Eigen::Vector3d>& acceleration_m_per_s2) const;
+                std::vector<Eigen::Vector3d>& acceleration_m_per_s2, std::vector<Gradients>* gradients = nullptr) const;
   /// The same at one point only (its own sin/cos of ω t: for a single
   /// element's forces at a time the line is not otherwise evaluated at).
   void evaluate_point(double t_s, std::size_t point, Eigen::Vector3d& velocity_m_per_s,
-                      Eigen::Vector3d& acceleration_m_per_s2) const;
+                      Eigen::Vector3d& acceleration_m_per_s2, Gradients* gradients = nullptr) const;
 
  private:
   struct Point {
@@ -107,6 +129,7 @@ class FixedPointWaveKinematics {
   // the point is below η.
   struct Sample {
     Eigen::Vector3d velocity = Eigen::Vector3d::Zero(), acceleration = Eigen::Vector3d::Zero();
+    Gradients gradients;
     double eta_m = 0.0;
     bool wet = false;
   };
@@ -147,11 +170,12 @@ class FixedPointWaveKinematics {
   /// w) to velocity and acceleration (zero where it is dry); false, adding
   /// nothing, where a sample is dry: the caller sums at t.
   bool interpolate_point(std::size_t point, const std::array<Slot*, 4>& slots, const std::array<double, 4>& w,
-                         Eigen::Vector3d& velocity, Eigen::Vector3d& acceleration) const;
+                         Eigen::Vector3d& velocity, Eigen::Vector3d& acceleration, Gradients* gradients) const;
 
   std::shared_ptr<const WaveRealization> sea_;
   std::vector<std::size_t> order_;                                      // components by increasing wavenumber
   std::vector<double> omega_, wavenumber_, cos_heading_, sin_heading_;  // in that order
+  std::vector<double> k_cc_, k_cs_, k_ss_, k_c_, k_s_;  // k cos²β, k cos β sin β, k sin²β, k cos β, k sin β
   std::vector<Point> points_;
   std::size_t max_count_ = 0;  // the most components any point keeps (or kept)
   double log_cutoff_ = 0.0;

@@ -32,12 +32,24 @@ namespace spiral::engine::fe_detail {
 // than a coarser threshold, fewer refreshes than a finer one
 // (docs/decisions/fe-line-dynamics-integrator.md).
 constexpr double kContactChangeForRefresh = 0.1;
-// An element's wave kinematics are taken at a point it moves to when its
-// midpoint has drifted this far from it: the phase error k Δ stays below
-// 0.012 rad at a 13 s wave's k = 0.024 rad/m (0.03–0.1 rad with the points
-// held at the static midpoints through a storm's low-frequency excursions),
-// and a 3-h storm moves a point a few hundred times at most.
-constexpr double kWavePointDrift_m = 0.5;
+// A wave-kinematics point is carried to where its Gauss points now are by
+// the field's gradients, to first order (fluid_at), and moved there when it
+// has drifted this far: the term left out is (k Δ)²/2 of a component, 7e-4
+// at a 13 s wave's k = 0.024 rad/m (at 0.5 m without the gradients, which
+// moved the points in jumps of k Δ: 0.012 rad). Each move sums the point
+// anew and is a (second-order) jump in the forcing: deep-water lc1 storm,
+// 600 s, 7,506 steps at 0.5 m, 7,594 at 2 m, every statistic the same
+// within 0.03 % (docs/decisions/global-analysis-mesh.md).
+constexpr double kWavePointDrift_m = 2.0;
+// An element takes the sea's kinematics at its five Gauss points instead of
+// its midpoint where the midpoint would err by more than this fraction of
+// the sea's velocity amplitude at the still-water level
+// (FixedPointWaveKinematics::midpoint_error): the kinematics' other
+// approximations are held to 1e-3 as well (the depth cutoff, the sampling in
+// time). Only the top elements of a coarse (global-analysis) mesh reach it:
+// a 40 m element just below the fairleads in a Tp 14 s sea, not one below
+// ≈ 150 m (docs/decisions/global-analysis-mesh.md).
+constexpr double kWaveZoneMidpointError = 1e-3;
 
 [[noreturn]] inline void invalid_dynamics(const std::string& what) {
   throw SolverError("FE line dynamics: invalid input: " + what);
@@ -120,26 +132,49 @@ struct DynamicLine final : ImplicitSystem {
   }
 
   // The sea's kinematics at the elements' midpoints, evaluated once per
-  // time (the Newton iterations of a step share it); a point follows its
-  // element when the element has drifted kWavePointDrift_m from it.
+  // time (the Newton iterations of a step share it), with their gradients:
+  // each Gauss point takes them carried to where it is (fluid_at), and a
+  // point moves when it has drifted kWavePointDrift_m. An
+  // element in the wave zone, over which one point's value would err by
+  // more than kWaveZoneMidpointError (FixedPointWaveKinematics::
+  // midpoint_error), has a point at each Gauss point instead: its points
+  // are wave_point_start[e] … wave_point_start[e + 1] − 1.
   std::unique_ptr<FixedPointWaveKinematics> element_waves;
+  std::vector<std::size_t> wave_point_start;
+  std::size_t wave_point_count(std::size_t e) const { return wave_point_start[e + 1] - wave_point_start[e]; }
+  /// The point at the element's midpoint (the middle Gauss point, ξ = ½).
+  std::size_t wave_midpoint(std::size_t e) const {
+    return wave_point_start[e] + (wave_point_count(e) == 1 ? 0 : ancf::kGaussXi.size() / 2);
+  }
+  /// Where point k of element e lies along it (ξ).
+  double wave_point_xi(std::size_t e, std::size_t k) const {
+    return wave_point_count(e) == 1 ? 0.5 : ancf::kGaussXi[k];
+  }
   double sea_ramp_s = 0.0;
   mutable double element_waves_time = std::numeric_limits<double>::quiet_NaN();
   mutable std::vector<Eigen::Vector3d> element_wave_velocity, element_wave_acceleration;
+  mutable std::vector<FixedPointWaveKinematics::Gradients> element_wave_gradients;
+  // One element's points at a time the line is not otherwise evaluated at (fluid_at's `alone`).
+  mutable std::array<Eigen::Vector3d, ancf::kGaussXi.size()> alone_wave_u, alone_wave_a;
+  mutable std::array<FixedPointWaveKinematics::Gradients, ancf::kGaussXi.size()> alone_wave_g;
 
-  /// Moves the wave-kinematics point of every element whose midpoint in
-  /// the state q (the line's position DOFs, as y.head(n)) is more than
-  /// kWavePointDrift_m from it; between output times only (the kinematics
+  /// Moves every wave-kinematics point whose place on its element (the
+  /// midpoint or a Gauss point) in the state q (the line's position DOFs, as
+  /// y.head(n)) is more than kWavePointDrift_m from it; between output
+  /// times only (the kinematics
   /// must not change inside a step's Newton iteration). Returns how many moved.
   int follow_elements(const Eigen::VectorXd& q) {
     if (!element_waves) return 0;
     int moved = 0;
     for (std::size_t e = 0; e < p.elements.size(); ++e) {
-      const Eigen::Vector3d mid =
-          fe_detail::position(ancf::shape_at(0.5, p.elements[e].length_m), fe_detail::gather(p, q, e));
-      if ((mid - element_waves->position(e)).norm() > kWavePointDrift_m) {
-        element_waves->move_point(e, mid);
-        ++moved;
+      const fe_detail::ElementState qe = fe_detail::gather(p, q, e);
+      for (std::size_t k = 0; k < wave_point_count(e); ++k) {
+        const std::size_t point = wave_point_start[e] + k;
+        const Eigen::Vector3d at = fe_detail::position(ancf::shape_at(wave_point_xi(e, k), p.elements[e].length_m), qe);
+        if ((at - element_waves->position(point)).norm() > kWavePointDrift_m) {
+          element_waves->move_point(point, at);
+          ++moved;
+        }
       }
     }
     if (moved > 0) element_waves_time = std::numeric_limits<double>::quiet_NaN();
@@ -150,16 +185,39 @@ struct DynamicLine final : ImplicitSystem {
   /// `alone`: this element's forces only are wanted at t (an output's end
   /// force): its own wave kinematics, not the whole line's.
   void fluid_at(double t, std::size_t e, const double* qe, ancf::ElementFluid& fluid, bool alone = false) const {
-    Eigen::Vector3d wave_u = Eigen::Vector3d::Zero(), wave_a = Eigen::Vector3d::Zero();
+    // The sea at each Gauss point: at the element's one point or the Gauss
+    // point's own, carried to where the Gauss point now is to first order,
+    // u(r) = u(p) + G_u (r − p) (FixedPointWaveKinematics::Gradients): the
+    // kinematics follow the line continuously, and a point moves only when
+    // the second-order term would matter (kWavePointDrift_m).
+    constexpr std::size_t kPoints = ancf::kGaussXi.size();
+    std::array<std::size_t, kPoints> wave_point{};
+    std::array<const Eigen::Vector3d*, kPoints> wave_u{}, wave_a{};
+    std::array<const FixedPointWaveKinematics::Gradients*, kPoints> wave_g{};
+    if (element_waves) {
+      const bool own = wave_point_count(e) > 1;
+      for (std::size_t gp = 0; gp < kPoints; ++gp) wave_point[gp] = wave_point_start[e] + (own ? gp : 0);
+    }
     if (element_waves && alone && t != element_waves_time) {
-      element_waves->evaluate_point(t, e, wave_u, wave_a);
+      for (std::size_t k = 0; k < wave_point_count(e); ++k) {
+        element_waves->evaluate_point(t, wave_point_start[e] + k, alone_wave_u[k], alone_wave_a[k], &alone_wave_g[k]);
+      }
+      const bool own = wave_point_count(e) > 1;
+      for (std::size_t gp = 0; gp < kPoints; ++gp) {
+        const std::size_t k = own ? gp : 0;
+        wave_u[gp] = &alone_wave_u[k], wave_a[gp] = &alone_wave_a[k], wave_g[gp] = &alone_wave_g[k];
+      }
     } else if (element_waves) {
       if (t != element_waves_time) {
-        element_waves->evaluate(t, element_wave_velocity, element_wave_acceleration);
+        element_waves->evaluate(t, element_wave_velocity, element_wave_acceleration, &element_wave_gradients);
         element_waves_time = t;
       }
-      wave_u = element_wave_velocity[e];
-      wave_a = element_wave_acceleration[e];
+      for (std::size_t gp = 0; gp < kPoints; ++gp) {
+        const std::size_t point = wave_point[gp];
+        wave_u[gp] = &element_wave_velocity[point];
+        wave_a[gp] = &element_wave_acceleration[point];
+        wave_g[gp] = &element_wave_gradients[point];
+      }
     }
     const RampValue ramp = element_waves ? smooth_ramp(t - options.start_time_s, sea_ramp_s) : RampValue{};
     ancf::CurrentLookup current_lookup(current_ctx);
@@ -179,8 +237,11 @@ struct DynamicLine final : ImplicitSystem {
         a += aw_;
       }
       if (element_waves) {
-        u += ramp.value * wave_u;
-        a += ramp.value * wave_a + ramp.rate_per_s * wave_u;
+        const Eigen::Vector3d d = r - element_waves->position(wave_point[gp]);
+        const Eigen::Vector3d uw = *wave_u[gp] + wave_g[gp]->velocity_per_s * d;
+        const Eigen::Vector3d aw = *wave_a[gp] + wave_g[gp]->acceleration_per_s2 * d;
+        u += ramp.value * uw;
+        a += ramp.value * aw + ramp.rate_per_s * uw;
       }
       for (int x = 0; x < 3; ++x) {
         fluid.velocity[gp][static_cast<std::size_t>(x)] = u[x];
@@ -289,7 +350,7 @@ struct DynamicLine final : ImplicitSystem {
     for (int r : {0, 1, 2, 6, 7, 8}) k[i++] = x.v[r];
     if (element_waves) {
       const double ramp = smooth_ramp(t - options.start_time_s, sea_ramp_s).value;
-      for (int d = 0; d < 3; ++d) k[i++] = ramp * element_wave_velocity[e][d];
+      for (int d = 0; d < 3; ++d) k[i++] = ramp * element_wave_velocity[wave_midpoint(e)][d];
     }
     return k;
   }
@@ -431,7 +492,7 @@ struct DynamicLine final : ImplicitSystem {
     const bool selective = selective_refresh() && evaluated_at.size() == p.elements.size();
     if (selective_refresh() && !selective) evaluated_at.resize(p.elements.size());
     if (selective && element_waves && t != element_waves_time) {
-      element_waves->evaluate(t, element_wave_velocity, element_wave_acceleration);
+      element_waves->evaluate(t, element_wave_velocity, element_wave_acceleration, &element_wave_gradients);
       element_waves_time = t;
     }
     for (std::size_t e = 0; e < p.elements.size(); ++e) {

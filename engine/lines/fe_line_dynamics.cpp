@@ -122,14 +122,23 @@ DynamicLine::Start DynamicLine::initialize(const FeLineModel& model, const FeDyn
   }
 
   if (environment.sea) {
-    std::vector<Eigen::Vector3d> midpoints;
+    std::vector<Eigen::Vector3d> points;
+    m.wave_point_start.assign(1, 0);
     for (std::size_t e = 0; e < m.p.elements.size(); ++e) {
       const fe_detail::ElementState qe = fe_detail::gather(m.p, q0, e);
-      midpoints.push_back(fe_detail::position(ancf::shape_at(0.5, m.p.elements[e].length_m), qe));
+      const double L = m.p.elements[e].length_m;
+      const auto at = [&](double xi) { return fe_detail::position(ancf::shape_at(xi, L), qe); };
+      const double top_z_m = std::max(at(0.0).z(), at(1.0).z());
+      if (FixedPointWaveKinematics::midpoint_error(*environment.sea, top_z_m, L) > kWaveZoneMidpointError) {
+        for (double xi : ancf::kGaussXi) points.push_back(at(xi));
+      } else {
+        points.push_back(at(0.5));
+      }
+      m.wave_point_start.push_back(points.size());
     }
     const double interval_s = environment.sea_sample_interval_s.value_or(
         FixedPointWaveKinematics::default_sample_interval_s(*environment.sea));
-    m.element_waves = std::make_unique<FixedPointWaveKinematics>(environment.sea, midpoints, 1e-3, interval_s);
+    m.element_waves = std::make_unique<FixedPointWaveKinematics>(environment.sea, points, 1e-3, interval_s);
     m.sea_ramp_s = environment.sea_ramp_s;
   }
   m.element_dofs.resize(m.p.elements.size());

@@ -134,10 +134,13 @@ TEST(MotionLinesValidation, Oc4ChainUnderVerySlowSurgeFollowsTheElasticCatenary)
 // same waves from the same start (the static equilibrium is the motion's
 // first pose: the OC4 hull has no wave-frequency data). The two runs differ
 // only in how the motion reaches the spline (even samples vs a history at its
-// own times: equal to round-off). Measured: 7e-8 at worst over 200 s. Bound
-// 1e-5: round-off, not the integrator's tolerance (a different step path, as
-// the 6 digits of analyze's CSV give, moves the tensions by up to 0.4 %, the
-// shipped tolerances' accuracy; docs/lines.md).
+// own times: equal to round-off). Measured: 7e-8 at worst over 200 s while the
+// wave points moved only in discrete 0.5 m steps; 1.9e-5 since the kinematics
+// follow each Gauss point continuously and a point moves at 2 m (a move
+// decided one output apart in the two runs is a second-order jump in the
+// forcing). Bound 1e-4: far below the integrator's tolerance (a different
+// step path, as the 6 digits of analyze's CSV give, moves the tensions by up
+// to 0.4 %, the shipped tolerances' accuracy; docs/lines.md).
 TEST(MotionLinesValidation, AnAnalyzeMotionMeetsTheWavesThatMovedIt) {
   const ValidatedProject vp = load_validated_project(kOc4);
   DynamicAnalysisRequest analyze;
@@ -164,7 +167,7 @@ TEST(MotionLinesValidation, AnAnalyzeMotionMeetsTheWavesThatMovedIt) {
     for (std::size_t k = 0; k < x.size(); ++k) worst = std::max(worst, std::abs(y[k] / x[k] - 1.0));
   }
   std::printf("analyze --line-dynamics vs lines: worst %.3e\n", worst);
-  EXPECT_LT(worst, 1e-5);
+  EXPECT_LT(worst, 1e-4);
 }
 
 }  // namespace
