@@ -235,10 +235,11 @@ TEST(FixedPointWaveKinematics, DryAndDeepPointsAreStill) {
 TEST(FixedPointWaveKinematics, SampledInTimeIsTheDirectSumWithinTheInterpolationBound) {
   const auto sea = short_crested_sea(11);
   const double interval_s = FixedPointWaveKinematics::default_sample_interval_s(*sea);
-  // ω_max = 5 ω_p = 2.62 rad/s; a JONSWAP sea reaches the rms error at ω_max Δ ≈ 0.6.
+  // ω_max = 5 ω_p = 2.62 rad/s; a JONSWAP sea reaches the rms error of 1e-2
+  // at ω_max Δ ≈ 1.07 (1e-3: 0.6).
   const double omega_max = 5.0 * 2.0 * std::numbers::pi / 12.0;
-  EXPECT_GT(omega_max * interval_s, 0.5);
-  EXPECT_LT(omega_max * interval_s, 0.7);
+  EXPECT_GT(omega_max * interval_s, 0.95);
+  EXPECT_LT(omega_max * interval_s, 1.2);
   const std::vector<Eigen::Vector3d> points = {
       {0.0, 0.0, -0.5}, {5.0, 3.0, -3.0}, {-40.0, 25.0, -20.0}, {100.0, -10.0, -150.0}, {0.0, 0.0, -600.0}};
   const FixedPointWaveKinematics direct(sea, points);
@@ -251,7 +252,7 @@ TEST(FixedPointWaveKinematics, SampledInTimeIsTheDirectSumWithinTheInterpolation
     u_bound += r * c.amplitude_m * c.omega_rad_per_s;
     a_bound += r * c.amplitude_m * c.omega_rad_per_s * c.omega_rad_per_s;
   }
-  ASSERT_LT(eta_bound, 0.1);
+  ASSERT_LT(eta_bound, 0.3);
   std::vector<Eigen::Vector3d> u1, a1, u2, a2;
   int compared = 0, dry = 0, near_surface = 0;
   double worst_u = 0.0;
@@ -278,15 +279,16 @@ TEST(FixedPointWaveKinematics, SampledInTimeIsTheDirectSumWithinTheInterpolation
     }
   }
   EXPECT_GT(dry, 100);  // the shallow points were dry at times, and agreed
-  // The rms error the interval was chosen for (1e-3 of the rms acceleration
-  // of the linear sums), the stretching's products included.
+  // The rms error the interval was chosen for (kSampledAccelerationError of
+  // the rms acceleration of the linear sums), the stretching's products included.
   for (std::size_t p = 0; p + 1 < points.size(); ++p) {
-    EXPECT_LT(std::sqrt(error_sq[p] / signal_sq[p]), 1.5e-3) << "point " << p;
+    EXPECT_LT(std::sqrt(error_sq[p] / signal_sq[p]), 1.5 * FixedPointWaveKinematics::kSampledAccelerationError)
+        << "point " << p;
     RecordProperty("rms_acceleration_error_" + std::to_string(p),
                    std::to_string(std::sqrt(error_sq[p] / signal_sq[p])));
   }
-  EXPECT_LT(near_surface, 100);  // of 15,000
-  EXPECT_GT(compared, 14900);
+  EXPECT_LT(near_surface, 500);  // of 15,000: the two shallowest points within η's bound (0.23 m) of the surface
+  EXPECT_GT(compared, 14500);
   // About one summed sample per interval, not one per time asked.
   EXPECT_LT(sampled.full_sums(), static_cast<long>(3000 * 0.0371 / interval_s) + 20);
   EXPECT_EQ(direct.full_sums(), 3000);
