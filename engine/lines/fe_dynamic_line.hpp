@@ -195,15 +195,14 @@ struct DynamicLine final : ImplicitSystem {
     std::array<std::size_t, kPoints> wave_point{};
     std::array<const Eigen::Vector3d*, kPoints> wave_u{}, wave_a{};
     std::array<const FixedPointWaveKinematics::Gradients*, kPoints> wave_g{};
+    const bool own = element_waves && wave_point_count(e) > 1;  // a point per Gauss point
     if (element_waves) {
-      const bool own = wave_point_count(e) > 1;
       for (std::size_t gp = 0; gp < kPoints; ++gp) wave_point[gp] = wave_point_start[e] + (own ? gp : 0);
     }
     if (element_waves && alone && t != element_waves_time) {
       for (std::size_t k = 0; k < wave_point_count(e); ++k) {
         element_waves->evaluate_point(t, wave_point_start[e] + k, alone_wave_u[k], alone_wave_a[k], &alone_wave_g[k]);
       }
-      const bool own = wave_point_count(e) > 1;
       for (std::size_t gp = 0; gp < kPoints; ++gp) {
         const std::size_t k = own ? gp : 0;
         wave_u[gp] = &alone_wave_u[k], wave_a[gp] = &alone_wave_a[k], wave_g[gp] = &alone_wave_g[k];
