@@ -156,12 +156,14 @@ std::string line_mesh_note(const Project& project, LineMesh mesh, long elements)
 }
 
 std::string line_wave_kinematics_note(const engine::WaveRealization& sea) {
+  using engine::FixedPointWaveKinematics;
   return fmt::format(
       "linear wave kinematics at each element's midpoint, at its Gauss points in the wave zone (where the midpoint "
-      "would err by more than 1e-3 of the surface velocity), carried to the line's present position by their "
-      "gradients and moved at 2 m, summed every {:.3g} s and interpolated cubically in time (rms error 1e-2 of the "
-      "acceleration)",
-      engine::FixedPointWaveKinematics::default_sample_interval_s(sea));
+      "would err by more than {:g} of the surface velocity), carried to the line's present position by their "
+      "gradients and moved at {:g} m, summed every {:.3g} s and interpolated cubically in time (rms error {:g} of "
+      "the acceleration)",
+      FixedPointWaveKinematics::kWaveZoneMidpointError, FixedPointWaveKinematics::kLinePointDrift_m,
+      FixedPointWaveKinematics::default_sample_interval_s(sea), FixedPointWaveKinematics::kSampledAccelerationError);
 }
 
 namespace {

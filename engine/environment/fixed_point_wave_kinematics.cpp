@@ -104,8 +104,9 @@ void FixedPointWaveKinematics::set_point(Point& out, const Eigen::Vector3d& x) {
   }
 }
 
-void FixedPointWaveKinematics::time_phases(double t_s, std::size_t count, double* cos_wt, double* sin_wt) const {
-  for (std::size_t j = 0; j < count; ++j) {
+void FixedPointWaveKinematics::time_phases(double t_s, std::size_t count, double* cos_wt, double* sin_wt,
+                                           std::size_t first) const {
+  for (std::size_t j = first; j < count; ++j) {
     const double wt = omega_[j] * t_s;
     cos_wt[j] = std::cos(wt);
     sin_wt[j] = std::sin(wt);
@@ -133,17 +134,12 @@ const FixedPointWaveKinematics::Sample& FixedPointWaveKinematics::held_sample(Sl
   const Point& pt = points_[point];
   if (held.generation == pt.generation) return held.sample;
   // Moved since the slot was summed: summed anew under the slot's phases,
-  // extended (as time_phases computes them) if the point now keeps more
-  // components than any point did then.
+  // extended if the point now keeps more components than any point did then.
   if (s.cos_wt.size() < pt.count) {
     const std::size_t had = s.cos_wt.size();
     s.cos_wt.resize(pt.count);
     s.sin_wt.resize(pt.count);
-    const double t_s = static_cast<double>(s.index) * interval_s_;
-    for (std::size_t j = had; j < pt.count; ++j) {
-      s.cos_wt[j] = std::cos(omega_[j] * t_s);
-      s.sin_wt[j] = std::sin(omega_[j] * t_s);
-    }
+    time_phases(static_cast<double>(s.index) * interval_s_, pt.count, s.cos_wt.data(), s.sin_wt.data(), had);
   }
   held.sample = pt.count > 0 ? at_point(pt, s.cos_wt.data(), s.sin_wt.data()) : Sample{};
   held.generation = pt.generation;

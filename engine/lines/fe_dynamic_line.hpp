@@ -32,26 +32,6 @@ namespace spiral::engine::fe_detail {
 // than a coarser threshold, fewer refreshes than a finer one
 // (docs/decisions/fe-line-dynamics-integrator.md).
 constexpr double kContactChangeForRefresh = 0.1;
-// A wave-kinematics point is carried to where its Gauss points now are by
-// the field's gradients, to first order (fluid_at), and moved there when it
-// has drifted this far: the term left out is (k Δ)²/2 of a component, 7e-4
-// at a 13 s wave's k = 0.024 rad/m (at 0.5 m without the gradients, which
-// moved the points in jumps of k Δ: 0.012 rad). Each move sums the point
-// anew and is a (second-order) jump in the forcing: deep-water lc1 storm,
-// 600 s, 7,506 steps at 0.5 m, 7,594 at 2 m, every statistic the same
-// within 0.03 % (docs/decisions/global-analysis-mesh.md).
-constexpr double kWavePointDrift_m = 2.0;
-// An element takes the sea's kinematics at its five Gauss points instead of
-// its midpoint where the midpoint would err by more than this fraction of
-// the sea's velocity amplitude at the still-water level
-// (FixedPointWaveKinematics::midpoint_error): in a Tp 14 s sea the top
-// 40 m element below the −28 m fairleads (1.4–2.3e-2), not the next
-// (≈ 6e-3); shorter seas reach deeper. Deep-water lc1, 600 s, against the
-// own meshes at 0.03 of the tolerances: the mooring tensions' std within
-// 0.17 % (0.07 % at 1e-3: four elements a line, +9 % of the dynamics'
-// instructions; 0.39 % with midpoints only) (docs/decisions/global-analysis-mesh.md).
-constexpr double kWaveZoneMidpointError = 1e-2;
-
 [[noreturn]] inline void invalid_dynamics(const std::string& what) {
   throw SolverError("FE line dynamics: invalid input: " + what);
 }
@@ -135,11 +115,11 @@ struct DynamicLine final : ImplicitSystem {
   // The sea's kinematics at the elements' midpoints, evaluated once per
   // time (the Newton iterations of a step share it), with their gradients:
   // each Gauss point takes them carried to where it is (fluid_at), and a
-  // point moves when it has drifted kWavePointDrift_m. An
-  // element in the wave zone, over which one point's value would err by
-  // more than kWaveZoneMidpointError (FixedPointWaveKinematics::
-  // midpoint_error), has a point at each Gauss point instead: its points
-  // are wave_point_start[e] … wave_point_start[e + 1] − 1.
+  // point moves when it has drifted kLinePointDrift_m. An element in the
+  // wave zone, over which one point's value would err by more than
+  // kWaveZoneMidpointError (both FixedPointWaveKinematics'), has a point at
+  // each Gauss point instead: its points are wave_point_start[e] …
+  // wave_point_start[e + 1] − 1.
   std::unique_ptr<FixedPointWaveKinematics> element_waves;
   std::vector<std::size_t> wave_point_start;
   std::size_t wave_point_count(std::size_t e) const { return wave_point_start[e + 1] - wave_point_start[e]; }
@@ -161,9 +141,9 @@ struct DynamicLine final : ImplicitSystem {
 
   /// Moves every wave-kinematics point whose place on its element (the
   /// midpoint or a Gauss point) in the state q (the line's position DOFs, as
-  /// y.head(n)) is more than kWavePointDrift_m from it; between output
-  /// times only (the kinematics
-  /// must not change inside a step's Newton iteration). Returns how many moved.
+  /// y.head(n)) is more than FixedPointWaveKinematics::kLinePointDrift_m
+  /// from it; between output times only (the kinematics must not change
+  /// inside a step's Newton iteration). Returns how many moved.
   int follow_elements(const Eigen::VectorXd& q) {
     if (!element_waves) return 0;
     int moved = 0;
@@ -172,7 +152,7 @@ struct DynamicLine final : ImplicitSystem {
       for (std::size_t k = 0; k < wave_point_count(e); ++k) {
         const std::size_t point = wave_point_start[e] + k;
         const Eigen::Vector3d at = fe_detail::position(ancf::shape_at(wave_point_xi(e, k), p.elements[e].length_m), qe);
-        if ((at - element_waves->position(point)).norm() > kWavePointDrift_m) {
+        if ((at - element_waves->position(point)).norm() > FixedPointWaveKinematics::kLinePointDrift_m) {
           element_waves->move_point(point, at);
           ++moved;
         }
@@ -190,7 +170,7 @@ struct DynamicLine final : ImplicitSystem {
     // point's own, carried to where the Gauss point now is to first order,
     // u(r) = u(p) + G_u (r − p) (FixedPointWaveKinematics::Gradients): the
     // kinematics follow the line continuously, and a point moves only when
-    // the second-order term would matter (kWavePointDrift_m).
+    // the second-order term would matter (FixedPointWaveKinematics::kLinePointDrift_m).
     constexpr std::size_t kPoints = ancf::kGaussXi.size();
     std::array<std::size_t, kPoints> wave_point{};
     std::array<const Eigen::Vector3d*, kPoints> wave_u{}, wave_a{};

@@ -129,7 +129,8 @@ DynamicLine::Start DynamicLine::initialize(const FeLineModel& model, const FeDyn
       const double L = m.p.elements[e].length_m;
       const auto at = [&](double xi) { return fe_detail::position(ancf::shape_at(xi, L), qe); };
       const double top_z_m = std::max(at(0.0).z(), at(1.0).z());
-      if (FixedPointWaveKinematics::midpoint_error(*environment.sea, top_z_m, L) > kWaveZoneMidpointError) {
+      if (FixedPointWaveKinematics::midpoint_error(*environment.sea, top_z_m, L) >
+          FixedPointWaveKinematics::kWaveZoneMidpointError) {
         for (double xi : ancf::kGaussXi) points.push_back(at(xi));
       } else {
         points.push_back(at(0.5));
